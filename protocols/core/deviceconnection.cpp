@@ -1,0 +1,123 @@
+#include "deviceconnection.h"
+
+#include "logging.h"
+
+namespace db {
+
+DeviceConnection::DeviceConnection(const ConnectionUri &uri, QObject *parent)
+    : QObject(parent)
+    , m_uri(uri)
+{
+    qRegisterMetaType<db::Error>();
+    qRegisterMetaType<db::DeviceConnection::State>();
+}
+
+DeviceConnection::~DeviceConnection()
+{
+    failPending(Error(Error::Kind::Cancelled, QStringLiteral("connection deleted")));
+}
+
+void DeviceConnection::open()
+{
+    if (m_state != State::Disconnected)
+        return;
+    m_lastError = {};
+    setState(State::Connecting);
+    doOpen();
+}
+
+void DeviceConnection::close()
+{
+    if (m_state == State::Disconnected || m_state == State::Closing)
+        return;
+    failPending(Error(Error::Kind::Cancelled, QStringLiteral("connection closed by the user")));
+    setState(State::Closing);
+    doClose();
+}
+
+Reply *DeviceConnection::read(ObjectAddress address)
+{
+    if (m_state != State::Connected)
+        return Reply::failed(address, Error(Error::Kind::Disconnected,
+                                            QStringLiteral("not connected to %1")
+                                                .arg(m_uri.toString())));
+    const ObjectDef *def = m_dictionary.find(address);
+    if (def && !def->readable())
+        return Reply::failed(address, Error(Error::Kind::AccessDenied,
+                                            QStringLiteral("%1 %2 is write-only")
+                                                .arg(address.toString(), def->name)));
+    Reply *reply = track(new Reply(address));
+    doRead(reply, def);
+    return reply;
+}
+
+Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
+{
+    if (m_state != State::Connected)
+        return Reply::failed(address, Error(Error::Kind::Disconnected,
+                                            QStringLiteral("not connected to %1")
+                                                .arg(m_uri.toString())));
+    const ObjectDef *def = m_dictionary.find(address);
+    QVariant value = raw;
+    if (def) {
+        if (!def->writable())
+            return Reply::failed(address, Error(Error::Kind::AccessDenied,
+                                                QStringLiteral("%1 %2 is read-only")
+                                                    .arg(address.toString(), def->name)));
+        auto checked = def->validate(raw);
+        if (!checked)
+            return Reply::failed(address, checked.error());
+        value = checked.value();
+    }
+    Reply *reply = track(new Reply(address));
+    doWrite(reply, value, def);
+    return reply;
+}
+
+void DeviceConnection::setState(State state, const Error &error)
+{
+    if (error.isError()) {
+        m_lastError = error;
+        qCWarning(lcCore).noquote() << m_uri.toString() << error.toString();
+    }
+    if (state == State::Disconnected)
+        failPending(error.isError() ? error
+                                    : Error(Error::Kind::Disconnected,
+                                            QStringLiteral("connection to %1 closed")
+                                                .arg(m_uri.toString())));
+    if (error.isError())
+        Q_EMIT errorOccurred(error);
+    if (state != m_state) {
+        m_state = state;
+        Q_EMIT stateChanged(state);
+    }
+}
+
+Reply *DeviceConnection::track(Reply *reply)
+{
+    m_pending.removeIf([](const QPointer<Reply> &p) { return !p || p->isFinished(); });
+    m_pending.append(reply);
+    return reply;
+}
+
+void DeviceConnection::failPending(const Error &error)
+{
+    const auto pending = std::exchange(m_pending, {});
+    for (const QPointer<Reply> &reply : pending) {
+        if (reply)
+            reply->fail(error);
+    }
+}
+
+QString stateName(DeviceConnection::State state)
+{
+    switch (state) {
+    case DeviceConnection::State::Disconnected: return QObject::tr("disconnected");
+    case DeviceConnection::State::Connecting: return QObject::tr("connecting");
+    case DeviceConnection::State::Connected: return QObject::tr("connected");
+    case DeviceConnection::State::Closing: return QObject::tr("closing");
+    }
+    return {};
+}
+
+} // namespace db

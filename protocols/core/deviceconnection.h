@@ -1,0 +1,101 @@
+#pragma once
+
+#include "connectionuri.h"
+#include "objectdictionary.h"
+#include "reply.h"
+
+#include <QList>
+#include <QObject>
+#include <QPointer>
+
+namespace db {
+
+// One connected device, whatever the protocol: the plugin instance interface
+// (ARCHITECTURE.md, protocols/core). Widgets and the CLI work only through this.
+//
+// Threading: everything runs on the owning thread's event loop; no call blocks.
+// Subclasses implement doOpen/doClose/doRead/doWrite and report with setState()/finishes.
+class DeviceConnection : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State { Disconnected, Connecting, Connected, Closing };
+    Q_ENUM(State)
+
+    // Optional abilities beyond read/write.
+    enum class Capability {
+        StoreNonVolatile = 0x1, // parameters can be saved permanently (1010h)
+        RawCommands = 0x2,      // protocol commands as text (RefGo)
+        Motion = 0x4,
+        TraceSource = 0x8,
+    };
+    Q_DECLARE_FLAGS(Capabilities, Capability)
+
+    explicit DeviceConnection(const ConnectionUri &uri, QObject *parent = nullptr);
+    ~DeviceConnection() override;
+
+    virtual QString protocolKey() const = 0;
+    virtual Capabilities capabilities() const { return {}; }
+
+    const ConnectionUri &uri() const { return m_uri; }
+    State state() const { return m_state; }
+    bool isConnected() const { return m_state == State::Connected; }
+    // The error that ended the last connection or connection attempt.
+    Error lastError() const { return m_lastError; }
+
+    // Non-blocking: stateChanged(Connecting) now, then Connected, or Disconnected with
+    // errorOccurred() when the attempt fails. Ignored unless Disconnected.
+    void open();
+    // Non-blocking: pending requests fail with Error::Kind::Cancelled; ends in Disconnected.
+    void close();
+
+    const ObjectDictionary &dictionary() const { return m_dictionary; }
+    void setDictionary(const ObjectDictionary &dictionary) { m_dictionary = dictionary; }
+
+    // Per-request time limit in ms used by the protocol engine.
+    int requestTimeoutMs() const { return m_timeoutMs; }
+    void setRequestTimeoutMs(int ms) { m_timeoutMs = ms; }
+
+    // Reads one object. The reply's value is the raw value (codec's canonical type; the
+    // dictionary's type, or a qlonglong for objects the description does not know).
+    // The caller owns the reply. It always finishes: value, device error, timeout or disconnect.
+    Reply *read(ObjectAddress address);
+    // Writes one raw value after checking it against the dictionary (type, range, access).
+    // Objects missing from the description are written as given.
+    Reply *write(ObjectAddress address, const QVariant &raw);
+
+Q_SIGNALS:
+    void stateChanged(db::DeviceConnection::State state);
+    // Connection-level problems (refused, lost, garbage); request errors go to their replies.
+    void errorOccurred(const db::Error &error);
+    // Human-readable traffic/events for the log console (one line each).
+    void logLine(const QString &line);
+
+protected:
+    virtual void doOpen() = 0;
+    virtual void doClose() = 0;
+    // def is null for objects the dictionary does not know.
+    virtual void doRead(Reply *reply, const ObjectDef *def) = 0;
+    virtual void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) = 0;
+
+    // Subclasses report progress here. Entering Disconnected fails every pending reply with
+    // `error` (or Disconnected/Cancelled) and emits errorOccurred() when error is set.
+    void setState(State state, const Error &error = {});
+
+private:
+    Reply *track(Reply *reply);
+    void failPending(const Error &error);
+
+    ConnectionUri m_uri;
+    State m_state = State::Disconnected;
+    Error m_lastError;
+    ObjectDictionary m_dictionary;
+    int m_timeoutMs = 1000;
+    QList<QPointer<Reply>> m_pending;
+};
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(DeviceConnection::Capabilities)
+
+QString stateName(DeviceConnection::State state);
+
+} // namespace db

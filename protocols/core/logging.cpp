@@ -1,0 +1,5 @@
+#include "logging.h"
+
+namespace db {
+Q_LOGGING_CATEGORY(lcCore, "drivebench.core")
+}

@@ -1,0 +1,70 @@
+#include "objectdef.h"
+
+namespace db {
+
+QString access::name(Access access)
+{
+    switch (access) {
+    case Access::ReadOnly: return QStringLiteral("ro");
+    case Access::WriteOnly: return QStringLiteral("wo");
+    case Access::ReadWrite: return QStringLiteral("rw");
+    case Access::Const: return QStringLiteral("const");
+    }
+    return QStringLiteral("rw");
+}
+
+std::optional<Access> access::fromName(const QString &text)
+{
+    const QString t = text.trimmed().toLower();
+    if (t == QLatin1String("ro") || t == QLatin1String("r"))
+        return Access::ReadOnly;
+    if (t == QLatin1String("wo") || t == QLatin1String("w"))
+        return Access::WriteOnly;
+    if (t == QLatin1String("rw") || t == QLatin1String("rww") || t == QLatin1String("rwr"))
+        return Access::ReadWrite;
+    if (t == QLatin1String("const"))
+        return Access::Const;
+    return std::nullopt;
+}
+
+Result<QVariant> ObjectDef::validate(const QVariant &value) const
+{
+    auto raw = codec::normalize(type, value);
+    if (!raw)
+        return raw.error().prefixed(address.toString());
+    if (auto limits = codec::checkLimits(type, raw.value(), minimum, maximum); !limits)
+        return limits.error().prefixed(address.toString());
+    return raw;
+}
+
+Result<QVariant> ObjectDef::parseText(const QString &text) const
+{
+    const QString t = text.trimmed();
+    for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it) {
+        if (it.value().compare(t, Qt::CaseInsensitive) == 0)
+            return validate(QVariant::fromValue<qlonglong>(it.key()));
+    }
+    auto raw = codec::fromText(type, text);
+    if (!raw)
+        return raw.error().prefixed(address.toString());
+    return validate(raw.value());
+}
+
+QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const
+{
+    if (!raw.isValid())
+        return {};
+    QString text = codec::toText(type, raw, format);
+    if (datatype::isInteger(type) && !enumeration.isEmpty()) {
+        const auto it = enumeration.constFind(raw.toLongLong());
+        if (it != enumeration.cend())
+            text += QStringLiteral(" (%1)").arg(*it);
+    } else if (datatype::isNumeric(type) && (factor != 1.0 || offset != 0.0)) {
+        text = QString::number(codec::toPhysical(raw, factor, offset), 'g', 10);
+    }
+    if (!unit.isEmpty() && datatype::isNumeric(type) && format == codec::TextFormat::Decimal)
+        text += QLatin1Char(' ') + unit;
+    return text;
+}
+
+} // namespace db

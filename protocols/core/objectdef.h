@@ -1,0 +1,62 @@
+#pragma once
+
+#include "datatype.h"
+#include "objectaddress.h"
+#include "valuecodec.h"
+
+#include <QList>
+#include <QMap>
+#include <QVariant>
+
+namespace db {
+
+enum class Access { ReadOnly, WriteOnly, ReadWrite, Const };
+
+namespace access {
+QString name(Access access); // "ro", "wo", "rw", "const"
+std::optional<Access> fromName(const QString &text);
+} // namespace access
+
+// A named group of bits inside a word (e.g. 6041h bit 10 "target reached").
+struct BitField
+{
+    int bit = 0;
+    int width = 1;
+    QString name;
+};
+
+// Static metadata of one object (sub-index): what it is, never its current value
+// (ARCHITECTURE.md habit 4: definition separate from value).
+struct ObjectDef
+{
+    ObjectAddress address;
+    QString name;       // of this sub-index, e.g. "Statusword" or "Min position limit"
+    QString objectName; // of the whole object for records/arrays; empty when the same as name
+    DataType type = DataType::Unsigned32;
+    Access access = Access::ReadWrite;
+    QString unit;
+    double factor = 1.0; // physical = raw * factor + offset
+    double offset = 0.0;
+    QVariant defaultValue; // raw values; invalid = unknown / no limit
+    QVariant minimum;
+    QVariant maximum;
+    QMap<qlonglong, QString> enumeration;
+    QList<BitField> bitFields;
+    bool storable = false;    // part of a parameter set (saved by 1010h)
+    bool pdoMappable = false;
+    bool traceable = false;   // worth offering as a scope channel
+    QString description;
+
+    bool readable() const { return access != Access::WriteOnly; }
+    bool writable() const { return access == Access::ReadWrite || access == Access::WriteOnly; }
+
+    // Type conversion, type range and the object's own min/max in one step.
+    Result<QVariant> validate(const QVariant &value) const;
+    // User text -> raw, accepting enumeration names as well as numbers.
+    Result<QVariant> parseText(const QString &text) const;
+    // "1 (Profile Position)", "0x0427", "1200 mm"
+    QString displayText(const QVariant &raw,
+                        codec::TextFormat format = codec::TextFormat::Decimal) const;
+};
+
+} // namespace db

@@ -1,0 +1,75 @@
+#include "reply.h"
+
+#include <QEventLoop>
+#include <QPointer>
+#include <QTimer>
+
+namespace db {
+
+Reply::Reply(ObjectAddress address, QObject *parent)
+    : QObject(parent)
+    , m_address(address)
+{}
+
+Result<QVariant> Reply::result() const
+{
+    if (!m_finished)
+        return Error(Error::Kind::Busy, QStringLiteral("request still pending"));
+    if (m_error.isError())
+        return m_error;
+    return m_value;
+}
+
+bool Reply::finish(const QVariant &value)
+{
+    if (m_finished)
+        return false;
+    m_finished = true;
+    m_value = value;
+    scheduleFinished();
+    return true;
+}
+
+bool Reply::fail(const Error &error)
+{
+    if (m_finished)
+        return false;
+    m_finished = true;
+    m_error = error.isError() ? error : Error(Error::Kind::DeviceError, QStringLiteral("failed"));
+    scheduleFinished();
+    return true;
+}
+
+void Reply::scheduleFinished()
+{
+    QMetaObject::invokeMethod(this, &Reply::finished, Qt::QueuedConnection);
+}
+
+Reply *Reply::failed(ObjectAddress address, const Error &error)
+{
+    auto *reply = new Reply(address);
+    reply->fail(error);
+    return reply;
+}
+
+Result<QVariant> Reply::wait(Reply *reply, int safetyMs)
+{
+    QPointer<Reply> guard(reply);
+    // Even a finished reply has its finished() still queued: spin until it is delivered, so the
+    // reply can be deleted with no queued call left pointing at it.
+    QEventLoop loop;
+    QObject::connect(reply, &Reply::finished, &loop, &QEventLoop::quit);
+    QTimer::singleShot(safetyMs, &loop, &QEventLoop::quit);
+    loop.exec();
+    if (!guard)
+        return Error(Error::Kind::Cancelled, QStringLiteral("request was deleted"));
+    Result<QVariant> result = reply->isFinished()
+                                  ? reply->result()
+                                  : Result<QVariant>(Error(Error::Kind::Timeout,
+                                                           QStringLiteral("no answer within %1 ms")
+                                                               .arg(safetyMs)));
+    reply->deleteLater();
+    return result;
+}
+
+} // namespace db

@@ -1,0 +1,119 @@
+#include "tcpstream.h"
+
+#include <QLoggingCategory>
+
+namespace db {
+
+Q_LOGGING_CATEGORY(lcTcp, "drivebench.transport.tcp")
+Q_LOGGING_CATEGORY(lcTcpRaw, "drivebench.transport.tcp.raw", QtWarningMsg)
+
+TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
+    : ByteStream(parent)
+    , m_host(host)
+    , m_port(port)
+{
+    m_connectTimer.setSingleShot(true);
+    connect(&m_connectTimer, &QTimer::timeout, this, [this] {
+        m_socket.abort();
+        setClosed(Error(Error::Kind::Timeout, QStringLiteral("no TCP connection to %1 within %2 ms")
+                                                  .arg(peerName())
+                                                  .arg(m_connectTimeoutMs)));
+    });
+    connect(&m_socket, &QTcpSocket::connected, this, &TcpStream::onConnected);
+    connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpStream::onSocketError);
+    connect(&m_socket, &QTcpSocket::disconnected, this, &TcpStream::onDisconnected);
+    connect(&m_socket, &QTcpSocket::readyRead, this, [this] {
+        const QByteArray bytes = m_socket.readAll();
+        qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
+        deliver(bytes);
+    });
+}
+
+QString TcpStream::peerName() const
+{
+    return m_host.contains(QLatin1Char(':'))
+               ? QStringLiteral("[%1]:%2").arg(m_host).arg(m_port)
+               : QStringLiteral("%1:%2").arg(m_host).arg(m_port);
+}
+
+void TcpStream::doOpen()
+{
+    qCDebug(lcTcp) << "connecting to" << peerName();
+    m_connectTimer.start(m_connectTimeoutMs);
+    m_socket.connectToHost(m_host, m_port);
+}
+
+void TcpStream::doClose()
+{
+    m_connectTimer.stop();
+    if (m_socket.state() == QAbstractSocket::UnconnectedState) {
+        setClosed();
+        return;
+    }
+    m_socket.disconnectFromHost(); // flushes queued bytes; disconnected() follows
+    if (m_socket.state() == QAbstractSocket::UnconnectedState)
+        setClosed();
+}
+
+void TcpStream::doWrite(const QByteArray &bytes)
+{
+    qCDebug(lcTcpRaw) << peerName() << "->" << bytes;
+    m_socket.write(bytes);
+}
+
+void TcpStream::onConnected()
+{
+    m_connectTimer.stop();
+    m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    m_socket.setSocketOption(QAbstractSocket::KeepAliveOption, 1);
+    qCDebug(lcTcp) << "connected to" << peerName();
+    setOpened();
+}
+
+void TcpStream::onSocketError(QAbstractSocket::SocketError error)
+{
+    m_connectTimer.stop();
+    if (error == QAbstractSocket::RemoteHostClosedError && state() == State::Closing)
+        return; // orderly close we asked for
+    const Error e = describe(error);
+    qCDebug(lcTcp) << e.toString();
+    m_socket.abort();
+    setClosed(e);
+}
+
+void TcpStream::onDisconnected()
+{
+    m_connectTimer.stop();
+    if (state() == State::Closing)
+        setClosed();
+    else
+        setClosed(Error(Error::Kind::Disconnected,
+                        QStringLiteral("%1 closed the connection").arg(peerName())));
+}
+
+Error TcpStream::describe(QAbstractSocket::SocketError error) const
+{
+    switch (error) {
+    case QAbstractSocket::ConnectionRefusedError:
+        return Error(Error::Kind::ConnectionRefused,
+                     QStringLiteral("%1 refused the connection (nothing listens on that port)")
+                         .arg(peerName()));
+    case QAbstractSocket::HostNotFoundError:
+        return Error(Error::Kind::HostNotFound,
+                     QStringLiteral("host '%1' not found").arg(m_host));
+    case QAbstractSocket::RemoteHostClosedError:
+        return Error(Error::Kind::Disconnected,
+                     QStringLiteral("%1 closed the connection").arg(peerName()));
+    case QAbstractSocket::SocketTimeoutError:
+        return Error(Error::Kind::Timeout, QStringLiteral("%1: socket timeout").arg(peerName()));
+    case QAbstractSocket::NetworkError:
+        return Error(Error::Kind::Disconnected,
+                     QStringLiteral("%1: network error: %2").arg(peerName(),
+                                                                 m_socket.errorString()));
+    default:
+        return Error(Error::Kind::Io,
+                     QStringLiteral("%1: %2").arg(peerName(), m_socket.errorString()));
+    }
+}
+
+} // namespace db
