@@ -19,11 +19,13 @@ Result<ConnectionUri> ConnectionUri::parse(const QString &text)
                          .arg(text));
     }
     const QUrl url(trimmed, QUrl::StrictMode);
-    if (!url.isValid() || url.host().isEmpty()) {
+    if (!url.isValid()) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' has no valid host or interface%2")
-                         .arg(text, url.isValid() ? QString()
-                                                  : QStringLiteral(" (%1)").arg(url.errorString())));
+                     QStringLiteral("'%1' is not a valid URI (%2)").arg(text, url.errorString()));
+    }
+    if (url.host().isEmpty()) {
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("'%1' has no valid host or interface").arg(text));
     }
     if (!url.path().isEmpty() && url.path() != QLatin1String("/")) {
         return Error(Error::Kind::InvalidArgument,

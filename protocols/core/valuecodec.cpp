@@ -40,7 +40,7 @@ quint64 unsignedMax(int bytes)
 }
 
 // Parses an integer literal into sign + magnitude so that the full qint64/quint64 range works.
-bool parseIntegerLiteral(QString text, bool *negative, quint64 *magnitude)
+bool parseIntegerLiteral(QString text, bool *negative, quint64 *magnitude, int *baseOut)
 {
     text = text.trimmed().remove(QLatin1Char('_'));
     *negative = false;
@@ -63,6 +63,7 @@ bool parseIntegerLiteral(QString text, bool *negative, quint64 *magnitude)
     }
     bool ok = false;
     *magnitude = text.toULongLong(&ok, base);
+    *baseOut = base;
     return ok && !text.isEmpty();
 }
 
@@ -300,8 +301,18 @@ Result<QVariant> fromText(DataType type, const QString &text)
     if (datatype::isInteger(type)) {
         bool negative = false;
         quint64 magnitude = 0;
-        if (!parseIntegerLiteral(t, &negative, &magnitude))
+        int base = 10;
+        if (!parseIntegerLiteral(t, &negative, &magnitude, &base))
             return notANumber(type, text);
+        const int size = datatype::byteSize(type);
+        if (datatype::isSignedInteger(type) && base != 10 && !negative
+            && magnitude <= unsignedMax(size)) {
+            // A hex or binary literal is a bit pattern of the type's width: 0xFFFF = -1 (INT16).
+            quint64 bits = magnitude;
+            if (size < 8 && (bits & (quint64(1) << (size * 8 - 1))))
+                bits |= ~quint64(0) << (size * 8);
+            return normalize(type, QVariant::fromValue<qlonglong>(qint64(bits)));
+        }
         if (datatype::isUnsignedInteger(type)) {
             if (negative && magnitude != 0)
                 return outOfRange(type, t);

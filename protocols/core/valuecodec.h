@@ -35,6 +35,7 @@ Result<QByteArray> encode(DataType type, const QVariant &raw);
 Result<QVariant> decode(DataType type, const QByteArray &bytes);
 
 // Text typed by a user or read from a file -> raw. Integers: decimal, "0x1F", "1Fh", "0b101",
+// (hex and binary literals are bit patterns of the type: "0xFFFF" is -1 as INTEGER16),
 // "-5"; booleans: 0/1/true/false/on/off; reals: "1.5", "-2e3"; strings as they are;
 // OCTET_STRING/DOMAIN: hex bytes "01 02 ff" or "0102ff".
 Result<QVariant> fromText(DataType type, const QString &text);

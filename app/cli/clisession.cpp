@@ -1,0 +1,95 @@
+#include "clisession.h"
+
+#include <QEventLoop>
+#include <QTimer>
+
+namespace db::cli {
+
+int exitCodeFor(const Error &error)
+{
+    switch (error.kind()) {
+    case Error::Kind::None: return ExitOk;
+    case Error::Kind::InvalidArgument:
+    case Error::Kind::OutOfRange:
+    case Error::Kind::AccessDenied: return ExitUsage;
+    case Error::Kind::ConnectionRefused:
+    case Error::Kind::HostNotFound:
+    case Error::Kind::Disconnected: return ExitConnection;
+    case Error::Kind::Timeout: return ExitTimeout;
+    case Error::Kind::Malformed: return ExitMalformed;
+    case Error::Kind::DeviceError:
+    case Error::Kind::NotSupported: return ExitDeviceError;
+    default: return ExitFailure;
+    }
+}
+
+Session::Session(const ProtocolRegistry &registry, const Options &options)
+    : m_registry(registry)
+    , m_options(options)
+{}
+
+Session::~Session()
+{
+    if (!m_connection || m_connection->state() == DeviceConnection::State::Disconnected)
+        return;
+    QEventLoop loop;
+    QObject::connect(m_connection.get(), &DeviceConnection::stateChanged, &loop,
+                     [&](DeviceConnection::State s) {
+                         if (s == DeviceConnection::State::Disconnected)
+                             loop.quit();
+                     });
+    QTimer::singleShot(1000, &loop, &QEventLoop::quit);
+    m_connection->close();
+    if (m_connection->state() != DeviceConnection::State::Disconnected)
+        loop.exec();
+}
+
+Result<void> Session::open(const QString &uriText)
+{
+    auto created = m_registry.create(uriText);
+    if (!created)
+        return created.error();
+    m_connection = created.value();
+    m_connection->setRequestTimeoutMs(m_options.requestTimeoutMs);
+
+    QEventLoop loop;
+    QObject::connect(m_connection.get(), &DeviceConnection::stateChanged, &loop,
+                     [&](DeviceConnection::State s) {
+                         if (s == DeviceConnection::State::Connected
+                             || s == DeviceConnection::State::Disconnected)
+                             loop.quit();
+                     });
+    bool timedOut = false;
+    QTimer::singleShot(m_options.connectTimeoutMs, &loop, [&] {
+        timedOut = true;
+        loop.quit();
+    });
+    m_connection->open();
+    if (m_connection->state() == DeviceConnection::State::Connecting)
+        loop.exec();
+    if (m_connection->isConnected())
+        return {};
+    if (timedOut)
+        return Error(Error::Kind::Timeout, QStringLiteral("no connection to %1 within %2 ms")
+                                               .arg(m_connection->uri().toString())
+                                               .arg(m_options.connectTimeoutMs));
+    return m_connection->lastError().isError()
+               ? m_connection->lastError()
+               : Error(Error::Kind::Disconnected, QStringLiteral("cannot connect to %1")
+                                                      .arg(m_connection->uri().toString()));
+}
+
+Result<QVariant> Session::read(ObjectAddress address)
+{
+    return Reply::wait(m_connection->read(address));
+}
+
+Result<void> Session::write(ObjectAddress address, const QVariant &raw)
+{
+    auto result = Reply::wait(m_connection->write(address, raw));
+    if (!result)
+        return result.error();
+    return {};
+}
+
+} // namespace db::cli

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "core/deviceconnection.h"
+#include "core/protocolregistry.h"
+
+#include <QTextStream>
+
+#include <memory>
+
+namespace db::cli {
+
+// Exit codes of drivebench-cli (README "CLI"): scripts can tell the causes apart.
+enum ExitCode {
+    ExitOk = 0,
+    ExitFailure = 1,     // anything not listed below
+    ExitUsage = 2,       // bad arguments, unknown command, invalid URI/address/value
+    ExitConnection = 3,  // refused, host not found, link lost
+    ExitTimeout = 4,     // no answer within the time limit
+    ExitMalformed = 5,   // the device's answer breaks the protocol
+    ExitDeviceError = 6, // the device refused the request
+};
+
+int exitCodeFor(const Error &error);
+
+// Options shared by every command.
+struct Options
+{
+    int requestTimeoutMs = 1000;
+    int connectTimeoutMs = 3000;
+    bool hex = false;
+    bool verbose = false;
+};
+
+// One connection for the duration of a command: opens it (waiting at most connectTimeoutMs),
+// runs requests synchronously for the command, closes it cleanly.
+class Session
+{
+public:
+    Session(const ProtocolRegistry &registry, const Options &options);
+    ~Session();
+
+    Result<void> open(const QString &uriText);
+    DeviceConnection *connection() const { return m_connection.get(); }
+    Result<QVariant> read(ObjectAddress address);
+    Result<void> write(ObjectAddress address, const QVariant &raw);
+
+private:
+    const ProtocolRegistry &m_registry;
+    Options m_options;
+    std::shared_ptr<DeviceConnection> m_connection;
+};
+
+} // namespace db::cli

@@ -1,0 +1,138 @@
+#include "commands.h"
+
+#include "core/valuecodec.h"
+#include "refgo/refgoconnection.h"
+
+namespace db::cli {
+
+int fail(Context &context, const Error &error)
+{
+    context.err << "drivebench-cli: " << error.toString() << Qt::endl;
+    return exitCodeFor(error);
+}
+
+namespace {
+
+int listProtocols(Context &c)
+{
+    for (const ProtocolInfo &p : c.registry.protocols()) {
+        c.out << qSetFieldWidth(20) << Qt::left << p.scheme << qSetFieldWidth(0)
+              << qSetFieldWidth(44) << p.uriPattern << qSetFieldWidth(0) << p.title;
+        if (p.defaultPort >= 0)
+            c.out << " (default port " << p.defaultPort << ")";
+        c.out << Qt::endl;
+    }
+    return ExitOk;
+}
+
+Result<ObjectAddress> address(Context &c, int arg)
+{
+    return ObjectAddress::parse(c.args.value(arg));
+}
+
+// The type for text conversion: the description's, else --type, else a 64-bit integer.
+Result<DataType> typeFor(Context &c, const ObjectDef *def)
+{
+    if (def)
+        return def->type;
+    if (c.type.isEmpty())
+        return DataType::Integer64;
+    const auto t = datatype::fromName(c.type);
+    if (!t)
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("unknown type '%1' (e.g. u16, i32, UNSIGNED8, REAL32)")
+                         .arg(c.type));
+    return *t;
+}
+
+int read(Context &c)
+{
+    const auto addr = address(c, 1);
+    if (!addr)
+        return fail(c, addr.error());
+    Session session(c.registry, c.options);
+    if (auto opened = session.open(c.args.at(0)); !opened)
+        return fail(c, opened.error());
+    const ObjectDef *def = session.connection()->dictionary().find(*addr);
+    const auto type = typeFor(c, def);
+    if (!type)
+        return fail(c, type.error());
+    const auto value = session.read(*addr);
+    if (!value)
+        return fail(c, value.error().prefixed(QStringLiteral("reading %1").arg(addr->toString())));
+    const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
+    QVariant raw = value.value();
+    if (!def && !c.type.isEmpty()) {
+        auto converted = codec::normalize(*type, raw);
+        if (converted)
+            raw = converted.value();
+    }
+    const QString text = datatype::isNumeric(*type) || def ? codec::toText(*type, raw, format)
+                                                           : raw.toString();
+    if (c.options.verbose) {
+        c.out << addr->toString() << ' ' << (def ? def->name : QStringLiteral("(unknown object)"))
+              << " = " << (def ? def->displayText(raw, format) : text) << Qt::endl;
+    } else {
+        c.out << text << Qt::endl;
+    }
+    return ExitOk;
+}
+
+int write(Context &c)
+{
+    const auto addr = address(c, 1);
+    if (!addr)
+        return fail(c, addr.error());
+    Session session(c.registry, c.options);
+    if (auto opened = session.open(c.args.at(0)); !opened)
+        return fail(c, opened.error());
+    const ObjectDef *def = session.connection()->dictionary().find(*addr);
+    const auto type = typeFor(c, def);
+    if (!type)
+        return fail(c, type.error());
+    const auto raw = def ? def->parseText(c.args.at(2)) : codec::fromText(*type, c.args.at(2));
+    if (!raw)
+        return fail(c, raw.error());
+    if (auto written = session.write(*addr, raw.value()); !written)
+        return fail(c, written.error().prefixed(QStringLiteral("writing %1").arg(addr->toString())));
+    if (c.options.verbose)
+        c.out << addr->toString() << " <- " << codec::toText(*type, raw.value()) << " ok"
+              << Qt::endl;
+    return ExitOk;
+}
+
+int refgo(Context &c)
+{
+    Session session(c.registry, c.options);
+    if (auto opened = session.open(c.args.at(0)); !opened)
+        return fail(c, opened.error());
+    auto *conn = qobject_cast<refgo::RefgoConnection *>(session.connection());
+    if (!conn)
+        return fail(c, Error(Error::Kind::InvalidArgument,
+                             QStringLiteral("'refgo' needs a refgo:// URI, not %1")
+                                 .arg(session.connection()->uri().scheme())));
+    const auto result = Reply::wait(conn->command(c.args.at(1)));
+    if (!result)
+        return fail(c, result.error());
+    for (const QString &line : result.value().toStringList())
+        c.out << line << Qt::endl;
+    return ExitOk;
+}
+
+} // namespace
+
+const QList<Command> &commands()
+{
+    static const QList<Command> list = {
+        {"list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols},
+        {"read", "URI INDEX:SUB", "read one object, e.g. read refgo://192.168.2.150 6041:0", 2, 2,
+         read},
+        {"write", "URI INDEX:SUB VALUE", "write one object, e.g. write refgo://HOST 6083:0 2000",
+         3, 3, write},
+        {"refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
+         2, refgo},
+    };
+    return list;
+}
+
+} // namespace db::cli

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "clisession.h"
+
+#include <QStringList>
+
+namespace db::cli {
+
+struct Context
+{
+    const ProtocolRegistry &registry;
+    Options options;
+    QStringList args; // positional arguments after the command name
+    QTextStream &out;
+    QTextStream &err;
+    QString type; // --type for objects the description does not know
+};
+
+struct Command
+{
+    const char *name;
+    const char *synopsis;
+    const char *summary;
+    int minArgs;
+    int maxArgs;
+    int (*run)(Context &context);
+};
+
+const QList<Command> &commands();
+
+// Prints "drivebench-cli: <cause>" on stderr and returns the matching exit code.
+int fail(Context &context, const Error &error);
+
+} // namespace db::cli

@@ -1,0 +1,89 @@
+// drivebench-cli: headless access to drives for scripts (README "CLI").
+#include "../common/protocols.h"
+#include "commands.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+using namespace db;
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("drivebench-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    QString description = QCoreApplication::translate(
+        "cli", "drivebench command line: read and write drive objects from scripts.\n\nCommands:");
+    for (const cli::Command &c : cli::commands())
+        description += QStringLiteral("\n  %1 %2\n      %3")
+                           .arg(QLatin1String(c.name), QLatin1String(c.synopsis),
+                                QLatin1String(c.summary));
+    description += QCoreApplication::translate(
+        "cli", "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
+               "answer, 6 device error.");
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(description);
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption timeout(
+        {QStringLiteral("t"), QStringLiteral("timeout")},
+        QCoreApplication::translate("cli", "Time limit per request in ms (default 1000)."),
+        QStringLiteral("ms"), QStringLiteral("1000"));
+    const QCommandLineOption connectTimeout(
+        QStringLiteral("connect-timeout"),
+        QCoreApplication::translate("cli", "Time limit for connecting in ms (default 3000)."),
+        QStringLiteral("ms"), QStringLiteral("3000"));
+    const QCommandLineOption hex(QStringLiteral("hex"),
+                                 QCoreApplication::translate("cli", "Print integers in hex."));
+    const QCommandLineOption type(
+        QStringLiteral("type"),
+        QCoreApplication::translate("cli", "Data type of an object the device description does "
+                                           "not know (u8, i16, u32, REAL32, ...)."),
+        QStringLiteral("type"));
+    const QCommandLineOption verbose({QStringLiteral("v"), QStringLiteral("verbose")},
+                                     QCoreApplication::translate("cli", "Name what is printed."));
+    parser.addOptions({timeout, connectTimeout, hex, type, verbose});
+    parser.addPositionalArgument(QStringLiteral("command"),
+                                 QCoreApplication::translate("cli", "What to do (see above)."));
+    parser.process(app);
+
+    QStringList args = parser.positionalArguments();
+    if (args.isEmpty()) {
+        err << "drivebench-cli: no command given; try drivebench-cli --help" << Qt::endl;
+        return cli::ExitUsage;
+    }
+    const QString name = args.takeFirst();
+    const cli::Command *command = nullptr;
+    for (const cli::Command &c : cli::commands()) {
+        if (name == QLatin1String(c.name))
+            command = &c;
+    }
+    if (!command) {
+        err << "drivebench-cli: unknown command '" << name << "'; try drivebench-cli --help"
+            << Qt::endl;
+        return cli::ExitUsage;
+    }
+    if (args.size() < command->minArgs || args.size() > command->maxArgs) {
+        err << "drivebench-cli: usage: drivebench-cli " << command->name << ' '
+            << command->synopsis << Qt::endl;
+        return cli::ExitUsage;
+    }
+    bool ok1 = false;
+    bool ok2 = false;
+    cli::Options options;
+    options.requestTimeoutMs = parser.value(timeout).toInt(&ok1);
+    options.connectTimeoutMs = parser.value(connectTimeout).toInt(&ok2);
+    if (!ok1 || !ok2 || options.requestTimeoutMs <= 0 || options.connectTimeoutMs <= 0) {
+        err << "drivebench-cli: --timeout and --connect-timeout take a positive number of ms"
+            << Qt::endl;
+        return cli::ExitUsage;
+    }
+    options.hex = parser.isSet(hex);
+    options.verbose = parser.isSet(verbose);
+    cli::Context context{app::protocolRegistry(), options, args, out, err, parser.value(type)};
+    return command->run(context);
+}

@@ -1,0 +1,112 @@
+// drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
+//   drivebench-sim movingcap --refgo-port PORT [--set INDEX:SUB=VALUE ...]
+#include "../common/demodrive.h"
+#include "core/objectaddress.h"
+#include "simulation/movingcapdrive.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QSocketNotifier>
+#include <QTextStream>
+
+#include <csignal>
+#include <sys/socket.h>
+#include <unistd.h>
+
+using namespace db;
+
+namespace {
+
+int signalPipe[2] = {-1, -1};
+
+void onSignal(int)
+{
+    const char byte = 1;
+    [[maybe_unused]] const auto n = ::write(signalPipe[1], &byte, 1);
+}
+
+// SIGINT/SIGTERM end the event loop cleanly (self-pipe: nothing unsafe in the handler).
+void quitOnSignals(QCoreApplication &app)
+{
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, signalPipe) != 0)
+        return;
+    auto *notifier = new QSocketNotifier(signalPipe[0], QSocketNotifier::Read, &app);
+    QObject::connect(notifier, &QSocketNotifier::activated, &app, &QCoreApplication::quit);
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("drivebench-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "sim", "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
+               "(RefGo door)"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption refgoPort(
+        QStringLiteral("refgo-port"),
+        QCoreApplication::translate("sim", "Serve RefGo on this TCP port (0 = chosen by the OS)."),
+        QStringLiteral("port"));
+    const QCommandLineOption set(
+        QStringLiteral("set"),
+        QCoreApplication::translate("sim", "Preset an object before serving, e.g. 3511:8=110 "
+                                           "(repeatable)."),
+        QStringLiteral("INDEX:SUB=VALUE"));
+    parser.addOptions({refgoPort, set});
+    parser.addPositionalArgument(QStringLiteral("device"),
+                                 QCoreApplication::translate("sim", "Which device: movingcap."));
+    parser.process(app);
+
+    const QStringList args = parser.positionalArguments();
+    if (args.size() != 1 || args.first() != QLatin1String("movingcap")) {
+        err << "drivebench-sim: give the device to simulate: drivebench-sim movingcap "
+               "--refgo-port PORT"
+            << Qt::endl;
+        return 2;
+    }
+    if (!parser.isSet(refgoPort)) {
+        err << "drivebench-sim: no door to serve; give --refgo-port PORT (0 = any free port)"
+            << Qt::endl;
+        return 2;
+    }
+    bool ok = false;
+    const uint port = parser.value(refgoPort).toUInt(&ok);
+    if (!ok || port > 65535) {
+        err << "drivebench-sim: --refgo-port takes a port number 0..65535" << Qt::endl;
+        return 2;
+    }
+
+    app::DemoDrive demo;
+    for (const QString &assignment : parser.values(set)) {
+        const qsizetype eq = assignment.indexOf(QLatin1Char('='));
+        const auto address = ObjectAddress::parse(assignment.left(eq));
+        if (eq < 0 || !address) {
+            err << "drivebench-sim: --set takes INDEX:SUB=VALUE, not '" << assignment << "'"
+                << Qt::endl;
+            return 2;
+        }
+        const auto written = demo.drive().presetText(*address, assignment.mid(eq + 1));
+        if (!written) {
+            err << "drivebench-sim: --set " << assignment << ": " << written.error().toString()
+                << Qt::endl;
+            return 2;
+        }
+    }
+    if (auto listening = demo.startRefgo(quint16(port)); !listening) {
+        err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
+        return 3;
+    }
+    out << "movingcap: RefGo listening on 127.0.0.1:" << demo.refgoPort() << " (" << demo.refgoUri()
+        << ")" << Qt::endl;
+    quitOnSignals(app);
+    return app.exec();
+}

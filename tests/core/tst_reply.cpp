@@ -1,0 +1,82 @@
+// The Reply contract: finishes exactly once, finished() from the event loop, never twice.
+#include "core/reply.h"
+
+#include <QSignalSpy>
+#include <QTimer>
+#include <QTest>
+
+using namespace db;
+
+class TestReply : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void finishesExactlyOnce();
+    void failAfterFinishIsIgnored();
+    void finishedComesFromTheEventLoop();
+    void immediateFailureStillSignals();
+    void waitReturnsTheResult();
+    void waitReportsPendingAsTimeout();
+};
+
+void TestReply::finishesExactlyOnce()
+{
+    Reply reply(ObjectAddress(0x6041, 0));
+    QSignalSpy spy(&reply, &Reply::finished);
+    QVERIFY(reply.finish(QVariant::fromValue(0x427ULL)));
+    QVERIFY(!reply.finish(QVariant::fromValue(1ULL)));
+    QVERIFY(spy.wait(1000));
+    QTest::qWait(20); // would catch a second emission
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(reply.value().toULongLong(), 0x427ULL);
+    QVERIFY(reply.ok());
+}
+
+void TestReply::failAfterFinishIsIgnored()
+{
+    Reply reply;
+    reply.finish(42);
+    QVERIFY(!reply.fail(Error(Error::Kind::Timeout, QStringLiteral("late"))));
+    QVERIFY(reply.ok());
+    QCOMPARE(reply.error().kind(), Error::Kind::None);
+}
+
+void TestReply::finishedComesFromTheEventLoop()
+{
+    Reply reply;
+    bool emittedInside = false;
+    connect(&reply, &Reply::finished, this, [&] { emittedInside = true; });
+    reply.fail(Error(Error::Kind::Timeout, QStringLiteral("no answer")));
+    QVERIFY(!emittedInside);
+    QTRY_VERIFY(emittedInside);
+    QCOMPARE(reply.error().kind(), Error::Kind::Timeout);
+}
+
+void TestReply::immediateFailureStillSignals()
+{
+    Reply *reply = Reply::failed(ObjectAddress(1, 2), Error(Error::Kind::Disconnected,
+                                                          QStringLiteral("not connected")));
+    QSignalSpy spy(reply, &Reply::finished);
+    QVERIFY(spy.wait(1000));
+    QCOMPARE(reply->address(), ObjectAddress(1, 2));
+    delete reply;
+}
+
+void TestReply::waitReturnsTheResult()
+{
+    auto *reply = new Reply;
+    QTimer::singleShot(10, reply, [reply] { reply->finish(QStringLiteral("ok")); });
+    const auto result = Reply::wait(reply);
+    QVERIFY(result.ok());
+    QCOMPARE(result.value().toString(), QStringLiteral("ok"));
+}
+
+void TestReply::waitReportsPendingAsTimeout()
+{
+    auto *reply = new Reply;
+    const auto result = Reply::wait(reply, 30);
+    QCOMPARE(result.error().kind(), Error::Kind::Timeout);
+}
+
+QTEST_GUILESS_MAIN(TestReply)
+#include "tst_reply.moc"

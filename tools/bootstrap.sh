@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine (run as root, or as a user with sudo):
+#   bash tools/bootstrap.sh demo   install dependencies, build, start `drivebench --demo`
+#   bash tools/bootstrap.sh test   install dependencies, build, run the whole test suite (ctest)
+#   bash tools/bootstrap.sh build  install dependencies and build only
+# Environment: BUILD_DIR (default: build), CI=true turns warnings into errors.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=${1:-}
+case "$mode" in
+demo | test | build) ;;
+*)
+    echo "usage: bash tools/bootstrap.sh demo|test|build" >&2
+    exit 2
+    ;;
+esac
+
+# Everything the build, the tests and the demo need, from Debian 12's own archive.
+packages=(
+    cmake ninja-build g++ pkg-config
+    qt6-base-dev qt6-serialbus-dev libqt6serialbus6 qt6-l10n-tools
+    libqcustomplot-dev libeigen3-dev
+    fonts-dejavu-core xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    echo "installing: ${missing[*]}"
+    $sudo apt-get update -q
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}"
+fi
+
+build_dir=${BUILD_DIR:-build}
+werror=OFF
+[ "${CI:-}" = "true" ] && werror=ON
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEBENCH_WERROR="$werror"
+cmake --build "$build_dir" --parallel "$(nproc)"
+
+case "$mode" in
+demo)
+    if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+        echo "no display found: starting the demo under xvfb-run (invisible)" >&2
+        exec xvfb-run -a "$build_dir/app/drivebench" --demo
+    fi
+    exec "$build_dir/app/drivebench" --demo
+    ;;
+test)
+    cd "$build_dir"
+    QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" --timeout 300
+    ;;
+build) ;;
+esac
