@@ -12,7 +12,8 @@ Result<ObjectDictionary> builtinDescription(const QString &name)
 QStringList builtinDescriptionNames()
 {
     QStringList names;
-    for (const QString &file : QDir(QStringLiteral(":/devices")).entryList({QStringLiteral("*.json")}))
+    for (const QString &file :
+         QDir(QStringLiteral(":/devices")).entryList({ QStringLiteral("*.json") }))
         names.append(file.chopped(5));
     return names;
 }

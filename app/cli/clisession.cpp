@@ -8,25 +8,32 @@ namespace db::cli {
 int exitCodeFor(const Error &error)
 {
     switch (error.kind()) {
-    case Error::Kind::None: return ExitOk;
+    case Error::Kind::None:
+        return ExitOk;
     case Error::Kind::InvalidArgument:
     case Error::Kind::OutOfRange:
-    case Error::Kind::AccessDenied: return ExitUsage;
+    case Error::Kind::AccessDenied:
+        return ExitUsage;
     case Error::Kind::ConnectionRefused:
     case Error::Kind::HostNotFound:
-    case Error::Kind::Disconnected: return ExitConnection;
-    case Error::Kind::Timeout: return ExitTimeout;
-    case Error::Kind::Malformed: return ExitMalformed;
+    case Error::Kind::Disconnected:
+        return ExitConnection;
+    case Error::Kind::Timeout:
+        return ExitTimeout;
+    case Error::Kind::Malformed:
+        return ExitMalformed;
     case Error::Kind::DeviceError:
-    case Error::Kind::NotSupported: return ExitDeviceError;
-    default: return ExitFailure;
+    case Error::Kind::NotSupported:
+        return ExitDeviceError;
+    default:
+        return ExitFailure;
     }
 }
 
 Session::Session(const ProtocolRegistry &registry, const Options &options)
     : m_registry(registry)
     , m_options(options)
-{}
+{ }
 
 Session::~Session()
 {
@@ -70,13 +77,14 @@ Result<void> Session::open(const QString &uriText)
     if (m_connection->isConnected())
         return {};
     if (timedOut)
-        return Error(Error::Kind::Timeout, QStringLiteral("no connection to %1 within %2 ms")
-                                               .arg(m_connection->uri().toString())
-                                               .arg(m_options.connectTimeoutMs));
+        return Error(Error::Kind::Timeout,
+                     QStringLiteral("no connection to %1 within %2 ms")
+                         .arg(m_connection->uri().toString())
+                         .arg(m_options.connectTimeoutMs));
     return m_connection->lastError().isError()
-               ? m_connection->lastError()
-               : Error(Error::Kind::Disconnected, QStringLiteral("cannot connect to %1")
-                                                      .arg(m_connection->uri().toString()));
+        ? m_connection->lastError()
+        : Error(Error::Kind::Disconnected,
+                QStringLiteral("cannot connect to %1").arg(m_connection->uri().toString()));
 }
 
 Result<QVariant> Session::read(ObjectAddress address)

@@ -12,11 +12,11 @@ namespace db::cli {
 // Exit codes of drivebench-cli (README "CLI"): scripts can tell the causes apart.
 enum ExitCode {
     ExitOk = 0,
-    ExitFailure = 1,     // anything not listed below
-    ExitUsage = 2,       // bad arguments, unknown command, invalid URI/address/value
-    ExitConnection = 3,  // refused, host not found, link lost
-    ExitTimeout = 4,     // no answer within the time limit
-    ExitMalformed = 5,   // the device's answer breaks the protocol
+    ExitFailure = 1, // anything not listed below
+    ExitUsage = 2, // bad arguments, unknown command, invalid URI/address/value
+    ExitConnection = 3, // refused, host not found, link lost
+    ExitTimeout = 4, // no answer within the time limit
+    ExitMalformed = 5, // the device's answer breaks the protocol
     ExitDeviceError = 6, // the device refused the request
 };
 

@@ -39,9 +39,9 @@ Result<DataType> typeFor(Context &c, const ObjectDef *def)
         return DataType::Integer64;
     const auto t = datatype::fromName(c.type);
     if (!t)
-        return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("unknown type '%1' (e.g. u16, i32, UNSIGNED8, REAL32)")
-                         .arg(c.type));
+        return Error(
+            Error::Kind::InvalidArgument,
+            QStringLiteral("unknown type '%1' (e.g. u16, i32, UNSIGNED8, REAL32)").arg(c.type));
     return *t;
 }
 
@@ -67,8 +67,8 @@ int read(Context &c)
         if (converted)
             raw = converted.value();
     }
-    const QString text = datatype::isNumeric(*type) || def ? codec::toText(*type, raw, format)
-                                                           : raw.toString();
+    const QString text =
+        datatype::isNumeric(*type) || def ? codec::toText(*type, raw, format) : raw.toString();
     if (c.options.verbose) {
         c.out << addr->toString() << ' ' << (def ? def->name : QStringLiteral("(unknown object)"))
               << " = " << (def ? def->displayText(raw, format) : text) << Qt::endl;
@@ -94,7 +94,8 @@ int write(Context &c)
     if (!raw)
         return fail(c, raw.error());
     if (auto written = session.write(*addr, raw.value()); !written)
-        return fail(c, written.error().prefixed(QStringLiteral("writing %1").arg(addr->toString())));
+        return fail(c,
+                    written.error().prefixed(QStringLiteral("writing %1").arg(addr->toString())));
     if (c.options.verbose)
         c.out << addr->toString() << " <- " << codec::toText(*type, raw.value()) << " ok"
               << Qt::endl;
@@ -108,9 +109,10 @@ int refgo(Context &c)
         return fail(c, opened.error());
     auto *conn = qobject_cast<refgo::RefgoConnection *>(session.connection());
     if (!conn)
-        return fail(c, Error(Error::Kind::InvalidArgument,
-                             QStringLiteral("'refgo' needs a refgo:// URI, not %1")
-                                 .arg(session.connection()->uri().scheme())));
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("'refgo' needs a refgo:// URI, not %1")
+                              .arg(session.connection()->uri().scheme())));
     const auto result = Reply::wait(conn->command(c.args.at(1)));
     if (!result)
         return fail(c, result.error());
@@ -124,13 +126,13 @@ int refgo(Context &c)
 const QList<Command> &commands()
 {
     static const QList<Command> list = {
-        {"list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols},
-        {"read", "URI INDEX:SUB", "read one object, e.g. read refgo://192.168.2.150 6041:0", 2, 2,
-         read},
-        {"write", "URI INDEX:SUB VALUE", "write one object, e.g. write refgo://HOST 6083:0 2000",
-         3, 3, write},
-        {"refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
-         2, refgo},
+        { "list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols },
+        { "read", "URI INDEX:SUB", "read one object, e.g. read refgo://192.168.2.150 6041:0", 2, 2,
+          read },
+        { "write", "URI INDEX:SUB VALUE", "write one object, e.g. write refgo://HOST 6083:0 2000",
+          3, 3, write },
+        { "refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
+          2, refgo },
     };
     return list;
 }

@@ -4,6 +4,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QLoggingCategory>
 
 using namespace db;
 
@@ -18,19 +19,20 @@ int main(int argc, char *argv[])
     QString description = QCoreApplication::translate(
         "cli", "drivebench command line: read and write drive objects from scripts.\n\nCommands:");
     for (const cli::Command &c : cli::commands())
-        description += QStringLiteral("\n  %1 %2\n      %3")
-                           .arg(QLatin1String(c.name), QLatin1String(c.synopsis),
-                                QLatin1String(c.summary));
+        description +=
+            QStringLiteral("\n  %1 %2\n      %3")
+                .arg(QLatin1String(c.name), QLatin1String(c.synopsis), QLatin1String(c.summary));
     description += QCoreApplication::translate(
-        "cli", "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
-               "answer, 6 device error.");
+        "cli",
+        "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
+        "answer, 6 device error.");
 
     QCommandLineParser parser;
     parser.setApplicationDescription(description);
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption timeout(
-        {QStringLiteral("t"), QStringLiteral("timeout")},
+        { QStringLiteral("t"), QStringLiteral("timeout") },
         QCoreApplication::translate("cli", "Time limit per request in ms (default 1000)."),
         QStringLiteral("ms"), QStringLiteral("1000"));
     const QCommandLineOption connectTimeout(
@@ -41,12 +43,14 @@ int main(int argc, char *argv[])
                                  QCoreApplication::translate("cli", "Print integers in hex."));
     const QCommandLineOption type(
         QStringLiteral("type"),
-        QCoreApplication::translate("cli", "Data type of an object the device description does "
-                                           "not know (u8, i16, u32, REAL32, ...)."),
+        QCoreApplication::translate("cli",
+                                    "Data type of an object the device description does "
+                                    "not know (u8, i16, u32, REAL32, ...)."),
         QStringLiteral("type"));
-    const QCommandLineOption verbose({QStringLiteral("v"), QStringLiteral("verbose")},
-                                     QCoreApplication::translate("cli", "Name what is printed."));
-    parser.addOptions({timeout, connectTimeout, hex, type, verbose});
+    const QCommandLineOption verbose(
+        QStringLiteral("verbose"),
+        QCoreApplication::translate("cli", "Name what is printed and log the traffic on stderr."));
+    parser.addOptions({ timeout, connectTimeout, hex, type, verbose });
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
     parser.process(app);
@@ -68,8 +72,8 @@ int main(int argc, char *argv[])
         return cli::ExitUsage;
     }
     if (args.size() < command->minArgs || args.size() > command->maxArgs) {
-        err << "drivebench-cli: usage: drivebench-cli " << command->name << ' '
-            << command->synopsis << Qt::endl;
+        err << "drivebench-cli: usage: drivebench-cli " << command->name << ' ' << command->synopsis
+            << Qt::endl;
         return cli::ExitUsage;
     }
     bool ok1 = false;
@@ -84,6 +88,10 @@ int main(int argc, char *argv[])
     }
     options.hex = parser.isSet(hex);
     options.verbose = parser.isSet(verbose);
-    cli::Context context{app::protocolRegistry(), options, args, out, err, parser.value(type)};
+    // Errors reach the user as one line from the command itself; the libraries' log lines only
+    // with --verbose (QT_LOGGING_RULES still overrides this).
+    QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("drivebench.*.debug=false")
+                                                     : QStringLiteral("drivebench.*=false"));
+    cli::Context context { app::protocolRegistry(), options, args, out, err, parser.value(type) };
     return command->run(context);
 }

@@ -7,16 +7,28 @@
 
 namespace db::app {
 
+namespace {
+sim::MovingCapOptions options(const QHash<ObjectAddress, QVariant> &initialValues)
+{
+    sim::MovingCapOptions o;
+    o.initialValues = initialValues;
+    return o;
+}
+} // namespace
+
 struct DemoDrive::Private
 {
-    sim::MovingCapDrive drive{resources::movingCapDictionary()};
-    refgo::MovingCapRefgoHandler handler{&drive};
-    refgo::Server refgoServer{&handler};
+    explicit Private(const QHash<ObjectAddress, QVariant> &initialValues)
+        : drive(resources::movingCapDictionary(), options(initialValues))
+    { }
+    sim::MovingCapDrive drive;
+    refgo::MovingCapRefgoHandler handler { &drive };
+    refgo::Server refgoServer { &handler };
 };
 
-DemoDrive::DemoDrive(QObject *parent)
+DemoDrive::DemoDrive(const QHash<ObjectAddress, QVariant> &initialValues, QObject *parent)
     : QObject(parent)
-    , d(std::make_unique<Private>())
+    , d(std::make_unique<Private>(initialValues))
 {
     d->drive.startRealTime();
 }

@@ -1,8 +1,11 @@
 #pragma once
 
+#include "core/objectaddress.h"
 #include "core/result.h"
 
+#include <QHash>
 #include <QObject>
+#include <QVariant>
 
 #include <memory>
 
@@ -18,7 +21,9 @@ class DemoDrive : public QObject
 {
     Q_OBJECT
 public:
-    explicit DemoDrive(QObject *parent = nullptr);
+    // initialValues: raw values that differ from the simulator's factory settings.
+    explicit DemoDrive(const QHash<ObjectAddress, QVariant> &initialValues = {},
+                       QObject *parent = nullptr);
     ~DemoDrive() override;
 
     // Listens on 127.0.0.1:port (0 = chosen by the OS).

@@ -2,7 +2,7 @@
 //   drivebench-sim movingcap --refgo-port PORT [--set INDEX:SUB=VALUE ...]
 #include "../common/demodrive.h"
 #include "core/objectaddress.h"
-#include "simulation/movingcapdrive.h"
+#include "resources/builtindescriptions.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -17,7 +17,7 @@ using namespace db;
 
 namespace {
 
-int signalPipe[2] = {-1, -1};
+int signalPipe[2] = { -1, -1 };
 
 void onSignal(int)
 {
@@ -48,8 +48,9 @@ int main(int argc, char *argv[])
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
-        "sim", "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
-               "(RefGo door)"));
+        "sim",
+        "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
+        "(RefGo door)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -58,10 +59,11 @@ int main(int argc, char *argv[])
         QStringLiteral("port"));
     const QCommandLineOption set(
         QStringLiteral("set"),
-        QCoreApplication::translate("sim", "Preset an object before serving, e.g. 3511:8=110 "
-                                           "(repeatable)."),
+        QCoreApplication::translate("sim",
+                                    "Preset an object before serving, e.g. 3511:8=110 "
+                                    "(repeatable)."),
         QStringLiteral("INDEX:SUB=VALUE"));
-    parser.addOptions({refgoPort, set});
+    parser.addOptions({ refgoPort, set });
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
@@ -85,7 +87,7 @@ int main(int argc, char *argv[])
         return 2;
     }
 
-    app::DemoDrive demo;
+    QHash<ObjectAddress, QVariant> presets;
     for (const QString &assignment : parser.values(set)) {
         const qsizetype eq = assignment.indexOf(QLatin1Char('='));
         const auto address = ObjectAddress::parse(assignment.left(eq));
@@ -94,13 +96,20 @@ int main(int argc, char *argv[])
                 << Qt::endl;
             return 2;
         }
-        const auto written = demo.drive().presetText(*address, assignment.mid(eq + 1));
-        if (!written) {
-            err << "drivebench-sim: --set " << assignment << ": " << written.error().toString()
+        const ObjectDef *def = resources::movingCapDictionary().find(*address);
+        const auto raw = def
+            ? def->parseText(assignment.mid(eq + 1))
+            : Result<QVariant>(
+                Error(Error::Kind::InvalidArgument,
+                      QStringLiteral("the MovingCap has no object %1").arg(address->toString())));
+        if (!raw) {
+            err << "drivebench-sim: --set " << assignment << ": " << raw.error().toString()
                 << Qt::endl;
             return 2;
         }
+        presets.insert(*address, raw.value());
     }
+    app::DemoDrive demo(presets);
     if (auto listening = demo.startRefgo(quint16(port)); !listening) {
         err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
         return 3;

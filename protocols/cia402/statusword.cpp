@@ -32,15 +32,24 @@ State decodeState(quint16 statusword)
 QString stateName(State state)
 {
     switch (state) {
-    case State::NotReadyToSwitchOn: return QObject::tr("Not ready to switch on");
-    case State::SwitchOnDisabled: return QObject::tr("Switch on disabled");
-    case State::ReadyToSwitchOn: return QObject::tr("Ready to switch on");
-    case State::SwitchedOn: return QObject::tr("Switched on");
-    case State::OperationEnabled: return QObject::tr("Operation enabled");
-    case State::QuickStopActive: return QObject::tr("Quick stop active");
-    case State::FaultReactionActive: return QObject::tr("Fault reaction active");
-    case State::Fault: return QObject::tr("Fault");
-    case State::Unknown: break;
+    case State::NotReadyToSwitchOn:
+        return QObject::tr("Not ready to switch on");
+    case State::SwitchOnDisabled:
+        return QObject::tr("Switch on disabled");
+    case State::ReadyToSwitchOn:
+        return QObject::tr("Ready to switch on");
+    case State::SwitchedOn:
+        return QObject::tr("Switched on");
+    case State::OperationEnabled:
+        return QObject::tr("Operation enabled");
+    case State::QuickStopActive:
+        return QObject::tr("Quick stop active");
+    case State::FaultReactionActive:
+        return QObject::tr("Fault reaction active");
+    case State::Fault:
+        return QObject::tr("Fault");
+    case State::Unknown:
+        break;
     }
     return QObject::tr("Unknown state");
 }
@@ -53,11 +62,11 @@ Command decodeCommand(quint16 controlword)
     if ((low & 0x0002) == 0)
         return Command::DisableVoltage; // xxxx xx0x
     if ((low & 0x0006) == 0x0002)
-        return Command::QuickStop;      // xxxx x01x
+        return Command::QuickStop; // xxxx x01x
     if ((low & 0x0007) == 0x0006)
-        return Command::Shutdown;       // xxxx x110
+        return Command::Shutdown; // xxxx x110
     if (low == 0x0007)
-        return Command::SwitchOn;       // also Disable operation (same pattern, by state)
+        return Command::SwitchOn; // also Disable operation (same pattern, by state)
     if (low == 0x000F)
         return Command::EnableOperation; // also switch on + enable operation from RTSO
     return Command::None;
@@ -66,19 +75,31 @@ Command decodeCommand(quint16 controlword)
 QString modeName(int mode)
 {
     switch (mode) {
-    case 0: return QObject::tr("No mode");
-    case 1: return QObject::tr("Profile position");
-    case 2: return QObject::tr("Velocity");
-    case 3: return QObject::tr("Profile velocity");
-    case 4: return QObject::tr("Profile torque");
-    case 6: return QObject::tr("Homing");
-    case 7: return QObject::tr("Interpolated position");
-    case 8: return QObject::tr("Cyclic sync position");
-    case 9: return QObject::tr("Cyclic sync velocity");
-    case 10: return QObject::tr("Cyclic sync torque");
-    default: break;
+    case 0:
+        return QObject::tr("No mode");
+    case 1:
+        return QObject::tr("Profile position");
+    case 2:
+        return QObject::tr("Velocity");
+    case 3:
+        return QObject::tr("Profile velocity");
+    case 4:
+        return QObject::tr("Profile torque");
+    case 6:
+        return QObject::tr("Homing");
+    case 7:
+        return QObject::tr("Interpolated position");
+    case 8:
+        return QObject::tr("Cyclic sync position");
+    case 9:
+        return QObject::tr("Cyclic sync velocity");
+    case 10:
+        return QObject::tr("Cyclic sync torque");
+    default:
+        break;
     }
-    return mode < 0 ? QObject::tr("Manufacturer mode %1").arg(mode) : QObject::tr("Mode %1").arg(mode);
+    return mode < 0 ? QObject::tr("Manufacturer mode %1").arg(mode)
+                    : QObject::tr("Mode %1").arg(mode);
 }
 
 } // namespace db::cia402

@@ -32,7 +32,7 @@ constexpr quint16 Remote = 0x0200;
 constexpr quint16 TargetReached = 0x0400;
 constexpr quint16 InternalLimitActive = 0x0800;
 constexpr quint16 SetPointAcknowledge = 0x1000; // PP; homing: attained
-constexpr quint16 FollowingError = 0x2000;      // PP; homing: error
+constexpr quint16 FollowingError = 0x2000; // PP; homing: error
 } // namespace sw
 
 // Controlword 6040h values and bits (movingcap.md 5.1, 5.2).
@@ -41,7 +41,7 @@ constexpr quint16 SwitchOn = 0x0001;
 constexpr quint16 EnableVoltage = 0x0002;
 constexpr quint16 QuickStopBit = 0x0004; // active-low
 constexpr quint16 EnableOperation = 0x0008;
-constexpr quint16 NewSetPoint = 0x0010;    // PP; homing: start
+constexpr quint16 NewSetPoint = 0x0010; // PP; homing: start
 constexpr quint16 ChangeImmediately = 0x0020;
 constexpr quint16 Relative = 0x0040;
 constexpr quint16 FaultReset = 0x0080;

@@ -46,13 +46,12 @@ Result<int> ConnectionUri::queryInt(const QString &key, int min, int max) const
     const QString text = m_query.value(key);
     bool ok = false;
     const int value = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
-                          ? text.mid(2).toInt(&ok, 16)
-                          : text.toInt(&ok, 10);
+        ? text.mid(2).toInt(&ok, 16)
+        : text.toInt(&ok, 10);
     if (!ok || value < min || value > max) {
         return Error(Error::Kind::InvalidArgument,
                      QStringLiteral("%1=%2 in %3: expected a number from %4 to %5")
-                         .arg(key, text.isEmpty() ? QStringLiteral("(missing)") : text,
-                              toString())
+                         .arg(key, text.isEmpty() ? QStringLiteral("(missing)") : text, toString())
                          .arg(min)
                          .arg(max));
     }

@@ -7,7 +7,8 @@
 
 namespace db {
 
-// CiA 301 basic data types, numbered as in CiA 301 table 44 (object dictionary indices 0001h-001Bh).
+// CiA 301 basic data types, numbered as in CiA 301 table 44 (object dictionary indices
+// 0001h-001Bh).
 enum class DataType : quint16 {
     Boolean = 0x01,
     Integer8 = 0x02,
@@ -43,7 +44,10 @@ const QList<DataType> &all();
 int byteSize(DataType type);
 bool isSignedInteger(DataType type);
 bool isUnsignedInteger(DataType type);
-inline bool isInteger(DataType type) { return isSignedInteger(type) || isUnsignedInteger(type); }
+inline bool isInteger(DataType type)
+{
+    return isSignedInteger(type) || isUnsignedInteger(type);
+}
 bool isReal(DataType type);
 bool isNumeric(DataType type); // integer, real or boolean
 bool isVariableLength(DataType type);

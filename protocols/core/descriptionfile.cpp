@@ -32,7 +32,7 @@ bool toUInt(const QJsonValue &v, quint32 *out)
     bool ok = false;
     const QString s = v.toString().trimmed();
     *out = s.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? s.mid(2).toUInt(&ok, 16)
-                                                                   : s.toUInt(&ok, 10);
+                                                                  : s.toUInt(&ok, 10);
     return ok;
 }
 
@@ -64,10 +64,11 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (doc.isNull())
-        return Error(Error::Kind::Malformed, QStringLiteral("%1: JSON error at offset %2: %3")
-                                                 .arg(origin)
-                                                 .arg(parseError.offset)
-                                                 .arg(parseError.errorString()));
+        return Error(Error::Kind::Malformed,
+                     QStringLiteral("%1: JSON error at offset %2: %3")
+                         .arg(origin)
+                         .arg(parseError.offset)
+                         .arg(parseError.errorString()));
     const QJsonObject root = doc.object();
     if (root.value(QLatin1String("format")).toString()
         != QLatin1String("drivebench-device-description"))
@@ -108,11 +109,11 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
         def.objectName = o.value(QLatin1String("object")).toString();
         const auto type = datatype::fromName(o.value(QLatin1String("type")).toString());
         if (!type)
-            return fail(QStringLiteral("unknown type '%1'")
-                            .arg(o.value(QLatin1String("type")).toString()));
+            return fail(
+                QStringLiteral("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
         def.type = *type;
-        const auto acc = access::fromName(o.value(QLatin1String("access")).toString(
-            QStringLiteral("rw")));
+        const auto acc =
+            access::fromName(o.value(QLatin1String("access")).toString(QStringLiteral("rw")));
         if (!acc)
             return fail(QStringLiteral("unknown access '%1'")
                             .arg(o.value(QLatin1String("access")).toString()));
@@ -120,13 +121,13 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
         def.unit = o.value(QLatin1String("unit")).toString();
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);
         def.offset = o.value(QLatin1String("offset")).toDouble(0.0);
-        for (const char *key : {"default", "min", "max"}) {
+        for (const char *key : { "default", "min", "max" }) {
             auto v = rawValue(def.type, o.value(QLatin1String(key)));
             if (!v)
                 return fail(QStringLiteral("%1: %2").arg(QLatin1String(key), v.error().message()));
             QVariant &target = key[0] == 'd' ? def.defaultValue
-                               : key[1] == 'i' ? def.minimum
-                                               : def.maximum;
+                : key[1] == 'i'              ? def.minimum
+                                             : def.maximum;
             target = v.value();
         }
         const QJsonObject enums = o.value(QLatin1String("enum")).toObject();
@@ -134,9 +135,9 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
             def.enumeration.insert(it.key().toLongLong(), it.value().toString());
         for (const QJsonValue &b : o.value(QLatin1String("bits")).toArray()) {
             const QJsonObject bo = b.toObject();
-            def.bitFields.append({bo.value(QLatin1String("bit")).toInt(),
-                                  bo.value(QLatin1String("width")).toInt(1),
-                                  bo.value(QLatin1String("name")).toString()});
+            def.bitFields.append({ bo.value(QLatin1String("bit")).toInt(),
+                                   bo.value(QLatin1String("width")).toInt(1),
+                                   bo.value(QLatin1String("name")).toString() });
         }
         def.storable = o.value(QLatin1String("storable")).toBool(false);
         def.pdoMappable = o.value(QLatin1String("pdo")).toBool(false);

@@ -28,7 +28,11 @@ void DeviceConnection::open()
 
 void DeviceConnection::close()
 {
-    if (m_state == State::Disconnected || m_state == State::Closing)
+    if (m_state == State::Disconnected) {
+        stopReconnecting();
+        return;
+    }
+    if (m_state == State::Closing)
         return;
     failPending(Error(Error::Kind::Cancelled, QStringLiteral("connection closed by the user")));
     setState(State::Closing);
@@ -38,14 +42,15 @@ void DeviceConnection::close()
 Reply *DeviceConnection::read(ObjectAddress address)
 {
     if (m_state != State::Connected)
-        return Reply::failed(address, Error(Error::Kind::Disconnected,
-                                            QStringLiteral("not connected to %1")
-                                                .arg(m_uri.toString())));
+        return Reply::failed(address,
+                             Error(Error::Kind::Disconnected,
+                                   QStringLiteral("not connected to %1").arg(m_uri.toString())));
     const ObjectDef *def = m_dictionary.find(address);
     if (def && !def->readable())
-        return Reply::failed(address, Error(Error::Kind::AccessDenied,
-                                            QStringLiteral("%1 %2 is write-only")
-                                                .arg(address.toString(), def->name)));
+        return Reply::failed(
+            address,
+            Error(Error::Kind::AccessDenied,
+                  QStringLiteral("%1 %2 is write-only").arg(address.toString(), def->name)));
     Reply *reply = track(new Reply(address));
     doRead(reply, def);
     return reply;
@@ -54,16 +59,17 @@ Reply *DeviceConnection::read(ObjectAddress address)
 Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
 {
     if (m_state != State::Connected)
-        return Reply::failed(address, Error(Error::Kind::Disconnected,
-                                            QStringLiteral("not connected to %1")
-                                                .arg(m_uri.toString())));
+        return Reply::failed(address,
+                             Error(Error::Kind::Disconnected,
+                                   QStringLiteral("not connected to %1").arg(m_uri.toString())));
     const ObjectDef *def = m_dictionary.find(address);
     QVariant value = raw;
     if (def) {
         if (!def->writable())
-            return Reply::failed(address, Error(Error::Kind::AccessDenied,
-                                                QStringLiteral("%1 %2 is read-only")
-                                                    .arg(address.toString(), def->name)));
+            return Reply::failed(
+                address,
+                Error(Error::Kind::AccessDenied,
+                      QStringLiteral("%1 %2 is read-only").arg(address.toString(), def->name)));
         auto checked = def->validate(raw);
         if (!checked)
             return Reply::failed(address, checked.error());
@@ -81,10 +87,10 @@ void DeviceConnection::setState(State state, const Error &error)
         qCWarning(lcCore).noquote() << m_uri.toString() << error.toString();
     }
     if (state == State::Disconnected)
-        failPending(error.isError() ? error
-                                    : Error(Error::Kind::Disconnected,
-                                            QStringLiteral("connection to %1 closed")
-                                                .arg(m_uri.toString())));
+        failPending(error.isError()
+                        ? error
+                        : Error(Error::Kind::Disconnected,
+                                QStringLiteral("connection to %1 closed").arg(m_uri.toString())));
     if (error.isError())
         Q_EMIT errorOccurred(error);
     if (state != m_state) {
@@ -112,10 +118,14 @@ void DeviceConnection::failPending(const Error &error)
 QString stateName(DeviceConnection::State state)
 {
     switch (state) {
-    case DeviceConnection::State::Disconnected: return QObject::tr("disconnected");
-    case DeviceConnection::State::Connecting: return QObject::tr("connecting");
-    case DeviceConnection::State::Connected: return QObject::tr("connected");
-    case DeviceConnection::State::Closing: return QObject::tr("closing");
+    case DeviceConnection::State::Disconnected:
+        return QObject::tr("disconnected");
+    case DeviceConnection::State::Connecting:
+        return QObject::tr("connecting");
+    case DeviceConnection::State::Connected:
+        return QObject::tr("connected");
+    case DeviceConnection::State::Closing:
+        return QObject::tr("closing");
     }
     return {};
 }

@@ -25,7 +25,7 @@ public:
     // Optional abilities beyond read/write.
     enum class Capability {
         StoreNonVolatile = 0x1, // parameters can be saved permanently (1010h)
-        RawCommands = 0x2,      // protocol commands as text (RefGo)
+        RawCommands = 0x2, // protocol commands as text (RefGo)
         Motion = 0x4,
         TraceSource = 0x8,
     };
@@ -47,6 +47,7 @@ public:
     // errorOccurred() when the attempt fails. Ignored unless Disconnected.
     void open();
     // Non-blocking: pending requests fail with Error::Kind::Cancelled; ends in Disconnected.
+    // Also stops an automatic reconnect that is waiting for its next attempt.
     void close();
 
     const ObjectDictionary &dictionary() const { return m_dictionary; }
@@ -77,6 +78,8 @@ protected:
     // def is null for objects the dictionary does not know.
     virtual void doRead(Reply *reply, const ObjectDef *def) = 0;
     virtual void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) = 0;
+    // close() while already Disconnected: drop any scheduled automatic reconnect.
+    virtual void stopReconnecting() { }
 
     // Subclasses report progress here. Entering Disconnected fails every pending reply with
     // `error` (or Disconnected/Cancelled) and emits errorOccurred() when error is set.

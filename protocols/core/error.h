@@ -12,18 +12,18 @@ class Error
 public:
     enum class Kind {
         None,
-        InvalidArgument,   // user input that cannot be used (bad address, value, URI)
-        OutOfRange,        // value outside the type's or the object's range
-        AccessDenied,      // read-only object written, write-only object read
-        NotSupported,      // the protocol or device cannot do this
+        InvalidArgument, // user input that cannot be used (bad address, value, URI)
+        OutOfRange, // value outside the type's or the object's range
+        AccessDenied, // read-only object written, write-only object read
+        NotSupported, // the protocol or device cannot do this
         ConnectionRefused, // nobody listens at the address
         HostNotFound,
-        Timeout,           // no answer within the request's time limit
-        Disconnected,      // the link went away while the request was pending
-        Malformed,         // the device's answer breaks the protocol (garbage, wrong echo)
-        DeviceError,       // the device answered with an error (SDO abort, missing ",OK")
+        Timeout, // no answer within the request's time limit
+        Disconnected, // the link went away while the request was pending
+        Malformed, // the device's answer breaks the protocol (garbage, wrong echo)
+        DeviceError, // the device answered with an error (SDO abort, missing ",OK")
         Cancelled,
-        Io,                // files and sockets
+        Io, // files and sockets
         Busy,
     };
 
@@ -32,7 +32,7 @@ public:
         : m_kind(kind)
         , m_message(std::move(message))
         , m_deviceCode(deviceCode)
-    {}
+    { }
 
     Kind kind() const { return m_kind; }
     bool isError() const { return m_kind != Kind::None; }

@@ -19,7 +19,7 @@ struct ObjectAddress
     constexpr ObjectAddress(quint16 i, quint8 s)
         : index(i)
         , sub(s)
-    {}
+    { }
 
     // "6041:0": index as 4 hex digits, sub-index in hex without padding (the CLI's form).
     QString toString() const;
@@ -29,8 +29,14 @@ struct ObjectAddress
     static Result<ObjectAddress> parse(const QString &text);
 
     constexpr quint32 key() const { return (quint32(index) << 8) | sub; }
-    friend constexpr bool operator==(ObjectAddress a, ObjectAddress b) { return a.key() == b.key(); }
-    friend constexpr auto operator<=>(ObjectAddress a, ObjectAddress b) { return a.key() <=> b.key(); }
+    friend constexpr bool operator==(ObjectAddress a, ObjectAddress b)
+    {
+        return a.key() == b.key();
+    }
+    friend constexpr auto operator<=>(ObjectAddress a, ObjectAddress b)
+    {
+        return a.key() <=> b.key();
+    }
 };
 
 inline size_t qHash(ObjectAddress a, size_t seed = 0)

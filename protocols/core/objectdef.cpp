@@ -5,10 +5,14 @@ namespace db {
 QString access::name(Access access)
 {
     switch (access) {
-    case Access::ReadOnly: return QStringLiteral("ro");
-    case Access::WriteOnly: return QStringLiteral("wo");
-    case Access::ReadWrite: return QStringLiteral("rw");
-    case Access::Const: return QStringLiteral("const");
+    case Access::ReadOnly:
+        return QStringLiteral("ro");
+    case Access::WriteOnly:
+        return QStringLiteral("wo");
+    case Access::ReadWrite:
+        return QStringLiteral("rw");
+    case Access::Const:
+        return QStringLiteral("const");
     }
     return QStringLiteral("rw");
 }

@@ -30,7 +30,7 @@ struct BitField
 struct ObjectDef
 {
     ObjectAddress address;
-    QString name;       // of this sub-index, e.g. "Statusword" or "Min position limit"
+    QString name; // of this sub-index, e.g. "Statusword" or "Min position limit"
     QString objectName; // of the whole object for records/arrays; empty when the same as name
     DataType type = DataType::Unsigned32;
     Access access = Access::ReadWrite;
@@ -42,9 +42,9 @@ struct ObjectDef
     QVariant maximum;
     QMap<qlonglong, QString> enumeration;
     QList<BitField> bitFields;
-    bool storable = false;    // part of a parameter set (saved by 1010h)
+    bool storable = false; // part of a parameter set (saved by 1010h)
     bool pdoMappable = false;
-    bool traceable = false;   // worth offering as a scope channel
+    bool traceable = false; // worth offering as a scope channel
     QString description;
 
     bool readable() const { return access != Access::WriteOnly; }

@@ -16,7 +16,7 @@ struct DeviceIdentity
     QString productName;
     quint32 productCode = 0;
     QString revision;
-    QString descriptionFile;    // path or resource the dictionary was loaded from
+    QString descriptionFile; // path or resource the dictionary was loaded from
     QString descriptionVersion; // version stated by that file
 };
 
@@ -50,8 +50,7 @@ public:
 
     // Our own JSON device description (resources/devices/*.json, format described there).
     static Result<ObjectDictionary> loadDescription(const QString &path);
-    static Result<ObjectDictionary> parseDescription(const QByteArray &json,
-                                                     const QString &origin);
+    static Result<ObjectDictionary> parseDescription(const QByteArray &json, const QString &origin);
 
 private:
     QMap<ObjectAddress, ObjectDef> m_objects;

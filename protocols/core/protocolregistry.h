@@ -11,9 +11,9 @@ namespace db {
 // What the registry knows of one URI scheme.
 struct ProtocolInfo
 {
-    QString scheme;     // URI scheme, e.g. "refgo", "canopen+slcan"
-    QString key;        // stable protocol key, e.g. "refgo", "canopen"
-    QString title;      // for people: "MovingCap RefGo (ASCII over TCP)"
+    QString scheme; // URI scheme, e.g. "refgo", "canopen+slcan"
+    QString key; // stable protocol key, e.g. "refgo", "canopen"
+    QString title; // for people: "MovingCap RefGo (ASCII over TCP)"
     QString uriPattern; // "refgo://HOST[:PORT]"
     int defaultPort = -1;
     // Makes an unopened connection for a checked URI (default port already applied).

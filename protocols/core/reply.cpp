@@ -9,7 +9,7 @@ namespace db {
 Reply::Reply(ObjectAddress address, QObject *parent)
     : QObject(parent)
     , m_address(address)
-{}
+{ }
 
 Result<QVariant> Reply::result() const
 {
@@ -42,7 +42,13 @@ bool Reply::fail(const Error &error)
 
 void Reply::scheduleFinished()
 {
-    QMetaObject::invokeMethod(this, &Reply::finished, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_delivered = true;
+            Q_EMIT finished();
+        },
+        Qt::QueuedConnection);
 }
 
 Reply *Reply::failed(ObjectAddress address, const Error &error)
@@ -57,17 +63,18 @@ Result<QVariant> Reply::wait(Reply *reply, int safetyMs)
     QPointer<Reply> guard(reply);
     // Even a finished reply has its finished() still queued: spin until it is delivered, so the
     // reply can be deleted with no queued call left pointing at it.
-    QEventLoop loop;
-    QObject::connect(reply, &Reply::finished, &loop, &QEventLoop::quit);
-    QTimer::singleShot(safetyMs, &loop, &QEventLoop::quit);
-    loop.exec();
+    if (!reply->m_delivered) {
+        QEventLoop loop;
+        QObject::connect(reply, &Reply::finished, &loop, &QEventLoop::quit);
+        QTimer::singleShot(safetyMs, &loop, &QEventLoop::quit);
+        loop.exec();
+    }
     if (!guard)
         return Error(Error::Kind::Cancelled, QStringLiteral("request was deleted"));
     Result<QVariant> result = reply->isFinished()
-                                  ? reply->result()
-                                  : Result<QVariant>(Error(Error::Kind::Timeout,
-                                                           QStringLiteral("no answer within %1 ms")
-                                                               .arg(safetyMs)));
+        ? reply->result()
+        : Result<QVariant>(
+            Error(Error::Kind::Timeout, QStringLiteral("no answer within %1 ms").arg(safetyMs)));
     reply->deleteLater();
     return result;
 }

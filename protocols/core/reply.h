@@ -52,6 +52,7 @@ private:
     QVariant m_value;
     Error m_error;
     bool m_finished = false;
+    bool m_delivered = false; // finished() has been emitted
 };
 
 } // namespace db

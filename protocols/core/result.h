@@ -14,10 +14,10 @@ class Result
 public:
     Result(T value)
         : m_data(std::in_place_index<0>, std::move(value))
-    {}
+    { }
     Result(Error error)
         : m_data(std::in_place_index<1>, std::move(error))
-    {}
+    { }
 
     bool ok() const { return m_data.index() == 0; }
     explicit operator bool() const { return ok(); }
@@ -43,7 +43,7 @@ public:
     Result() = default;
     Result(Error error)
         : m_error(std::move(error))
-    {}
+    { }
     bool ok() const { return !m_error.isError(); }
     explicit operator bool() const { return ok(); }
     Error error() const { return m_error; }

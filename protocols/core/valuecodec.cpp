@@ -181,8 +181,9 @@ Result<QVariant> normalize(DataType type, const QVariant &value)
     if (type == DataType::VisibleString) {
         const QString s = value.toString();
         for (QChar c : s) {
-            if (c.unicode() > 0x7E || (c.unicode() < 0x20 && c != QLatin1Char('\t')
-                                       && c != QLatin1Char('\n') && c != QLatin1Char('\r')))
+            if (c.unicode() > 0x7E
+                || (c.unicode() < 0x20 && c != QLatin1Char('\t') && c != QLatin1Char('\n')
+                    && c != QLatin1Char('\r')))
                 return Error(Error::Kind::InvalidArgument,
                              QStringLiteral("VISIBLE_STRING allows printable ASCII only; "
                                             "'%1' is not")
@@ -213,8 +214,8 @@ Result<QByteArray> encode(DataType type, const QVariant &raw)
     if (type == DataType::Boolean) {
         out[0] = v.toBool() ? 1 : 0;
     } else if (datatype::isInteger(type)) {
-        const quint64 bits = datatype::isSignedInteger(type) ? quint64(v.toLongLong())
-                                                             : v.toULongLong();
+        const quint64 bits =
+            datatype::isSignedInteger(type) ? quint64(v.toLongLong()) : v.toULongLong();
         for (int i = 0; i < size; ++i)
             p[i] = uchar(bits >> (8 * i));
     } else if (type == DataType::Real32) {
@@ -238,17 +239,18 @@ Result<QVariant> decode(DataType type, const QByteArray &bytes)
 {
     const int size = datatype::byteSize(type);
     if (size > 0 && bytes.size() != size) {
-        return Error(Error::Kind::Malformed, QStringLiteral("%1 needs %2 bytes, got %3")
-                                                 .arg(datatype::name(type))
-                                                 .arg(size)
-                                                 .arg(bytes.size()));
+        return Error(Error::Kind::Malformed,
+                     QStringLiteral("%1 needs %2 bytes, got %3")
+                         .arg(datatype::name(type))
+                         .arg(size)
+                         .arg(bytes.size()));
     }
     const auto *p = reinterpret_cast<const uchar *>(bytes.constData());
     if (type == DataType::Boolean) {
         if (p[0] > 1)
             return Error(Error::Kind::Malformed,
-                         QStringLiteral("BOOLEAN byte is 0x%1, not 0 or 1").arg(p[0], 2, 16,
-                                                                               QLatin1Char('0')));
+                         QStringLiteral("BOOLEAN byte is 0x%1, not 0 or 1")
+                             .arg(p[0], 2, 16, QLatin1Char('0')));
         return QVariant(p[0] == 1);
     }
     if (datatype::isInteger(type)) {
@@ -271,9 +273,9 @@ Result<QVariant> decode(DataType type, const QByteArray &bytes)
     }
     if (type == DataType::UnicodeString) {
         if (bytes.size() % 2 != 0)
-            return Error(Error::Kind::Malformed,
-                         QStringLiteral("UNICODE_STRING has an odd number of bytes (%1)")
-                             .arg(bytes.size()));
+            return Error(
+                Error::Kind::Malformed,
+                QStringLiteral("UNICODE_STRING has an odd number of bytes (%1)").arg(bytes.size()));
         QString s;
         s.reserve(bytes.size() / 2);
         for (qsizetype i = 0; i + 1 < bytes.size(); i += 2) {
@@ -357,12 +359,12 @@ QString toText(DataType type, const QVariant &raw, TextFormat format)
     if (datatype::isInteger(type)) {
         if (format == TextFormat::Hex) {
             const int size = datatype::byteSize(type);
-            quint64 bits = datatype::isSignedInteger(type) ? quint64(raw.toLongLong())
-                                                           : raw.toULongLong();
+            quint64 bits =
+                datatype::isSignedInteger(type) ? quint64(raw.toLongLong()) : raw.toULongLong();
             if (size < 8)
                 bits &= (quint64(1) << (size * 8)) - 1;
-            return QStringLiteral("0x") + QString::number(bits, 16).toUpper().rightJustified(
-                       size * 2, QLatin1Char('0'));
+            return QStringLiteral("0x")
+                + QString::number(bits, 16).toUpper().rightJustified(size * 2, QLatin1Char('0'));
         }
         return datatype::isSignedInteger(type) ? QString::number(raw.toLongLong())
                                                : QString::number(raw.toULongLong());

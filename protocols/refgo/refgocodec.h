@@ -16,22 +16,46 @@ namespace db::refgo {
 
 // Every command of movingcap.md 3.3.
 enum class Command {
-    G, GW, PO, WA, SM, PWC, CM, REF, PQ, OW, OR, TPSR, TS, TP, SP, AC, DE, ACV, JP, JN, RR, RW,
-    WT, SO, CO, TI,
+    G,
+    GW,
+    PO,
+    WA,
+    SM,
+    PWC,
+    CM,
+    REF,
+    PQ,
+    OW,
+    OR,
+    TPSR,
+    TS,
+    TP,
+    SP,
+    AC,
+    DE,
+    ACV,
+    JP,
+    JN,
+    RR,
+    RW,
+    WT,
+    SO,
+    CO,
+    TI,
 };
 
 enum class Parameter {
-    None,     // "SM"
+    None, // "SM"
     Optional, // "G" or "G10000", "JP" or "JP500"
     Required, // "SP500"
-    Object,   // OR/OW: "index,sub[,value|,h]"
+    Object, // OR/OW: "index,sub[,value|,h]"
 };
 
 enum class ResultKind {
-    None,        // echo + prompt only
-    Integer,     // one line, signed decimal (TP, TS, TI)
-    Hex32,       // one line, 8 hex digits (TPSR)
-    ObjectRead,  // "OR<index>,<sub>,<value>"
+    None, // echo + prompt only
+    Integer, // one line, signed decimal (TP, TS, TI)
+    Hex32, // one line, 8 hex digits (TPSR)
+    ObjectRead, // "OR<index>,<sub>,<value>"
     ObjectWrite, // "<request>,OK"
 };
 
@@ -61,11 +85,11 @@ QString formatWrite(ObjectAddress address, const QVariant &value);
 struct Request
 {
     Command command = Command::TP;
-    QString text;                    // the request line as received, without CR
-    std::optional<qint64> argument;  // numeric parameter of the simple commands
-    ObjectAddress address;           // OR/OW
-    QVariant value;                  // OW: qlonglong or qulonglong
-    bool hexOutput = false;          // OR: ",h" or "<sub>h"
+    QString text; // the request line as received, without CR
+    std::optional<qint64> argument; // numeric parameter of the simple commands
+    ObjectAddress address; // OR/OW
+    QVariant value; // OW: qlonglong or qulonglong
+    bool hexOutput = false; // OR: ",h" or "<sub>h"
 };
 
 // Parses one request line, tolerant as spec 3.2 and errata 15/16 ask: "OR 60FD,0",

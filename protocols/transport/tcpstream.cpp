@@ -15,9 +15,10 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
         m_socket.abort();
-        setClosed(Error(Error::Kind::Timeout, QStringLiteral("no TCP connection to %1 within %2 ms")
-                                                  .arg(peerName())
-                                                  .arg(m_connectTimeoutMs)));
+        setClosed(Error(Error::Kind::Timeout,
+                        QStringLiteral("no TCP connection to %1 within %2 ms")
+                            .arg(peerName())
+                            .arg(m_connectTimeoutMs)));
     });
     connect(&m_socket, &QTcpSocket::connected, this, &TcpStream::onConnected);
     connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpStream::onSocketError);
@@ -31,9 +32,8 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
 
 QString TcpStream::peerName() const
 {
-    return m_host.contains(QLatin1Char(':'))
-               ? QStringLiteral("[%1]:%2").arg(m_host).arg(m_port)
-               : QStringLiteral("%1:%2").arg(m_host).arg(m_port);
+    return m_host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]:%2").arg(m_host).arg(m_port)
+                                             : QStringLiteral("%1:%2").arg(m_host).arg(m_port);
 }
 
 void TcpStream::doOpen()
@@ -99,17 +99,16 @@ Error TcpStream::describe(QAbstractSocket::SocketError error) const
                      QStringLiteral("%1 refused the connection (nothing listens on that port)")
                          .arg(peerName()));
     case QAbstractSocket::HostNotFoundError:
-        return Error(Error::Kind::HostNotFound,
-                     QStringLiteral("host '%1' not found").arg(m_host));
+        return Error(Error::Kind::HostNotFound, QStringLiteral("host '%1' not found").arg(m_host));
     case QAbstractSocket::RemoteHostClosedError:
         return Error(Error::Kind::Disconnected,
                      QStringLiteral("%1 closed the connection").arg(peerName()));
     case QAbstractSocket::SocketTimeoutError:
         return Error(Error::Kind::Timeout, QStringLiteral("%1: socket timeout").arg(peerName()));
     case QAbstractSocket::NetworkError:
-        return Error(Error::Kind::Disconnected,
-                     QStringLiteral("%1: network error: %2").arg(peerName(),
-                                                                 m_socket.errorString()));
+        return Error(
+            Error::Kind::Disconnected,
+            QStringLiteral("%1: network error: %2").arg(peerName(), m_socket.errorString()));
     default:
         return Error(Error::Kind::Io,
                      QStringLiteral("%1: %2").arg(peerName(), m_socket.errorString()));

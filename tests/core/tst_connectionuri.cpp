@@ -13,25 +13,27 @@ public:
     QString protocolKey() const override { return QStringLiteral("null"); }
 
 protected:
-    void doOpen() override {}
-    void doClose() override {}
-    void doRead(Reply *, const ObjectDef *) override {}
-    void doWrite(Reply *, const QVariant &, const ObjectDef *) override {}
+    void doOpen() override { }
+    void doClose() override { }
+    void doRead(Reply *, const ObjectDef *) override { }
+    void doWrite(Reply *, const QVariant &, const ObjectDef *) override { }
 };
 
 ProtocolRegistry registry()
 {
     ProtocolRegistry r;
-    auto make = [](const ConnectionUri &uri) { return std::make_unique<NullConnection>(uri); };
-    r.add({QStringLiteral("refgo"), QStringLiteral("refgo"), QStringLiteral("RefGo"),
-           QStringLiteral("refgo://HOST[:PORT]"), 10001, make});
-    r.add({QStringLiteral("canopen+slcan"), QStringLiteral("canopen"), QStringLiteral("SLCAN"),
-           QStringLiteral("canopen+slcan://HOST[:PORT]?node=N"), 15001, make});
-    r.add({QStringLiteral("canopen+socketcan"), QStringLiteral("canopen"),
-           QStringLiteral("SocketCAN"), QStringLiteral("canopen+socketcan://IFACE?node=N"), -1,
-           make});
-    r.add({QStringLiteral("vabus"), QStringLiteral("vabus"), QStringLiteral("VABus"),
-           QStringLiteral("vabus://HOST[:PORT]"), 17220, make});
+    auto make = [](const ConnectionUri &uri) {
+        return std::make_unique<NullConnection>(uri);
+    };
+    r.add({ QStringLiteral("refgo"), QStringLiteral("refgo"), QStringLiteral("RefGo"),
+            QStringLiteral("refgo://HOST[:PORT]"), 10001, make });
+    r.add({ QStringLiteral("canopen+slcan"), QStringLiteral("canopen"), QStringLiteral("SLCAN"),
+            QStringLiteral("canopen+slcan://HOST[:PORT]?node=N"), 15001, make });
+    r.add({ QStringLiteral("canopen+socketcan"), QStringLiteral("canopen"),
+            QStringLiteral("SocketCAN"), QStringLiteral("canopen+socketcan://IFACE?node=N"), -1,
+            make });
+    r.add({ QStringLiteral("vabus"), QStringLiteral("vabus"), QStringLiteral("VABus"),
+            QStringLiteral("vabus://HOST[:PORT]"), 17220, make });
     return r;
 }
 
@@ -53,15 +55,20 @@ void TestConnectionUri::defaultPortsApply_data()
 {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("canonical");
-    QTest::newRow("refgo default") << "refgo://192.168.2.150" << "refgo://192.168.2.150:10001";
-    QTest::newRow("refgo port") << "refgo://127.0.0.1:4711" << "refgo://127.0.0.1:4711";
+    QTest::newRow("refgo default") << "refgo://192.168.2.150"
+                                   << "refgo://192.168.2.150:10001";
+    QTest::newRow("refgo port") << "refgo://127.0.0.1:4711"
+                                << "refgo://127.0.0.1:4711";
     QTest::newRow("slcan default") << "canopen+slcan://192.168.2.150?node=50"
                                    << "canopen+slcan://192.168.2.150:15001?node=50";
     QTest::newRow("socketcan") << "canopen+socketcan://can0?node=5&bitrate=500000"
                                << "canopen+socketcan://can0?bitrate=500000&node=5";
-    QTest::newRow("vabus default") << "vabus://10.0.0.1" << "vabus://10.0.0.1:17220";
-    QTest::newRow("upper-case scheme") << "REFGO://localhost" << "refgo://localhost:10001";
-    QTest::newRow("trailing slash") << "refgo://127.0.0.1/" << "refgo://127.0.0.1:10001";
+    QTest::newRow("vabus default") << "vabus://10.0.0.1"
+                                   << "vabus://10.0.0.1:17220";
+    QTest::newRow("upper-case scheme") << "REFGO://localhost"
+                                       << "refgo://localhost:10001";
+    QTest::newRow("trailing slash") << "refgo://127.0.0.1/"
+                                    << "refgo://127.0.0.1:10001";
 }
 
 void TestConnectionUri::defaultPortsApply()
@@ -77,11 +84,16 @@ void TestConnectionUri::refusesBadUris_data()
 {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("mentions");
-    QTest::newRow("no scheme") << "192.168.2.150" << "refgo://";
-    QTest::newRow("unknown scheme") << "modbus://1.2.3.4" << "unknown protocol 'modbus'";
-    QTest::newRow("no host") << "refgo://" << "no valid host";
-    QTest::newRow("bad port") << "refgo://1.2.3.4:99999" << "99999";
-    QTest::newRow("path") << "refgo://1.2.3.4/drive" << "path";
+    QTest::newRow("no scheme") << "192.168.2.150"
+                               << "refgo://";
+    QTest::newRow("unknown scheme") << "modbus://1.2.3.4"
+                                    << "unknown protocol 'modbus'";
+    QTest::newRow("no host") << "refgo://"
+                             << "no valid host";
+    QTest::newRow("bad port") << "refgo://1.2.3.4:99999"
+                              << "99999";
+    QTest::newRow("path") << "refgo://1.2.3.4/drive"
+                          << "path";
 }
 
 void TestConnectionUri::refusesBadUris()

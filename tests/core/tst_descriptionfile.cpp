@@ -73,8 +73,7 @@ void TestDescriptionFile::brokenFilesGiveClearErrors_data()
     QTest::newRow("not json") << QByteArray("{ nope") << "JSON error";
     QTest::newRow("foreign json") << QByteArray(R"({"hello":1})") << "not a drivebench";
     QTest::newRow("future version")
-        << QByteArray(R"({"format":"drivebench-device-description","version":7})")
-        << "version 7";
+        << QByteArray(R"({"format":"drivebench-device-description","version":7})") << "version 7";
     QTest::newRow("bad index") << head + R"("objects":[{"index":"0x1FFFF","sub":0,"type":"U8"}]})"
                                << "bad index";
     QTest::newRow("bad type") << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U9"}]})"

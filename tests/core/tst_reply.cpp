@@ -1,9 +1,10 @@
 // The Reply contract: finishes exactly once, finished() from the event loop, never twice.
 #include "core/reply.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
-#include <QTimer>
 #include <QTest>
+#include <QTimer>
 
 using namespace db;
 
@@ -17,6 +18,7 @@ private Q_SLOTS:
     void immediateFailureStillSignals();
     void waitReturnsTheResult();
     void waitReportsPendingAsTimeout();
+    void waitOnAnAlreadyDeliveredReplyReturnsAtOnce();
 };
 
 void TestReply::finishesExactlyOnce()
@@ -54,8 +56,8 @@ void TestReply::finishedComesFromTheEventLoop()
 
 void TestReply::immediateFailureStillSignals()
 {
-    Reply *reply = Reply::failed(ObjectAddress(1, 2), Error(Error::Kind::Disconnected,
-                                                          QStringLiteral("not connected")));
+    Reply *reply = Reply::failed(ObjectAddress(1, 2),
+                                 Error(Error::Kind::Disconnected, QStringLiteral("not connected")));
     QSignalSpy spy(reply, &Reply::finished);
     QVERIFY(spy.wait(1000));
     QCOMPARE(reply->address(), ObjectAddress(1, 2));
@@ -76,6 +78,18 @@ void TestReply::waitReportsPendingAsTimeout()
     auto *reply = new Reply;
     const auto result = Reply::wait(reply, 30);
     QCOMPARE(result.error().kind(), Error::Kind::Timeout);
+}
+
+void TestReply::waitOnAnAlreadyDeliveredReplyReturnsAtOnce()
+{
+    auto *reply = new Reply;
+    QSignalSpy spy(reply, &Reply::finished);
+    reply->finish(7);
+    QVERIFY(spy.wait(1000));
+    QElapsedTimer clock;
+    clock.start();
+    QCOMPARE(Reply::wait(reply, 5000).value().toInt(), 7);
+    QVERIFY(clock.elapsed() < 1000);
 }
 
 QTEST_GUILESS_MAIN(TestReply)

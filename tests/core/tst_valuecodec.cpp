@@ -50,8 +50,7 @@ void TestValueCodec::roundTrip_data()
     row("i32 -7200", DataType::Integer32, "-7200", "e0e3ffff", "-7200");
     row("i40 min", DataType::Integer40, "-549755813888", "0000000080", "-549755813888");
     row("i48 -1", DataType::Integer48, "-1", "ffffffffffff", "-1");
-    row("i56 max", DataType::Integer56, "36028797018963967", "ffffffffffff7f",
-        "36028797018963967");
+    row("i56 max", DataType::Integer56, "36028797018963967", "ffffffffffff7f", "36028797018963967");
     row("i64 min", DataType::Integer64, "-9223372036854775808", "0000000000000080",
         "-9223372036854775808");
     row("i64 max", DataType::Integer64, "9223372036854775807", "ffffffffffffff7f",
@@ -130,18 +129,18 @@ void TestValueCodec::textRejectsBadInput_data()
                                   << Error::Kind::OutOfRange;
     QTest::newRow("u64 overflow") << DataType::Unsigned64 << "18446744073709551616"
                                   << Error::Kind::InvalidArgument;
-    QTest::newRow("i16 hex too wide") << DataType::Integer16 << "0x10000"
-                                      << Error::Kind::OutOfRange;
+    QTest::newRow("i16 hex too wide")
+        << DataType::Integer16 << "0x10000" << Error::Kind::OutOfRange;
     QTest::newRow("letters") << DataType::Integer32 << "12ab" << Error::Kind::InvalidArgument;
     QTest::newRow("empty integer") << DataType::Integer32 << "" << Error::Kind::InvalidArgument;
     QTest::newRow("bool 2") << DataType::Boolean << "2" << Error::Kind::InvalidArgument;
     QTest::newRow("real words") << DataType::Real32 << "fast" << Error::Kind::InvalidArgument;
     QTest::newRow("real32 overflow") << DataType::Real32 << "1e39" << Error::Kind::OutOfRange;
-    QTest::newRow("odd hex bytes") << DataType::OctetString << "0102f"
-                                   << Error::Kind::InvalidArgument;
+    QTest::newRow("odd hex bytes")
+        << DataType::OctetString << "0102f" << Error::Kind::InvalidArgument;
     QTest::newRow("non-hex bytes") << DataType::Domain << "zz" << Error::Kind::InvalidArgument;
-    QTest::newRow("non-ascii visible string") << DataType::VisibleString << "Grüße"
-                                              << Error::Kind::InvalidArgument;
+    QTest::newRow("non-ascii visible string")
+        << DataType::VisibleString << "Grüße" << Error::Kind::InvalidArgument;
 }
 
 void TestValueCodec::textRejectsBadInput()
@@ -160,10 +159,14 @@ void TestValueCodec::hexText_data()
     QTest::addColumn<DataType>("type");
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("hex");
-    QTest::newRow("statusword") << DataType::Unsigned16 << "1063" << "0x0427";
-    QTest::newRow("negative i16") << DataType::Integer16 << "-1" << "0xFFFF";
-    QTest::newRow("i24") << DataType::Integer24 << "-2" << "0xFFFFFE";
-    QTest::newRow("u32 inputs") << DataType::Unsigned32 << "327680" << "0x00050000";
+    QTest::newRow("statusword") << DataType::Unsigned16 << "1063"
+                                << "0x0427";
+    QTest::newRow("negative i16") << DataType::Integer16 << "-1"
+                                  << "0xFFFF";
+    QTest::newRow("i24") << DataType::Integer24 << "-2"
+                         << "0xFFFFFE";
+    QTest::newRow("u32 inputs") << DataType::Unsigned32 << "327680"
+                                << "0x00050000";
 }
 
 void TestValueCodec::hexText()

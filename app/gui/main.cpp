@@ -1,0 +1,65 @@
+// drivebench: the GUI's composition root. It picks the real protocols (app/common) and, with
+// --demo, runs the simulated MovingCap in-process.
+#include "common/demodrive.h"
+#include "common/protocols.h"
+#include "mainwindow.h"
+#include "widgets/logconsole.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+
+#include <cstdio>
+#include <memory>
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("drivebench"));
+    QApplication::setApplicationName(QStringLiteral("drivebench"));
+    QApplication::setApplicationDisplayName(QStringLiteral("drivebench"));
+    QApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Commissioning tool for industrial drives."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption demoOption(
+        QStringLiteral("demo"),
+        QApplication::translate("main",
+                                "Start a simulated MovingCap in-process and connect "
+                                "to it."));
+    const QCommandLineOption connectOption(
+        QStringLiteral("connect"),
+        QApplication::translate("main", "Connect to <uri> at start, e.g. refgo://192.168.2.150."),
+        QStringLiteral("uri"));
+    parser.addOption(demoOption);
+    parser.addOption(connectOption);
+    parser.process(app);
+
+    const db::ProtocolRegistry &registry = db::app::protocolRegistry();
+    std::unique_ptr<db::app::DemoDrive> demo; // outlives the window and its connections
+    db::gui::MainWindow window(registry);
+    window.logConsole()->installMessageHandler();
+
+    if (parser.isSet(demoOption)) {
+        demo = std::make_unique<db::app::DemoDrive>();
+        if (auto started = demo->startRefgo(0); !started) {
+            std::fprintf(stderr, "drivebench: cannot start the demo drive: %s\n",
+                         qPrintable(started.error().toString()));
+            return 1;
+        }
+        window.logConsole()->info(
+            QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
+        window.openConnection(demo->refgoUri());
+    }
+    if (parser.isSet(connectOption)) {
+        if (auto opened = window.openConnection(parser.value(connectOption)); !opened) {
+            std::fprintf(stderr, "drivebench: %s\n", qPrintable(opened.error().toString()));
+            return 2;
+        }
+    }
+
+    window.show();
+    return app.exec();
+}

@@ -1,0 +1,277 @@
+#include "mainwindow.h"
+
+#include "widgets/connectiondialog.h"
+#include "widgets/devicelist.h"
+#include "widgets/drivestatuspanel.h"
+#include "widgets/logconsole.h"
+#include "widgets/objectaccessbox.h"
+#include "widgets/widgetstyle.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QEventLoop>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTimer>
+
+namespace db::gui {
+
+namespace {
+QSettings openSettings()
+{
+    return QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("drivebench"),
+                     QStringLiteral("drivebench"));
+}
+
+const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
+const QString kStateKey = QStringLiteral("mainWindow/state");
+const QString kRecentKey = QStringLiteral("connections/recent");
+} // namespace
+
+MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
+    : QMainWindow(parent)
+    , m_registry(registry)
+    , m_deviceList(new widgets::DeviceList(this))
+    , m_statusPanel(new widgets::DriveStatusPanel(this))
+    , m_objectAccess(new widgets::ObjectAccessBox(this))
+    , m_log(new widgets::LogConsole(this))
+    , m_connectionState(new QLabel(this))
+{
+    setWindowTitle(tr("drivebench"));
+    setObjectName(QStringLiteral("MainWindow"));
+
+    auto *centre = new QScrollArea(this);
+    centre->setWidget(m_statusPanel);
+    centre->setWidgetResizable(true);
+    centre->setFrameShape(QFrame::NoFrame);
+    setCentralWidget(centre);
+    createDocks();
+    createMenus();
+    statusBar()->addPermanentWidget(m_connectionState);
+
+    connect(m_deviceList, &widgets::DeviceList::currentConnectionChanged, this,
+            &MainWindow::setCurrent);
+    connect(m_deviceList, &widgets::DeviceList::addRequested, this, &MainWindow::showConnectDialog);
+    connect(m_deviceList, &widgets::DeviceList::connectRequested, this,
+            [](DeviceConnection *c) { c->open(); });
+    connect(m_deviceList, &widgets::DeviceList::disconnectRequested, this,
+            [](DeviceConnection *c) { c->close(); });
+    connect(m_deviceList, &widgets::DeviceList::removeRequested, this,
+            &MainWindow::removeConnection);
+
+    resize(1280, 820);
+    loadSettings();
+    updateStatusBar();
+}
+
+MainWindow::~MainWindow()
+{
+    // Connections go first, while every widget that watches them is still whole.
+    disconnect(m_deviceList, nullptr, this, nullptr);
+    m_statusPanel->setConnection(nullptr);
+    m_objectAccess->setConnection(nullptr);
+    m_connections.clear();
+}
+
+void MainWindow::createDocks()
+{
+    const auto addDock = [this](QWidget *widget, const QString &title, const QString &name,
+                                Qt::DockWidgetArea area) {
+        auto *dock = new QDockWidget(title, this);
+        dock->setObjectName(name); // for saveState()/restoreState()
+        dock->setWidget(widget);
+        addDockWidget(area, dock);
+        return dock;
+    };
+    QDockWidget *devices =
+        addDock(m_deviceList, tr("Devices"), QStringLiteral("devicesDock"), Qt::LeftDockWidgetArea);
+    QDockWidget *access = addDock(m_objectAccess, tr("Object Access"),
+                                  QStringLiteral("objectAccessDock"), Qt::LeftDockWidgetArea);
+    QDockWidget *log =
+        addDock(m_log, tr("Log"), QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    m_objectAccess->setMinimumWidth(320);
+    m_log->setMinimumHeight(100);
+    // Initial proportions; restoreState() replaces them once the user has arranged the docks.
+    resizeDocks({ devices, access }, { 220, 300 }, Qt::Vertical);
+    resizeDocks({ log }, { 200 }, Qt::Vertical);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::showConnectDialog);
+    connectAction->setShortcut(QKeySequence::Open);
+    m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
+    file->addSeparator();
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About drivebench"), this, &MainWindow::showAbout)
+        ->setMenuRole(QAction::AboutRole);
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+Result<DeviceConnection *> MainWindow::openConnection(const QString &uri)
+{
+    auto created = m_registry.create(uri);
+    if (!created) {
+        m_log->error(tr("Cannot connect to %1: %2").arg(uri, created.error().toString()));
+        return created.error();
+    }
+    std::shared_ptr<DeviceConnection> connection = created.value();
+    m_connections.push_back(connection);
+    m_recent = widgets::ConnectionDialog::withRecent(m_recent, connection->uri().toString());
+    watch(connection.get());
+    m_deviceList->addConnection(connection.get());
+    m_deviceList->setCurrentConnection(connection.get());
+    m_log->info(tr("Connecting to %1").arg(connection->uri().toString()));
+    connection->open();
+    return connection.get();
+}
+
+void MainWindow::watch(DeviceConnection *connection)
+{
+    const QString name = connection->uri().toString();
+    connect(connection, &DeviceConnection::logLine, m_log, [this, name](const QString &line) {
+        m_log->traffic(name + QStringLiteral(": ") + line);
+    });
+    connect(connection, &DeviceConnection::errorOccurred, m_log, [this, name](const Error &e) {
+        m_log->error(name + QStringLiteral(": ") + e.toString());
+    });
+    connect(connection, &DeviceConnection::stateChanged, this,
+            [this, name](DeviceConnection::State state) {
+                m_log->info(tr("%1 is %2").arg(name, stateName(state)));
+                updateStatusBar();
+            });
+}
+
+DeviceConnection *MainWindow::currentConnection() const
+{
+    return m_deviceList->currentConnection();
+}
+
+QList<DeviceConnection *> MainWindow::connections() const
+{
+    QList<DeviceConnection *> result;
+    for (const auto &c : m_connections)
+        result.append(c.get());
+    return result;
+}
+
+void MainWindow::setCurrent(DeviceConnection *connection)
+{
+    m_statusPanel->setConnection(connection);
+    m_objectAccess->setConnection(connection);
+    updateStatusBar();
+}
+
+void MainWindow::removeConnection(DeviceConnection *connection)
+{
+    const auto it = std::find_if(m_connections.begin(), m_connections.end(),
+                                 [connection](const auto &c) { return c.get() == connection; });
+    if (it == m_connections.end())
+        return;
+    std::shared_ptr<DeviceConnection> keep = *it;
+    m_connections.erase(it);
+    m_deviceList->removeConnection(connection);
+    m_log->info(tr("Removed %1").arg(connection->uri().toString()));
+    connection->close();
+    // Deleted from the event loop, not inside the click that asked for it.
+    QTimer::singleShot(0, this, [keep] {});
+    updateStatusBar();
+}
+
+void MainWindow::showConnectDialog()
+{
+    widgets::ConnectionDialog dialog(m_registry, m_recent, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_recent = dialog.recentUris();
+    openConnection(dialog.uri());
+}
+
+void MainWindow::disconnectCurrent()
+{
+    if (DeviceConnection *c = currentConnection())
+        c->close();
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(
+        this, tr("About drivebench"),
+        tr("<h3>drivebench %1</h3>"
+           "<p>Commissioning tool for industrial drives.</p>"
+           "<p>Built with Qt %2.</p>")
+            .arg(QStringLiteral(DRIVEBENCH_VERSION), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::updateStatusBar()
+{
+    DeviceConnection *c = currentConnection();
+    const auto state = c ? c->state() : DeviceConnection::State::Disconnected;
+    m_connectionState->setText(c ? tr("%1 — %2").arg(c->uri().toString(), stateName(state))
+                                 : tr("No device"));
+    widgets::style::setTextColor(m_connectionState,
+                                 c ? widgets::style::connectionStateColor(state) : QColor());
+    m_disconnectAction->setEnabled(c && state != DeviceConnection::State::Disconnected);
+}
+
+void MainWindow::closeAllConnections(int timeoutMs)
+{
+    const auto allDown = [this] {
+        return std::all_of(m_connections.begin(), m_connections.end(), [](const auto &c) {
+            return c->state() == DeviceConnection::State::Disconnected;
+        });
+    };
+    for (const auto &c : m_connections)
+        c->close();
+    if (allDown())
+        return;
+    QEventLoop loop;
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    for (const auto &c : m_connections) {
+        connect(c.get(), &DeviceConnection::stateChanged, &loop, [&loop, allDown] {
+            if (allDown())
+                loop.quit();
+        });
+    }
+    loop.exec(QEventLoop::ExcludeUserInputEvents);
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    closeAllConnections();
+    event->accept();
+}
+
+void MainWindow::loadSettings()
+{
+    QSettings settings = openSettings();
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+    m_recent = settings.value(kRecentKey).toStringList();
+}
+
+void MainWindow::saveSettings() const
+{
+    QSettings settings = openSettings();
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kRecentKey, m_recent);
+}
+
+} // namespace db::gui

@@ -1,0 +1,368 @@
+#include "refgocodec.h"
+
+#include <limits>
+
+namespace db::refgo {
+
+namespace {
+
+Error invalid(const QString &message)
+{
+    return Error(Error::Kind::InvalidArgument, message);
+}
+
+// The command table of movingcap.md 3.3, in the order of enum Command (info() indexes it).
+const QList<CommandInfo> kCommands = {
+    { Command::G, "G", Parameter::Optional, ResultKind::None, "Go Direct Position" },
+    { Command::GW, "GW", Parameter::Optional, ResultKind::None, "Go Way" },
+    { Command::PO, "PO", Parameter::Required, ResultKind::None, "Set Target Position" },
+    { Command::WA, "WA", Parameter::Required, ResultKind::None, "Set Way" },
+    { Command::SM, "SM", Parameter::None, ResultKind::None, "Stop Motion" },
+    { Command::PWC, "PWC", Parameter::None, ResultKind::None, "Power Continue" },
+    { Command::CM, "CM", Parameter::None, ResultKind::None, "Continue Motion" },
+    { Command::REF, "REF", Parameter::Optional, ResultKind::None, "Referencing" },
+    { Command::PQ, "PQ", Parameter::None, ResultKind::None, "Power Quit" },
+    { Command::OW, "OW", Parameter::Object, ResultKind::ObjectWrite, "CANopen Object Write" },
+    { Command::OR, "OR", Parameter::Object, ResultKind::ObjectRead, "CANopen Object Read" },
+    { Command::TPSR, "TPSR", Parameter::None, ResultKind::Hex32, "Tell Process Status Register" },
+    { Command::TS, "TS", Parameter::None, ResultKind::Integer, "Tell Status" },
+    { Command::TP, "TP", Parameter::None, ResultKind::Integer, "Tell Actual Position" },
+    { Command::SP, "SP", Parameter::Required, ResultKind::None, "Speed" },
+    { Command::AC, "AC", Parameter::Required, ResultKind::None, "Acceleration" },
+    { Command::DE, "DE", Parameter::Required, ResultKind::None, "Deceleration" },
+    { Command::ACV, "ACV", Parameter::Required, ResultKind::None, "Acceleration Variation (Jerk)" },
+    { Command::JP, "JP", Parameter::Optional, ResultKind::None, "Jog Positive" },
+    { Command::JN, "JN", Parameter::Optional, ResultKind::None, "Jog Negative" },
+    { Command::RR, "RR", Parameter::Optional, ResultKind::None, "Repeat Reverse" },
+    { Command::RW, "RW", Parameter::Required, ResultKind::None, "Repeat Way" },
+    { Command::WT, "WT", Parameter::Required, ResultKind::None, "Wait Repeat" },
+    { Command::SO, "SO", Parameter::Required, ResultKind::None, "Set Output" },
+    { Command::CO, "CO", Parameter::Required, ResultKind::None, "Clear Output" },
+    { Command::TI, "TI", Parameter::Required, ResultKind::Integer, "Tell Input" },
+};
+
+const CommandInfo *findMnemonic(const QString &mnemonic)
+{
+    for (const CommandInfo &c : kCommands) {
+        if (mnemonic == QLatin1String(c.mnemonic))
+            return &c;
+    }
+    return nullptr;
+}
+
+bool isLetter(QChar c)
+{
+    return (c >= QLatin1Char('A') && c <= QLatin1Char('Z'))
+        || (c >= QLatin1Char('a') && c <= QLatin1Char('z'));
+}
+
+bool endsWithH(QStringView text)
+{
+    return text.endsWith(QLatin1Char('h'), Qt::CaseInsensitive);
+}
+
+// A number as written in RefGo text (spec 3.2): signed decimal, "0x" hex, or hex with an "h"
+// suffix (the drive's hex output, errata 13/14).
+struct ScannedNumber
+{
+    qulonglong magnitude = 0;
+    bool negative = false;
+    bool hex = false;
+};
+
+Result<ScannedNumber> scanNumber(const QString &original)
+{
+    QStringView t = QStringView(original).trimmed();
+    ScannedNumber n;
+    if (t.startsWith(QLatin1Char('-')) || t.startsWith(QLatin1Char('+'))) {
+        n.negative = t.front() == QLatin1Char('-');
+        t = t.mid(1);
+    }
+    if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
+        n.hex = true;
+        t = t.mid(2);
+    } else if (endsWithH(t)) {
+        n.hex = true;
+        t.chop(1);
+    }
+    if (t.isEmpty())
+        return invalid(QStringLiteral("'%1' is not a number").arg(original));
+    for (QChar c : t) {
+        const bool digit = c >= QLatin1Char('0') && c <= QLatin1Char('9');
+        const bool hexLetter = (c >= QLatin1Char('a') && c <= QLatin1Char('f'))
+            || (c >= QLatin1Char('A') && c <= QLatin1Char('F'));
+        if (!digit && !(n.hex && hexLetter))
+            return invalid(QStringLiteral("'%1' is not a number").arg(original));
+    }
+    bool ok = false;
+    n.magnitude = t.toULongLong(&ok, n.hex ? 16 : 10);
+    if (!ok)
+        return invalid(QStringLiteral("'%1' is too large").arg(original));
+    return n;
+}
+
+// Index or sub-index field: hexadecimal, with or without "h" suffix or "0x" prefix (spec 3.2).
+Result<quint32> parseHexField(const QString &field, quint32 max, const QString &what)
+{
+    QStringView t = QStringView(field).trimmed();
+    if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
+        t = t.mid(2);
+    else if (endsWithH(t))
+        t.chop(1);
+    if (t.isEmpty())
+        return invalid(QStringLiteral("missing %1").arg(what));
+    bool ok = false;
+    const qulonglong v = t.toULongLong(&ok, 16);
+    if (!ok || t.startsWith(QLatin1Char('+')) || t.startsWith(QLatin1Char('-')))
+        return invalid(QStringLiteral("%1 '%2' is not hexadecimal").arg(what, field.trimmed()));
+    if (v > max)
+        return invalid(QStringLiteral("%1 '%2' is too large").arg(what, field.trimmed()));
+    return quint32(v);
+}
+
+Result<ObjectAddress> parseAddress(const QString &indexField, const QString &subField)
+{
+    const auto index = parseHexField(indexField, 0xFFFF, QStringLiteral("index"));
+    if (!index)
+        return index.error();
+    const auto sub = parseHexField(subField, 0xFF, QStringLiteral("sub-index"));
+    if (!sub)
+        return sub.error();
+    return ObjectAddress(quint16(index.value()), quint8(sub.value()));
+}
+
+// OR/OW parameters "index,sub[,h]" and "index,sub,value" (spec 3.2, errata 15/16).
+Result<void> parseObjectParameters(Request &r, const QString &rest)
+{
+    const bool write = r.command == Command::OW;
+    const QStringList fields = rest.split(QLatin1Char(','));
+    if (write ? fields.size() != 3 : (fields.size() < 2 || fields.size() > 3)) {
+        return invalid(write ? QStringLiteral("OW needs index,sub-index,value")
+                             : QStringLiteral("OR needs index,sub-index[,h]"));
+    }
+    const auto address = parseAddress(fields.at(0), fields.at(1));
+    if (!address)
+        return address.error();
+    r.address = address.value();
+    if (write) {
+        const auto n = scanNumber(fields.at(2));
+        if (!n)
+            return n.error();
+        const ScannedNumber v = n.value();
+        const auto signedMax = qulonglong(std::numeric_limits<qint64>::max());
+        if (v.negative) {
+            if (v.magnitude > signedMax + 1)
+                return invalid(QStringLiteral("value '%1' is too small").arg(fields.at(2)));
+            r.value = QVariant::fromValue<qlonglong>(qlonglong(0 - v.magnitude));
+        } else if (v.hex || v.magnitude > signedMax) {
+            r.value = QVariant::fromValue<qulonglong>(v.magnitude);
+        } else {
+            r.value = QVariant::fromValue<qlonglong>(qlonglong(v.magnitude));
+        }
+        return {};
+    }
+    if (fields.size() == 3) {
+        if (fields.at(2).trimmed().compare(QLatin1String("h"), Qt::CaseInsensitive) != 0)
+            return invalid(QStringLiteral("third OR field must be 'h' (hex output), not '%1'")
+                               .arg(fields.at(2).trimmed()));
+        r.hexOutput = true;
+    } else {
+        // Erratum 15: "OR6041,0h" asks for hex output. When the index carries an "h" too
+        // ("OR3410h,1h", Appendix C), the suffixes only mark the radix: the drive answered
+        // that form in decimal.
+        r.hexOutput = endsWithH(fields.at(1).trimmed()) && !endsWithH(fields.at(0).trimmed());
+    }
+    return {};
+}
+
+} // namespace
+
+const QList<CommandInfo> &commands()
+{
+    return kCommands;
+}
+
+const CommandInfo &info(Command command)
+{
+    return kCommands.at(qsizetype(command));
+}
+
+QString format(Command command, std::optional<qint64> argument)
+{
+    QString text = QLatin1String(info(command).mnemonic);
+    if (argument)
+        text += QString::number(*argument);
+    return text;
+}
+
+QString formatRead(ObjectAddress address, bool hexOutput)
+{
+    QString text = QStringLiteral("OR%1,%2")
+                       .arg(address.index, 4, 16, QLatin1Char('0'))
+                       .arg(address.sub, 0, 16)
+                       .toUpper();
+    if (hexOutput)
+        text += QLatin1String(",h");
+    return text;
+}
+
+QString formatWrite(ObjectAddress address, const QVariant &value)
+{
+    QString number;
+    switch (value.typeId()) {
+    case QMetaType::Bool:
+        number = value.toBool() ? QStringLiteral("1") : QStringLiteral("0");
+        break;
+    case QMetaType::ULongLong:
+    case QMetaType::ULong:
+    case QMetaType::UInt:
+    case QMetaType::UShort:
+    case QMetaType::UChar:
+        number = QString::number(value.toULongLong());
+        break;
+    case QMetaType::LongLong:
+    case QMetaType::Long:
+    case QMetaType::Int:
+    case QMetaType::Short:
+    case QMetaType::Char:
+    case QMetaType::SChar:
+        number = QString::number(value.toLongLong());
+        break;
+    default:
+        number = value.toString();
+        break; // callers check types; keeps text visible
+    }
+    return QStringLiteral("OW%1,%2,%3")
+        .arg(QString::number(address.index, 16).rightJustified(4, QLatin1Char('0')).toUpper(),
+             QString::number(address.sub, 16).toUpper(), number);
+}
+
+Result<Request> parseRequest(const QString &line)
+{
+    Request r;
+    r.text = line;
+    const QString t = line.trimmed();
+    if (t.isEmpty())
+        return invalid(QStringLiteral("empty request"));
+    qsizetype n = 0;
+    while (n < t.size() && isLetter(t.at(n)))
+        ++n;
+    if (n == 0)
+        return invalid(QStringLiteral("'%1' does not start with a command").arg(t));
+    const QString letters = t.left(n).toUpper();
+    const CommandInfo *ci = findMnemonic(letters);
+    if (!ci
+        && (letters.startsWith(QLatin1String("OR")) || letters.startsWith(QLatin1String("OW")))) {
+        ci = findMnemonic(letters.left(2)); // index starting with a hex letter: "ORA000,0"
+        n = 2;
+    }
+    if (!ci)
+        return invalid(QStringLiteral("unknown command '%1'").arg(letters));
+    r.command = ci->command;
+    const QString rest = t.mid(n).trimmed(); // a space after the mnemonic is fine (erratum 16)
+    const QString name = QLatin1String(ci->mnemonic);
+    switch (ci->parameter) {
+    case Parameter::None:
+        if (!rest.isEmpty())
+            return invalid(QStringLiteral("%1 takes no parameter, got '%2'").arg(name, rest));
+        break;
+    case Parameter::Required:
+    case Parameter::Optional: {
+        if (rest.isEmpty()) {
+            if (ci->parameter == Parameter::Required)
+                return invalid(QStringLiteral("%1 needs a numeric parameter").arg(name));
+            break;
+        }
+        const auto v = parseNumber(rest);
+        if (!v)
+            return v.error().prefixed(name);
+        r.argument = v.value();
+        break;
+    }
+    case Parameter::Object:
+        if (const auto ok = parseObjectParameters(r, rest); !ok)
+            return ok.error().prefixed(name);
+        break;
+    }
+    return r;
+}
+
+Result<qint64> parseNumber(const QString &text)
+{
+    const auto n = scanNumber(text);
+    if (!n)
+        return n.error();
+    const ScannedNumber v = n.value();
+    const auto signedMax = qulonglong(std::numeric_limits<qint64>::max());
+    if (v.negative) {
+        if (v.magnitude > signedMax + 1)
+            return invalid(QStringLiteral("'%1' is too small").arg(text.trimmed()));
+        return qint64(0 - v.magnitude);
+    }
+    if (!v.hex && v.magnitude > signedMax)
+        return invalid(QStringLiteral("'%1' is too large").arg(text.trimmed()));
+    return qint64(v.magnitude); // hex: the unsigned bit pattern
+}
+
+Result<ObjectValue> parseObjectRead(const QString &line)
+{
+    const QString t = line.trimmed();
+    if (!t.startsWith(QLatin1String("OR"), Qt::CaseInsensitive))
+        return invalid(QStringLiteral("'%1' is not an OR result line").arg(t));
+    const QStringList fields = t.mid(2).split(QLatin1Char(','));
+    if (fields.size() < 3 || fields.at(2).trimmed().isEmpty())
+        return invalid(QStringLiteral("'%1' has no value field").arg(t));
+    if (fields.size() > 3)
+        return invalid(QStringLiteral("'%1' has more than three fields").arg(t));
+    const auto address = parseAddress(fields.at(0), fields.at(1));
+    if (!address)
+        return address.error().prefixed(t);
+    const auto value = parseNumber(fields.at(2));
+    if (!value)
+        return value.error().prefixed(t);
+    const QString v = fields.at(2).trimmed();
+    return ObjectValue { address.value(), value.value(),
+                         endsWithH(v) || v.contains(QLatin1String("0x"), Qt::CaseInsensitive) };
+}
+
+Result<ProcessStatus> parseTpsr(const QString &line)
+{
+    const QString t = line.trimmed();
+    bool ok = t.size() == 8;
+    const quint32 bits = ok ? t.toUInt(&ok, 16) : 0;
+    if (!ok || t.startsWith(QLatin1Char('+')) || t.startsWith(QLatin1Char('-')))
+        return invalid(QStringLiteral("TPSR answer '%1' is not 8 hex digits").arg(t));
+    return ProcessStatus { bits };
+}
+
+QString formatTpsr(quint32 bits)
+{
+    return QStringLiteral("%1").arg(bits, 8, 16, QLatin1Char('0'));
+}
+
+Result<SimpleStatus> parseTs(const QString &line)
+{
+    const QString t = line.trimmed();
+    bool ok = false;
+    const int v = t.toInt(&ok, 10);
+    if (ok && (v == 0 || v == 1 || v == 2 || v == 9))
+        return SimpleStatus(v);
+    return invalid(QStringLiteral("TS answer '%1' is not 0, 1, 2 or 9").arg(t));
+}
+
+QString simpleStatusName(SimpleStatus status)
+{
+    switch (status) {
+    case SimpleStatus::PowerOff:
+        return QStringLiteral("Power Off");
+    case SimpleStatus::PowerOn:
+        return QStringLiteral("Power On");
+    case SimpleStatus::Moving:
+        return QStringLiteral("Moving");
+    case SimpleStatus::Error:
+        return QStringLiteral("Error");
+    }
+    return QStringLiteral("unknown (%1)").arg(int(status));
+}
+
+} // namespace db::refgo

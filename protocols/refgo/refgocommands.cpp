@@ -1,0 +1,256 @@
+// The typed calls of RefgoClient (one per command of movingcap.md 3.3) and the decoders that
+// turn result lines into values. The engine lives in refgoclient.cpp.
+
+#include "refgoclient.h"
+
+namespace db::refgo {
+
+namespace {
+
+Error malformed(const QString &command, const QString &what)
+{
+    return Error(Error::Kind::Malformed, QStringLiteral("answer to '%1' %2").arg(command, what));
+}
+
+// Integer, Hex32 and ObjectRead answers have exactly one result line (spec 3.3).
+Result<QString> singleLine(const QString &command, const QStringList &lines)
+{
+    if (lines.size() != 1)
+        return malformed(command,
+                         QStringLiteral("has %1 result lines, expected one: %2")
+                             .arg(lines.size())
+                             .arg(lines.join(QLatin1String(" / "))));
+    return lines.first();
+}
+
+Result<QVariant> decodeNone(const QStringList &)
+{
+    return QVariant();
+}
+
+Result<QVariant> decodeInteger(const QString &command, const QStringList &lines, bool asBool)
+{
+    const auto line = singleLine(command, lines);
+    if (!line)
+        return line.error();
+    const auto n = parseNumber(line.value());
+    if (!n)
+        return malformed(command, QStringLiteral("is not a number: %1").arg(n.error().message()));
+    if (asBool) // TI: 0 or 1 (spec 3.3)
+        return QVariant(n.value() != 0);
+    return QVariant::fromValue<qlonglong>(n.value());
+}
+
+} // namespace
+
+Reply *RefgoClient::send(Command command, std::optional<qint64> argument)
+{
+    const CommandInfo &ci = info(command);
+    const QString name = QLatin1String(ci.mnemonic);
+    QString problem;
+    if (ci.parameter == Parameter::Object)
+        problem = QStringLiteral("use objectRead()/objectWrite() for %1").arg(name);
+    else if (ci.parameter == Parameter::None && argument)
+        problem = QStringLiteral("%1 takes no parameter").arg(name);
+    else if (ci.parameter == Parameter::Required && !argument)
+        problem = QStringLiteral("%1 needs a parameter").arg(name);
+    if (!problem.isEmpty())
+        return Reply::failed({}, Error(Error::Kind::InvalidArgument, problem));
+
+    const QString text = format(command, argument);
+    switch (command) {
+    case Command::TPSR:
+        return enqueue(text, [text](const QStringList &lines) -> Result<QVariant> {
+            const auto line = singleLine(text, lines);
+            if (!line)
+                return line.error();
+            const auto status = parseTpsr(line.value());
+            if (!status)
+                return malformed(text, status.error().message());
+            return QVariant::fromValue<quint32>(status->raw);
+        });
+    case Command::TS:
+        return enqueue(text, [text](const QStringList &lines) -> Result<QVariant> {
+            const auto v = decodeInteger(text, lines, false);
+            if (!v)
+                return v;
+            return QVariant(int(v.value().toLongLong()));
+        });
+    case Command::TP:
+        return enqueue(
+            text, [text](const QStringList &lines) { return decodeInteger(text, lines, false); });
+    case Command::TI:
+        return enqueue(
+            text, [text](const QStringList &lines) { return decodeInteger(text, lines, true); });
+    default:
+        return enqueue(text, decodeNone);
+    }
+}
+
+Reply *RefgoClient::go(std::optional<qint64> position)
+{
+    return send(Command::G, position);
+}
+Reply *RefgoClient::goWay(std::optional<qint64> distance)
+{
+    return send(Command::GW, distance);
+}
+Reply *RefgoClient::setTargetPosition(qint64 position)
+{
+    return send(Command::PO, position);
+}
+Reply *RefgoClient::setWay(qint64 distance)
+{
+    return send(Command::WA, distance);
+}
+Reply *RefgoClient::stopMotion()
+{
+    return send(Command::SM);
+}
+Reply *RefgoClient::powerContinue()
+{
+    return send(Command::PWC);
+}
+Reply *RefgoClient::continueMotion()
+{
+    return send(Command::CM);
+}
+Reply *RefgoClient::reference(int method)
+{
+    return send(Command::REF, method);
+}
+Reply *RefgoClient::powerQuit()
+{
+    return send(Command::PQ);
+}
+Reply *RefgoClient::speed(qint64 velocity)
+{
+    return send(Command::SP, velocity);
+}
+Reply *RefgoClient::acceleration(qint64 value)
+{
+    return send(Command::AC, value);
+}
+Reply *RefgoClient::deceleration(qint64 value)
+{
+    return send(Command::DE, value);
+}
+Reply *RefgoClient::jerk(qint64 value)
+{
+    return send(Command::ACV, value);
+}
+Reply *RefgoClient::jogPositive(std::optional<qint64> ms)
+{
+    return send(Command::JP, ms);
+}
+Reply *RefgoClient::jogNegative(std::optional<qint64> ms)
+{
+    return send(Command::JN, ms);
+}
+Reply *RefgoClient::repeatReverse(std::optional<qint64> d)
+{
+    return send(Command::RR, d);
+}
+Reply *RefgoClient::repeatWay(qint64 distance)
+{
+    return send(Command::RW, distance);
+}
+Reply *RefgoClient::waitRepeat(qint64 ms)
+{
+    return send(Command::WT, ms);
+}
+Reply *RefgoClient::setOutput(int output)
+{
+    return send(Command::SO, output);
+}
+Reply *RefgoClient::clearOutput(int output)
+{
+    return send(Command::CO, output);
+}
+Reply *RefgoClient::tellProcessStatus()
+{
+    return send(Command::TPSR);
+}
+Reply *RefgoClient::tellStatus()
+{
+    return send(Command::TS);
+}
+Reply *RefgoClient::tellPosition()
+{
+    return send(Command::TP);
+}
+Reply *RefgoClient::tellInput(int input)
+{
+    return send(Command::TI, input);
+}
+
+Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
+{
+    const QString text = formatRead(address, hexOutput);
+    return enqueue(
+        text,
+        [text, address](const QStringList &lines) -> Result<QVariant> {
+            // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
+            if (lines.isEmpty())
+                return Error(Error::Kind::DeviceError,
+                             QStringLiteral("drive gave no value for '%1'").arg(text));
+            const auto line = singleLine(text, lines);
+            if (!line)
+                return line.error();
+            const auto value = parseObjectRead(line.value());
+            if (!value)
+                return Error(Error::Kind::DeviceError,
+                             QStringLiteral("drive gave no value for '%1': %2")
+                                 .arg(text, value.error().message()));
+            if (value->address != address)
+                return malformed(text,
+                                 QStringLiteral("names object %1: '%2'")
+                                     .arg(value->address.toString(), line.value()));
+            return QVariant::fromValue<qlonglong>(value->value);
+        },
+        address);
+}
+
+Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
+{
+    switch (value.typeId()) {
+    case QMetaType::Bool:
+    case QMetaType::LongLong:
+    case QMetaType::ULongLong:
+    case QMetaType::Long:
+    case QMetaType::ULong:
+    case QMetaType::Int:
+    case QMetaType::UInt:
+    case QMetaType::Short:
+    case QMetaType::UShort:
+    case QMetaType::Char:
+    case QMetaType::SChar:
+    case QMetaType::UChar:
+        break;
+    default:
+        return Reply::failed(address,
+                             Error(Error::Kind::InvalidArgument,
+                                   QStringLiteral("OW writes integers only, not %1 '%2'")
+                                       .arg(QLatin1String(value.typeName()), value.toString())));
+    }
+    const QString text = formatWrite(address, value);
+    return enqueue(
+        text,
+        [text](const QStringList &lines) -> Result<QVariant> {
+            // Spec 3.7 [R]: every OW result line must end in ",OK" (and there must be one).
+            const bool acknowledged = !lines.isEmpty()
+                && std::all_of(lines.begin(), lines.end(), [](const QString &line) {
+                       return line.trimmed().endsWith(QLatin1String(",OK"), Qt::CaseInsensitive);
+                   });
+            if (!acknowledged)
+                return Error(Error::Kind::DeviceError,
+                             QStringLiteral("drive did not acknowledge '%1' with ',OK': %2")
+                                 .arg(text,
+                                      lines.isEmpty() ? QStringLiteral("(no result)")
+                                                      : lines.join(QLatin1String(" / "))));
+            return QVariant();
+        },
+        address);
+}
+
+} // namespace db::refgo

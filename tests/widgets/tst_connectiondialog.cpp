@@ -1,0 +1,141 @@
+#include "fakeconnection.h"
+#include "widgets/connectiondialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+
+using namespace db;
+using db::widgets::ConnectionDialog;
+
+namespace {
+ProtocolRegistry testRegistry()
+{
+    ProtocolRegistry registry;
+    const auto makeFake = [](const ConnectionUri &uri) {
+        return std::make_unique<test::FakeConnection>(uri.toString());
+    };
+    registry.add({ QStringLiteral("refgo"), QStringLiteral("refgo"),
+                   QStringLiteral("MovingCap RefGo (ASCII over TCP)"),
+                   QStringLiteral("refgo://HOST[:PORT]"), 10001, makeFake });
+    registry.add({ QStringLiteral("canopen+socketcan"), QStringLiteral("canopen"),
+                   QStringLiteral("CANopen over SocketCAN"),
+                   QStringLiteral("canopen+socketcan://IFACE?node=N&bitrate=B"), -1, makeFake });
+    return registry;
+}
+} // namespace
+
+class TestConnectionDialog : public QObject
+{
+    Q_OBJECT
+
+private:
+    const ProtocolRegistry m_registry = testRegistry();
+
+    static QPushButton *okButton(ConnectionDialog &dialog)
+    {
+        return dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+    }
+
+private Q_SLOTS:
+    void listsTheRegisteredProtocols()
+    {
+        ConnectionDialog dialog(m_registry, {});
+        auto *protocol = dialog.findChild<QComboBox *>(QStringLiteral("protocol"));
+        QCOMPARE(protocol->count(), 2);
+        QCOMPARE(protocol->itemText(0), QStringLiteral("MovingCap RefGo (ASCII over TCP)"));
+        QVERIFY(!okButton(dialog)->isEnabled());
+    }
+
+    void fieldsBuildTheUriWithDefaultPort()
+    {
+        ConnectionDialog dialog(m_registry, {});
+        dialog.show();
+        auto *port = dialog.findChild<QSpinBox *>(QStringLiteral("port"));
+        QCOMPARE(port->value(), 10001);
+        QTest::keyClicks(dialog.findChild<QLineEdit *>(QStringLiteral("host")),
+                         QStringLiteral("192.168.2.150"));
+        QVERIFY(dialog.isValid());
+        QCOMPARE(dialog.uri(), QStringLiteral("refgo://192.168.2.150:10001"));
+        QVERIFY(okButton(dialog)->isEnabled());
+        port->setValue(10002);
+        QCOMPARE(dialog.uri(), QStringLiteral("refgo://192.168.2.150:10002"));
+    }
+
+    void freeUriGetsDefaultPortAndFillsFields()
+    {
+        ConnectionDialog dialog(m_registry, {});
+        dialog.setUri(QStringLiteral("refgo://10.0.0.7"));
+        QCOMPARE(dialog.uri(), QStringLiteral("refgo://10.0.0.7:10001"));
+        QCOMPARE(dialog.findChild<QLineEdit *>(QStringLiteral("host"))->text(),
+                 QStringLiteral("10.0.0.7"));
+    }
+
+    void portlessProtocolWithOptions()
+    {
+        ConnectionDialog dialog(m_registry, {});
+        dialog.show();
+        dialog.findChild<QComboBox *>(QStringLiteral("protocol"))->setCurrentIndex(1);
+        QVERIFY(!dialog.findChild<QSpinBox *>(QStringLiteral("port"))->isEnabled());
+        QTest::keyClicks(dialog.findChild<QLineEdit *>(QStringLiteral("host")),
+                         QStringLiteral("can0"));
+        QTest::keyClicks(dialog.findChild<QLineEdit *>(QStringLiteral("options")),
+                         QStringLiteral("node=50"));
+        QCOMPARE(dialog.uri(), QStringLiteral("canopen+socketcan://can0?node=50"));
+    }
+
+    void invalidUriDisablesOkAndExplains_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown scheme") << "vabus://10.0.0.1"
+                                        << "unknown protocol 'vabus'";
+        QTest::newRow("no scheme") << "10.0.0.1"
+                                   << "is not a connection URI";
+        QTest::newRow("port too big") << "refgo://10.0.0.1:70000"
+                                      << "";
+    }
+
+    void invalidUriDisablesOkAndExplains()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, message);
+        ConnectionDialog dialog(m_registry, {});
+        dialog.setUri(text);
+        QVERIFY(!dialog.isValid());
+        QVERIFY(dialog.uri().isEmpty());
+        QVERIFY(!okButton(dialog)->isEnabled());
+        QVERIFY(!dialog.errorText().isEmpty());
+        QVERIFY2(dialog.errorText().contains(message), qPrintable(dialog.errorText()));
+    }
+
+    void recentConnectionsArePickedAndReturned()
+    {
+        const QStringList recent { QStringLiteral("refgo://10.0.0.1:10001"),
+                                   QStringLiteral("refgo://10.0.0.2:10001") };
+        ConnectionDialog dialog(m_registry, recent);
+        QCOMPARE(dialog.uri(), recent.first()); // the newest is preselected
+        dialog.setUri(QStringLiteral("refgo://10.0.0.2"));
+        QCOMPARE(dialog.recentUris(),
+                 (QStringList { QStringLiteral("refgo://10.0.0.2:10001"),
+                                QStringLiteral("refgo://10.0.0.1:10001") }));
+    }
+
+    void recentListIsBounded()
+    {
+        QStringList recent;
+        for (int i = 0; i < 20; ++i)
+            recent = ConnectionDialog::withRecent(recent, QStringLiteral("refgo://h%1").arg(i));
+        QCOMPARE(recent.size(), ConnectionDialog::kMaxRecent);
+        QCOMPARE(recent.first(), QStringLiteral("refgo://h19"));
+        recent = ConnectionDialog::withRecent(recent, QStringLiteral("refgo://h15"));
+        QCOMPARE(recent.first(), QStringLiteral("refgo://h15"));
+        QCOMPARE(recent.count(QStringLiteral("refgo://h15")), 1);
+    }
+};
+
+QTEST_MAIN(TestConnectionDialog)
+#include "tst_connectiondialog.moc"

@@ -1,0 +1,210 @@
+#include "fakeconnection.h"
+#include "resources/builtindescriptions.h"
+#include "widgets/drivestatuspanel.h"
+#include "widgets/lamp.h"
+
+#include <QLabel>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace db;
+using db::test::FakeConnection;
+using db::widgets::DriveStatusPanel;
+using db::widgets::Lamp;
+
+namespace {
+constexpr ObjectAddress kStatusword { 0x6041, 0 };
+constexpr ObjectAddress kPosition { 0x6064, 0 };
+
+// A MovingCap at standstill in Operation enabled, no faults, no I/O.
+void fillHealthyDrive(FakeConnection &fake)
+{
+    fake.setDictionary(resources::movingCapDictionary());
+    fake.setValue(kStatusword, QVariant::fromValue<qulonglong>(0x0427));
+    fake.setValue({ 0x6061, 0 }, QVariant::fromValue<qlonglong>(1));
+    fake.setValue(kPosition, QVariant::fromValue<qlonglong>(12345));
+    fake.setValue({ 0x606C, 0 }, QVariant::fromValue<qlonglong>(0));
+    fake.setValue({ 0x6078, 0 }, QVariant::fromValue<qlonglong>(902));
+    fake.setValue({ 0x1002, 0 }, QVariant::fromValue<qulonglong>(0));
+    fake.setValue({ 0x603F, 0 }, QVariant::fromValue<qulonglong>(0));
+    fake.setValue({ 0x60FD, 0 }, QVariant::fromValue<qulonglong>(0));
+    fake.setValue({ 0x60FE, 1 }, QVariant::fromValue<qulonglong>(0));
+}
+} // namespace
+
+class TestDriveStatusPanel : public QObject
+{
+    Q_OBJECT
+
+private:
+    QString labelText(const DriveStatusPanel &panel, const char *name)
+    {
+        auto *label = panel.findChild<QLabel *>(QLatin1String(name));
+        return label ? label->text() : QStringLiteral("<no %1>").arg(QLatin1String(name));
+    }
+    Lamp *lamp(const DriveStatusPanel &panel, const QString &name)
+    {
+        return panel.findChild<Lamp *>(name);
+    }
+
+private Q_SLOTS:
+    void operationEnabledIsShownFromStatusword()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        DriveStatusPanel panel;
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Operation enabled"));
+        QCOMPARE(labelText(panel, "statusword"), QStringLiteral("0x0427"));
+        QCOMPARE(labelText(panel, "mode"), QStringLiteral("Profile position (1)"));
+        QCOMPARE(labelText(panel, "position"), QStringLiteral("12345 units"));
+        QCOMPARE(labelText(panel, "current"), QStringLiteral("90.2 %"));
+        QVERIFY(lamp(panel, QStringLiteral("bit_0400"))->isOn()); // target reached
+        QVERIFY(!lamp(panel, QStringLiteral("bit_0008"))->isOn()); // fault
+        QVERIFY(!lamp(panel, QStringLiteral("bit_0100"))->isOn()); // moving
+        QCOMPARE(labelText(panel, "lastErrorText"), QStringLiteral("No error"));
+    }
+
+    void underVoltageFaultShowsDeviceText()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        fake.setValue(kStatusword, QVariant::fromValue<qulonglong>(0x0008));
+        fake.setValue({ 0x603F, 0 }, QVariant::fromValue<qulonglong>(0x3221));
+        fake.setValue({ 0x1002, 0 }, QVariant::fromValue<qulonglong>(0x10002));
+        DriveStatusPanel panel;
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Fault"));
+        QVERIFY(lamp(panel, QStringLiteral("bit_0008"))->isOn());
+        QVERIFY2(labelText(panel, "lastErrorText").contains(QStringLiteral("Under-voltage")),
+                 qPrintable(labelText(panel, "lastErrorText")));
+        QVERIFY(labelText(panel, "lastErrorCode").startsWith(QStringLiteral("0x3221")));
+        QVERIFY(labelText(panel, "lastErrorCode").contains(QStringLiteral("ERROR_UNDER_VOLT")));
+        QCOMPARE(labelText(panel, "statusRegister"), QStringLiteral("0x00010002"));
+        QCOMPARE(labelText(panel, "statusRegisterBits"), QStringLiteral("Error under volt (Uzk)"));
+        QCOMPARE(labelText(panel, "statusRegisterWarnings"), QStringLiteral("Warning Sensor"));
+    }
+
+    void ioLampsFollowBitsFrom16()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        fake.setValue(
+            { 0x60FD, 0 },
+            QVariant::fromValue<qulonglong>((1u << 16) | (1u << 19) | (1u << 25) | 0xFFFFu));
+        fake.setValue({ 0x60FE, 1 }, QVariant::fromValue<qulonglong>(1u << 17));
+        DriveStatusPanel panel;
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_VERIFY(lamp(panel, QStringLiteral("IN1"))->isOn());
+        QVERIFY(lamp(panel, QStringLiteral("IN4"))->isOn());
+        QVERIFY(lamp(panel, QStringLiteral("IN10"))->isOn());
+        QVERIFY(!lamp(panel, QStringLiteral("IN2"))->isOn()); // bits 0..15 are not inputs
+        QVERIFY(!lamp(panel, QStringLiteral("OUT1"))->isOn());
+        QVERIFY(lamp(panel, QStringLiteral("OUT2"))->isOn());
+        QVERIFY(!lamp(panel, QStringLiteral("OUT4"))->isOn());
+
+        fake.setValue({ 0x60FD, 0 }, QVariant::fromValue<qulonglong>(0));
+        QTRY_VERIFY(!lamp(panel, QStringLiteral("IN1"))->isOn());
+    }
+
+    void failedReadKeepsValueGreyedOut()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        DriveStatusPanel panel;
+        QSignalSpy cycles(&panel, &DriveStatusPanel::cycleFinished);
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_COMPARE(labelText(panel, "position"), QStringLiteral("12345 units"));
+        QVERIFY(!panel.isStale(kPosition));
+
+        fake.setFailure(kPosition, Error(Error::Kind::Timeout, QStringLiteral("no answer")));
+        QTRY_VERIFY(panel.isStale(kPosition));
+        QCOMPARE(labelText(panel, "position"), QStringLiteral("12345 units"));
+        QVERIFY(labelText(panel, "pollStatus").contains(QStringLiteral("6064:0")));
+        QVERIFY(!panel.isStale(kStatusword));
+
+        fake.clearFailure(kPosition);
+        QTRY_VERIFY(!panel.isStale(kPosition));
+    }
+
+    void nextCycleWaitsForSlowReplies()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        fake.replyDelayMs = 30;
+        DriveStatusPanel panel;
+        panel.setPollInterval(10);
+        QSignalSpy cycles(&panel, &DriveStatusPanel::cycleFinished);
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_VERIFY(cycles.count() >= 3);
+        QCOMPARE(fake.maxInFlight, int(DriveStatusPanel::polledObjects().size()));
+        QVERIFY(fake.readCount <= (cycles.count() + 1) * DriveStatusPanel::polledObjects().size());
+    }
+
+    void stopsWhenHiddenAndResumesWhenShown()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        DriveStatusPanel panel;
+        QSignalSpy cycles(&panel, &DriveStatusPanel::cycleFinished);
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_VERIFY(cycles.count() >= 1);
+        panel.hide();
+        QTRY_VERIFY(!panel.isPolling());
+        const int reads = fake.readCount;
+        panel.show();
+        QTRY_VERIFY(fake.readCount > reads);
+    }
+
+    void stopsWhenDisconnected()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        fake.replyDelayMs = 5;
+        DriveStatusPanel panel;
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Operation enabled"));
+        fake.goAway();
+        QTRY_VERIFY(!panel.isPolling());
+        QVERIFY(panel.isStale(kStatusword));
+        QCOMPARE(labelText(panel, "statusword"), QStringLiteral("0x0427")); // kept, greyed
+        QVERIFY(labelText(panel, "pollStatus").contains(QStringLiteral("disconnected")));
+    }
+
+    void worksWithoutConnection()
+    {
+        DriveStatusPanel panel;
+        panel.show();
+        panel.setConnection(nullptr);
+        QVERIFY(!panel.isPolling());
+        QCOMPARE(labelText(panel, "stateName"), QStringLiteral("No status"));
+        {
+            FakeConnection fake;
+            fillHealthyDrive(fake);
+            panel.setConnection(&fake);
+            fake.open();
+            QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Operation enabled"));
+        }
+        // The connection is gone: the panel notices through its QPointer.
+        QVERIFY(panel.connection() == nullptr);
+        panel.setConnection(nullptr);
+        QCOMPARE(labelText(panel, "pollStatus"), QStringLiteral("No device selected."));
+    }
+};
+
+QTEST_MAIN(TestDriveStatusPanel)
+#include "tst_drivestatuspanel.moc"

@@ -1,0 +1,95 @@
+#include "fakeconnection.h"
+#include "mainwindow.h"
+#include "resources/builtindescriptions.h"
+#include "widgets/devicelist.h"
+#include "widgets/drivestatuspanel.h"
+#include "widgets/logconsole.h"
+#include "widgets/objectaccessbox.h"
+
+#include <QLabel>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace db;
+using db::gui::MainWindow;
+using db::test::FakeConnection;
+
+namespace {
+// "fake://NAME" connections that answer a healthy drive's status objects.
+ProtocolRegistry fakeRegistry()
+{
+    ProtocolRegistry registry;
+    registry.add({ QStringLiteral("fake"), QStringLiteral("fake"), QStringLiteral("Test double"),
+                   QStringLiteral("fake://NAME"), -1, [](const ConnectionUri &uri) {
+                       auto fake = std::make_unique<FakeConnection>(uri.toString());
+                       fake->setDictionary(resources::movingCapDictionary());
+                       fake->setValue({ 0x6041, 0 }, QVariant::fromValue<qulonglong>(0x0427));
+                       return fake;
+                   } });
+    return registry;
+}
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_settingsDir;
+    const ProtocolRegistry m_registry = fakeRegistry();
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    }
+
+    void connectionBecomesCurrentEverywhere()
+    {
+        MainWindow window(m_registry);
+        window.show();
+        auto opened = window.openConnection(QStringLiteral("fake://drive1"));
+        QVERIFY(opened.ok());
+        QCOMPARE(window.currentConnection(), opened.value());
+        QCOMPARE(window.statusPanel()->connection(), opened.value());
+        QCOMPARE(window.objectAccessBox()->connection(), opened.value());
+        QCOMPARE(window.deviceList()->count(), 1);
+        QTRY_COMPARE(window.statusPanel()->findChild<QLabel *>(QStringLiteral("stateName"))->text(),
+                     QStringLiteral("Operation enabled"));
+        QVERIFY(window.logConsole()->toPlainText().contains(
+            QStringLiteral("fake://drive1 is connected")));
+    }
+
+    void badUriIsRefusedAndLogged()
+    {
+        MainWindow window(m_registry);
+        auto opened = window.openConnection(QStringLiteral("nope://x"));
+        QVERIFY(!opened.ok());
+        QCOMPARE(window.deviceList()->count(), 0);
+        QVERIFY(window.logConsole()->toPlainText().contains(QStringLiteral("unknown protocol")));
+    }
+
+    void closingDisconnectsAndPersistsRecent()
+    {
+        QList<QPointer<DeviceConnection>> connections;
+        {
+            MainWindow window(m_registry);
+            window.show();
+            connections.append(window.openConnection(QStringLiteral("fake://a")).value());
+            connections.append(window.openConnection(QStringLiteral("fake://b")).value());
+            QTRY_VERIFY(connections[0]->isConnected() && connections[1]->isConnected());
+            QVERIFY(window.close());
+            QCOMPARE(connections[0]->state(), DeviceConnection::State::Disconnected);
+            QCOMPARE(connections[1]->state(), DeviceConnection::State::Disconnected);
+        }
+        QVERIFY(!connections[0]); // owned by the window
+        MainWindow again(m_registry);
+        QCOMPARE(again.recentConnections(),
+                 (QStringList { QStringLiteral("fake://b"), QStringLiteral("fake://a") }));
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

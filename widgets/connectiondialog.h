@@ -1,0 +1,63 @@
+#pragma once
+
+#include "core/protocolregistry.h"
+
+#include <QDialog>
+
+class QComboBox;
+class QDialogButtonBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QSpinBox;
+
+namespace db::widgets {
+
+// Asks for a connection URI: either built from protocol + address + port + options, or typed
+// freely, or picked from the recent connections. The URI is checked with
+// ProtocolRegistry::parseUri() on every change; the error is shown inline and OK stays disabled
+// while it is invalid. The dialog only produces text: it never opens a connection.
+class ConnectionDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxRecent = 10;
+
+    ConnectionDialog(const ProtocolRegistry &registry, const QStringList &recent,
+                     QWidget *parent = nullptr);
+
+    // The canonical URI (default port filled in); empty while the input is invalid.
+    QString uri() const;
+    bool isValid() const { return !m_validUri.isEmpty(); }
+    QString errorText() const;
+    // Puts a URI into the free line and the fields (e.g. from --connect or a recent entry).
+    void setUri(const QString &uri);
+
+    // The recent list with uri() in front (after exec() returned Accepted).
+    QStringList recentUris() const;
+    // `uri` moved to the front of `recent`, duplicates removed, at most kMaxRecent entries.
+    static QStringList withRecent(QStringList recent, const QString &uri);
+
+private:
+    void onProtocolChanged();
+    void buildUriFromFields();
+    void fillFieldsFromUri();
+    void validate();
+
+    const ProtocolRegistry &m_registry;
+    QStringList m_recent;
+    QString m_validUri;
+    bool m_updating = false;
+
+    QComboBox *m_protocol;
+    QLabel *m_patternHint;
+    QLineEdit *m_host;
+    QSpinBox *m_port;
+    QLineEdit *m_options;
+    QLineEdit *m_uri;
+    QLabel *m_error;
+    QListWidget *m_recentList;
+    QDialogButtonBox *m_buttons;
+};
+
+} // namespace db::widgets

@@ -1,0 +1,83 @@
+#include "widgetstyle.h"
+
+#include <QApplication>
+#include <QFontDatabase>
+#include <QLabel>
+#include <QPainter>
+#include <QPixmap>
+
+namespace db::widgets::style {
+
+QFont monospaceFont()
+{
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setStyleHint(QFont::Monospace);
+    font.setPointSizeF(QApplication::font().pointSizeF());
+    return font;
+}
+
+QColor okColor()
+{
+    return QColor(0x1e, 0x8e, 0x3e);
+}
+
+QColor warningColor()
+{
+    return QColor(0xc2, 0x7c, 0x0e);
+}
+
+QColor errorColor()
+{
+    return QColor(0xc6, 0x28, 0x28);
+}
+
+QColor inactiveColor()
+{
+    return QColor(0x80, 0x80, 0x80);
+}
+
+void setTextColor(QWidget *widget, const QColor &color)
+{
+    QPalette pal = widget->palette();
+    const QColor c = color.isValid() ? color : QApplication::palette().color(QPalette::WindowText);
+    pal.setColor(QPalette::WindowText, c);
+    pal.setColor(QPalette::Text, c);
+    widget->setPalette(pal);
+}
+
+void setStale(QLabel *label, bool stale)
+{
+    if (label->property("stale").toBool() == stale && label->property("stale").isValid())
+        return;
+    label->setProperty("stale", stale);
+    setTextColor(label, stale ? inactiveColor() : QColor());
+}
+
+QColor connectionStateColor(DeviceConnection::State state)
+{
+    switch (state) {
+    case DeviceConnection::State::Connected:
+        return okColor();
+    case DeviceConnection::State::Connecting:
+    case DeviceConnection::State::Closing:
+        return warningColor();
+    case DeviceConnection::State::Disconnected:
+        return inactiveColor();
+    }
+    return inactiveColor();
+}
+
+QIcon connectionStateIcon(DeviceConnection::State state)
+{
+    QPixmap pixmap(16, 16);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QColor color = connectionStateColor(state);
+    p.setPen(QPen(color.darker(140), 1));
+    p.setBrush(color);
+    p.drawEllipse(QRectF(2.5, 2.5, 11, 11));
+    return QIcon(pixmap);
+}
+
+} // namespace db::widgets::style

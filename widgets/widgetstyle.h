@@ -1,0 +1,37 @@
+#pragma once
+
+#include "core/deviceconnection.h"
+
+#include <QColor>
+#include <QFont>
+#include <QIcon>
+
+class QLabel;
+class QWidget;
+
+namespace db::widgets {
+
+// Shared look of the drivebench widgets, so that values, states and errors read the same in
+// every panel.
+namespace style {
+
+// Fixed-pitch font for values, addresses and hex, at the application's point size.
+QFont monospaceFont();
+
+// Colours of meaning (readable on light and dark palettes).
+QColor okColor();
+QColor warningColor();
+QColor errorColor();
+QColor inactiveColor();
+
+// Greys a value label out (value not current) or restores its normal colour.
+void setStale(QLabel *label, bool stale);
+// Sets the text colour of a label (invalid colour = the palette's).
+void setTextColor(QWidget *widget, const QColor &color);
+
+// A round icon in the colour of a connection state.
+QIcon connectionStateIcon(DeviceConnection::State state);
+QColor connectionStateColor(DeviceConnection::State state);
+
+} // namespace style
+} // namespace db::widgets
