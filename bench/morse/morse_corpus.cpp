@@ -1,0 +1,108 @@
+// Corpus benchmark for the LED Morse decoder (not run by ctest).
+//
+//   morse_corpus [cases-per-condition=100] [seed=7]
+//
+// Prints, per condition: exact IP rate after the whole recording (3 message periods, random
+// start inside a message), confident rate, confident-but-wrong count, and the time from the
+// start of the first complete message to the first confident IP in message periods (median,
+// 95th percentile, max, share within 2), plus exact rate per sample rate.
+#include "morse/corpus.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+using namespace db::morse;
+
+namespace {
+
+std::vector<CorpusCondition> conditions()
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    return {
+        { QStringLiteral("clean"), 0.0, inf, 0.0, 0.0, 0.0, 2.0 },
+        { QStringLiteral("jitter15"), 0.15, inf, 0.0, 0.0, 0.0, 2.0 },
+        { QStringLiteral("jitter30"), 0.30, inf, 0.0, 0.0, 0.0, 3.0 },
+        { QStringLiteral("snr20"), 0.0, 20.0, 0.0, 0.0, 0.0, 2.0 },
+        { QStringLiteral("snr6"), 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 },
+        { QStringLiteral("jitter30+snr6"), 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 },
+        { QStringLiteral("jitter30+snr6@60,1k"), 0.30, 6.0, 0.0, 0.0, 0.0, 3.0, { 60.0, 1000.0 } },
+        { QStringLiteral("drift+autoexp"), 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 },
+        { QStringLiteral("duty+-0.3"), 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 },
+        { QStringLiteral("all(j30,6dB,drift,duty.2)"), 0.30, 6.0, 0.01, 0.3, 0.2, 3.0 },
+        { QStringLiteral("clean<2spu(1.2)"), 0.0, inf, 0.0, 0.0, 0.0, 1.2 },
+        { QStringLiteral("j30+6dB<3spu(2)"), 0.30, 6.0, 0.0, 0.0, 0.0, 2.0 },
+    };
+}
+
+double quantile(std::vector<double> v, double q)
+{
+    if (v.empty())
+        return -1.0;
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    const QStringList args = app.arguments();
+    const int count = args.size() > 1 ? args[1].toInt() : 100;
+    const unsigned seed = args.size() > 2 ? args[2].toUInt() : 7u;
+    QTextStream out(stdout);
+    const bool verbose = qEnvironmentVariableIsSet("MORSE_VERBOSE");
+    out << "condition                   n  exact%  conf%  wrongConf  reps-to-confident: median "
+           "p95 max <=2%   exact% per rate 15/25/30/60/1000   ms/case\n";
+    for (const CorpusCondition &cond : conditions()) {
+        const std::vector<CorpusCase> corpus = makeCorpus(cond, count, seed);
+        int exact = 0;
+        int confident = 0;
+        int wrong = 0;
+        int within2 = 0;
+        std::vector<double> reps;
+        std::map<int, std::pair<int, int>> perRate;
+        QElapsedTimer timer;
+        timer.start();
+        for (const CorpusCase &c : corpus) {
+            const CaseOutcome o = runCase(c);
+            if (verbose && (!o.exact || !o.confident))
+                out << "  " << cond.name << " " << c.signal.sampleRate << " fps, unit "
+                    << c.signal.unit * 1000 << " ms, exp " << c.signal.exposure << ": "
+                    << ipText(c.ip, QLatin1Char('.')) << " -> " << o.decoded << " ["
+                    << reasonText(o.reason) << "] " << o.text << "\n";
+            exact += o.exact ? 1 : 0;
+            confident += o.confident ? 1 : 0;
+            wrong += o.wrongConfident ? 1 : 0;
+            if (o.repetitionsToConfident >= 0.0) {
+                reps.push_back(o.repetitionsToConfident);
+                within2 += o.repetitionsToConfident <= 2.0 ? 1 : 0;
+            }
+            auto &r = perRate[static_cast<int>(c.signal.sampleRate)];
+            r.first += o.exact ? 1 : 0;
+            ++r.second;
+        }
+        const double n = corpus.size();
+        out << qSetFieldWidth(26) << Qt::left << cond.name << qSetFieldWidth(0) << Qt::right
+            << QStringLiteral("%1 %2 %3 %4   %5 %6 %7 %8  ")
+                   .arg(count, 3)
+                   .arg(100.0 * exact / n, 7, 'f', 1)
+                   .arg(100.0 * confident / n, 6, 'f', 1)
+                   .arg(wrong, 6)
+                   .arg(quantile(reps, 0.5), 6, 'f', 2)
+                   .arg(quantile(reps, 0.95), 5, 'f', 2)
+                   .arg(reps.empty() ? -1.0 : *std::max_element(reps.begin(), reps.end()), 5, 'f',
+                        2)
+                   .arg(100.0 * within2 / n, 5, 'f', 1);
+        for (const auto &[rate, r] : perRate)
+            out << QStringLiteral(" %1").arg(100.0 * r.first / r.second, 5, 'f', 1);
+        out << QStringLiteral("   %1\n").arg(double(timer.elapsed()) / n, 6, 'f', 1);
+        out.flush();
+    }
+    return 0;
+}

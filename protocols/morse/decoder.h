@@ -1,0 +1,117 @@
+#pragma once
+
+#include "core/result.h"
+#include "ipvoter.h"
+#include "levelslicer.h"
+#include "morsetypes.h"
+#include "symbolizer.h"
+#include "unitfit.h"
+
+#include <QString>
+
+#include <span>
+#include <vector>
+
+namespace db::morse {
+
+struct DecoderOptions
+{
+    UnitRange unitRange; // plausible dit lengths, seconds
+    double minFitQuality = 0.6; // below: the blinking is not Morse
+    double confident = IpVoter::kConfident;
+};
+
+enum class DecoderState {
+    Searching, // no modulation found yet
+    Acquiring, // LED found, not enough edges for the unit yet
+    Decoding, // unit known, text growing, no confident IP yet
+    Confident, // an IP address with confidence >= DecoderOptions::confident
+    Idle, // LED was found, but has not changed for a while
+};
+
+struct DecoderEvent
+{
+    enum class Kind {
+        LedFound, // two brightness levels found
+        LedLost, // no edge for several seconds
+        UnitFound, // first valid unit estimate (detail: "120.3 ms")
+        MessageDecoded, // a complete "MC+IP...:" message (detail: its IP)
+        IpConfident, // the voted IP reached the confidence threshold (detail: the IP)
+    };
+    Kind kind;
+    double time = 0.0; // time of the last sample when the event was noticed
+    QString detail;
+};
+
+struct DecodeResult
+{
+    QString text;
+    std::vector<Element> timeline;
+    std::vector<DecodedChar> chars;
+    IpEstimate ip;
+    double unit = 0.0; // s
+    double duty = 0.0; // s added to marks
+    double fitQuality = 0.0;
+    Reason reason = Reason::None;
+    double confidentAt = -1.0; // sample time at which the IP first became confident
+};
+
+// Streaming LED Morse decoder: samples -> LevelSlicer -> intervals -> fitUnit -> symbolize ->
+// parseIpObservations -> IpVoter. feed() may be called with chunks of any size; after each
+// call the text, timeline and IP reflect everything seen so far (the unit is re-estimated as
+// data grows, so earlier characters can still change). Pure and synchronous; no Qt event loop.
+class Decoder
+{
+public:
+    explicit Decoder(DecoderOptions options = {});
+
+    void feed(std::span<const Sample> samples);
+    void feed(const Sample &sample) { feed(std::span<const Sample>(&sample, 1)); }
+    // End of recording: the character in progress is completed.
+    void finish();
+
+    DecoderState state() const;
+    const QString &text() const { return m_symbols.text; }
+    const QString &pendingCode() const { return m_symbols.pendingCode; }
+    const std::vector<Element> &timeline() const { return m_symbols.elements; }
+    const std::vector<DecodedChar> &chars() const { return m_symbols.chars; }
+    const IpEstimate &ip() const { return m_ip; }
+    const UnitFit &unitFit() const { return m_fit; }
+    const LevelSlicer &slicer() const { return m_slicer; }
+    bool confident() const { return m_ip.confidence >= m_options.confident; }
+
+    // Events since the last call, oldest first.
+    std::vector<DecoderEvent> takeEvents();
+
+    // Why there is no confident IP (Reason::None when there is one).
+    Reason reason() const;
+    // The reason as an Error (deviceCode = int(Reason)); Kind::None when confident.
+    Error diagnosis() const;
+    DecodeResult result() const;
+
+private:
+    void update(bool final);
+    void event(DecoderEvent::Kind kind, QString detail = {});
+
+    DecoderOptions m_options;
+    LevelSlicer m_slicer;
+    UnitFit m_fit;
+    Symbols m_symbols;
+    IpEstimate m_ip;
+    std::vector<DecoderEvent> m_events;
+    std::size_t m_fittedAt = 0;
+    std::size_t m_symbolizedKey = 0;
+    double m_symbolizedUnit = 0.0;
+    int m_completeSeen = 0;
+    bool m_wasFound = false;
+    bool m_wasIdle = false;
+    bool m_closedMessage = false;
+    double m_confidentAt = -1.0;
+};
+
+// One-shot: the whole recording. An error (with the Reason in deviceCode) when no IP address
+// could be voted at all; a result with ip.confidence below the threshold and
+// reason == LowConfidence when the repetitions do not agree enough.
+Result<DecodeResult> decodeRecording(std::span<const Sample> samples, DecoderOptions options = {});
+
+} // namespace db::morse

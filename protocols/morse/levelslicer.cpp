@@ -1,0 +1,176 @@
+#include "levelslicer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace db::morse {
+namespace {
+
+constexpr double kSmoothTime = 0.012; // s; shortest dit is 60 ms
+constexpr double kWindow = 4.0; // s of history for acquisition
+constexpr double kCheckEvery = 0.25; // s between acquisition checks
+constexpr double kMinContrast = 2.5; // noise sigmas between the two levels
+constexpr double kLevelTau = 0.8; // s; level tracking time constant
+constexpr double kHysteresis = 0.1; // of high - low, either side of the threshold
+constexpr double kMinFrames = 1.0; // shorter intervals are noise: merged at once
+constexpr double kQuiet = 8.0; // s without an edge before the levels are checked again
+constexpr double kMadToSigma = 1.4826; // median absolute deviation -> sigma (Gaussian)
+
+double median(std::vector<double> &v)
+{
+    if (v.empty())
+        return 0.0;
+    auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+double percentile(std::vector<double> &v, double p)
+{
+    auto it = v.begin() + static_cast<std::ptrdiff_t>(p * static_cast<double>(v.size() - 1));
+    std::nth_element(v.begin(), it, v.end());
+    return *it;
+}
+
+} // namespace
+
+void LevelSlicer::feed(const Sample &s)
+{
+    if (!std::isfinite(s.t) || !std::isfinite(s.value) || s.t <= m_lastT) {
+        ++m_invalid;
+        return;
+    }
+    ++m_valid;
+    m_smooth.push_back(s);
+    m_smoothSum += s.value;
+    m_smoothTSum += s.t;
+    while (m_smooth.front().t < s.t - kSmoothTime) {
+        m_smoothSum -= m_smooth.front().value;
+        m_smoothTSum -= m_smooth.front().t;
+        m_smooth.pop_front();
+    }
+    const auto n = static_cast<double>(m_smooth.size());
+    const double raw = m_valid > 1 ? s.value - m_rawPrev : 0.0;
+    if (m_valid == 2)
+        m_period = s.t - m_lastT;
+    else if (m_valid > 2)
+        m_period += 0.05 * (s.t - m_lastT - m_period);
+    m_rawPrev = s.value;
+    m_lastT = s.t;
+    process({ m_smoothTSum / n, m_smoothSum / n, raw / std::sqrt(n) });
+}
+
+Interval LevelSlicer::openInterval() const
+{
+    return { m_on, m_openStart, std::max(0.0, m_lastT - m_openStart), m_firstOpen };
+}
+
+bool LevelSlicer::bimodal(double *low, double *high)
+{
+    if (m_window.size() < 8 || m_window.back().t - m_window.front().t < 1.0)
+        return false;
+    std::vector<double> x;
+    std::vector<double> d;
+    x.reserve(m_window.size());
+    d.reserve(m_window.size());
+    for (const Point &p : m_window) {
+        x.push_back(p.x);
+        d.push_back(std::abs(p.raw));
+    }
+    // Successive differences of white noise have sigma * sqrt(2).
+    m_noise = kMadToSigma * median(d) / std::sqrt(2.0);
+    const double mid = (percentile(x, 0.05) + percentile(x, 0.95)) / 2.0;
+    std::vector<double> lo;
+    std::vector<double> hi;
+    int crossings = 0;
+    bool above = m_window.front().x >= mid;
+    for (const Point &p : m_window) {
+        (p.x >= mid ? hi : lo).push_back(p.x);
+        if ((p.x >= mid) != above) {
+            above = !above;
+            ++crossings;
+        }
+    }
+    if (crossings < 2 || lo.size() < 3 || hi.size() < 3)
+        return false;
+    *low = median(lo);
+    *high = median(hi);
+    return *high - *low > kMinContrast * m_noise && *high > *low;
+}
+
+void LevelSlicer::edge(double t)
+{
+    t = std::clamp(t, m_openStart, m_lastT);
+    // An interval shorter than a sample period cannot be resolved: it is a noise spike or dip.
+    // Merge it into the previous interval, which then continues.
+    if (t - m_openStart < kMinFrames * m_period && !m_intervals.empty() && !m_firstOpen) {
+        const Interval previous = m_intervals.back();
+        m_intervals.pop_back();
+        m_on = previous.on;
+        m_openStart = previous.start;
+        m_firstOpen = previous.truncated;
+        m_idle = false;
+        return;
+    }
+    m_intervals.push_back({ m_on, m_openStart, t - m_openStart, m_firstOpen });
+    m_firstOpen = false;
+    m_on = !m_on;
+    m_openStart = t;
+    m_lastEdge = t;
+    m_idle = false;
+}
+
+void LevelSlicer::process(const Point &p)
+{
+    m_window.push_back(p);
+    while (m_window.front().t < p.t - kWindow)
+        m_window.pop_front();
+
+    const bool quiet = m_tracking && p.t - m_lastEdge > kQuiet;
+    if ((!m_tracking || quiet) && p.t - m_lastCheck >= kCheckEvery) {
+        m_lastCheck = p.t;
+        double lo = 0.0;
+        double hi = 0.0;
+        if (bimodal(&lo, &hi)) {
+            m_low = lo;
+            m_high = hi;
+            const bool on = p.x >= (lo + hi) / 2.0;
+            if (!m_tracking) {
+                m_on = on;
+                m_openStart = p.t;
+                m_lastEdge = p.t;
+                m_found = true;
+                m_tracking = true;
+            } else if (on != m_on) {
+                edge(p.t);
+            }
+        } else if (quiet) {
+            m_idle = true;
+        }
+    }
+    if (m_tracking) {
+        const double thr = (m_low + m_high) / 2.0;
+        const double h = kHysteresis * (m_high - m_low);
+        if ((m_prevX < thr) != (p.x < thr) && p.x != m_prevX)
+            m_cross = m_prevT + (thr - m_prevX) / (p.x - m_prevX) * (p.t - m_prevT);
+        if (!m_on && p.x > thr + h)
+            edge(m_cross > m_openStart ? m_cross : p.t);
+        else if (m_on && p.x < thr - h)
+            edge(m_cross > m_openStart ? m_cross : p.t);
+        // The off level follows the clearly-off samples; the contrast follows the clearly-on
+        // samples relative to it. During a long dark gap `high` moves with `low` (additive
+        // drift, the common case), instead of freezing at a stale value.
+        const double a = std::min(1.0, (p.t - m_prevT) / kLevelTau);
+        const double contrast = m_high - m_low;
+        if (m_on && p.x > thr + h)
+            m_high = m_low + contrast + a * (p.x - m_low - contrast);
+        else if (!m_on && p.x < thr - h) {
+            m_low += a * (p.x - m_low);
+            m_high = m_low + contrast;
+        }
+    }
+    m_prevT = p.t;
+    m_prevX = p.x;
+}
+
+} // namespace db::morse

@@ -1,0 +1,152 @@
+// Level 1: Morse table (ITU-R M.1677-1, movingcap.md 2.4), element classification and the
+// "MC+IP...:" parser and voter.
+#include "morse/ipvoter.h"
+#include "morse/morsecode.h"
+#include "morse/symbolizer.h"
+
+#include <QTest>
+
+using namespace db::morse;
+
+class TstMorseCode : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void specTable_data()
+    {
+        QTest::addColumn<QChar>("ch");
+        QTest::addColumn<QString>("code");
+        const char *table[][2] = { { "M", "--" },     { "C", "-.-." },  { "I", ".." },
+                                   { "P", ".--." },   { "+", ".-.-." }, { ":", "---..." },
+                                   { ".", ".-.-.-" }, { "0", "-----" }, { "1", ".----" },
+                                   { "2", "..---" },  { "3", "...--" }, { "4", "....-" },
+                                   { "5", "....." },  { "6", "-...." }, { "7", "--..." },
+                                   { "8", "---.." },  { "9", "----." }, { "A", ".-" },
+                                   { "Z", "--.." } };
+        for (const auto &row : table)
+            QTest::newRow(row[0]) << QChar::fromLatin1(row[0][0]) << QString::fromLatin1(row[1]);
+    }
+    void specTable()
+    {
+        QFETCH(QChar, ch);
+        QFETCH(QString, code);
+        QCOMPARE(codeFor(ch), code);
+        QCOMPARE(charFor(code), ch);
+    }
+
+    void allLettersAndDigitsRoundTrip()
+    {
+        const QString chars = QStringLiteral("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789");
+        for (QChar c : chars) {
+            QVERIFY2(!codeFor(c).isEmpty(), qPrintable(QString(c)));
+            QCOMPARE(charFor(codeFor(c)), c);
+        }
+        QCOMPARE(codeFor(QLatin1Char('m')), QStringLiteral("--"));
+        QVERIFY(codeFor(QLatin1Char('#')).isEmpty());
+        QVERIFY(charFor(u"......-").isNull());
+    }
+
+    void classify_data()
+    {
+        QTest::addColumn<bool>("on");
+        QTest::addColumn<double>("units");
+        QTest::addColumn<ElementKind>("kind");
+        // Nominal lengths and +-30 % jitter around them.
+        QTest::newRow("dit") << true << 1.0 << ElementKind::Dit;
+        QTest::newRow("dit -30%") << true << 0.7 << ElementKind::Dit;
+        QTest::newRow("dit +30%") << true << 1.3 << ElementKind::Dit;
+        QTest::newRow("dah") << true << 3.0 << ElementKind::Dah;
+        QTest::newRow("dah -30%") << true << 2.1 << ElementKind::Dah;
+        QTest::newRow("dah +30%") << true << 3.9 << ElementKind::Dah;
+        QTest::newRow("steady on") << true << 12.0 << ElementKind::LongMark;
+        QTest::newRow("intra") << false << 1.0 << ElementKind::IntraGap;
+        QTest::newRow("intra -30%") << false << 0.7 << ElementKind::IntraGap;
+        QTest::newRow("intra +30%") << false << 1.3 << ElementKind::IntraGap;
+        QTest::newRow("letter") << false << 3.0 << ElementKind::LetterGap;
+        QTest::newRow("letter -30%") << false << 2.1 << ElementKind::LetterGap;
+        QTest::newRow("letter +30%") << false << 3.9 << ElementKind::LetterGap;
+        QTest::newRow("word") << false << 7.0 << ElementKind::WordGap;
+        QTest::newRow("word -25%") << false << 5.25 << ElementKind::WordGap;
+        QTest::newRow("word +30%") << false << 9.1 << ElementKind::WordGap;
+        QTest::newRow("repeat pause") << false << 30.0 << ElementKind::WordGap;
+    }
+    void classify()
+    {
+        QFETCH(bool, on);
+        QFETCH(double, units);
+        QFETCH(ElementKind, kind);
+        QCOMPARE(db::morse::classify(on, units), kind);
+    }
+
+    void parse_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("octets"); // observations joined by '|', '?' = not seen
+        QTest::addColumn<int>("complete");
+        QTest::newRow("spec example") << "MC+IP192+168+2+150:"
+                                      << "192.168.2.150" << 1;
+        QTest::newRow("two repetitions") << "MC+IP192+168+2+150: MC+IP192+168+2+150:"
+                                         << "192.168.2.150|192.168.2.150" << 2;
+        QTest::newRow("started inside") << "?68+2+150: MC+IP192+168+2+150:"
+                                        << "?.?.2.150|192.168.2.150" << 1;
+        QTest::newRow("tail of one octet only") << "?50: MC+IP10+0+0+1:"
+                                                << "10.0.0.1" << 1;
+        QTest::newRow("IP unreadable") << "MC+?P192+168+2+150:"
+                                       << "?.168.2.150" << 0;
+        QTest::newRow("unreadable char") << "MC+IP19?+168+2+150:"
+                                         << "?.168.2.150" << 0;
+        QTest::newRow("not finished") << "MC+IP192+168+2+15"
+                                      << "192.168.2.?" << 0;
+        QTest::newRow("octet > 255") << "MC+IP300+1+2+3:"
+                                     << "?.1.2.3" << 0; // never complete
+        QTest::newRow("lost separator") << "MC+IP192+1682+150:"
+                                        << "" << 0;
+        QTest::newRow("extra separator") << "MC+IP192+1+68+2+150:"
+                                         << "" << 0;
+        QTest::newRow("status text") << "ST+OK: ERR+5: MC"
+                                     << "" << 0;
+        QTest::newRow("status then ip") << "ERR+5: MC+IP10+1+2+3: ST+OK:"
+                                        << "10.1.2.3" << 1;
+    }
+    void parse()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, octets);
+        QFETCH(int, complete);
+        QStringList seen;
+        int completeSeen = 0;
+        for (const IpObservation &o : parseIpObservations(text)) {
+            IpEstimate e;
+            e.octets = o.octets;
+            seen << e.toString();
+            completeSeen += o.complete ? 1 : 0;
+        }
+        QCOMPARE(seen.join(QLatin1Char('|')), octets);
+        QCOMPARE(completeSeen, complete);
+    }
+
+    void voting()
+    {
+        IpVoter voter;
+        IpObservation a;
+        a.octets = { 192, 168, 2, 150 };
+        a.complete = true;
+        voter.add(a);
+        QCOMPARE(voter.estimate().confidence, 0.5); // one reading is not enough
+        QVERIFY(voter.estimate().confidence < IpVoter::kConfident);
+        voter.add(a);
+        QCOMPARE(voter.estimate().confidence, 1.0);
+        QCOMPARE(voter.estimate().messages, 2);
+        IpObservation wrong = a;
+        wrong.octets[3] = 158;
+        voter.add(wrong);
+        QCOMPARE(voter.estimate().toString(), QStringLiteral("192.168.2.150"));
+        QVERIFY(voter.estimate().confidence < IpVoter::kConfident); // 2:1 is not yet enough
+        voter.add(a);
+        QVERIFY(voter.estimate().confidence >= IpVoter::kConfident); // 3:1
+    }
+};
+
+QTEST_GUILESS_MAIN(TstMorseCode)
+#include "tst_morsecode.moc"

@@ -1,0 +1,178 @@
+// The decoder on generated signals: the spec example (movingcap.md 2.2), streaming partial
+// results and events, and the reasons given when nothing can be decoded.
+#include "morse/decoder.h"
+#include "morse/signalgenerator.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace db::morse;
+
+namespace {
+
+SignalOptions specSignal(double rate, double unit)
+{
+    SignalOptions o; // text defaults to the spec example "MC+IP192+168+2+150:"
+    o.sampleRate = rate;
+    o.unit = unit;
+    o.startOffset = 0.37;
+    return o;
+}
+
+Reason reasonOf(const std::vector<Sample> &samples)
+{
+    const auto r = decodeRecording(samples);
+    return r.ok() ? r->reason : static_cast<Reason>(r.error().deviceCode());
+}
+
+} // namespace
+
+class TstMorseDecoder : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void specExample_data()
+    {
+        QTest::addColumn<double>("rate");
+        QTest::addColumn<double>("unit");
+        QTest::newRow("15 fps, 200 ms") << 15.0 << 0.2;
+        QTest::newRow("25 fps, 120 ms") << 25.0 << 0.12;
+        QTest::newRow("30 fps, 100 ms") << 30.0 << 0.1;
+        QTest::newRow("60 fps, 60 ms") << 60.0 << 0.06;
+        QTest::newRow("1 kHz, 400 ms") << 1000.0 << 0.4;
+    }
+    void specExample()
+    {
+        QFETCH(double, rate);
+        QFETCH(double, unit);
+        const Signal sig = generateSignal(specSignal(rate, unit));
+        const auto result = decodeRecording(sig.samples);
+        QVERIFY2(result.ok(), qPrintable(result.error().toString()));
+        QCOMPARE(result->ip.toString(), QStringLiteral("192.168.2.150"));
+        QVERIFY(result->ip.confidence >= IpVoter::kConfident);
+        QCOMPARE(result->reason, Reason::None);
+        QVERIFY2(result->text.contains(QLatin1String("MC+IP192+168+2+150:")),
+                 qPrintable(result->text));
+        QVERIFY(std::abs(result->unit - unit) < 0.05 * unit);
+        QVERIFY(!result->timeline.empty());
+    }
+
+    void streamingGivesPartialResults()
+    {
+        const Signal sig = generateSignal(specSignal(30.0, 0.1));
+        Decoder decoder;
+        QCOMPARE(decoder.state(), DecoderState::Searching);
+        std::vector<DecoderEvent::Kind> kinds;
+        QString previousText;
+        bool textGrew = false;
+        double messageAt = -1.0;
+        for (std::size_t i = 0; i < sig.samples.size(); i += 15) {
+            const std::size_t n = std::min<std::size_t>(15, sig.samples.size() - i);
+            decoder.feed(std::span<const Sample>(sig.samples.data() + i, n));
+            textGrew = textGrew
+                || (decoder.text().size() > previousText.size() && !previousText.isEmpty());
+            previousText = decoder.text();
+            for (const DecoderEvent &e : decoder.takeEvents()) {
+                kinds.push_back(e.kind);
+                if (e.kind == DecoderEvent::Kind::MessageDecoded && messageAt < 0.0) {
+                    messageAt = e.time;
+                    QCOMPARE(e.detail, QStringLiteral("192.168.2.150"));
+                    // One message seen: the IP is known but not yet confident.
+                    QCOMPARE(decoder.state(), DecoderState::Decoding);
+                    QCOMPARE(decoder.reason(), Reason::LowConfidence);
+                }
+            }
+        }
+        QVERIFY(textGrew);
+        QVERIFY(messageAt > 0.0);
+        QCOMPARE(decoder.state(), DecoderState::Confident);
+        QCOMPARE(kinds.front(), DecoderEvent::Kind::LedFound);
+        QVERIFY(std::count(kinds.begin(), kinds.end(), DecoderEvent::Kind::UnitFound) == 1);
+        QVERIFY(std::count(kinds.begin(), kinds.end(), DecoderEvent::Kind::IpConfident) == 1);
+        QVERIFY(std::abs(decoder.unitFit().unit - 0.1) < 0.005);
+    }
+
+    void invalidInput()
+    {
+        QCOMPARE(reasonOf({}), Reason::InvalidInput);
+        const double nan = std::nan("");
+        QCOMPARE(reasonOf({ { 0.0, nan }, { 0.1, nan }, { 0.2, nan } }), Reason::InvalidInput);
+        QCOMPARE(reasonOf({ { 1.0, 0.0 }, { 0.5, 1.0 }, { 0.2, 0.0 } }), Reason::InvalidInput);
+        const auto r = decodeRecording({});
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().kind(), db::Error::Kind::InvalidArgument);
+    }
+
+    void noModulation_data()
+    {
+        QTest::addColumn<double>("sigma");
+        QTest::newRow("constant") << 0.0;
+        QTest::newRow("noise only") << 0.5;
+    }
+    void noModulation()
+    {
+        QFETCH(double, sigma);
+        std::vector<Sample> samples;
+        unsigned state = 12345u;
+        for (int i = 0; i < 30 * 60; ++i) {
+            state = state * 1664525u + 1013904223u; // deterministic noise
+            const double u = (state >> 8) / double(1u << 24) - 0.5;
+            samples.push_back({ i / 30.0, 100.0 + sigma * u * 3.46 });
+        }
+        QCOMPARE(reasonOf(samples), Reason::NoModulation);
+        const auto r = decodeRecording(samples);
+        QVERIFY(!r.ok());
+        QVERIFY(r.error().message().contains(QLatin1String("modulation")));
+    }
+
+    void blinkingButNotMorse()
+    {
+        // A 1 Hz heartbeat: all marks and gaps equal, 500 ms: no dah, unit outside the range.
+        std::vector<Sample> samples;
+        for (int i = 0; i < 30 * 60; ++i)
+            samples.push_back({ i / 30.0, (i / 15) % 2 ? 200.0 : 20.0 });
+        const Reason r = reasonOf(samples);
+        QVERIFY2(r == Reason::NotMorse || r == Reason::NoValidIp, qPrintable(reasonText(r)));
+    }
+
+    void tooShort()
+    {
+        SignalOptions o = specSignal(30.0, 0.12);
+        o.startOffset = 0.0;
+        Signal sig = generateSignal(o);
+        sig.samples.resize(static_cast<std::size_t>(0.5 * sig.messagePeriod * 30.0));
+        QCOMPARE(reasonOf(sig.samples), Reason::TooShort);
+    }
+
+    void messageWithoutValidIp_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::newRow("octet 300") << "MC+IP300+1+2+3:";
+        QTest::newRow("three octets") << "MC+IP10+1+2:";
+        QTest::newRow("status only") << "ST+OK:";
+    }
+    void messageWithoutValidIp()
+    {
+        QFETCH(QString, text);
+        SignalOptions o = specSignal(60.0, 0.08);
+        o.text = text;
+        o.repetitions = 4;
+        const Signal sig = generateSignal(o);
+        QCOMPARE(reasonOf(sig.samples), Reason::NoValidIp);
+    }
+
+    void otherTextIsTolerated()
+    {
+        SignalOptions o = specSignal(30.0, 0.1);
+        o.text = QStringLiteral("ST+OK: MC+IP10+0+0+7: ERR+5:");
+        const auto r = decodeRecording(generateSignal(o).samples);
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(r->ip.toString(), QStringLiteral("10.0.0.7"));
+        QCOMPARE(r->reason, Reason::None);
+    }
+};
+
+QTEST_GUILESS_MAIN(TstMorseDecoder)
+#include "tst_morsedecoder.moc"
