@@ -25,11 +25,6 @@ int listProtocols(Context &c)
     return ExitOk;
 }
 
-Result<ObjectAddress> address(Context &c, int arg)
-{
-    return ObjectAddress::parse(c.args.value(arg));
-}
-
 // The type for text conversion: the description's, else --type, else a 64-bit integer.
 Result<DataType> typeFor(Context &c, const ObjectDef *def)
 {
@@ -45,33 +40,56 @@ Result<DataType> typeFor(Context &c, const ObjectDef *def)
     return *t;
 }
 
+// The object named by args[1] on the device of args[0], with what the description says of it.
+struct ObjectTarget
+{
+    ObjectAddress address;
+    const ObjectDef *def = nullptr; // null for objects the description does not know
+    DataType type = DataType::Integer64;
+};
+
+Result<ObjectTarget> openObject(Context &c, Session &session)
+{
+    const auto address = ObjectAddress::parse(c.args.value(1));
+    if (!address)
+        return address.error();
+    if (auto opened = session.open(c.args.at(0)); !opened)
+        return opened.error();
+    ObjectTarget target;
+    target.address = *address;
+    target.def = session.connection()->dictionary().find(*address);
+    const auto type = typeFor(c, target.def);
+    if (!type)
+        return type.error();
+    target.type = *type;
+    return target;
+}
+
 int read(Context &c)
 {
-    const auto addr = address(c, 1);
-    if (!addr)
-        return fail(c, addr.error());
     Session session(c.registry, c.options);
-    if (auto opened = session.open(c.args.at(0)); !opened)
-        return fail(c, opened.error());
-    const ObjectDef *def = session.connection()->dictionary().find(*addr);
-    const auto type = typeFor(c, def);
-    if (!type)
-        return fail(c, type.error());
-    const auto value = session.read(*addr);
+    const auto target = openObject(c, session);
+    if (!target)
+        return fail(c, target.error());
+    const auto value = session.read(target->address);
     if (!value)
-        return fail(c, value.error().prefixed(QStringLiteral("reading %1").arg(addr->toString())));
+        return fail(
+            c,
+            value.error().prefixed(QStringLiteral("reading %1").arg(target->address.toString())));
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     QVariant raw = value.value();
-    if (!def && !c.type.isEmpty()) {
-        auto converted = codec::normalize(*type, raw);
+    if (!target->def && !c.type.isEmpty()) {
+        auto converted = codec::normalize(target->type, raw);
         if (converted)
             raw = converted.value();
     }
-    const QString text =
-        datatype::isNumeric(*type) || def ? codec::toText(*type, raw, format) : raw.toString();
+    const QString text = datatype::isNumeric(target->type) || target->def
+        ? codec::toText(target->type, raw, format)
+        : raw.toString();
     if (c.options.verbose) {
-        c.out << addr->toString() << ' ' << (def ? def->name : QStringLiteral("(unknown object)"))
-              << " = " << (def ? def->displayText(raw, format) : text) << Qt::endl;
+        c.out << target->address.toString() << ' '
+              << (target->def ? target->def->name : QStringLiteral("(unknown object)")) << " = "
+              << (target->def ? target->def->displayText(raw, format) : text) << Qt::endl;
     } else {
         c.out << text << Qt::endl;
     }
@@ -80,25 +98,22 @@ int read(Context &c)
 
 int write(Context &c)
 {
-    const auto addr = address(c, 1);
-    if (!addr)
-        return fail(c, addr.error());
     Session session(c.registry, c.options);
-    if (auto opened = session.open(c.args.at(0)); !opened)
-        return fail(c, opened.error());
-    const ObjectDef *def = session.connection()->dictionary().find(*addr);
-    const auto type = typeFor(c, def);
-    if (!type)
-        return fail(c, type.error());
-    const auto raw = def ? def->parseText(c.args.at(2)) : codec::fromText(*type, c.args.at(2));
+    const auto target = openObject(c, session);
+    if (!target)
+        return fail(c, target.error());
+    const QString valueText = c.args.at(2);
+    const auto raw =
+        target->def ? target->def->parseText(valueText) : codec::fromText(target->type, valueText);
     if (!raw)
         return fail(c, raw.error());
-    if (auto written = session.write(*addr, raw.value()); !written)
-        return fail(c,
-                    written.error().prefixed(QStringLiteral("writing %1").arg(addr->toString())));
+    if (auto written = session.write(target->address, raw.value()); !written)
+        return fail(
+            c,
+            written.error().prefixed(QStringLiteral("writing %1").arg(target->address.toString())));
     if (c.options.verbose)
-        c.out << addr->toString() << " <- " << codec::toText(*type, raw.value()) << " ok"
-              << Qt::endl;
+        c.out << target->address.toString() << " <- " << codec::toText(target->type, raw.value())
+              << " ok" << Qt::endl;
     return ExitOk;
 }
 

@@ -1,0 +1,51 @@
+#include "canbus.h"
+
+namespace db {
+
+void CanBus::open()
+{
+    if (m_state != State::Closed)
+        return;
+    m_state = State::Opening;
+    doOpen();
+}
+
+void CanBus::close()
+{
+    if (m_state == State::Closed || m_state == State::Closing)
+        return;
+    m_state = State::Closing;
+    doClose();
+}
+
+bool CanBus::send(const QCanBusFrame &frame)
+{
+    if (m_state != State::Open)
+        return false;
+    doSend(frame);
+    return true;
+}
+
+void CanBus::setOpened()
+{
+    if (m_state != State::Opening)
+        return;
+    m_state = State::Open;
+    Q_EMIT opened();
+}
+
+void CanBus::setClosed(const Error &error)
+{
+    if (m_state == State::Closed)
+        return;
+    m_state = State::Closed;
+    Q_EMIT closed(error);
+}
+
+void CanBus::deliver(const QCanBusFrame &frame)
+{
+    if (m_state == State::Open)
+        Q_EMIT frameReceived(frame);
+}
+
+} // namespace db

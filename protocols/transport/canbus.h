@@ -1,0 +1,58 @@
+#pragma once
+
+#include "core/error.h"
+
+#include <QCanBusFrame>
+#include <QObject>
+
+namespace db {
+
+// A CAN bus seen by one node: frames out, frames in. It knows no protocol (CANopen lives above).
+// Implementations: QtCanBus (any Qt CAN plugin: socketcan, virtualcan, peakcan, ...) and
+// SlcanBus (SLCAN ASCII over a ByteStream, e.g. TCP port 15001 of a MovingCap ETH drive).
+//
+// The base class owns the open/close state machine; subclasses implement doOpen()/doClose()/
+// doSend() and report with setOpened()/setClosed()/deliver(). Signals come from the event loop.
+class CanBus : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State { Closed, Opening, Open, Closing };
+    Q_ENUM(State)
+
+    using QObject::QObject;
+
+    // For messages and the CAN monitor: "slcan 127.0.0.1:15001", "virtualcan can0".
+    virtual QString name() const = 0;
+    State state() const { return m_state; }
+    bool isOpen() const { return m_state == State::Open; }
+
+    void open();
+    void close();
+    // Queues one frame; false (and no effect) unless open. frameSent() follows once it is out.
+    bool send(const QCanBusFrame &frame);
+
+Q_SIGNALS:
+    void opened();
+    // After close() or a failure; error set when the bus failed (refused, bus off, link lost).
+    void closed(const db::Error &error);
+    void frameReceived(const QCanBusFrame &frame);
+    // Every frame this node sent (for the CAN monitor's TX direction).
+    void frameSent(const QCanBusFrame &frame);
+    // A problem that does not close the bus (error frame, BEL from an SLCAN adapter, overrun).
+    void warning(const QString &text);
+
+protected:
+    virtual void doOpen() = 0;
+    virtual void doClose() = 0;
+    virtual void doSend(const QCanBusFrame &frame) = 0;
+
+    void setOpened();
+    void setClosed(const Error &error = {});
+    void deliver(const QCanBusFrame &frame);
+
+private:
+    State m_state = State::Closed;
+};
+
+} // namespace db
