@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "commands_description.h"
 
 #include "core/valuecodec.h"
 #include "refgo/refgoconnection.h"
@@ -148,6 +149,8 @@ const QList<Command> &commands()
           3, 3, write },
         { "refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
           2, refgo },
+        { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,
+          edsCheck },
     };
     return list;
 }

@@ -1,0 +1,172 @@
+#include "dcfwriter.h"
+
+#include "devicedescription.h"
+
+#include <QFileInfo>
+#include <QSaveFile>
+#include <QTextStream>
+
+namespace db {
+
+namespace {
+
+QString oneLine(QString text)
+{
+    text.replace(QLatin1String("\r\n"), QLatin1String(" "));
+    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+    text.replace(QLatin1Char('\r'), QLatin1Char(' '));
+    return text;
+}
+
+QString hex32(quint32 v)
+{
+    return QStringLiteral("0x%1")
+        .arg(v, 8, 16, QLatin1Char('0'))
+        .toUpper()
+        .replace(QLatin1String("0X"), QLatin1String("0x"));
+}
+
+QString accessText(Access access)
+{
+    return access::name(access);
+}
+
+void writeEntry(QTextStream &out, const ObjectDef &def, const QMap<ObjectAddress, QVariant> &values)
+{
+    out << "ParameterName=" << oneLine(def.name) << '\n'
+        << "ObjectType=0x7\n"
+        << "DataType=0x" << QStringLiteral("%1").arg(quint16(def.type), 4, 16, QLatin1Char('0'))
+        << '\n'
+        << "AccessType=" << accessText(def.access) << '\n'
+        << "PDOMapping=" << (def.pdoMappable ? 1 : 0) << '\n';
+    if (def.defaultValue.isValid())
+        out << "DefaultValue=" << oneLine(description::valueText(def.type, def.defaultValue))
+            << '\n';
+    if (def.minimum.isValid())
+        out << "LowLimit=" << description::valueText(def.type, def.minimum) << '\n';
+    if (def.maximum.isValid())
+        out << "HighLimit=" << description::valueText(def.type, def.maximum) << '\n';
+    if (!def.unit.isEmpty())
+        out << "Unit=" << oneLine(def.unit) << '\n';
+    if (def.factor != 1.0)
+        out << "Factor=" << QString::number(def.factor, 'g', 17) << '\n';
+    if (!def.description.isEmpty())
+        out << "Description=" << oneLine(def.description) << '\n';
+    const auto value = values.constFind(def.address);
+    if (value != values.cend()) {
+        const auto raw = codec::normalize(def.type, value.value());
+        if (raw)
+            out << "ParameterValue=" << oneLine(description::valueText(def.type, raw.value()))
+                << '\n';
+    }
+    out << '\n';
+}
+
+// CiA 306 4.5.2: the three object lists, by index range.
+void writeObjectLists(QTextStream &out, const QList<quint16> &indices)
+{
+    QList<quint16> mandatory, optional, manufacturer;
+    for (quint16 index : indices) {
+        if (index == 0x1000 || index == 0x1001 || index == 0x1018)
+            mandatory << index;
+        else if (index >= 0x2000 && index < 0x6000)
+            manufacturer << index;
+        else
+            optional << index;
+    }
+    const struct
+    {
+        const char *name;
+        const QList<quint16> &list;
+    } lists[] = { { "MandatoryObjects", mandatory },
+                  { "OptionalObjects", optional },
+                  { "ManufacturerObjects", manufacturer } };
+    for (const auto &l : lists) {
+        out << '[' << l.name << "]\nSupportedObjects=" << l.list.size() << '\n';
+        for (qsizetype i = 0; i < l.list.size(); ++i)
+            out << i + 1 << "=0x"
+                << QStringLiteral("%1").arg(l.list.at(i), 4, 16, QLatin1Char('0')).toUpper()
+                << '\n';
+        out << '\n';
+    }
+}
+
+} // namespace
+
+QByteArray dcfText(const ObjectDictionary &dictionary, const QMap<ObjectAddress, QVariant> &values,
+                   const DcfCommissioning &commissioning, const QDateTime &now)
+{
+    QByteArray bytes;
+    QTextStream out(&bytes);
+    out.setEncoding(QStringConverter::Utf8);
+    const DeviceIdentity &id = dictionary.identity;
+    const QString time = now.toString(QStringLiteral("hh:mmAP"));
+    const QString date = now.toString(QStringLiteral("MM-dd-yyyy"));
+    out << "[FileInfo]\nFileVersion=1\nFileRevision=0\nEDSVersion=4.0\n"
+        << "Description=configuration of " << oneLine(id.productName) << '\n'
+        << "CreationTime=" << time << "\nCreationDate=" << date << '\n'
+        << "CreatedBy=drivebench\n"
+        << "ModificationTime=" << time << "\nModificationDate=" << date << '\n'
+        << "ModifiedBy=drivebench\n";
+    if (!id.descriptionFile.isEmpty())
+        out << "LastEDS=" << QFileInfo(id.descriptionFile).fileName() << '\n';
+    out << "\n[DeviceInfo]\nVendorName=" << oneLine(id.vendorName) << '\n'
+        << "VendorNumber=" << hex32(id.vendorId) << '\n'
+        << "ProductName=" << oneLine(id.productName) << '\n'
+        << "ProductNumber=" << hex32(id.productCode) << '\n'
+        << "RevisionNumber=" << oneLine(id.revision) << "\n\n";
+    out << "[DeviceComissioning]\n";
+    if (commissioning.nodeId > 0)
+        out << "NodeID=" << commissioning.nodeId << '\n';
+    out << "NodeName=" << oneLine(commissioning.nodeName) << '\n';
+    if (commissioning.bitrateKbit > 0)
+        out << "Baudrate=" << commissioning.bitrateKbit << '\n';
+    out << "NetNumber=0\n\n";
+
+    QMap<quint16, QList<ObjectDef>> byIndex;
+    for (const ObjectDef &def : dictionary.objects())
+        byIndex[def.address.index].append(def);
+    writeObjectLists(out, byIndex.keys());
+
+    for (auto it = byIndex.cbegin(); it != byIndex.cend(); ++it) {
+        const QList<ObjectDef> &subs = it.value();
+        const QString hex = QStringLiteral("%1").arg(it.key(), 4, 16, QLatin1Char('0')).toUpper();
+        if (subs.size() == 1 && subs.first().address.sub == 0
+            && subs.first().objectName.isEmpty()) {
+            out << '[' << hex << "]\n";
+            writeEntry(out, subs.first(), values);
+            continue;
+        }
+        bool sameType = subs.size() > 1;
+        for (const ObjectDef &def : subs)
+            sameType &= def.address.sub == 0 || def.type == subs.last().type;
+        const QString name =
+            subs.first().objectName.isEmpty() ? subs.first().name : subs.first().objectName;
+        out << '[' << hex << "]\nParameterName=" << oneLine(name) << '\n'
+            << "ObjectType=" << (sameType ? "0x8" : "0x9") << '\n'
+            << "SubNumber=" << subs.size() << "\n\n";
+        for (const ObjectDef &def : subs) {
+            out << '[' << hex << "sub" << QString::number(def.address.sub, 16).toUpper() << "]\n";
+            writeEntry(out, def, values);
+        }
+    }
+    out.flush();
+    return bytes;
+}
+
+Result<void> writeDcf(const QString &path, const ObjectDictionary &dictionary,
+                      const QMap<ObjectAddress, QVariant> &values,
+                      const DcfCommissioning &commissioning)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return Error(Error::Kind::Io,
+                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+    const QByteArray text = dcfText(dictionary, values, commissioning);
+    if (file.write(text) != text.size() || !file.commit())
+        return Error(Error::Kind::Io,
+                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+    return {};
+}
+
+} // namespace db
