@@ -16,9 +16,16 @@ namespace {
 
 int listProtocols(Context &c)
 {
+    // scheme, URI form and title, in aligned columns
+    qsizetype schemeWidth = 0;
+    qsizetype patternWidth = 0;
     for (const ProtocolInfo &p : c.registry.protocols()) {
-        c.out << qSetFieldWidth(20) << Qt::left << p.scheme << qSetFieldWidth(0)
-              << qSetFieldWidth(44) << p.uriPattern << qSetFieldWidth(0) << p.title;
+        schemeWidth = qMax(schemeWidth, p.scheme.size());
+        patternWidth = qMax(patternWidth, p.uriPattern.size());
+    }
+    for (const ProtocolInfo &p : c.registry.protocols()) {
+        c.out << p.scheme.leftJustified(schemeWidth + 2)
+              << p.uriPattern.leftJustified(patternWidth + 2) << p.title;
         if (p.defaultPort >= 0)
             c.out << " (default port " << p.defaultPort << ")";
         c.out << Qt::endl;

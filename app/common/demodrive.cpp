@@ -1,9 +1,11 @@
 #include "demodrive.h"
 
+#include "canopen/movingcapcanopen.h"
 #include "refgo/movingcaprefgohandler.h"
 #include "refgo/refgoserver.h"
 #include "resources/builtindescriptions.h"
 #include "simulation/movingcapdrive.h"
+#include "transport/slcanserver.h"
 
 namespace db::app {
 
@@ -20,10 +22,17 @@ struct DemoDrive::Private
 {
     explicit Private(const QHash<ObjectAddress, QVariant> &initialValues)
         : drive(resources::movingCapDictionary(), options(initialValues))
-    { }
+    {
+        QObject::connect(&slcanServer, &SlcanServer::frameReceived, &canopen,
+                         &canopen::MovingCapCanopen::receive);
+        QObject::connect(&canopen, &canopen::MovingCapCanopen::transmit, &slcanServer,
+                         &SlcanServer::send);
+    }
     sim::MovingCapDrive drive;
     refgo::MovingCapRefgoHandler handler { &drive };
     refgo::Server refgoServer { &handler };
+    canopen::MovingCapCanopen canopen { &drive };
+    SlcanServer slcanServer;
 };
 
 DemoDrive::DemoDrive(const QHash<ObjectAddress, QVariant> &initialValues, QObject *parent)
@@ -48,6 +57,23 @@ quint16 DemoDrive::refgoPort() const
 QString DemoDrive::refgoUri() const
 {
     return QStringLiteral("refgo://127.0.0.1:%1").arg(refgoPort());
+}
+
+Result<void> DemoDrive::startSlcan(quint16 port)
+{
+    return d->slcanServer.listen(port);
+}
+
+quint16 DemoDrive::slcanPort() const
+{
+    return d->slcanServer.port();
+}
+
+QString DemoDrive::slcanUri() const
+{
+    return QStringLiteral("canopen+slcan://127.0.0.1:%1?node=%2")
+        .arg(slcanPort())
+        .arg(canopen::MovingCapCanopen::kNodeId);
 }
 
 sim::MovingCapDrive &DemoDrive::drive()

@@ -16,7 +16,8 @@ class MovingCapDrive;
 namespace db::app {
 
 // The built-in simulated MovingCap for `drivebench --demo`, `drivebench-sim` and tests: a
-// simulated drive with its RefGo door on 127.0.0.1 (later issues add its SLCAN door).
+// simulated drive with its RefGo door and its SLCAN door (CANopen node 50, movingcap.md 4) on
+// 127.0.0.1; both doors serve the same drive object.
 class DemoDrive : public QObject
 {
     Q_OBJECT
@@ -31,6 +32,12 @@ public:
     quint16 refgoPort() const;
     // "refgo://127.0.0.1:PORT"
     QString refgoUri() const;
+
+    // SLCAN over TCP on 127.0.0.1:port (0 = chosen by the OS), CANopen node 50.
+    Result<void> startSlcan(quint16 port = 0);
+    quint16 slcanPort() const;
+    // "canopen+slcan://127.0.0.1:PORT?node=50"
+    QString slcanUri() const;
 
     sim::MovingCapDrive &drive();
 

@@ -1,13 +1,82 @@
 #include "protocols.h"
 
+#include "canopen/canbusfactory.h"
+#include "canopen/canopenconnection.h"
+#include "core/devicedescription.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
 
+#include <QCanBus>
 #include <QCoreApplication>
 
 namespace db::app {
 
 namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("protocols", text);
+}
+
+// The dictionary a CANopen connection starts with: the file named by ?eds=PATH (EDS, DCF, XDD,
+// XDC or our JSON), else the MovingCap description for node 50 behind SLCAN (the MovingCap ETH
+// CANopen door, movingcap.md 4), else an empty one (objects are then read by index and type).
+Result<ObjectDictionary> canopenDictionary(const ConnectionUri &uri)
+{
+    const QString eds = uri.queryValue(QStringLiteral("eds"));
+    if (!eds.isEmpty()) {
+        const auto node = canopen::CanopenConnection::nodeFromUri(uri);
+        DescriptionOptions options;
+        if (node)
+            options.nodeId = *node;
+        auto loaded = loadDeviceDescription(eds, options);
+        if (!loaded)
+            return loaded.error().prefixed(QStringLiteral("eds=%1").arg(eds));
+        return loaded->dictionary;
+    }
+    if (uri.scheme() == QLatin1String("canopen+slcan")
+        && uri.queryValue(QStringLiteral("node")) == QLatin1String("50"))
+        return resources::movingCapDictionary();
+    return ObjectDictionary();
+}
+
+Result<void> checkCanopen(const ConnectionUri &uri)
+{
+    if (auto node = canopen::CanopenConnection::nodeFromUri(uri); !node)
+        return node.error();
+    if (uri.host().isEmpty())
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("%1 names no interface or host").arg(uri.toString()));
+    if (uri.hasQuery(QStringLiteral("bitrate"))) {
+        if (auto b = uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000); !b)
+            return b.error();
+    }
+    if (auto dict = canopenDictionary(uri); !dict)
+        return dict.error();
+    return {};
+}
+
+std::unique_ptr<DeviceConnection> makeCanopen(const ConnectionUri &uri)
+{
+    auto bus = canopen::CanBusFactory::makeBus(uri);
+    if (!bus)
+        return nullptr;
+    auto connection = std::make_unique<canopen::CanopenConnection>(uri, bus.value());
+    connection->setDictionary(canopenDictionary(uri).valueOr(ObjectDictionary()));
+    return connection;
+}
+
+ProtocolInfo canopenProtocol(const QString &transport, const QString &title, const QString &pattern,
+                             int defaultPort)
+{
+    return { QStringLiteral("canopen+") + transport,
+             QStringLiteral("canopen"),
+             title,
+             pattern,
+             defaultPort,
+             makeCanopen,
+             checkCanopen };
+}
 
 ProtocolRegistry makeRegistry()
 {
@@ -15,15 +84,26 @@ ProtocolRegistry makeRegistry()
     registry.add({
         QStringLiteral("refgo"),
         QStringLiteral("refgo"),
-        QCoreApplication::translate("protocols", "MovingCap RefGo (ASCII over TCP)"),
+        tr("MovingCap RefGo (ASCII over TCP)"),
         QStringLiteral("refgo://HOST[:PORT]"),
-        10001,
+        refgo::RefgoConnection::kDefaultPort,
         [](const ConnectionUri &uri) -> std::unique_ptr<DeviceConnection> {
             auto connection = std::make_unique<refgo::RefgoConnection>(uri);
             connection->setDictionary(resources::movingCapDictionary());
             return connection;
         },
+        {},
     });
+    registry.add(canopenProtocol(QStringLiteral("slcan"),
+                                 tr("CANopen over SLCAN in TCP (MovingCap ETH: node 50)"),
+                                 QStringLiteral("canopen+slcan://HOST[:PORT]?node=N[&eds=FILE]"),
+                                 canopen::CanBusFactory::kDefaultSlcanPort));
+    // Every Qt CAN plugin installed on this machine (socketcan, virtualcan, peakcan, ...).
+    for (const QString &plugin : QCanBus::instance()->plugins()) {
+        registry.add(canopenProtocol(
+            plugin, tr("CANopen over Qt CAN plugin '%1'").arg(plugin),
+            QStringLiteral("canopen+%1://IFACE?node=N[&bitrate=B][&eds=FILE]").arg(plugin), -1));
+    }
     return registry;
 }
 

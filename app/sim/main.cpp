@@ -1,5 +1,5 @@
 // drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
-//   drivebench-sim movingcap --refgo-port PORT [--set INDEX:SUB=VALUE ...]
+//   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
 #include "../common/demodrive.h"
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
@@ -50,7 +50,7 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QCoreApplication::translate(
         "sim",
         "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
-        "(RefGo door)"));
+        "(RefGo and SLCAN doors)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -63,7 +63,13 @@ int main(int argc, char *argv[])
                                     "Preset an object before serving, e.g. 3511:8=110 "
                                     "(repeatable)."),
         QStringLiteral("INDEX:SUB=VALUE"));
-    parser.addOptions({ refgoPort, set });
+    const QCommandLineOption slcanPort(
+        QStringLiteral("slcan-port"),
+        QCoreApplication::translate("sim",
+                                    "Serve CANopen node 50 as SLCAN over TCP on this port "
+                                    "(0 = chosen by the OS)."),
+        QStringLiteral("port"));
+    parser.addOptions({ refgoPort, slcanPort, set });
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
@@ -71,19 +77,29 @@ int main(int argc, char *argv[])
     const QStringList args = parser.positionalArguments();
     if (args.size() != 1 || args.first() != QLatin1String("movingcap")) {
         err << "drivebench-sim: give the device to simulate: drivebench-sim movingcap "
-               "--refgo-port PORT"
+               "--refgo-port PORT [--slcan-port PORT]"
             << Qt::endl;
         return 2;
     }
-    if (!parser.isSet(refgoPort)) {
-        err << "drivebench-sim: no door to serve; give --refgo-port PORT (0 = any free port)"
+    if (!parser.isSet(refgoPort) && !parser.isSet(slcanPort)) {
+        err << "drivebench-sim: no door to serve; give --refgo-port PORT and/or --slcan-port "
+               "PORT (0 = any free port)"
             << Qt::endl;
         return 2;
     }
-    bool ok = false;
-    const uint port = parser.value(refgoPort).toUInt(&ok);
-    if (!ok || port > 65535) {
-        err << "drivebench-sim: --refgo-port takes a port number 0..65535" << Qt::endl;
+    // Port of a door flag, -1 when absent, -2 when not a port number.
+    const auto portOf = [&](const QCommandLineOption &option) {
+        if (!parser.isSet(option))
+            return -1;
+        bool ok = false;
+        const uint port = parser.value(option).toUInt(&ok);
+        return ok && port <= 65535 ? int(port) : -2;
+    };
+    const int refgo = portOf(refgoPort);
+    const int slcan = portOf(slcanPort);
+    if (refgo == -2 || slcan == -2) {
+        err << "drivebench-sim: --" << (refgo == -2 ? "refgo" : "slcan")
+            << "-port takes a port number 0..65535" << Qt::endl;
         return 2;
     }
 
@@ -110,12 +126,22 @@ int main(int argc, char *argv[])
         presets.insert(*address, raw.value());
     }
     app::DemoDrive demo(presets);
-    if (auto listening = demo.startRefgo(quint16(port)); !listening) {
-        err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
-        return 3;
+    if (refgo >= 0) {
+        if (auto listening = demo.startRefgo(quint16(refgo)); !listening) {
+            err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
+            return 3;
+        }
+        out << "movingcap: RefGo listening on 127.0.0.1:" << demo.refgoPort() << " ("
+            << demo.refgoUri() << ")" << Qt::endl;
     }
-    out << "movingcap: RefGo listening on 127.0.0.1:" << demo.refgoPort() << " (" << demo.refgoUri()
-        << ")" << Qt::endl;
+    if (slcan >= 0) {
+        if (auto listening = demo.startSlcan(quint16(slcan)); !listening) {
+            err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
+            return 3;
+        }
+        out << "movingcap: SLCAN listening on 127.0.0.1:" << demo.slcanPort() << " ("
+            << demo.slcanUri() << ")" << Qt::endl;
+    }
     quitOnSignals(app);
     return app.exec();
 }

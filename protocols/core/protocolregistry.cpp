@@ -37,6 +37,10 @@ Result<ConnectionUri> ProtocolRegistry::parseUri(const QString &text) const
     if (result.port() > 65535)
         return Error(Error::Kind::InvalidArgument,
                      QStringLiteral("port %1 in %2 is out of range").arg(result.port()).arg(text));
+    if (info->check) {
+        if (auto checked = info->check(result); !checked)
+            return checked.error();
+    }
     return result;
 }
 

@@ -18,6 +18,9 @@ struct ProtocolInfo
     int defaultPort = -1;
     // Makes an unopened connection for a checked URI (default port already applied).
     std::function<std::unique_ptr<DeviceConnection>(const ConnectionUri &uri)> create;
+    // Optional: refuses URIs the factory cannot serve (missing ?node=, unreadable eds=, ...),
+    // so that the GUI and CLI show the cause before anything is opened.
+    std::function<Result<void>(const ConnectionUri &uri)> check;
 };
 
 // Maps URI schemes to connection factories. Filled in one place (app/), passed to whoever

@@ -25,15 +25,34 @@ ProtocolRegistry registry()
     auto make = [](const ConnectionUri &uri) {
         return std::make_unique<NullConnection>(uri);
     };
-    r.add({ QStringLiteral("refgo"), QStringLiteral("refgo"), QStringLiteral("RefGo"),
-            QStringLiteral("refgo://HOST[:PORT]"), 10001, make });
-    r.add({ QStringLiteral("canopen+slcan"), QStringLiteral("canopen"), QStringLiteral("SLCAN"),
-            QStringLiteral("canopen+slcan://HOST[:PORT]?node=N"), 15001, make });
-    r.add({ QStringLiteral("canopen+socketcan"), QStringLiteral("canopen"),
-            QStringLiteral("SocketCAN"), QStringLiteral("canopen+socketcan://IFACE?node=N"), -1,
-            make });
-    r.add({ QStringLiteral("vabus"), QStringLiteral("vabus"), QStringLiteral("VABus"),
-            QStringLiteral("vabus://HOST[:PORT]"), 17220, make });
+    r.add({ QStringLiteral("refgo"),
+            QStringLiteral("refgo"),
+            QStringLiteral("RefGo"),
+            QStringLiteral("refgo://HOST[:PORT]"),
+            10001,
+            make,
+            {} });
+    r.add({ QStringLiteral("canopen+slcan"),
+            QStringLiteral("canopen"),
+            QStringLiteral("SLCAN"),
+            QStringLiteral("canopen+slcan://HOST[:PORT]?node=N"),
+            15001,
+            make,
+            {} });
+    r.add({ QStringLiteral("canopen+socketcan"),
+            QStringLiteral("canopen"),
+            QStringLiteral("SocketCAN"),
+            QStringLiteral("canopen+socketcan://IFACE?node=N"),
+            -1,
+            make,
+            {} });
+    r.add({ QStringLiteral("vabus"),
+            QStringLiteral("vabus"),
+            QStringLiteral("VABus"),
+            QStringLiteral("vabus://HOST[:PORT]"),
+            17220,
+            make,
+            {} });
     return r;
 }
 

@@ -18,12 +18,20 @@ ProtocolRegistry testRegistry()
     const auto makeFake = [](const ConnectionUri &uri) {
         return std::make_unique<test::FakeConnection>(uri.toString());
     };
-    registry.add({ QStringLiteral("refgo"), QStringLiteral("refgo"),
+    registry.add({ QStringLiteral("refgo"),
+                   QStringLiteral("refgo"),
                    QStringLiteral("MovingCap RefGo (ASCII over TCP)"),
-                   QStringLiteral("refgo://HOST[:PORT]"), 10001, makeFake });
-    registry.add({ QStringLiteral("canopen+socketcan"), QStringLiteral("canopen"),
+                   QStringLiteral("refgo://HOST[:PORT]"),
+                   10001,
+                   makeFake,
+                   {} });
+    registry.add({ QStringLiteral("canopen+socketcan"),
+                   QStringLiteral("canopen"),
                    QStringLiteral("CANopen over SocketCAN"),
-                   QStringLiteral("canopen+socketcan://IFACE?node=N&bitrate=B"), -1, makeFake });
+                   QStringLiteral("canopen+socketcan://IFACE?node=N&bitrate=B"),
+                   -1,
+                   makeFake,
+                   {} });
     return registry;
 }
 } // namespace

@@ -20,13 +20,18 @@ namespace {
 ProtocolRegistry fakeRegistry()
 {
     ProtocolRegistry registry;
-    registry.add({ QStringLiteral("fake"), QStringLiteral("fake"), QStringLiteral("Test double"),
-                   QStringLiteral("fake://NAME"), -1, [](const ConnectionUri &uri) {
+    registry.add({ QStringLiteral("fake"),
+                   QStringLiteral("fake"),
+                   QStringLiteral("Test double"),
+                   QStringLiteral("fake://NAME"),
+                   -1,
+                   [](const ConnectionUri &uri) {
                        auto fake = std::make_unique<FakeConnection>(uri.toString());
                        fake->setDictionary(resources::movingCapDictionary());
                        fake->setValue({ 0x6041, 0 }, QVariant::fromValue<qulonglong>(0x0427));
                        return fake;
-                   } });
+                   },
+                   {} });
     return registry;
 }
 } // namespace

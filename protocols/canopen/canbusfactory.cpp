@@ -1,0 +1,47 @@
+#include "canbusfactory.h"
+
+#include "transport/qtcanbus.h"
+
+#include "transport/slcanbus.h"
+#include "transport/tcpstream.h"
+
+namespace db::canopen {
+
+QString CanBusFactory::transportOf(const ConnectionUri &uri)
+{
+    const QString prefix = QStringLiteral("canopen+");
+    if (!uri.scheme().startsWith(prefix))
+        return {};
+    return uri.scheme().mid(prefix.size());
+}
+
+Result<CanBus *> CanBusFactory::makeBus(const ConnectionUri &uri, QObject *parent)
+{
+    const QString transport = transportOf(uri);
+    if (transport.isEmpty())
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("%1 is not a CANopen URI (canopen+socketcan://, "
+                                    "canopen+virtualcan://, canopen+slcan://)")
+                         .arg(uri.toString()));
+    if (uri.host().isEmpty())
+        return Error(
+            Error::Kind::InvalidArgument,
+            QStringLiteral("%1 names no %2")
+                .arg(uri.toString(),
+                     transport == u"slcan" ? QStringLiteral("host") : QStringLiteral("interface")));
+    int bitrate = 0;
+    if (uri.hasQuery(QStringLiteral("bitrate"))) {
+        const auto b = uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000);
+        if (!b)
+            return b.error();
+        bitrate = *b;
+    }
+    if (transport == u"slcan") {
+        auto *stream = new TcpStream(uri.host(), quint16(uri.portOr(kDefaultSlcanPort)));
+        return static_cast<CanBus *>(
+            new SlcanBus(stream, bitrate > 0 ? bitrate : kDefaultSlcanBitrate, parent));
+    }
+    return static_cast<CanBus *>(new QtCanBus(transport, uri.host(), bitrate, parent));
+}
+
+} // namespace db::canopen

@@ -1,0 +1,260 @@
+#include "canopenconnection.h"
+
+#include "canopenlogging.h"
+#include "emcyconsumer.h"
+#include "nmtmaster.h"
+#include "nodemonitor.h"
+#include "sdoclient.h"
+#include "syncproducer.h"
+#include "transport/canbus.h"
+
+#include <QPointer>
+
+namespace db::canopen {
+
+CanopenConnection::CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObject *parent)
+    : DeviceConnection(uri, parent)
+    , m_bus(bus)
+    , m_nodeResult(nodeFromUri(uri))
+    , m_node(m_nodeResult.valueOr(0))
+    , m_probe(uri.queryValue(QStringLiteral("probe")) == u"1")
+{
+    m_bus->setParent(this);
+    m_sdo = new SdoClient(m_bus, this);
+    m_sdo->setBlockEnabled(uri.queryValue(QStringLiteral("block")) == u"1");
+    m_nmt = new NmtMaster(m_bus, this);
+    m_monitor = new NodeMonitor(m_bus, this);
+    m_emcy = new EmcyConsumer(m_bus, this);
+    m_sync = new SyncProducer(m_bus, this);
+    connect(m_bus, &CanBus::opened, this, &CanopenConnection::onBusOpened);
+    connect(m_bus, &CanBus::closed, this, &CanopenConnection::onBusClosed);
+    connect(m_bus, &CanBus::warning, this,
+            [this](const QString &text) { Q_EMIT logLine(QStringLiteral("! ") + text); });
+    connect(m_sdo, &SdoClient::logLine, this, &DeviceConnection::logLine);
+    connect(m_emcy, &EmcyConsumer::emergency, this,
+            [this](const Emergency &e) { Q_EMIT logLine(QStringLiteral("EMCY ") + e.toString()); });
+    connect(m_monitor, &NodeMonitor::bootUp, this,
+            [this](NodeId node) { Q_EMIT logLine(QStringLiteral("node %1 boot-up").arg(node)); });
+    connect(m_monitor, &NodeMonitor::heartbeatLost, this, [this](NodeId node) {
+        Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
+    });
+}
+
+CanopenConnection::~CanopenConnection()
+{
+    // The SDO client first: its replies fail while the bus still exists.
+    delete m_sdo;
+    m_sdo = nullptr;
+}
+
+Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
+{
+    if (!uri.hasQuery(QStringLiteral("node")))
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("%1 needs the node id: ?node=N (1..127)").arg(uri.toString()));
+    const auto node = uri.queryInt(QStringLiteral("node"), kMinNodeId, kMaxNodeId);
+    if (!node)
+        return node.error();
+    return NodeId(*node);
+}
+
+void CanopenConnection::doOpen()
+{
+    if (!m_nodeResult) {
+        setState(State::Disconnected, m_nodeResult.error());
+        return;
+    }
+    m_emcy->setDictionary(m_node, dictionary());
+    Q_EMIT logLine(QStringLiteral("opening %1 for node %2").arg(m_bus->name()).arg(m_node));
+    if (m_bus->isOpen())
+        onBusOpened();
+    else
+        m_bus->open();
+}
+
+void CanopenConnection::doClose()
+{
+    if (m_bus->state() == CanBus::State::Closed)
+        setState(State::Disconnected);
+    else
+        m_bus->close();
+}
+
+void CanopenConnection::onBusOpened()
+{
+    if (state() != State::Connecting)
+        return;
+    if (m_probe) {
+        probe();
+        return;
+    }
+    qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_bus->name();
+    Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_bus->name()));
+    setState(State::Connected);
+}
+
+// Reads 1000h: any answer, even an abort, shows the node is there.
+void CanopenConnection::probe()
+{
+    m_sdo->setTimeoutMs(requestTimeoutMs());
+    Reply *reply = m_sdo->upload(m_node, kDeviceType, SdoClient::Mode::Expedited);
+    reply->setParent(this);
+    connect(reply, &Reply::finished, this, [this, reply] {
+        reply->deleteLater();
+        if (state() != State::Connecting)
+            return;
+        if (reply->ok() || reply->error().kind() == Error::Kind::DeviceError) {
+            Q_EMIT logLine(QStringLiteral("node %1 answers on %2").arg(m_node).arg(m_bus->name()));
+            setState(State::Connected);
+            return;
+        }
+        const Error why = reply->error().kind() == Error::Kind::Timeout
+            ? Error(Error::Kind::Timeout,
+                    QStringLiteral("node %1 does not answer on %2 (no SDO answer to 1000h within "
+                                   "%3 ms)")
+                        .arg(m_node)
+                        .arg(m_bus->name())
+                        .arg(requestTimeoutMs()))
+            : reply->error();
+        setState(State::Closing);
+        setState(State::Disconnected, why);
+        m_bus->close();
+    });
+}
+
+void CanopenConnection::onBusClosed(const Error &error)
+{
+    const State previous = state();
+    if (previous == State::Disconnected)
+        return;
+    if (previous == State::Closing || !error.isError()) {
+        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_bus->name()));
+        setState(State::Disconnected,
+                 previous == State::Closing
+                     ? Error()
+                     : Error(Error::Kind::Disconnected,
+                             QStringLiteral("CAN bus %1 closed").arg(m_bus->name())));
+        return;
+    }
+    Q_EMIT logLine(QStringLiteral("! ") + error.message());
+    setState(State::Disconnected, error);
+}
+
+Reply *CanopenConnection::storeParameters()
+{
+    return write(kStoreParameters, QVariant::fromValue<qulonglong>(kStoreSignature));
+}
+
+QVariant CanopenConnection::valueFromUnknownBytes(const QByteArray &bytes)
+{
+    const qsizetype n = bytes.size();
+    if ((n >= 1 && n <= 4) || n == 8) {
+        quint64 v = 0;
+        for (qsizetype i = n - 1; i >= 0; --i)
+            v = (v << 8) | quint8(bytes.at(i));
+        return QVariant::fromValue<qlonglong>(qlonglong(v));
+    }
+    return bytes;
+}
+
+Result<QByteArray> CanopenConnection::bytesFromUnknownValue(const QVariant &value)
+{
+    int size = 0;
+    switch (value.typeId()) {
+    case QMetaType::QByteArray:
+        return value.toByteArray();
+    case QMetaType::QString:
+        return value.toString().toUtf8();
+    case QMetaType::Bool:
+    case QMetaType::Char:
+    case QMetaType::SChar:
+    case QMetaType::UChar:
+        size = 1;
+        break;
+    case QMetaType::Short:
+    case QMetaType::UShort:
+        size = 2;
+        break;
+    case QMetaType::Int:
+    case QMetaType::UInt:
+        size = 4;
+        break;
+    case QMetaType::LongLong:
+    case QMetaType::ULongLong: {
+        const qlonglong v = value.toLongLong();
+        const bool fits = value.typeId() == QMetaType::ULongLong
+            ? value.toULongLong() <= 0xFFFFFFFFull
+            : (v >= -qlonglong(0x80000000LL) && v <= qlonglong(0xFFFFFFFFLL));
+        size = fits ? 4 : 8;
+        break;
+    }
+    default:
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("cannot write a %1 to an object of unknown type (give its "
+                                    "type)")
+                         .arg(QString::fromLatin1(value.typeName())));
+    }
+    const quint64 bits = value.toULongLong();
+    QByteArray bytes(size, '\0');
+    for (int i = 0; i < size; ++i)
+        bytes[i] = char((bits >> (8 * i)) & 0xFF);
+    return bytes;
+}
+
+void CanopenConnection::doRead(Reply *reply, const ObjectDef *def)
+{
+    m_sdo->setTimeoutMs(requestTimeoutMs());
+    const bool variable = def && datatype::isVariableLength(def->type);
+    const int size = def && !variable ? datatype::byteSize(def->type) : -1;
+    // Unknown objects: a normal upload (the server picks expedited or segmented).
+    const auto mode = def ? SdoClient::Mode::Auto : SdoClient::Mode::Segmented;
+    Reply *inner = m_sdo->upload(m_node, reply->address(), mode, size);
+    if (!def) {
+        chain(inner, reply, [](const QByteArray &b) { return valueFromUnknownBytes(b); });
+        return;
+    }
+    const DataType type = def->type;
+    chain(inner, reply, [type, size](const QByteArray &bytes) -> Result<QVariant> {
+        // An expedited answer without size indication carries 4 bytes for smaller types.
+        return codec::decode(type, size > 0 && bytes.size() > size ? bytes.left(size) : bytes);
+    });
+}
+
+void CanopenConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def)
+{
+    const Result<QByteArray> bytes =
+        def ? codec::encode(def->type, raw) : bytesFromUnknownValue(raw);
+    if (!bytes) {
+        reply->fail(bytes.error());
+        return;
+    }
+    m_sdo->setTimeoutMs(requestTimeoutMs());
+    chain(m_sdo->download(m_node, reply->address(), *bytes), reply);
+}
+
+void CanopenConnection::chain(Reply *inner, Reply *outer,
+                              std::function<Result<QVariant>(const QByteArray &)> convert)
+{
+    inner->setParent(this); // not leaked if the connection goes first
+    QPointer<Reply> target(outer);
+    connect(inner, &Reply::finished, this, [inner, target, convert] {
+        inner->deleteLater();
+        if (!target)
+            return;
+        if (!inner->ok()) {
+            target->fail(inner->error());
+            return;
+        }
+        if (!convert) {
+            target->finish();
+            return;
+        }
+        const Result<QVariant> value = convert(inner->value().toByteArray());
+        if (value)
+            target->finish(*value);
+        else
+            target->fail(value.error());
+    });
+}
+
+} // namespace db::canopen

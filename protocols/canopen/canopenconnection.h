@@ -1,0 +1,89 @@
+#pragma once
+
+// A CANopen node as a DeviceConnection (issue 3 item 5): read/write by index:sub through SDO
+// with the dictionary's types, plus the master services (NMT, heartbeat monitor, EMCY, SYNC)
+// for the GUI and CLI. One connection talks to one node (the URI's ?node=N) on one CanBus.
+//
+// URI query: node=N (1..127, required), probe=1 (on open, read 1000h and fail with "node N does
+// not answer" when it stays silent), block=1 (block SDO for large objects).
+// Connected as soon as the bus is open (after the probe when asked for). The bus is injected
+// (see CanBusFactory) and owned.
+
+#include "canopenids.h"
+#include "core/deviceconnection.h"
+
+namespace db {
+class CanBus;
+}
+
+namespace db::canopen {
+
+class EmcyConsumer;
+class NmtMaster;
+class NodeMonitor;
+class SdoClient;
+class SyncProducer;
+
+class CanopenConnection : public DeviceConnection
+{
+    Q_OBJECT
+public:
+    // "save" signature written to 1010h.01h (CiA 301 7.5.2.13).
+    static constexpr quint32 kStoreSignature = 0x65766173;
+    static constexpr ObjectAddress kStoreParameters { 0x1010, 0x01 };
+    static constexpr ObjectAddress kDeviceType { 0x1000, 0x00 };
+
+    // Takes ownership of bus. A bad ?node= makes open() fail with InvalidArgument.
+    CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObject *parent = nullptr);
+    ~CanopenConnection() override;
+
+    // The ?node= of a URI, checked (InvalidArgument names the problem).
+    static Result<NodeId> nodeFromUri(const ConnectionUri &uri);
+
+    QString protocolKey() const override { return QStringLiteral("canopen"); }
+    Capabilities capabilities() const override { return Capability::StoreNonVolatile; }
+
+    NodeId node() const { return m_node; }
+    CanBus *bus() const { return m_bus; }
+    // The master services on this bus, owned by the connection.
+    SdoClient *sdo() const { return m_sdo; }
+    NmtMaster *nmt() const { return m_nmt; }
+    NodeMonitor *monitor() const { return m_monitor; }
+    EmcyConsumer *emcy() const { return m_emcy; }
+    SyncProducer *sync() const { return m_sync; }
+
+    // 1010h.01 = "save": parameters stored permanently. Caller owns the reply.
+    Reply *storeParameters();
+
+    // Raw bytes -> value for objects the dictionary does not know: 1..4 and 8 bytes as an
+    // unsigned integer (qlonglong), anything else as the QByteArray (pure).
+    static QVariant valueFromUnknownBytes(const QByteArray &bytes);
+    // Value -> bytes for objects the dictionary does not know: QByteArray as is, strings as
+    // UTF-8, integers by their C++ width (int: 4 bytes; qlonglong: 4 bytes if it fits, else 8).
+    static Result<QByteArray> bytesFromUnknownValue(const QVariant &value);
+
+protected:
+    void doOpen() override;
+    void doClose() override;
+    void doRead(Reply *reply, const ObjectDef *def) override;
+    void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
+
+private:
+    void onBusOpened();
+    void onBusClosed(const Error &error);
+    void probe();
+    void chain(Reply *inner, Reply *outer,
+               std::function<Result<QVariant>(const QByteArray &)> convert = {});
+
+    CanBus *m_bus;
+    Result<NodeId> m_nodeResult;
+    NodeId m_node = 0;
+    bool m_probe = false;
+    SdoClient *m_sdo;
+    NmtMaster *m_nmt;
+    NodeMonitor *m_monitor;
+    EmcyConsumer *m_emcy;
+    SyncProducer *m_sync;
+};
+
+} // namespace db::canopen

@@ -1,0 +1,207 @@
+#include "qtcanbus.h"
+
+#include <QCanBus>
+#include <QLoggingCategory>
+#include <QVariant>
+
+namespace db {
+
+namespace {
+Q_LOGGING_CATEGORY(lcQtCan, "drivebench.transport.can")
+Q_LOGGING_CATEGORY(lcQtCanRaw, "drivebench.transport.can.raw", QtWarningMsg)
+
+QString joined(const QStringList &list)
+{
+    return list.isEmpty() ? QStringLiteral("none") : list.join(QStringLiteral(", "));
+}
+} // namespace
+
+QtCanBus::QtCanBus(const QString &plugin, const QString &interfaceName, int bitrate,
+                   QObject *parent)
+    : CanBus(parent)
+    , m_plugin(plugin)
+    , m_interface(interfaceName)
+    , m_bitrate(bitrate)
+{ }
+
+QtCanBus::~QtCanBus()
+{
+    if (m_device) {
+        m_device->disconnect(this);
+        m_device->disconnectDevice();
+        delete m_device;
+    }
+}
+
+QString QtCanBus::name() const
+{
+    return m_plugin + QLatin1Char(' ') + m_interface;
+}
+
+QStringList QtCanBus::availablePlugins()
+{
+    QStringList plugins = QCanBus::instance()->plugins();
+    plugins.sort();
+    return plugins;
+}
+
+QStringList QtCanBus::availableInterfaces(const QString &plugin, QString *errorMessage)
+{
+    QStringList names;
+    const auto devices = QCanBus::instance()->availableDevices(plugin, errorMessage);
+    for (const QCanBusDeviceInfo &info : devices)
+        names.append(info.name());
+    return names;
+}
+
+void QtCanBus::failLater(const Error &error)
+{
+    qCWarning(lcQtCan).noquote() << error.message();
+    QMetaObject::invokeMethod(
+        this,
+        [this, error] {
+            releaseDevice();
+            setClosed(error);
+        },
+        Qt::QueuedConnection);
+}
+
+void QtCanBus::doOpen()
+{
+    if (!QCanBus::instance()->plugins().contains(m_plugin)) {
+        failLater(Error(Error::Kind::NotSupported,
+                        QStringLiteral("no Qt CAN plugin '%1' for interface %2 (available "
+                                       "plugins: %3)")
+                            .arg(m_plugin, m_interface, joined(availablePlugins()))));
+        return;
+    }
+    QString listError;
+    const QStringList interfaces = availableInterfaces(m_plugin, &listError);
+    // Only refuse when the plugin does list interfaces: virtualcan accepts names it never lists.
+    if (!interfaces.isEmpty() && !interfaces.contains(m_interface) && m_plugin != u"virtualcan") {
+        failLater(Error(Error::Kind::HostNotFound,
+                        QStringLiteral("%1 has no interface '%2' (available: %3)")
+                            .arg(m_plugin, m_interface, joined(interfaces))));
+        return;
+    }
+    QString createError;
+    m_device = QCanBus::instance()->createDevice(m_plugin, m_interface, &createError);
+    if (!m_device) {
+        failLater(Error(Error::Kind::HostNotFound,
+                        QStringLiteral("cannot create %1 interface '%2': %3 (available: %4)")
+                            .arg(m_plugin, m_interface, createError, joined(interfaces))));
+        return;
+    }
+    m_device->setParent(this);
+    connect(m_device, &QCanBusDevice::stateChanged, this, &QtCanBus::onStateChanged);
+    connect(m_device, &QCanBusDevice::errorOccurred, this, &QtCanBus::onError);
+    connect(m_device, &QCanBusDevice::framesReceived, this, &QtCanBus::onFramesReceived);
+    if (m_bitrate > 0)
+        m_device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant(m_bitrate));
+    if (!m_device->connectDevice()) {
+        failLater(Error(Error::Kind::ConnectionRefused,
+                        QStringLiteral("cannot open %1 interface '%2': %3")
+                            .arg(m_plugin, m_interface, m_device->errorString())));
+        return;
+    }
+    if (m_device->state() == QCanBusDevice::ConnectedState)
+        setOpened();
+}
+
+void QtCanBus::doClose()
+{
+    if (!m_device) {
+        setClosed();
+        return;
+    }
+    m_device->disconnectDevice();
+    if (m_device && m_device->state() == QCanBusDevice::UnconnectedState) {
+        releaseDevice();
+        setClosed();
+    }
+}
+
+void QtCanBus::doSend(const QCanBusFrame &frame)
+{
+    if (!m_device)
+        return;
+    if (!m_device->writeFrame(frame)) {
+        Q_EMIT warning(QStringLiteral("%1: frame %2 not sent: %3")
+                           .arg(name(), frame.toString(), m_device->errorString()));
+        return;
+    }
+    qCDebug(lcQtCanRaw).noquote() << name() << "tx" << frame.toString();
+    Q_EMIT frameSent(frame);
+}
+
+void QtCanBus::onStateChanged(QCanBusDevice::CanBusDeviceState state)
+{
+    if (state == QCanBusDevice::ConnectedState) {
+        qCInfo(lcQtCan).noquote() << name() << "open";
+        setOpened();
+    } else if (state == QCanBusDevice::UnconnectedState) {
+        const State was = CanBus::state();
+        releaseDevice();
+        if (was == State::Closing || was == State::Closed)
+            setClosed();
+        else
+            setClosed(Error(Error::Kind::Disconnected,
+                            QStringLiteral("%1 closed unexpectedly").arg(name())));
+    }
+}
+
+void QtCanBus::onError(QCanBusDevice::CanBusError error)
+{
+    const QString text = m_device ? m_device->errorString() : QString();
+    switch (error) {
+    case QCanBusDevice::NoError:
+        return;
+    case QCanBusDevice::ConnectionError:
+        if (CanBus::state() == State::Opening) {
+            failLater(Error(Error::Kind::ConnectionRefused,
+                            QStringLiteral("cannot open %1 interface '%2': %3")
+                                .arg(m_plugin, m_interface, text)));
+            return;
+        }
+        Q_EMIT warning(QStringLiteral("%1: connection error: %2").arg(name(), text));
+        return;
+    case QCanBusDevice::ConfigurationError:
+        Q_EMIT warning(QStringLiteral("%1: configuration not applied (bit rate %2): %3")
+                           .arg(name())
+                           .arg(m_bitrate)
+                           .arg(text));
+        return;
+    default:
+        Q_EMIT warning(QStringLiteral("%1: %2").arg(name(), text));
+        return;
+    }
+}
+
+void QtCanBus::onFramesReceived()
+{
+    if (!m_device)
+        return;
+    const QList<QCanBusFrame> frames = m_device->readAllFrames();
+    for (const QCanBusFrame &frame : frames) {
+        if (frame.frameType() == QCanBusFrame::ErrorFrame) {
+            Q_EMIT warning(QStringLiteral("%1: error frame: %2")
+                               .arg(name(), m_device->interpretErrorFrame(frame)));
+            continue;
+        }
+        qCDebug(lcQtCanRaw).noquote() << name() << "rx" << frame.toString();
+        deliver(frame);
+        if (!m_device)
+            return; // a receiver closed the bus
+    }
+}
+
+void QtCanBus::releaseDevice()
+{
+    if (!m_device)
+        return;
+    m_device->disconnect(this);
+    m_device->deleteLater();
+    m_device = nullptr;
+}
+
+} // namespace db

@@ -1,0 +1,217 @@
+#include "slcancodec.h"
+
+namespace db::slcan {
+
+namespace {
+
+std::optional<quint32> hexValue(const QByteArray &text)
+{
+    if (text.isEmpty())
+        return std::nullopt;
+    quint32 value = 0;
+    for (const char c : text) {
+        int digit;
+        if (c >= '0' && c <= '9')
+            digit = c - '0';
+        else if (c >= 'A' && c <= 'F')
+            digit = c - 'A' + 10;
+        else if (c >= 'a' && c <= 'f')
+            digit = c - 'a' + 10;
+        else
+            return std::nullopt;
+        value = (value << 4) | quint32(digit);
+    }
+    return value;
+}
+
+bool isHex(const QByteArray &text)
+{
+    return text.isEmpty() || hexValue(text).has_value();
+}
+
+Message unknown(const QByteArray &line)
+{
+    Message m;
+    m.kind = Message::Kind::Unknown;
+    m.line = line;
+    return m;
+}
+
+// t/T/r/R lines (movingcap.md 4.2): id, DLC, data (not for r/R), optional 4-digit timestamp.
+Message parseFrame(const QByteArray &line)
+{
+    const char type = line.at(0);
+    const bool extended = type == 'T' || type == 'R';
+    const bool remote = type == 'r' || type == 'R';
+    const int idDigits = extended ? 8 : 3;
+    if (line.size() < 1 + idDigits + 1)
+        return unknown(line);
+    const auto id = hexValue(line.mid(1, idDigits));
+    const char dlcChar = line.at(1 + idDigits);
+    if (!id || *id > (extended ? 0x1FFFFFFFu : 0x7FFu) || dlcChar < '0' || dlcChar > '8')
+        return unknown(line);
+    const int dlc = dlcChar - '0';
+    const qsizetype dataStart = 1 + idDigits + 1;
+    const qsizetype dataDigits = remote ? 0 : 2 * dlc;
+    const qsizetype rest = line.size() - dataStart - dataDigits;
+    if (rest != 0 && rest != 4)
+        return unknown(line);
+    QByteArray payload;
+    if (remote) {
+        payload = QByteArray(dlc, '\0'); // Qt carries the DLC of a remote frame as payload size
+    } else {
+        const QByteArray hex = line.mid(dataStart, dataDigits);
+        if (!isHex(hex))
+            return unknown(line);
+        payload = QByteArray::fromHex(hex);
+    }
+    Message m;
+    if (rest == 4) {
+        const auto stamp = hexValue(line.right(4));
+        if (!stamp)
+            return unknown(line);
+        m.timestamp = quint16(*stamp);
+    }
+    m.kind = Message::Kind::Frame;
+    m.line = line;
+    m.frame = QCanBusFrame(*id, payload);
+    m.frame.setExtendedFrameFormat(extended);
+    if (remote)
+        m.frame.setFrameType(QCanBusFrame::RemoteRequestFrame);
+    return m;
+}
+
+Message command(const QByteArray &line)
+{
+    Message m;
+    m.kind = Message::Kind::Command;
+    m.command = line.at(0);
+    m.argument = line.mid(1);
+    m.line = line;
+    return m;
+}
+
+} // namespace
+
+Message parseLine(const QByteArray &line)
+{
+    if (line.isEmpty()) {
+        Message m;
+        m.kind = Message::Kind::Ack;
+        return m;
+    }
+    const char letter = line.at(0);
+    const QByteArray arg = line.mid(1);
+    switch (letter) {
+    case 't':
+    case 'T':
+    case 'r':
+    case 'R':
+        return parseFrame(line);
+    case 'z':
+    case 'Z':
+        if (arg.isEmpty()) {
+            Message m;
+            m.kind = Message::Kind::TransmitAck;
+            m.command = letter;
+            m.line = line;
+            return m;
+        }
+        return letter == 'Z' && (arg == "0" || arg == "1") ? command(line) : unknown(line);
+    case 'O':
+    case 'C':
+    case 'L':
+        return arg.isEmpty() ? command(line) : unknown(line);
+    case 'S':
+        return arg.size() == 1 && arg.at(0) >= '0' && arg.at(0) <= '9' ? command(line)
+                                                                       : unknown(line);
+    case 's':
+        return arg.size() == 4 && isHex(arg) ? command(line) : unknown(line);
+    case 'V':
+    case 'N':
+        return arg.isEmpty() || arg.size() == 4 ? command(line) : unknown(line);
+    case 'F':
+        return arg.isEmpty() || (arg.size() == 2 && isHex(arg)) ? command(line) : unknown(line);
+    default:
+        return unknown(line);
+    }
+}
+
+QList<Message> Decoder::feed(const QByteArray &bytes)
+{
+    QList<Message> out;
+    for (const char c : bytes) {
+        if (c == kBell) {
+            Message m;
+            m.kind = Message::Kind::Bell;
+            out.append(m);
+        } else if (c == kCr || c == '\n') {
+            if (m_overflow) {
+                out.append(unknown(m_line));
+                m_overflow = false;
+            } else if (c == kCr || !m_line.isEmpty()) {
+                out.append(parseLine(m_line)); // an empty line ended by "\n" acknowledges nothing
+            }
+            m_line.clear();
+        } else if (m_line.size() < kMaxLineLength) {
+            m_line.append(c);
+        } else {
+            m_overflow = true; // keep the first kMaxLineLength bytes for the report
+        }
+    }
+    return out;
+}
+
+void Decoder::reset()
+{
+    m_line.clear();
+    m_overflow = false;
+}
+
+QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timestamp)
+{
+    const bool remote = frame.frameType() == QCanBusFrame::RemoteRequestFrame;
+    if ((frame.frameType() != QCanBusFrame::DataFrame && !remote)
+        || frame.hasFlexibleDataRateFormat() || frame.payload().size() > 8)
+        return {};
+    const bool extended = frame.hasExtendedFrameFormat();
+    QByteArray line;
+    line += extended ? (remote ? 'R' : 'T') : (remote ? 'r' : 't');
+    line += QByteArray::number(frame.frameId(), 16).toUpper().rightJustified(extended ? 8 : 3, '0');
+    line += char('0' + frame.payload().size());
+    if (!remote)
+        line += frame.payload().toHex().toUpper();
+    if (timestamp)
+        line += QByteArray::number(*timestamp, 16).toUpper().rightJustified(4, '0');
+    line += kCr;
+    return line;
+}
+
+QByteArray encodeCommand(char command, const QByteArray &argument)
+{
+    return QByteArray(1, command) + argument + kCr;
+}
+
+namespace {
+constexpr int kBitrates[] = {
+    10000, 20000, 50000, 100000, 125000, 250000, 500000, 800000, 1000000
+};
+} // namespace
+
+std::optional<int> bitrateCode(int bitsPerSecond)
+{
+    for (int code = 0; code < int(std::size(kBitrates)); ++code) {
+        if (kBitrates[code] == bitsPerSecond)
+            return code;
+    }
+    return std::nullopt;
+}
+
+std::optional<int> bitrateForCode(int code)
+{
+    if (code < 0 || code >= int(std::size(kBitrates)))
+        return std::nullopt;
+    return kBitrates[code];
+}
+
+} // namespace db::slcan

@@ -1,0 +1,90 @@
+// Level 3: QtCanBus over Qt's virtualcan plugin (a fixed local TCP port: ctest LOCK virtualcan),
+// and the clear errors for a missing plugin or interface. SocketCAN needs vcan0 (QSKIP here).
+
+#include "transport/qtcanbus.h"
+
+#include <QtTest>
+
+using namespace db;
+
+namespace {
+constexpr int kWaitMs = 5000;
+}
+
+class TstQtCanBus : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void twoDevicesOnOneVirtualInterfaceSeeEachOther();
+    void unknownPluginGivesClearError();
+    void closeEmitsClosedWithoutError();
+    void socketcanOnVcan0();
+};
+
+void TstQtCanBus::twoDevicesOnOneVirtualInterfaceSeeEachOther()
+{
+    QtCanBus a(QStringLiteral("virtualcan"), QStringLiteral("can0"));
+    QtCanBus b(QStringLiteral("virtualcan"), QStringLiteral("can0"));
+    QSignalSpy aOpened(&a, &CanBus::opened);
+    QSignalSpy bOpened(&b, &CanBus::opened);
+    QSignalSpy aClosed(&a, &CanBus::closed);
+    a.open();
+    b.open();
+    QTRY_VERIFY_WITH_TIMEOUT(a.isOpen() && b.isOpen(), kWaitMs);
+    if (!aClosed.isEmpty())
+        QFAIL(qPrintable(aClosed.at(0).at(0).value<Error>().message()));
+    QSignalSpy bReceived(&b, &CanBus::frameReceived);
+    QSignalSpy aReceived(&a, &CanBus::frameReceived);
+    QSignalSpy aSent(&a, &CanBus::frameSent);
+    QVERIFY(a.send(QCanBusFrame(0x632, QByteArray::fromHex("4041600000000000"))));
+    QVERIFY(bReceived.wait(kWaitMs));
+    const auto frame = bReceived.at(0).at(0).value<QCanBusFrame>();
+    QCOMPARE(frame.frameId(), 0x632u);
+    QCOMPARE(frame.payload(), QByteArray::fromHex("4041600000000000"));
+    QCOMPARE(aSent.size(), 1);
+    QVERIFY(b.send(QCanBusFrame(0x5B2, QByteArray::fromHex("4B41600027040000"))));
+    QVERIFY(aReceived.wait(kWaitMs));
+    QCOMPARE(aReceived.at(0).at(0).value<QCanBusFrame>().frameId(), 0x5B2u);
+}
+
+void TstQtCanBus::unknownPluginGivesClearError()
+{
+    QtCanBus bus(QStringLiteral("nosuchplugin"), QStringLiteral("can7"));
+    QSignalSpy closed(&bus, &CanBus::closed);
+    bus.open();
+    QCOMPARE(closed.size(), 0); // reported from the event loop, not inside open()
+    QVERIFY(closed.wait(kWaitMs));
+    const auto error = closed.at(0).at(0).value<Error>();
+    QCOMPARE(error.kind(), Error::Kind::NotSupported);
+    QVERIFY2(error.message().contains(QLatin1String("nosuchplugin")), qPrintable(error.message()));
+    QVERIFY2(error.message().contains(QLatin1String("can7")), qPrintable(error.message()));
+    QVERIFY2(error.message().contains(QLatin1String("virtualcan")), qPrintable(error.message()));
+    QVERIFY(!bus.isOpen());
+    QVERIFY(QtCanBus::availablePlugins().contains(QStringLiteral("virtualcan")));
+}
+
+void TstQtCanBus::closeEmitsClosedWithoutError()
+{
+    QtCanBus bus(QStringLiteral("virtualcan"), QStringLiteral("can1"));
+    QSignalSpy closed(&bus, &CanBus::closed);
+    bus.open();
+    QTRY_VERIFY_WITH_TIMEOUT(bus.isOpen(), kWaitMs);
+    bus.close();
+    QTRY_COMPARE_WITH_TIMEOUT(closed.size(), 1, kWaitMs);
+    QVERIFY(!closed.at(0).at(0).value<Error>().isError());
+    QVERIFY(!bus.send(QCanBusFrame(0x1, QByteArray("x"))));
+}
+
+void TstQtCanBus::socketcanOnVcan0()
+{
+    if (!QtCanBus::availableInterfaces(QStringLiteral("socketcan"))
+             .contains(QStringLiteral("vcan0")))
+        QSKIP("no vcan0 (SocketCAN) on this machine");
+    QtCanBus bus(QStringLiteral("socketcan"), QStringLiteral("vcan0"));
+    bus.open();
+    QTRY_VERIFY_WITH_TIMEOUT(bus.isOpen(), kWaitMs);
+    QVERIFY(bus.send(QCanBusFrame(0x000, QByteArray::fromHex("0132"))));
+}
+
+QTEST_GUILESS_MAIN(TstQtCanBus)
+#include "tst_qtcanbus.moc"
