@@ -21,6 +21,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     qt6-base-dev qt6-serialbus-dev libqt6serialbus6 qt6-l10n-tools
     libqcustomplot-dev libeigen3-dev
+    libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
     fonts-dejavu-core xvfb xauth
 )
 

@@ -1,5 +1,7 @@
 #include "clisession.h"
 
+#include "canopen/canopenconnection.h"
+
 #include <QEventLoop>
 #include <QTimer>
 
@@ -58,6 +60,16 @@ Result<void> Session::open(const QString &uriText)
         return created.error();
     m_connection = created.value();
     m_connection->setRequestTimeoutMs(m_options.requestTimeoutMs);
+    if (!m_options.sdoMode.isEmpty()) {
+        auto *canopen = qobject_cast<canopen::CanopenConnection *>(m_connection.get());
+        const auto mode = canopen::CanopenConnection::sdoModeFromText(m_options.sdoMode);
+        if (!canopen)
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("--sdo needs a canopen+... URI"));
+        if (!mode)
+            return mode.error();
+        canopen->setSdoMode(*mode);
+    }
 
     QEventLoop loop;
     QObject::connect(m_connection.get(), &DeviceConnection::stateChanged, &loop,

@@ -29,6 +29,7 @@ struct Options
     int connectTimeoutMs = 3000;
     bool hex = false;
     bool verbose = false;
+    QString sdoMode; // --sdo for CANopen connections: auto, expedited, segmented, block
 };
 
 // One connection for the duration of a command: opens it (waiting at most connectTimeoutMs),

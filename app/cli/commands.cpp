@@ -1,5 +1,7 @@
 #include "commands.h"
+#include "commands_canopen.h"
 #include "commands_description.h"
+#include "commands_morse.h"
 
 #include "core/valuecodec.h"
 #include "refgo/refgoconnection.h"
@@ -84,6 +86,8 @@ int read(Context &c)
         return fail(
             c,
             value.error().prefixed(QStringLiteral("reading %1").arg(target->address.toString())));
+    if (!c.file.isEmpty())
+        return saveValueToFile(c, target->type, value.value());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     QVariant raw = value.value();
     if (!target->def && !c.type.isEmpty()) {
@@ -91,7 +95,13 @@ int read(Context &c)
         if (converted)
             raw = converted.value();
     }
-    const QString text = datatype::isNumeric(target->type) || target->def
+    // Bytes of an object nobody described (e.g. a CANopen string without ?eds=): as text.
+    QByteArray bytes = raw.toByteArray();
+    while (bytes.endsWith('\0'))
+        bytes.chop(1);
+    const QString text = !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
+        ? QString::fromUtf8(bytes)
+        : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
         : raw.toString();
     if (c.options.verbose) {
@@ -106,13 +116,18 @@ int read(Context &c)
 
 int write(Context &c)
 {
+    if (c.file.isEmpty() != (c.args.size() == 3))
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("write takes either VALUE or --file FILE")));
     Session session(c.registry, c.options);
     const auto target = openObject(c, session);
     if (!target)
         return fail(c, target.error());
-    const QString valueText = c.args.at(2);
-    const auto raw =
-        target->def ? target->def->parseText(valueText) : codec::fromText(target->type, valueText);
+    const QString valueText = c.args.value(2);
+    const auto raw = !c.file.isEmpty() ? loadValueFromFile(c, target->def, target->type)
+        : target->def                  ? target->def->parseText(valueText)
+                                       : codec::fromText(target->type, valueText);
     if (!raw)
         return fail(c, raw.error());
     if (auto written = session.write(target->address, raw.value()); !written)
@@ -152,12 +167,25 @@ const QList<Command> &commands()
         { "list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols },
         { "read", "URI INDEX:SUB", "read one object, e.g. read refgo://192.168.2.150 6041:0", 2, 2,
           read },
-        { "write", "URI INDEX:SUB VALUE", "write one object, e.g. write refgo://HOST 6083:0 2000",
-          3, 3, write },
+        { "write", "URI INDEX:SUB VALUE|--file FILE",
+          "write one object, e.g. write refgo://HOST 6083:0 2000", 2, 3, write },
         { "refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
           2, refgo },
+        { "scan", "URI", "list the CANopen nodes on the bus of URI (no ?node= needed)", 1, 1,
+          scan },
+        { "nmt", "URI start|stop|preop|reset|reset-comm [--all]",
+          "NMT command to the URI's node, or to every node with --all", 2, 2, nmt },
+        { "lss",
+          "URI inquire|switch-global|switch-selective V,P,R,S|set-node N|set-bitrate B|"
+          "store|fastscan",
+          "CiA 305 layer setting services", 2, 3, lss },
+        { "pdo", "URI", "print the node's PDO configuration", 1, 1, pdo },
+        { "dcf", "URI -o FILE", "write a DCF of the device's current values (?eds= needed)", 1, 1,
+          dcf },
         { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,
           edsCheck },
+        { "morse", "FILE [X,Y,W,H]", "decode the LED Morse IP from a video or a CSV of samples", 1,
+          2, morse },
     };
     return list;
 }

@@ -14,6 +14,9 @@ struct Context
     QTextStream &out;
     QTextStream &err;
     QString type; // --type for objects the description does not know
+    QString file = {}; // --file: read/write the value as raw bytes from/to this file
+    QString output = {}; // -o/--output (dcf)
+    bool all = false; // --all (nmt: broadcast)
 };
 
 struct Command

@@ -50,7 +50,22 @@ int main(int argc, char *argv[])
     const QCommandLineOption verbose(
         QStringLiteral("verbose"),
         QCoreApplication::translate("cli", "Name what is printed and log the traffic on stderr."));
-    parser.addOptions({ timeout, connectTimeout, hex, type, verbose });
+    const QCommandLineOption file(
+        QStringLiteral("file"),
+        QCoreApplication::translate("cli", "read/write: the value as raw bytes to/from this file."),
+        QStringLiteral("file"));
+    const QCommandLineOption output({ QStringLiteral("o"), QStringLiteral("output") },
+                                    QCoreApplication::translate("cli", "dcf: the file to write."),
+                                    QStringLiteral("file"));
+    const QCommandLineOption sdo(
+        QStringLiteral("sdo"),
+        QCoreApplication::translate("cli",
+                                    "CANopen SDO mode: auto (default), expedited, segmented, "
+                                    "block."),
+        QStringLiteral("mode"));
+    const QCommandLineOption all(
+        QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
+    parser.addOptions({ timeout, connectTimeout, hex, type, verbose, file, output, sdo, all });
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
     parser.process(app);
@@ -88,10 +103,14 @@ int main(int argc, char *argv[])
     }
     options.hex = parser.isSet(hex);
     options.verbose = parser.isSet(verbose);
+    options.sdoMode = parser.value(sdo);
     // Errors reach the user as one line from the command itself; the libraries' log lines only
     // with --verbose (QT_LOGGING_RULES still overrides this).
     QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("drivebench.*.debug=false")
                                                      : QStringLiteral("drivebench.*=false"));
     cli::Context context { app::protocolRegistry(), options, args, out, err, parser.value(type) };
+    context.file = parser.value(file);
+    context.output = parser.value(output);
+    context.all = parser.isSet(all);
     return command->run(context);
 }

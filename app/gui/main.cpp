@@ -28,7 +28,7 @@ int main(int argc, char *argv[])
         QStringLiteral("demo"),
         QApplication::translate("main",
                                 "Start a simulated MovingCap in-process and connect "
-                                "to it."));
+                                "to it over RefGo and over CANopen (SLCAN, node 50)."));
     const QCommandLineOption connectOption(
         QStringLiteral("connect"),
         QApplication::translate("main", "Connect to <uri> at start, e.g. refgo://192.168.2.150."),
@@ -52,6 +52,17 @@ int main(int argc, char *argv[])
         window.logConsole()->info(
             QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
         window.openConnection(demo->refgoUri());
+        // The same drive as CANopen node 50 on its SLCAN door: the CAN monitor shows its traffic.
+        if (auto slcan = demo->startSlcan(0); !slcan) {
+            window.logConsole()->warning(
+                QApplication::translate("main", "Demo drive without CANopen: %1")
+                    .arg(slcan.error().toString()));
+        } else {
+            window.logConsole()->info(
+                QApplication::translate("main", "Demo drive CANopen at %1").arg(demo->slcanUri()));
+            window.openConnection(demo->slcanUri());
+            window.showCanMonitor();
+        }
     }
     if (parser.isSet(connectOption)) {
         if (auto opened = window.openConnection(parser.value(connectOption)); !opened) {

@@ -1,9 +1,14 @@
 #include "mainwindow.h"
 
+#include "canopen/canopenconnection.h"
+#include "morse/morseinput.h"
+#include "widgets/canmonitor.h"
 #include "widgets/connectiondialog.h"
 #include "widgets/devicelist.h"
 #include "widgets/drivestatuspanel.h"
 #include "widgets/logconsole.h"
+#include "widgets/morsepanel.h"
+#include "widgets/nodelist.h"
 #include "widgets/objectaccessbox.h"
 #include "widgets/widgetstyle.h"
 
@@ -28,6 +33,18 @@ QSettings openSettings()
                      QStringLiteral("drivebench"));
 }
 
+Result<widgets::MorseSource> loadMorseSource(const QString &path)
+{
+    auto rec = morseio::readRecording(path);
+    if (!rec)
+        return rec.error();
+    widgets::MorseSource s { std::move(rec->samples), rec->region, rec->frame,
+                             rec->frameSize.width(), rec->source };
+    if (rec->frameRate > 0.0)
+        s.description += QStringLiteral(", %1 fps").arg(rec->frameRate, 0, 'f', 1);
+    return s;
+}
+
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kRecentKey = QStringLiteral("connections/recent");
@@ -40,6 +57,8 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     , m_statusPanel(new widgets::DriveStatusPanel(this))
     , m_objectAccess(new widgets::ObjectAccessBox(this))
     , m_log(new widgets::LogConsole(this))
+    , m_canMonitor(new widgets::CanMonitor(this))
+    , m_nodeList(new widgets::NodeList(this))
     , m_connectionState(new QLabel(this))
 {
     setWindowTitle(tr("drivebench"));
@@ -75,6 +94,7 @@ MainWindow::~MainWindow()
     disconnect(m_deviceList, nullptr, this, nullptr);
     m_statusPanel->setConnection(nullptr);
     m_objectAccess->setConnection(nullptr);
+    attachCanopen(nullptr);
     m_connections.clear();
 }
 
@@ -92,14 +112,27 @@ void MainWindow::createDocks()
         addDock(m_deviceList, tr("Devices"), QStringLiteral("devicesDock"), Qt::LeftDockWidgetArea);
     QDockWidget *access = addDock(m_objectAccess, tr("Object Access"),
                                   QStringLiteral("objectAccessDock"), Qt::LeftDockWidgetArea);
+    QDockWidget *nodes = addDock(m_nodeList, tr("CANopen Nodes"), QStringLiteral("nodeListDock"),
+                                 Qt::LeftDockWidgetArea);
+    splitDockWidget(devices, nodes, Qt::Vertical); // between the devices and object access
     QDockWidget *log =
         addDock(m_log, tr("Log"), QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    QDockWidget *canMonitor = addDock(m_canMonitor, tr("CAN Monitor"),
+                                      QStringLiteral("canMonitorDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(log, canMonitor);
+    // Morse IP decoder (issue 7): files read by app/morse, "Connect" prefills the dialog.
+    auto *morse = new widgets::MorsePanel(this);
+    morse->setLoader(loadMorseSource);
+    connect(morse, &widgets::MorsePanel::connectRequested, this, &MainWindow::showConnectDialogFor);
+    tabifyDockWidget(
+        log, addDock(morse, tr("Morse IP"), QStringLiteral("morseDock"), Qt::BottomDockWidgetArea));
+    log->raise();
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     m_objectAccess->setMinimumWidth(320);
     m_log->setMinimumHeight(100);
     // Initial proportions; restoreState() replaces them once the user has arranged the docks.
-    resizeDocks({ devices, access }, { 220, 300 }, Qt::Vertical);
-    resizeDocks({ log }, { 200 }, Qt::Vertical);
+    resizeDocks({ devices, nodes, access }, { 160, 150, 300 }, Qt::Vertical);
+    resizeDocks({ log }, { 360 }, Qt::Vertical);
 }
 
 void MainWindow::createMenus()
@@ -151,8 +184,13 @@ void MainWindow::watch(DeviceConnection *connection)
         m_log->error(name + QStringLiteral(": ") + e.toString());
     });
     connect(connection, &DeviceConnection::stateChanged, this,
-            [this, name](DeviceConnection::State state) {
+            [this, name, connection](DeviceConnection::State state) {
                 m_log->info(tr("%1 is %2").arg(name, stateName(state)));
+                if (state == DeviceConnection::State::Disconnected && connection == m_canopen)
+                    attachCanopen(nullptr);
+                else if (state != DeviceConnection::State::Disconnected
+                         && connection == currentConnection())
+                    attachCanopen(connection);
                 updateStatusBar();
             });
 }
@@ -174,7 +212,26 @@ void MainWindow::setCurrent(DeviceConnection *connection)
 {
     m_statusPanel->setConnection(connection);
     m_objectAccess->setConnection(connection);
+    attachCanopen(connection);
     updateStatusBar();
+}
+
+void MainWindow::attachCanopen(DeviceConnection *connection)
+{
+    auto *canopen = qobject_cast<canopen::CanopenConnection *>(connection);
+    if (canopen == m_canopen)
+        return;
+    m_canopen = canopen;
+    m_canMonitor->setConnection(canopen);
+    m_nodeList->setConnection(canopen);
+}
+
+void MainWindow::showCanMonitor()
+{
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("canMonitorDock"))) {
+        dock->show();
+        dock->raise();
+    }
 }
 
 void MainWindow::removeConnection(DeviceConnection *connection)
@@ -185,6 +242,8 @@ void MainWindow::removeConnection(DeviceConnection *connection)
         return;
     std::shared_ptr<DeviceConnection> keep = *it;
     m_connections.erase(it);
+    if (connection == m_canopen)
+        attachCanopen(nullptr);
     m_deviceList->removeConnection(connection);
     m_log->info(tr("Removed %1").arg(connection->uri().toString()));
     connection->close();
@@ -195,7 +254,14 @@ void MainWindow::removeConnection(DeviceConnection *connection)
 
 void MainWindow::showConnectDialog()
 {
+    showConnectDialogFor({});
+}
+
+void MainWindow::showConnectDialogFor(const QString &uri)
+{
     widgets::ConnectionDialog dialog(m_registry, m_recent, this);
+    if (!uri.isEmpty())
+        dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)
         return;
     m_recent = dialog.recentUris();

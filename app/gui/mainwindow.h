@@ -3,16 +3,23 @@
 #include "core/protocolregistry.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include <memory>
 #include <vector>
 
 class QLabel;
 
+namespace db::canopen {
+class CanopenConnection;
+}
+
 namespace db::widgets {
+class CanMonitor;
 class DeviceList;
 class DriveStatusPanel;
 class LogConsole;
+class NodeList;
 class ObjectAccessBox;
 } // namespace db::widgets
 
@@ -49,9 +56,16 @@ public:
     widgets::DriveStatusPanel *statusPanel() const { return m_statusPanel; }
     widgets::ObjectAccessBox *objectAccessBox() const { return m_objectAccess; }
     widgets::LogConsole *logConsole() const { return m_log; }
+    // CAN monitor and node list: attached to the current connection while it is a CANopen one.
+    widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
+    widgets::NodeList *nodeList() const { return m_nodeList; }
+    // Brings the CAN monitor's tab to the front.
+    void showCanMonitor();
 
 public Q_SLOTS:
     void showConnectDialog();
+    // The connection dialog with `uri` filled in (e.g. from the Morse panel).
+    void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
     void showAbout();
 
@@ -64,6 +78,9 @@ private:
     void watch(DeviceConnection *connection);
     void setCurrent(DeviceConnection *connection);
     void removeConnection(DeviceConnection *connection);
+    // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
+    // else detaches them (their frames stay).
+    void attachCanopen(DeviceConnection *connection);
     void updateStatusBar();
     void loadSettings();
     void saveSettings() const;
@@ -76,6 +93,9 @@ private:
     widgets::DriveStatusPanel *m_statusPanel = nullptr;
     widgets::ObjectAccessBox *m_objectAccess = nullptr;
     widgets::LogConsole *m_log = nullptr;
+    widgets::CanMonitor *m_canMonitor = nullptr;
+    widgets::NodeList *m_nodeList = nullptr;
+    QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
     QAction *m_disconnectAction = nullptr;
 };

@@ -1,6 +1,8 @@
 // drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
+//   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
 #include "../common/demodrive.h"
+#include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
 
@@ -50,7 +52,9 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QCoreApplication::translate(
         "sim",
         "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
-        "(RefGo and SLCAN doors)"));
+        "(RefGo and SLCAN doors)\n  canopen     CANopen nodes driven by a device description "
+        "(SLCAN "
+        "and/or virtualcan doors)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -66,18 +70,86 @@ int main(int argc, char *argv[])
     const QCommandLineOption slcanPort(
         QStringLiteral("slcan-port"),
         QCoreApplication::translate("sim",
-                                    "Serve CANopen node 50 as SLCAN over TCP on this port "
-                                    "(0 = chosen by the OS)."),
+                                    "Serve CANopen (movingcap: node 50) as SLCAN over TCP on "
+                                    "this port (0 = chosen by the OS)."),
         QStringLiteral("port"));
-    parser.addOptions({ refgoPort, slcanPort, set });
+    const QCommandLineOption virtualCan(
+        QStringLiteral("virtualcan"),
+        QCoreApplication::translate("sim", "canopen: also serve on this Qt virtualcan interface."),
+        QStringLiteral("iface"));
+    const QCommandLineOption nodes(
+        QStringLiteral("nodes"),
+        QCoreApplication::translate("sim", "canopen: node ids, e.g. 1,2,5 (default 1)."),
+        QStringLiteral("ids"), QStringLiteral("1"));
+    const QCommandLineOption eds(
+        QStringLiteral("eds"),
+        QCoreApplication::translate("sim",
+                                    "canopen: device description of the nodes (EDS, DCF, XDD, "
+                                    "XDC, JSON; default: the built-in test node)."),
+        QStringLiteral("file"));
+    const QCommandLineOption noReply(
+        QStringLiteral("no-reply-node"),
+        QCoreApplication::translate("sim",
+                                    "canopen: this node's SDO server stays silent (repeatable)."),
+        QStringLiteral("id"));
+    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply });
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
+    if (args.size() == 1 && args.first() == QLatin1String("canopen")) {
+        app::SimNodesOptions options;
+        const auto ids = app::SimNodes::parseNodeList(parser.value(nodes));
+        const auto silent = app::SimNodes::parseNodeList(parser.values(noReply).join(u','));
+        bool port = false;
+        const uint slcan = parser.value(slcanPort).toUInt(&port);
+        if (!ids || (parser.isSet(noReply) && !silent)
+            || (parser.isSet(slcanPort) && (!port || slcan > 65535))
+            || (!parser.isSet(slcanPort) && !parser.isSet(virtualCan))) {
+            err << "drivebench-sim: "
+                << (!ids ? ids.error().message()
+                        : parser.isSet(noReply) && !silent
+                        ? silent.error().message()
+                        : QStringLiteral("give --slcan-port PORT "
+                                         "(0..65535) and/or "
+                                         "--virtualcan IFACE"))
+                << Qt::endl;
+            return 2;
+        }
+        options.nodes = ids.value();
+        options.noReply = silent.valueOr({});
+        options.descriptionFile = parser.value(eds);
+        app::SimNodes sim;
+        if (auto created = sim.create(options); !created) {
+            err << "drivebench-sim: " << created.error().toString() << Qt::endl;
+            return 2;
+        }
+        if (parser.isSet(slcanPort)) {
+            if (auto listening = sim.startSlcan(quint16(slcan)); !listening) {
+                err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
+                return 3;
+            }
+            out << "canopen: SLCAN listening on 127.0.0.1:" << sim.slcanPort() << " ("
+                << sim.describe() << ", canopen+slcan://127.0.0.1:" << sim.slcanPort() << ")"
+                << Qt::endl;
+        }
+        if (parser.isSet(virtualCan)) {
+            if (auto joined = sim.startVirtualCan(parser.value(virtualCan)); !joined) {
+                err << "drivebench-sim: " << joined.error().toString() << Qt::endl;
+                return 3;
+            }
+            out << "canopen: virtualcan listening on " << parser.value(virtualCan) << " ("
+                << sim.describe() << ", canopen+virtualcan://" << parser.value(virtualCan) << ")"
+                << Qt::endl;
+        }
+        quitOnSignals(app);
+        return app.exec();
+    }
     if (args.size() != 1 || args.first() != QLatin1String("movingcap")) {
         err << "drivebench-sim: give the device to simulate: drivebench-sim movingcap "
-               "--refgo-port PORT [--slcan-port PORT]"
+               "--refgo-port PORT [--slcan-port PORT], or drivebench-sim canopen --slcan-port "
+               "PORT --nodes 1,2,5"
             << Qt::endl;
         return 2;
     }

@@ -18,6 +18,8 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObj
     , m_nodeResult(nodeFromUri(uri))
     , m_node(m_nodeResult.valueOr(0))
     , m_probe(uri.queryValue(QStringLiteral("probe")) == u"1")
+    , m_sdoModeResult(sdoModeFromText(uri.queryValue(QStringLiteral("sdo"))))
+    , m_sdoMode(m_sdoModeResult.valueOr(SdoClient::Mode::Auto))
 {
     m_bus->setParent(this);
     m_sdo = new SdoClient(m_bus, this);
@@ -58,10 +60,26 @@ Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
     return NodeId(*node);
 }
 
+Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
+{
+    if (text.isEmpty() || text == u"auto")
+        return SdoClient::Mode::Auto;
+    if (text == u"expedited")
+        return SdoClient::Mode::Expedited;
+    if (text == u"segmented")
+        return SdoClient::Mode::Segmented;
+    if (text == u"block")
+        return SdoClient::Mode::Block;
+    return Error(
+        Error::Kind::InvalidArgument,
+        QStringLiteral("unknown SDO mode '%1' (auto, expedited, segmented or block)").arg(text));
+}
+
 void CanopenConnection::doOpen()
 {
-    if (!m_nodeResult) {
-        setState(State::Disconnected, m_nodeResult.error());
+    if (!m_nodeResult || !m_sdoModeResult) {
+        setState(State::Disconnected,
+                 !m_nodeResult ? m_nodeResult.error() : m_sdoModeResult.error());
         return;
     }
     m_emcy->setDictionary(m_node, dictionary());
@@ -207,7 +225,9 @@ void CanopenConnection::doRead(Reply *reply, const ObjectDef *def)
     const bool variable = def && datatype::isVariableLength(def->type);
     const int size = def && !variable ? datatype::byteSize(def->type) : -1;
     // Unknown objects: a normal upload (the server picks expedited or segmented).
-    const auto mode = def ? SdoClient::Mode::Auto : SdoClient::Mode::Segmented;
+    const auto mode = m_sdoMode != SdoClient::Mode::Auto ? m_sdoMode
+        : def                                            ? SdoClient::Mode::Auto
+                                                         : SdoClient::Mode::Segmented;
     Reply *inner = m_sdo->upload(m_node, reply->address(), mode, size);
     if (!def) {
         chain(inner, reply, [](const QByteArray &b) { return valueFromUnknownBytes(b); });
@@ -229,7 +249,7 @@ void CanopenConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectD
         return;
     }
     m_sdo->setTimeoutMs(requestTimeoutMs());
-    chain(m_sdo->download(m_node, reply->address(), *bytes), reply);
+    chain(m_sdo->download(m_node, reply->address(), *bytes, m_sdoMode), reply);
 }
 
 void CanopenConnection::chain(Reply *inner, Reply *outer,

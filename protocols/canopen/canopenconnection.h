@@ -5,12 +5,14 @@
 // for the GUI and CLI. One connection talks to one node (the URI's ?node=N) on one CanBus.
 //
 // URI query: node=N (1..127, required), probe=1 (on open, read 1000h and fail with "node N does
-// not answer" when it stays silent), block=1 (block SDO for large objects).
+// not answer" when it stays silent), block=1 (block SDO for large objects), sdo=auto|expedited|
+// segmented|block (force the SDO mode of every read and write; default auto).
 // Connected as soon as the bus is open (after the probe when asked for). The bus is injected
 // (see CanBusFactory) and owned.
 
 #include "canopenids.h"
 #include "core/deviceconnection.h"
+#include "sdoclient.h"
 
 namespace db {
 class CanBus;
@@ -21,7 +23,6 @@ namespace db::canopen {
 class EmcyConsumer;
 class NmtMaster;
 class NodeMonitor;
-class SdoClient;
 class SyncProducer;
 
 class CanopenConnection : public DeviceConnection
@@ -52,6 +53,12 @@ public:
     EmcyConsumer *emcy() const { return m_emcy; }
     SyncProducer *sync() const { return m_sync; }
 
+    // The SDO mode of later reads and writes (Auto: by size and type, block when enabled).
+    SdoClient::Mode sdoMode() const { return m_sdoMode; }
+    void setSdoMode(SdoClient::Mode mode) { m_sdoMode = mode; }
+    // "auto", "expedited", "segmented", "block" (InvalidArgument otherwise).
+    static Result<SdoClient::Mode> sdoModeFromText(const QString &text);
+
     // 1010h.01 = "save": parameters stored permanently. Caller owns the reply.
     Reply *storeParameters();
 
@@ -79,6 +86,8 @@ private:
     Result<NodeId> m_nodeResult;
     NodeId m_node = 0;
     bool m_probe = false;
+    Result<SdoClient::Mode> m_sdoModeResult = SdoClient::Mode::Auto;
+    SdoClient::Mode m_sdoMode = SdoClient::Mode::Auto;
     SdoClient *m_sdo;
     NmtMaster *m_nmt;
     NodeMonitor *m_monitor;

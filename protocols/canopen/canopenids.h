@@ -32,10 +32,22 @@ constexpr quint32 Heartbeat = 0x700; // + node id (NMT error control, boot-up)
 constexpr quint32 LssMaster = 0x7E5;
 constexpr quint32 LssSlave = 0x7E4;
 
-constexpr quint32 emcy(NodeId node) { return EmcyBase + node; }
-constexpr quint32 sdoRequest(NodeId node) { return SdoRx + node; }
-constexpr quint32 sdoResponse(NodeId node) { return SdoTx + node; }
-constexpr quint32 heartbeat(NodeId node) { return Heartbeat + node; }
+constexpr quint32 emcy(NodeId node)
+{
+    return EmcyBase + node;
+}
+constexpr quint32 sdoRequest(NodeId node)
+{
+    return SdoRx + node;
+}
+constexpr quint32 sdoResponse(NodeId node)
+{
+    return SdoTx + node;
+}
+constexpr quint32 heartbeat(NodeId node)
+{
+    return Heartbeat + node;
+}
 } // namespace cob
 
 // NMT command specifiers (CiA 301 7.2.8.3.1), byte 0 of COB 0x000; byte 1 = node id or 0.

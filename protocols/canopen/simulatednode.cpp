@@ -102,6 +102,12 @@ SimulatedNode::~SimulatedNode() = default;
 void SimulatedNode::init()
 {
     connect(&m_sdo, &SdoServer::response, this, &SimulatedNode::sdoResponse);
+    connect(&m_lss, &LssSlave::transmit, this, &SimulatedNode::transmit);
+    connect(&m_lss, &LssSlave::nodeIdActivated, this, [this](quint8 node) {
+        setNodeId(node);
+        bootUp();
+    });
+    m_lss.setActiveNodeId(m_node);
     connect(&m_heartbeat, &QTimer::timeout, this,
             [this] { send(cob::heartbeat(m_node), QByteArray(1, char(m_state))); });
     for (int n = 0; n < kPdoCount; ++n) {
@@ -116,6 +122,7 @@ void SimulatedNode::setNodeId(NodeId node)
 {
     m_node = node;
     m_sdo.setNodeId(node);
+    m_lss.setActiveNodeId(node);
 }
 
 void SimulatedNode::start()
@@ -155,6 +162,8 @@ void SimulatedNode::receive(const QCanBusFrame &frame)
     const quint32 id = frame.frameId();
     if (id == cob::Nmt)
         return handleNmt(frame.payload());
+    if (id == cob::LssMaster)
+        return handleLss(frame); // LSS works in every NMT state (nm170_canopen.md 2.3)
     if (id == cob::sdoRequest(m_node) && m_state != NmtState::Stopped)
         return handleSdo(frame);
     if (m_state != NmtState::Operational)
@@ -182,14 +191,25 @@ void SimulatedNode::handleNmt(const QByteArray &data)
     case NmtCommand::EnterPreOperational:
         return setState(NmtState::PreOperational);
     case NmtCommand::ResetNode:
+        if (m_lss.pendingNodeId() >= kMinNodeId && m_lss.pendingNodeId() <= kMaxNodeId)
+            setNodeId(m_lss.pendingNodeId());
         if (m_ownStore)
             m_ownStore->resetToDefaults();
         return bootUp();
     case NmtCommand::ResetCommunication:
+        if (m_lss.pendingNodeId() >= kMinNodeId && m_lss.pendingNodeId() <= kMaxNodeId)
+            setNodeId(m_lss.pendingNodeId());
         if (m_ownStore)
             m_ownStore->resetToDefaults([](ObjectAddress a) { return a.index < 0x2000; });
         return bootUp();
     }
+}
+
+void SimulatedNode::handleLss(const QCanBusFrame &frame)
+{
+    m_lss.setIdentity(
+        { u32({ 0x1018, 1 }), u32({ 0x1018, 2 }), u32({ 0x1018, 3 }), u32({ 0x1018, 4 }) });
+    m_lss.receive(frame);
 }
 
 void SimulatedNode::setSdoDropAfter(int requests)

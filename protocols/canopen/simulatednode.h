@@ -6,6 +6,7 @@
 // modes (ARCHITECTURE.md habit 6). Bus-agnostic: frames in through receive(), out through
 // transmit(); attach() wires both to a CanBus, an SlcanServer is wired by its owner.
 
+#include "lssslave.h"
 #include "sdoserver.h"
 
 #include <QHash>
@@ -60,6 +61,9 @@ public:
     NmtState nmtState() const { return m_state; }
     bool isStarted() const { return m_started; }
     SdoServer &sdoServer() { return m_sdo; }
+    // The node's LSS slave (CiA 305, 7E5h/7E4h); identity from 1018h. A configured node id
+    // takes effect at NMT reset node / reset communication.
+    LssSlave &lssSlave() { return m_lss; }
     ObjectValueStore *store() { return m_ownStore.get(); } // null with an external access
 
     // Power on: boot-up frame (700h + node, 00), then Pre-operational (Operational when
@@ -109,6 +113,7 @@ private:
     void bootUp();
     void setState(NmtState state);
     void handleNmt(const QByteArray &data);
+    void handleLss(const QCanBusFrame &frame);
     void handleSdo(const QCanBusFrame &frame);
     void sdoResponse(const QCanBusFrame &frame);
     void handleSync();
@@ -123,6 +128,7 @@ private:
     ObjectAccess *m_access;
     NodeId m_node;
     SdoServer m_sdo;
+    LssSlave m_lss;
     NmtState m_state = NmtState::BootUp;
     bool m_started = false;
     QTimer m_heartbeat;

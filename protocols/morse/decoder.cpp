@@ -1,9 +1,13 @@
 #include "decoder.h"
 
+#include "messageparser.h"
+#include "morsecode.h"
+
 #include <QLoggingCategory>
 #include <QStringList>
 
 #include <algorithm>
+#include <cmath>
 
 Q_LOGGING_CATEGORY(lcMorse, "drivebench.morse", QtInfoMsg)
 
@@ -13,7 +17,24 @@ namespace {
 constexpr std::size_t kFitWindow = 400; // intervals used for the unit estimate
 constexpr std::size_t kMinIntervals = 12; // before that, no unit estimate is tried
 constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
+constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
+
+// Character-by-character reading of a stretch the grammar rejected (other text, status).
+QString hardText(const StretchInput &s)
+{
+    QString text;
+    QString code;
+    for (std::size_t i = 0; i < s.marks.size(); ++i) {
+        code += s.marks[i] < 2.0 ? QLatin1Char('.') : QLatin1Char('-');
+        if (i + 1 == s.marks.size() || s.gaps[i] >= 2.0) {
+            const QChar c = charFor(code);
+            text += c.isNull() || (text.isEmpty() && s.openStart) ? QLatin1Char('?') : c;
+            code.clear();
+        }
+    }
+    return text;
+}
 
 } // namespace
 
@@ -92,6 +113,7 @@ void Decoder::update(bool final)
     }
     if (!m_fit.valid || m_fit.quality < m_options.minFitQuality) {
         m_symbols = {};
+        m_text.clear();
         return;
     }
 
@@ -107,9 +129,29 @@ void Decoder::update(bool final)
     m_symbolizedUnit = m_fit.unit;
     m_symbols = symbolize(ivs, open, m_fit, final);
 
+    // Sequence decoding per stretch between word gaps (messageparser.h); stretches that the
+    // grammar does not explain keep their character-by-character reading.
+    if (std::abs(m_fit.unit - m_modelUnit) > kReparse * m_fit.unit
+        || std::abs(m_fit.duty - m_modelDuty) > kReparse * m_fit.unit) {
+        // Parsed stretches are kept while the unit moves by less than kReparse.
+        m_model = estimateModel(m_symbols.elements, m_slicer.samplePeriod() / m_fit.unit);
+        m_modelUnit = m_fit.unit;
+        m_modelDuty = m_fit.duty;
+        m_cache.clear();
+    }
     IpVoter voter;
     int complete = 0;
-    for (const IpObservation &obs : parseIpObservations(m_symbols.text)) {
+    QString corrected;
+    for (const StretchInput &stretch : splitStretches(m_symbols.elements)) {
+        const StretchParse parse = cachedParse(stretch);
+        if (!corrected.isEmpty())
+            corrected += QLatin1Char(' ');
+        corrected += parse.ok ? parse.text : hardText(stretch);
+        if (!parse.ok)
+            continue;
+        const IpObservation &obs = parse.observation;
+        if (std::none_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; }))
+            continue;
         voter.add(obs);
         if (obs.complete && ++complete > m_completeSeen) {
             IpEstimate one;
@@ -119,14 +161,25 @@ void Decoder::update(bool final)
     }
     m_completeSeen = std::max(m_completeSeen, complete);
     m_ip = voter.observations() > 0 ? voter.estimate() : IpEstimate {};
+    m_text = corrected;
 
-    const qsizetype colon = m_symbols.text.indexOf(QLatin1Char(':'));
-    m_closedMessage = colon >= 0 && m_symbols.text.indexOf(QLatin1Char(':'), colon + 1) >= 0;
+    const qsizetype colon = m_text.indexOf(QLatin1Char(':'));
+    m_closedMessage = colon >= 0 && m_text.indexOf(QLatin1Char(':'), colon + 1) >= 0;
 
     if (confident() && m_confidentAt < 0.0) {
         m_confidentAt = m_slicer.lastTime();
         event(DecoderEvent::Kind::IpConfident, m_ip.toString());
     }
+}
+
+StretchParse Decoder::cachedParse(const StretchInput &stretch)
+{
+    // Closed stretches do not change until the model does (then the cache is cleared).
+    const auto key = std::make_tuple(stretch.start, stretch.marks.size(), stretch.openEnd);
+    const auto it = m_cache.find(key);
+    if (it != m_cache.end())
+        return it->second;
+    return m_cache[key] = parseStretch(stretch, m_model);
 }
 
 DecoderState Decoder::state() const
@@ -162,7 +215,7 @@ Reason Decoder::reason() const
     const bool messageSeen = m_closedMessage || m_completeSeen > 0;
     if (m_ip.complete() && messageSeen)
         return Reason::LowConfidence;
-    if (messageSeen || m_symbols.text.size() >= kLongTextChars)
+    if (messageSeen || m_text.size() >= kLongTextChars)
         return Reason::NoValidIp;
     return Reason::TooShort;
 }
@@ -174,7 +227,7 @@ Error Decoder::diagnosis() const
         return {};
     QString message = reasonText(r);
     if (r == Reason::NoValidIp || r == Reason::LowConfidence)
-        message += QStringLiteral(" (text: \"%1\")").arg(m_symbols.text.right(80));
+        message += QStringLiteral(" (text: \"%1\")").arg(m_text.right(80));
     return Error(r == Reason::InvalidInput ? Error::Kind::InvalidArgument : Error::Kind::Malformed,
                  message, static_cast<quint32>(r));
 }
@@ -182,7 +235,7 @@ Error Decoder::diagnosis() const
 DecodeResult Decoder::result() const
 {
     DecodeResult r;
-    r.text = m_symbols.text;
+    r.text = m_text;
     r.timeline = m_symbols.elements;
     r.chars = m_symbols.chars;
     r.ip = m_ip;

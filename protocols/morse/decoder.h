@@ -3,13 +3,16 @@
 #include "core/result.h"
 #include "ipvoter.h"
 #include "levelslicer.h"
+#include "messageparser.h"
 #include "morsetypes.h"
 #include "symbolizer.h"
 #include "unitfit.h"
 
 #include <QString>
 
+#include <map>
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace db::morse {
@@ -71,7 +74,11 @@ public:
     void finish();
 
     DecoderState state() const;
-    const QString &text() const { return m_symbols.text; }
+    // Decoded text: stretches between word gaps joined by ' '; a stretch that fits the message
+    // grammar is shown as the sequence decoder read it, others character by character.
+    const QString &text() const { return m_text; }
+    // The character-by-character reading (one DecodedChar per code in chars()).
+    const QString &rawText() const { return m_symbols.text; }
     const QString &pendingCode() const { return m_symbols.pendingCode; }
     const std::vector<Element> &timeline() const { return m_symbols.elements; }
     const std::vector<DecodedChar> &chars() const { return m_symbols.chars; }
@@ -92,11 +99,13 @@ public:
 private:
     void update(bool final);
     void event(DecoderEvent::Kind kind, QString detail = {});
+    StretchParse cachedParse(const StretchInput &stretch);
 
     DecoderOptions m_options;
     LevelSlicer m_slicer;
     UnitFit m_fit;
     Symbols m_symbols;
+    QString m_text;
     IpEstimate m_ip;
     std::vector<DecoderEvent> m_events;
     std::size_t m_fittedAt = 0;
@@ -107,6 +116,10 @@ private:
     bool m_wasIdle = false;
     bool m_closedMessage = false;
     double m_confidentAt = -1.0;
+    std::map<std::tuple<double, std::size_t, bool>, StretchParse> m_cache; // by stretch
+    ElementModel m_model;
+    double m_modelUnit = 0.0;
+    double m_modelDuty = 0.0;
 };
 
 // One-shot: the whole recording. An error (with the Reason in deviceCode) when no IP address

@@ -80,8 +80,10 @@ std::vector<IpObservation> parseIpObservations(const QString &text)
 void IpVoter::add(const IpObservation &obs)
 {
     for (std::size_t i = 0; i < 4; ++i) {
-        if (obs.octets[i] >= 0)
-            ++m_votes[i][obs.octets[i]];
+        if (obs.octets[i] >= 0) {
+            m_votes[i][obs.octets[i]] += obs.weight[i];
+            ++m_readings[i];
+        }
     }
     if (obs.complete)
         m_complete.push_back(obs.octets);
@@ -93,8 +95,8 @@ IpEstimate IpVoter::estimate() const
     IpEstimate e;
     double confidence = 1.0;
     for (std::size_t i = 0; i < 4; ++i) {
-        int total = 0;
-        int best = 0;
+        double total = 0;
+        double best = 0;
         for (const auto &[value, votes] : m_votes[i]) {
             total += votes;
             if (votes > best) {
@@ -102,7 +104,9 @@ IpEstimate IpVoter::estimate() const
                 e.octets[i] = value;
             }
         }
-        const double c = total > 0 ? (double(best) / total) * std::min(1.0, best / 2.0) : 0.0;
+        const double lead = best - (total - best);
+        const double c =
+            m_readings[i] >= 2 ? std::clamp(lead / kLead, 0.0, 1.0) : std::min(kSingle, best / 2.0);
         confidence = std::min(confidence, c);
     }
     e.confidence = confidence;

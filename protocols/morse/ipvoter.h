@@ -17,6 +17,9 @@ struct IpObservation
     std::array<int, 4> octets { -1, -1, -1, -1 }; // -1: not in this stretch
     bool complete = false; // all four from one "IP...:" message
     int endIndex = 0; // index in the text just past the stretch
+    // Vote weight of each octet, (0, IpVoter::kMaxWeight]: 1 for a plain reading, less when an
+    // element of it was close to the dit/dah boundary (see messageparser.h).
+    std::array<double, 4> weight { 1.0, 1.0, 1.0, 1.0 };
 };
 
 // Parses decoded text into observations. The text is split into stretches at ':' (end of a
@@ -32,24 +35,30 @@ struct IpObservation
 // Other text is ignored.
 std::vector<IpObservation> parseIpObservations(const QString &text);
 
-// Votes per octet over all observations.
-// Octet confidence = (votes for the winner / all votes) * min(1, votes for the winner / 2):
-// a single reading gives 0.5, two agreeing readings 1.0, three against one 0.75.
-// The IP confidence is the lowest octet confidence; kConfident (0.75) means at least two
-// agreeing readings of every octet and a 3:1 majority, which is the manual's "two identical
-// texts in a row" made per octet.
+// Weighted votes per octet over all observations. An octet's confidence is
+//     lead / kLead, clamped to [0, 1], once it was read at least twice (lead = summed weight of
+//     the winning value minus that of all others); min(kSingle, weight / 2) after one reading.
+// With plain readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. A clear
+// reading (weight up to kMaxWeight) outvotes one with an element at the dit/dah boundary
+// (small weight), so that two readings can already be confident when they disagree only
+// where one of them was unsure. The IP confidence is the lowest octet confidence; kConfident
+// (0.75) is the manual's "two identical texts in a row" made per octet and weighted.
 class IpVoter
 {
 public:
     static constexpr double kConfident = 0.75;
+    static constexpr double kLead = 1.5;
+    static constexpr double kSingle = 0.5;
+    static constexpr double kMaxWeight = 1.5;
 
     void add(const IpObservation &observation);
     IpEstimate estimate() const;
     int observations() const { return m_count; }
 
 private:
-    std::array<std::map<int, int>, 4> m_votes;
+    std::array<std::map<int, double>, 4> m_votes; // octet value -> summed weight
     std::vector<std::array<int, 4>> m_complete;
+    std::array<int, 4> m_readings {};
     int m_count = 0;
 };
 

@@ -42,6 +42,7 @@ public:
     double low() const { return m_low; }
     double high() const { return m_high; }
     double noise() const { return m_noise; } // sigma of the smoothed signal
+    double samplePeriod() const { return m_period; } // mean, s
     int invalidSamples() const { return m_invalid; }
     int validSamples() const { return m_valid; }
 

@@ -44,8 +44,16 @@ void CanBus::setClosed(const Error &error)
 
 void CanBus::deliver(const QCanBusFrame &frame)
 {
-    if (m_state == State::Open)
-        Q_EMIT frameReceived(frame);
+    if (m_state != State::Open)
+        return;
+    Q_EMIT traffic(frame, false);
+    Q_EMIT frameReceived(frame);
+}
+
+void CanBus::reportSent(const QCanBusFrame &frame)
+{
+    Q_EMIT traffic(frame, true);
+    Q_EMIT frameSent(frame);
 }
 
 } // namespace db

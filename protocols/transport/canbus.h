@@ -39,6 +39,10 @@ Q_SIGNALS:
     void frameReceived(const QCanBusFrame &frame);
     // Every frame this node sent (for the CAN monitor's TX direction).
     void frameSent(const QCanBusFrame &frame);
+    // Every frame in the order it crossed the bus, for monitors: a received frame is reported
+    // before frameReceived() lets protocols answer it, so an answer never appears before the
+    // frame that caused it. transmitted = sent by this node.
+    void traffic(const QCanBusFrame &frame, bool transmitted);
     // A problem that does not close the bus (error frame, BEL from an SLCAN adapter, overrun).
     void warning(const QString &text);
 
@@ -50,6 +54,8 @@ protected:
     void setOpened();
     void setClosed(const Error &error = {});
     void deliver(const QCanBusFrame &frame);
+    // Subclasses call this once a frame is out: emits traffic() and frameSent().
+    void reportSent(const QCanBusFrame &frame);
 
 private:
     State m_state = State::Closed;

@@ -131,7 +131,7 @@ void QtCanBus::doSend(const QCanBusFrame &frame)
         return;
     }
     qCDebug(lcQtCanRaw).noquote() << name() << "tx" << frame.toString();
-    Q_EMIT frameSent(frame);
+    reportSent(frame);
 }
 
 void QtCanBus::onStateChanged(QCanBusDevice::CanBusDeviceState state)

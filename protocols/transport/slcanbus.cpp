@@ -59,7 +59,7 @@ void SlcanBus::doSend(const QCanBusFrame &frame)
     }
     qCDebug(lcSlcanRaw) << name() << "->" << line;
     m_stream->write(line);
-    Q_EMIT frameSent(frame);
+    reportSent(frame);
 }
 
 void SlcanBus::onStreamOpened()

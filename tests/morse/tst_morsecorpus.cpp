@@ -4,10 +4,18 @@
 // chunks. SNR as in signalgenerator.h: 10 log10(A^2 / (4 sigma^2)), A = on/off step,
 // sigma = per-sample noise; 6 dB is sigma = A / 4.
 //
-// Decodability limit (see CorpusCondition::minSamplesPerUnit): the dit must span two sample
-// periods for clean and mildly disturbed signals, three with +-30 % jitter. Per-frame noise of
-// 6 dB at 15-30 fps is measured by bench/morse (morse_corpus) but only asserted at 60 fps and
-// 1 kHz, where the targets hold; see the report there.
+// The rows assert the targets of issue 7: 100 % exact on clean signals, >= 99 % exact with
+// +-30 % jitter and noise at 6 dB, and a confident IP within two repetitions (asserted as
+// >= 99 % of the cases confident no later than two message periods after the first complete
+// message began). Where the decoder does not reach a target yet, the check is marked
+// QEXPECT_FAIL with the measured figure, so the gap stays visible (XFAIL) and turns into a
+// failure (XPASS) once it is closed. Other conditions (drift, duty error) have no target in
+// the issue: they assert only that no case is ever confident in a wrong address.
+//
+// Decodability (CorpusCondition::minSamplesPerUnit): a dit shorter than a frame cannot be told
+// from its gaps (at 15 fps a 60 ms dit is 0.9 frames), so the corpus draws dits of at least
+// 2 sample periods on clean signals (15 fps: 133 ms and up) and 3 with jitter or noise (15 fps:
+// 200 ms and up). bench/morse measures 1.2 and 2 sample periods too.
 #include "morse/corpus.h"
 
 #include <QTest>
@@ -31,22 +39,26 @@ private slots:
     {
         QTest::addColumn<CorpusConditionPtr>("condition");
         QTest::addColumn<int>("cases");
-        QTest::addColumn<double>("minExact"); // share of cases with the exact IP at the end
+        QTest::addColumn<double>("minExact"); // share of cases with the exact IP; < 0: none
         QTest::addColumn<double>("minWithinTwo"); // share confident within two repetitions
-        auto row = [](const char *name, CorpusCondition c, int cases, double exact, double two) {
+        QTest::addColumn<QString>("knownGap"); // non-empty: a target not met yet (measured)
+        auto row = [](const char *name, CorpusCondition c, int cases, double exact, double two,
+                      const char *gap = "") {
             c.name = QString::fromLatin1(name);
             QTest::newRow(name) << CorpusConditionPtr(new CorpusCondition(c)) << cases << exact
-                                << two;
+                                << two << QString::fromLatin1(gap);
         };
-        row("clean", { {}, 0.0, kInf, 0.0, 0.0, 0.0, 2.0 }, 60, 1.0, 1.0);
-        row("jitter 15%", { {}, 0.15, kInf, 0.0, 0.0, 0.0, 2.0 }, 30, 0.95, 0.85);
-        row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 40, 0.99, 0.85);
-        row("noise 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.0, 2.0 }, 30, 1.0, 0.95);
-        row("jitter 30% + noise 6 dB, 60 fps and 1 kHz",
-            { {}, 0.30, 6.0, 0.0, 0.0, 0.0, 3.0, { 60.0, 1000.0 } }, 40, 0.95, 0.8);
-        row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, 0.95,
-            0.85);
-        row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, 1.0, 0.95);
+        constexpr double kNone = -1.0;
+        row("clean", { {}, 0.0, kInf, 0.0, 0.0, 0.0, 2.0 }, 60, 1.0, 0.99);
+        row("jitter 30% + noise 6 dB", { {}, 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 }, 100, 0.99, 0.99,
+            "confident within two repetitions: 90 % measured (seed 20240601)");
+        row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
+            "confident within two repetitions: 96 % measured (seed 20240601)");
+        row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
+            "confident within two repetitions: 92 % measured (seed 20240601)");
+        row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, kNone,
+            kNone);
+        row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, kNone, kNone);
     }
     void corpus()
     {
@@ -54,6 +66,7 @@ private slots:
         QFETCH(int, cases);
         QFETCH(double, minExact);
         QFETCH(double, minWithinTwo);
+        QFETCH(QString, knownGap);
         const std::vector<CorpusCase> corpus = makeCorpus(*condition, cases, 20240601u);
         int exact = 0;
         int withinTwo = 0;
@@ -70,8 +83,13 @@ private slots:
         }
         qInfo("%s: exact %d/%d, confident within two repetitions %d/%d",
               qPrintable(condition->name), exact, cases, withinTwo, cases);
-        QVERIFY(exact >= minExact * cases);
-        QVERIFY(withinTwo >= minWithinTwo * cases);
+        if (minExact >= 0.0)
+            QVERIFY(exact >= minExact * cases);
+        if (minWithinTwo >= 0.0) {
+            if (!knownGap.isEmpty())
+                QEXPECT_FAIL("", qPrintable(knownGap), Continue);
+            QVERIFY(withinTwo >= minWithinTwo * cases);
+        }
     }
 };
 

@@ -53,7 +53,7 @@ void ScriptedCanBus::doOpen()
 void ScriptedCanBus::doSend(const QCanBusFrame &frame)
 {
     m_sent.append(frame);
-    Q_EMIT frameSent(frame);
+    reportSent(frame);
     Q_EMIT frameWritten(frame);
     if (m_next >= m_script.size()) {
         if (!m_script.isEmpty())

@@ -1,0 +1,317 @@
+#include "morseinput.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTextStream>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libswscale/swscale.h>
+}
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace db::morseio {
+namespace {
+
+Error ioError(const QString &message)
+{
+    return Error(Error::Kind::Io, message);
+}
+
+QString avText(int code)
+{
+    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, buf, sizeof buf);
+    return QString::fromUtf8(buf);
+}
+
+// RAII for the libav objects of one decode.
+struct AvFormat
+{
+    AVFormatContext *p = nullptr;
+    ~AvFormat() { avformat_close_input(&p); }
+};
+struct AvCodec
+{
+    AVCodecContext *p = nullptr;
+    ~AvCodec() { avcodec_free_context(&p); }
+};
+struct AvFrame
+{
+    AVFrame *p = av_frame_alloc();
+    ~AvFrame() { av_frame_free(&p); }
+};
+struct AvPacket
+{
+    AVPacket *p = av_packet_alloc();
+    ~AvPacket() { av_packet_free(&p); }
+};
+struct Sws
+{
+    SwsContext *p = nullptr;
+    ~Sws() { sws_freeContext(p); }
+};
+
+// One decoded frame, converted to grey at two sizes: small for the analysis, preview for the
+// panel (only kept for the frame where the region is brightest).
+struct Decoded
+{
+    double t;
+    std::vector<unsigned char> small;
+};
+
+} // namespace
+
+std::optional<QRect> parseRegion(const QString &text)
+{
+    const QStringList p = text.split(QLatin1Char(','));
+    if (p.size() != 4)
+        return std::nullopt;
+    int v[4];
+    for (int i = 0; i < 4; ++i) {
+        bool ok = false;
+        v[i] = p[i].trimmed().toInt(&ok);
+        if (!ok || v[i] < 0)
+            return std::nullopt;
+    }
+    if (v[2] == 0 || v[3] == 0)
+        return std::nullopt;
+    return QRect(v[0], v[1], v[2], v[3]);
+}
+
+Result<Recording> readCsv(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return ioError(QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+    QTextStream in(&file);
+    Recording rec;
+    rec.source = QStringLiteral("csv");
+    static const QRegularExpression sep(QStringLiteral("[,;\\t]"));
+    int line = 0;
+    bool first = true;
+    while (!in.atEnd()) {
+        const QString text = in.readLine().trimmed();
+        ++line;
+        if (text.isEmpty() || text.startsWith(QLatin1Char('#')))
+            continue;
+        const QStringList f = text.split(sep);
+        bool okT = false;
+        bool okV = false;
+        const double t = f.size() >= 2 ? f[0].trimmed().toDouble(&okT) : 0.0;
+        const double v = f.size() >= 2 ? f[1].trimmed().toDouble(&okV) : 0.0;
+        if (!okT || !okV) {
+            if (first) { // header
+                first = false;
+                continue;
+            }
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("%1:%2: expected \"time_s,brightness\", got \"%3\"")
+                             .arg(path)
+                             .arg(line)
+                             .arg(text.left(60)));
+        }
+        first = false;
+        rec.samples.push_back({ t, v });
+    }
+    if (rec.samples.empty())
+        return Error(Error::Kind::InvalidArgument, QStringLiteral("%1: no samples").arg(path));
+    return rec;
+}
+
+QRect findLedRegion(const GreyFrames &g)
+{
+    const auto n = g.frames.size();
+    const auto px = static_cast<std::size_t>(g.width * g.height);
+    if (n < 8 || px == 0)
+        return {};
+    std::vector<double> sum(px), sum2(px), dsum2(px);
+    for (std::size_t f = 0; f < n; ++f) {
+        const auto &fr = g.frames[f];
+        for (std::size_t i = 0; i < px; ++i) {
+            const double x = fr[i];
+            sum[i] += x;
+            sum2[i] += x * x;
+            if (f > 0) {
+                const double d = x - g.frames[f - 1][i];
+                dsum2[i] += d * d;
+            }
+        }
+    }
+    std::vector<double> score(px);
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < px; ++i) {
+        const double mean = sum[i] / double(n);
+        const double var = sum2[i] / double(n) - mean * mean;
+        score[i] = var - 0.5 * dsum2[i] / double(n - 1);
+        if (score[i] > score[best])
+            best = i;
+    }
+    // Modulated at all: the LED's on/off step must stand well above the frame-to-frame noise.
+    const double noise = 0.5 * dsum2[best] / double(n - 1);
+    if (score[best] < 1.0 || score[best] < 0.5 * noise)
+        return {};
+    // Flood fill from the best pixel over pixels above half its score.
+    const double limit = 0.5 * score[best];
+    std::vector<char> seen(px, 0);
+    std::vector<std::size_t> stack { best };
+    seen[best] = 1;
+    int x0 = g.width, y0 = g.height, x1 = -1, y1 = -1;
+    while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        const int x = int(i % std::size_t(g.width));
+        const int y = int(i / std::size_t(g.width));
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y);
+        x1 = std::max(x1, x);
+        y1 = std::max(y1, y);
+        const int nb[4][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } };
+        for (const auto &d : nb) {
+            const int nx = x + d[0];
+            const int ny = y + d[1];
+            if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height)
+                continue;
+            const auto j = std::size_t(ny * g.width + nx);
+            if (!seen[j] && score[j] >= limit) {
+                seen[j] = 1;
+                stack.push_back(j);
+            }
+        }
+    }
+    return QRect(QPoint(x0, y0), QPoint(x1, y1)).adjusted(-1, -1, 1, 1)
+        & QRect(0, 0, g.width, g.height);
+}
+
+Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion)
+{
+    if (!QFileInfo::exists(path))
+        return ioError(QStringLiteral("%1: no such file").arg(path));
+    AvFormat fmt;
+    const QByteArray name = QFile::encodeName(path);
+    if (const int rc = avformat_open_input(&fmt.p, name.constData(), nullptr, nullptr); rc < 0)
+        return ioError(QStringLiteral("%1: not a readable video (%2)").arg(path, avText(rc)));
+    if (avformat_find_stream_info(fmt.p, nullptr) < 0)
+        return ioError(QStringLiteral("%1: no stream information").arg(path));
+    const AVCodec *codec = nullptr;
+    const int si = av_find_best_stream(fmt.p, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
+    if (si < 0 || !codec)
+        return ioError(QStringLiteral("%1: no decodable video stream").arg(path));
+    AVStream *stream = fmt.p->streams[si];
+    AvCodec dec;
+    dec.p = avcodec_alloc_context3(codec);
+    avcodec_parameters_to_context(dec.p, stream->codecpar);
+    if (avcodec_open2(dec.p, codec, nullptr) < 0)
+        return ioError(QStringLiteral("%1: cannot open the %2 decoder").arg(path, codec->name));
+    const int w = dec.p->width;
+    const int h = dec.p->height;
+    if (w <= 0 || h <= 0)
+        return ioError(QStringLiteral("%1: video without a frame size").arg(path));
+    const int sw = std::min(w, kAnalysisWidth);
+    const int sh = std::max(1, h * sw / w);
+    const int pw = std::min(w, kPreviewWidth);
+    const int ph = std::max(1, h * pw / w);
+
+    GreyFrames grey { sw, sh, {} };
+    std::vector<double> times;
+    std::vector<QImage> previews; // every 8th frame, to pick an "on" frame later
+    AvFrame frame;
+    AvPacket packet;
+    Sws small;
+    Sws preview;
+    const double tb = av_q2d(stream->time_base);
+    auto take = [&](AVFrame *f) {
+        small.p = sws_getCachedContext(small.p, f->width, f->height, AVPixelFormat(f->format), sw,
+                                       sh, AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
+        std::vector<unsigned char> g(std::size_t(sw * sh));
+        uint8_t *dst[1] = { g.data() };
+        const int dstStride[1] = { sw };
+        sws_scale(small.p, f->data, f->linesize, 0, f->height, dst, dstStride);
+        const int64_t pts = f->best_effort_timestamp;
+        double t = pts != AV_NOPTS_VALUE ? double(pts) * tb : 0.0;
+        if (pts == AV_NOPTS_VALUE || (!times.empty() && t <= times.back()))
+            t = times.empty() ? 0.0
+                              : times.back() + 1.0 / std::max(1.0, av_q2d(stream->r_frame_rate));
+        times.push_back(t);
+        grey.frames.push_back(std::move(g));
+        if (grey.frames.size() % 8 == 1) {
+            preview.p =
+                sws_getCachedContext(preview.p, f->width, f->height, AVPixelFormat(f->format), pw,
+                                     ph, AV_PIX_FMT_RGB32, SWS_BILINEAR, nullptr, nullptr, nullptr);
+            QImage img(pw, ph, QImage::Format_RGB32);
+            uint8_t *pd[1] = { img.bits() };
+            const int ps[1] = { int(img.bytesPerLine()) };
+            sws_scale(preview.p, f->data, f->linesize, 0, f->height, pd, ps);
+            previews.push_back(img);
+        }
+    };
+    auto drain = [&] {
+        while (avcodec_receive_frame(dec.p, frame.p) == 0)
+            take(frame.p);
+    };
+    while (av_read_frame(fmt.p, packet.p) >= 0) {
+        if (packet.p->stream_index == si && avcodec_send_packet(dec.p, packet.p) == 0)
+            drain();
+        av_packet_unref(packet.p);
+    }
+    avcodec_send_packet(dec.p, nullptr);
+    drain();
+    if (grey.frames.size() < 2)
+        return ioError(QStringLiteral("%1: no frames decoded").arg(path));
+
+    Recording rec;
+    rec.frameSize = QSize(w, h);
+    rec.frameRate =
+        times.size() > 1 ? double(times.size() - 1) / (times.back() - times.front()) : 0.0;
+    rec.source = QStringLiteral("video (%1 %2x%3)").arg(QLatin1String(codec->name)).arg(w).arg(h);
+    // Region in analysis pixels.
+    QRect r;
+    if (userRegion) {
+        const QRect fr = QRect(0, 0, w, h) & *userRegion;
+        if (fr.isEmpty())
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("region outside the %1x%2 frame").arg(w).arg(h));
+        r = QRect(QPoint(fr.left() * sw / w, fr.top() * sh / h),
+                  QPoint(std::max(fr.left() * sw / w, (fr.right() * sw) / w),
+                         std::max(fr.top() * sh / h, (fr.bottom() * sh) / h)));
+    } else {
+        r = findLedRegion(grey);
+    }
+    if (r.isEmpty()) {
+        rec.region = {};
+    } else {
+        rec.region = QRect(QPoint(r.left() * w / sw, r.top() * h / sh),
+                           QPoint(((r.right() + 1) * w) / sw - 1, ((r.bottom() + 1) * h) / sh - 1));
+    }
+    const QRect use = r.isEmpty() ? QRect(0, 0, sw, sh) : r;
+    double brightest = -1.0;
+    for (std::size_t f = 0; f < grey.frames.size(); ++f) {
+        double s = 0.0;
+        for (int y = use.top(); y <= use.bottom(); ++y) {
+            for (int x = use.left(); x <= use.right(); ++x)
+                s += grey.frames[f][std::size_t(y * sw + x)];
+        }
+        const double v = s / double(use.width() * use.height());
+        rec.samples.push_back({ times[f], v });
+        if (f % 8 == 0 && v > brightest) {
+            brightest = v;
+            rec.frame = previews[f / 8];
+        }
+    }
+    return rec;
+}
+
+Result<Recording> readRecording(const QString &path, std::optional<QRect> region)
+{
+    const QString ext = QFileInfo(path).suffix().toLower();
+    if (ext == QLatin1String("csv") || ext == QLatin1String("txt") || ext == QLatin1String("tsv"))
+        return readCsv(path);
+    return readVideo(path, region);
+}
+
+} // namespace db::morseio

@@ -1,0 +1,191 @@
+#include "sequence.h"
+
+#include "statusword.h"
+
+namespace db::cia402 {
+
+Sequence::Sequence(DeviceConnection *connection, QString name, QObject *parent)
+    : QObject(parent)
+    , m_connection(connection)
+    , m_name(std::move(name))
+{
+    m_pollTimer.setSingleShot(true);
+    m_deadline.setSingleShot(true);
+    connect(&m_pollTimer, &QTimer::timeout, this, &Sequence::poll);
+    connect(&m_deadline, &QTimer::timeout, this, [this] {
+        const Step &step = m_steps[m_index];
+        fail(Error(Error::Kind::Timeout,
+                   QStringLiteral("%1: %2 did not happen within %3 ms (statusword 0x%4)")
+                       .arg(m_name, step.what)
+                       .arg(step.timeoutMs)
+                       .arg(m_statusword, 4, 16, QLatin1Char('0'))));
+    });
+}
+
+Sequence::~Sequence()
+{
+    if (m_reply)
+        m_reply->fail(Error(Error::Kind::Cancelled, m_name + QStringLiteral(": abandoned")));
+}
+
+Sequence *Sequence::write(ObjectAddress address, const QVariant &raw)
+{
+    m_steps.append({ Step::Kind::Write, address, raw, {}, {}, 0, {} });
+    return this;
+}
+
+Sequence *Sequence::waitFor(QString what, Check check, int timeoutMs)
+{
+    m_steps.append(
+        { Step::Kind::Wait, kStatusword, {}, std::move(what), std::move(check), timeoutMs, {} });
+    return this;
+}
+
+Sequence *Sequence::call(std::function<void(Sequence *)> action)
+{
+    m_steps.append({ Step::Kind::Call, {}, {}, {}, {}, 0, std::move(action) });
+    return this;
+}
+
+Reply *Sequence::start()
+{
+    Q_ASSERT(!m_reply);
+    auto *reply = new Reply(kControlword);
+    m_reply = reply;
+    m_index = 0;
+    // A caller that drops its reply abandons the procedure.
+    connect(reply, &QObject::destroyed, this, [this] {
+        m_pollTimer.stop();
+        m_deadline.stop();
+        deleteLater();
+    });
+    QMetaObject::invokeMethod(this, &Sequence::runStep, Qt::QueuedConnection);
+    return reply;
+}
+
+void Sequence::cancel(const Error &error)
+{
+    fail(error);
+}
+
+void Sequence::runStep()
+{
+    if (!isRunning())
+        return;
+    if (m_index >= m_steps.size()) {
+        finishOk();
+        return;
+    }
+    const Step &step = m_steps[m_index];
+    switch (step.kind) {
+    case Step::Kind::Call:
+        step.action(this);
+        next();
+        return;
+    case Step::Kind::Write: {
+        Reply *r = m_connection->write(step.address, step.value);
+        m_request = r;
+        connect(r, &Reply::finished, this, [this, r] {
+            r->deleteLater();
+            if (!isRunning() || r != m_request)
+                return;
+            if (!r->ok()) {
+                fail(r->error().prefixed(m_name));
+                return;
+            }
+            next();
+        });
+        return;
+    }
+    case Step::Kind::Wait:
+        m_deadline.start(step.timeoutMs);
+        poll();
+        return;
+    }
+}
+
+void Sequence::poll()
+{
+    if (!isRunning())
+        return;
+    Reply *r = m_connection->read(kStatusword);
+    m_request = r;
+    connect(r, &Reply::finished, this, [this, r] {
+        r->deleteLater();
+        if (isRunning() && r == m_request)
+            onStatus(r);
+    });
+}
+
+void Sequence::onStatus(Reply *reply)
+{
+    if (!reply->ok()) {
+        fail(reply->error().prefixed(m_name));
+        return;
+    }
+    m_statusword = quint16(reply->value().toULongLong());
+    QString why;
+    switch (m_steps[m_index].check(m_statusword, why)) {
+    case WaitVerdict::Reached:
+        m_deadline.stop();
+        next();
+        return;
+    case WaitVerdict::Failed:
+        fail(Error(Error::Kind::DeviceError,
+                   QStringLiteral("%1: %2 (statusword 0x%3)")
+                       .arg(m_name, why)
+                       .arg(m_statusword, 4, 16, QLatin1Char('0'))));
+        return;
+    case WaitVerdict::Pending:
+        m_pollTimer.start(kPollIntervalMs);
+        return;
+    }
+}
+
+void Sequence::next()
+{
+    ++m_index;
+    runStep();
+}
+
+void Sequence::fail(const Error &error)
+{
+    m_pollTimer.stop();
+    m_deadline.stop();
+    if (m_reply && m_reply->fail(error))
+        deleteLater();
+}
+
+void Sequence::finishOk()
+{
+    m_pollTimer.stop();
+    m_deadline.stop();
+    if (m_reply && m_reply->finish(m_statusword))
+        deleteLater();
+}
+
+namespace {
+Sequence::Check bitsCheck(quint16 mask, bool set, bool failOnFault)
+{
+    return [=](quint16 word, QString &why) {
+        if (failOnFault && (word & sw::Fault)) {
+            why = QStringLiteral("the drive went to fault");
+            return WaitVerdict::Failed;
+        }
+        const bool match = set ? (word & mask) == mask : (word & mask) == 0;
+        return match ? WaitVerdict::Reached : WaitVerdict::Pending;
+    };
+}
+} // namespace
+
+Sequence::Check bitsSet(quint16 mask, bool failOnFault)
+{
+    return bitsCheck(mask, true, failOnFault);
+}
+
+Sequence::Check bitsClear(quint16 mask, bool failOnFault)
+{
+    return bitsCheck(mask, false, failOnFault);
+}
+
+} // namespace db::cia402

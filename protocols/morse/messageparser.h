@@ -1,0 +1,70 @@
+#pragma once
+
+#include "ipvoter.h"
+#include "morsetypes.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace db::morse {
+
+// Sequence decoder for one stretch of Morse between word gaps, with the known grammar of the
+// MovingCap message (movingcap.md section 2.2):
+//
+//     "MC+IP" octet "+" octet "+" octet "+" octet ":"     octet = 1-3 digits, value 0..255
+//
+// Instead of deciding every mark (dit/dah) and every gap (element/letter gap) on its own and
+// then looking the codes up, a dynamic programme over the marks finds the character sequence of
+// the grammar whose nominal timing (ITU, section 2.4) explains all measured lengths best. Two
+// kinds of error that hard decisions cannot undo are corrected this way: a letter gap read as
+// an element gap (two characters merge into an unknown code) and the reverse (one character
+// splits in two), and an element near the dit/dah boundary whose reading makes an invalid
+// character or octet.
+//
+// Cost model: a measured length x (units, duty-corrected) of nominal k costs
+// rho((x - k) / s_k) + ln s_k with s_k^2 = (relJitter k)^2 + absSigma^2 (jitter is proportional
+// to the length, frame quantisation and edge noise are not) and rho the Huber function
+// (quadratic up to 2 sigma, linear beyond: noise makes heavier tails than the estimate).
+struct ElementModel
+{
+    double relJitter = 0.15; // relative sigma of every length
+    double absSigma = 0.15; // units: quantisation and edge noise
+    double maxZ = 8.0; // a parse that needs an element this far from its nominal is rejected
+};
+
+struct StretchInput
+{
+    double start = 0.0; // s, start of the first mark (identifies the stretch while streaming)
+    std::vector<double> marks; // units
+    std::vector<double> gaps; // units; gaps[i] follows marks[i]; size() == marks.size() - 1
+    bool openStart = false; // the recording began inside this stretch
+    bool openEnd = false; // the stretch is still arriving
+    bool firstComplete = false; // with openStart: the first mark begins a character
+};
+
+struct StretchParse
+{
+    bool ok = false; // the grammar explains the stretch within ElementModel::maxZ
+    QString text; // decoded characters; '?' for a truncated first character
+    IpObservation observation; // octets read completely in this stretch (weights: margins)
+    double worstZ = 0.0;
+};
+
+// Splits a classified timeline (symbolize()) into stretches at word gaps and long marks. The
+// first stretch is open at the start unless the recording began in a word gap; the last one is
+// open at the end unless a word gap follows it, and then ends at its last complete character
+// (the last gap of at least two units), because the character in progress may still grow.
+std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline);
+
+// Robust estimate of the element model from a classified timeline: the relative spread of the
+// marks and gaps around their nominal lengths, and the sample period in units.
+ElementModel estimateModel(const std::vector<Element> &timeline, double samplePeriodUnits);
+
+// Parses one stretch. Octets whose digits were all seen get a weight margin / 4 nats, in
+// [0.05, IpVoter::kMaxWeight], where margin is the least cost difference between a digit and its
+// nearest rival reading (another digit or '+') on the same marks: small when an element was
+// close to the dit/dah boundary. A digit repaired by a lost-element edit counts half.
+StretchParse parseStretch(const StretchInput &in, const ElementModel &model);
+
+} // namespace db::morse

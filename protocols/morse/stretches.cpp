@@ -1,0 +1,89 @@
+// Timeline -> stretches between word gaps, and the element model, for messageparser.
+#include "messageparser.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace db::morse {
+
+std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
+{
+    std::vector<StretchInput> out;
+    StretchInput cur;
+    cur.openStart = true;
+    bool endsInLetterGap = false;
+    auto close = [&](bool open) {
+        if (open && !endsInLetterGap) {
+            // Keep complete characters only.
+            std::size_t g = cur.gaps.size();
+            while (g > 0 && cur.gaps[g - 1] < 2.0)
+                --g;
+            cur.marks.resize(g);
+            cur.gaps.resize(g > 0 ? g - 1 : 0);
+        }
+        cur.openEnd = open;
+        if (!cur.marks.empty())
+            out.push_back(cur);
+        cur = {};
+        endsInLetterGap = false;
+    };
+    for (std::size_t i = 0; i < timeline.size(); ++i) {
+        const Element &e = timeline[i];
+        const bool last = i + 1 == timeline.size();
+        switch (e.kind) {
+        case ElementKind::LongMark:
+            close(false);
+            break;
+        case ElementKind::Dit:
+        case ElementKind::Dah:
+            if (cur.marks.empty())
+                cur.start = e.start;
+            if (cur.marks.size() > cur.gaps.size())
+                cur.gaps.push_back(1.0); // cannot happen after symbolize(); keeps sizes paired
+            cur.marks.push_back(e.units);
+            endsInLetterGap = false;
+            break;
+        case ElementKind::WordGap:
+            close(false);
+            break;
+        case ElementKind::IntraGap:
+        case ElementKind::LetterGap:
+            if (i == 0) {
+                cur.firstComplete = e.kind == ElementKind::LetterGap;
+                break;
+            }
+            if (last) {
+                endsInLetterGap = e.kind == ElementKind::LetterGap;
+                break;
+            }
+            if (!cur.marks.empty())
+                cur.gaps.push_back(e.units);
+            break;
+        }
+    }
+    close(true);
+    return out;
+}
+
+ElementModel estimateModel(const std::vector<Element> &timeline, double samplePeriodUnits)
+{
+    std::vector<double> r;
+    for (const Element &e : timeline) {
+        const bool one = e.kind == ElementKind::Dit || e.kind == ElementKind::IntraGap;
+        const bool three = e.kind == ElementKind::Dah || e.kind == ElementKind::LetterGap;
+        if ((one || three) && e.units > 0.0)
+            r.push_back(std::abs(std::log(e.units / (one ? 1.0 : 3.0))));
+    }
+    ElementModel m;
+    m.absSigma = std::max(0.05, 0.4 * samplePeriodUnits);
+    if (r.size() >= 8) {
+        auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+        std::nth_element(r.begin(), mid, r.end());
+        const double spread = 1.4826 * *mid;
+        m.relJitter = std::clamp(
+            std::sqrt(std::max(0.0, spread * spread - m.absSigma * m.absSigma)), 0.04, 0.3);
+    }
+    return m;
+}
+
+} // namespace db::morse

@@ -1,0 +1,78 @@
+#pragma once
+
+#include "motiontypes.h"
+
+#include "core/error.h"
+#include "core/reply.h"
+
+#include <QObject>
+
+namespace db::motion {
+
+// What the command model needs from one drive, whatever its family (CiA 402 here; VABus motion
+// control override and NM170 later). Values are in user units (position, units/s, units/s^2).
+//
+// Requests return a Reply the caller owns; it finishes exactly once when the drive has TAKEN the
+// request (set-point acknowledged, state reached), not when the motion is over: completion is
+// seen in status(). A new motion request supersedes an unfinished older one.
+// stopNow() must work in every state, without waiting for anything in flight.
+class AxisInterface : public QObject
+{
+    Q_OBJECT
+public:
+    struct Status
+    {
+        bool valid = false; // at least one complete status read since connecting
+        bool powered = false; // power stage on, operation enabled
+        bool fault = false;
+        bool quickStopActive = false;
+        bool moving = false; // the drive reports motion
+        bool targetReached = false;
+        bool homingAttained = false;
+        double position = 0.0;
+        double velocity = 0.0;
+        bool hardwareLimitPositive = false;
+        bool hardwareLimitNegative = false;
+        quint16 rawStatus = 0; // the family's status word, for display
+    };
+
+    enum class Feature {
+        ProfilePosition = 0x1,
+        ProfileVelocity = 0x2,
+        Homing = 0x4,
+        Torque = 0x8,
+        Jerk = 0x10,
+    };
+    Q_DECLARE_FLAGS(Features, Feature)
+
+    struct Profile
+    {
+        double velocity = 0.0;
+        double acceleration = 0.0;
+        double deceleration = 0.0;
+        double jerk = 0.0;
+    };
+
+    using QObject::QObject;
+
+    virtual Features features() const = 0;
+    virtual Status status() const = 0;
+    virtual bool isConnected() const = 0;
+
+    virtual Reply *power(bool on) = 0;
+    virtual Reply *reset() = 0; // fault reset; leaves the power stage off
+    virtual Reply *moveTo(double target, const Profile &profile) = 0;
+    virtual Reply *moveVelocity(double velocity, const Profile &profile) = 0;
+    virtual Reply *halt(double deceleration) = 0; // brake with the ramp, stay enabled
+    virtual Reply *home(const HomingParams &params) = 0; // finishes when homing is complete
+    virtual Reply *torque(double torquePerMille, double slope) = 0;
+    virtual Reply *stopNow() = 0; // quick stop, always
+
+Q_SIGNALS:
+    void statusChanged();
+    void connectionLost(const db::Error &error);
+};
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(AxisInterface::Features)
+
+} // namespace db::motion

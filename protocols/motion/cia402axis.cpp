@@ -1,0 +1,237 @@
+#include "cia402axis.h"
+
+#include "cia402/statusword.h"
+
+#include <cmath>
+#include <memory>
+
+namespace db::motion {
+
+using namespace cia402;
+
+namespace {
+constexpr quint32 kRawAccelerationMin = 1;
+// Digital inputs 60FDh (CiA 402-2): bit 0 negative, bit 1 positive limit switch.
+constexpr quint32 kNegativeLimitBit = 0x1;
+constexpr quint32 kPositiveLimitBit = 0x2;
+
+const QList<ObjectAddress> &statusObjects()
+{
+    static const QList<ObjectAddress> objects { kStatusword, obj::PositionActual,
+                                                obj::VelocityActual, obj::DigitalInputs };
+    return objects;
+}
+} // namespace
+
+Cia402Axis::Cia402Axis(DeviceConnection *connection, QObject *parent)
+    : AxisInterface(parent)
+    , m_connection(connection)
+    , m_controller(connection)
+{
+    m_pollTimer.setSingleShot(true);
+    connect(&m_pollTimer, &QTimer::timeout, this, &Cia402Axis::pollStatus);
+    connect(connection, &DeviceConnection::stateChanged, this, &Cia402Axis::onConnectionState);
+    if (connection->dictionary().contains(obj::ProfileJerk))
+        m_features |= Feature::Jerk;
+    if (connection->isConnected())
+        m_pollTimer.start(0);
+}
+
+Cia402Axis::~Cia402Axis() = default;
+
+bool Cia402Axis::isConnected() const
+{
+    return m_connection->isConnected();
+}
+
+void Cia402Axis::onConnectionState(DeviceConnection::State state)
+{
+    if (state == DeviceConnection::State::Connected) {
+        m_pollTimer.start(0);
+        return;
+    }
+    if (state != DeviceConnection::State::Disconnected)
+        return;
+    m_pollTimer.stop();
+    m_status.valid = false;
+    Error error = m_connection->lastError();
+    if (!error.isError())
+        error =
+            Error(Error::Kind::Disconnected,
+                  QStringLiteral("connection to %1 closed").arg(m_connection->uri().toString()));
+    Q_EMIT connectionLost(error);
+    Q_EMIT statusChanged();
+}
+
+void Cia402Axis::pollStatus()
+{
+    if (!m_connection->isConnected() || m_roundPending > 0)
+        return;
+    m_round.clear();
+    m_roundPending = int(statusObjects().size());
+    for (const ObjectAddress &address : statusObjects()) {
+        Reply *r = m_connection->read(address);
+        connect(r, &Reply::finished, this, [this, r, address] {
+            r->deleteLater();
+            if (r->ok())
+                m_round.insert(address, r->value());
+            if (--m_roundPending == 0)
+                onRoundDone();
+        });
+    }
+}
+
+void Cia402Axis::onRoundDone()
+{
+    if (m_round.contains(kStatusword) && m_round.contains(obj::PositionActual)) {
+        const quint16 word = quint16(m_round.value(kStatusword).toULongLong());
+        const State state = decodeState(word);
+        m_status.valid = true;
+        m_status.rawStatus = word;
+        m_status.powered = state == State::OperationEnabled;
+        m_status.fault = state == State::Fault || state == State::FaultReactionActive;
+        m_status.quickStopActive = state == State::QuickStopActive;
+        m_status.moving = word & sw::Moving;
+        m_status.targetReached = word & sw::TargetReached;
+        m_status.homingAttained = (word & (sw::SetPointAcknowledge | sw::TargetReached))
+            == (sw::SetPointAcknowledge | sw::TargetReached);
+        m_status.position = m_round.value(obj::PositionActual).toDouble();
+        m_status.velocity = m_round.value(obj::VelocityActual).toDouble();
+        const quint32 inputs = quint32(m_round.value(obj::DigitalInputs).toULongLong());
+        m_status.hardwareLimitNegative = inputs & kNegativeLimitBit;
+        m_status.hardwareLimitPositive = inputs & kPositiveLimitBit;
+        Q_EMIT statusChanged();
+    }
+    if (m_connection->isConnected())
+        m_pollTimer.start(kStatusPollMs);
+}
+
+Reply *Cia402Axis::initialize()
+{
+    auto *result = new Reply(obj::SupportedModes);
+    auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
+    QList<ObjectAddress> objects = Scaling::objects();
+    objects.append(obj::SupportedModes);
+    auto pending = std::make_shared<int>(int(objects.size()));
+    QPointer<Reply> guard(result);
+    for (const ObjectAddress &address : objects) {
+        Reply *r = m_connection->read(address);
+        connect(r, &Reply::finished, this, [=, this] {
+            r->deleteLater();
+            if (r->ok())
+                values->insert(address, r->value());
+            if (--*pending > 0)
+                return;
+            if (auto s = Scaling::fromValues(*values))
+                m_scaling = s.value();
+            if (values->contains(obj::SupportedModes)) {
+                const quint32 modes = quint32(values->value(obj::SupportedModes).toULongLong());
+                Features f = m_features & Feature::Jerk;
+                if (modes & supportedModeBit(Mode::ProfilePosition))
+                    f |= Feature::ProfilePosition;
+                if (modes & supportedModeBit(Mode::ProfileVelocity))
+                    f |= Feature::ProfileVelocity;
+                if (modes & supportedModeBit(Mode::Homing))
+                    f |= Feature::Homing;
+                if (modes & supportedModeBit(Mode::ProfileTorque))
+                    f |= Feature::Torque;
+                m_features = f;
+            }
+            if (guard)
+                guard->finish();
+        });
+    }
+    return result;
+}
+
+quint32 Cia402Axis::accelerationRaw(double user) const
+{
+    const double raw = m_accelerationUnit == AccelerationUnit::RotaryMotor
+        ? m_scaling.rotaryAccelerationToRaw(user)
+        : user;
+    return std::max(kRawAccelerationMin, quint32(std::llround(std::abs(raw))));
+}
+
+Reply *Cia402Axis::runMotion(Sequence *sequence)
+{
+    if (m_motion)
+        m_motion->cancel(
+            Error(Error::Kind::Cancelled,
+                  m_motion->name() + QStringLiteral(": superseded by ") + sequence->name()));
+    m_motion = sequence;
+    return sequence->start();
+}
+
+Reply *Cia402Axis::power(bool on)
+{
+    if (m_motion)
+        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("power changed")));
+    return on ? m_controller.enableOperation() : m_controller.disableVoltage();
+}
+
+Reply *Cia402Axis::reset()
+{
+    return m_controller.faultReset();
+}
+
+Reply *Cia402Axis::moveTo(double target, const Profile &profile)
+{
+    PositionSetPoint sp;
+    sp.target = std::llround(target);
+    sp.velocity = quint32(std::llround(std::abs(profile.velocity)));
+    sp.acceleration = accelerationRaw(profile.acceleration);
+    sp.deceleration = accelerationRaw(profile.deceleration);
+    sp.immediate = true; // a new command aborts the running one (stoeber_motion.md 2.4)
+    return runMotion(profilePosition(m_connection, sp, this));
+}
+
+Reply *Cia402Axis::moveVelocity(double velocity, const Profile &profile)
+{
+    return runMotion(profileVelocity(m_connection, std::llround(velocity),
+                                     accelerationRaw(profile.acceleration),
+                                     accelerationRaw(profile.deceleration), this));
+}
+
+Reply *Cia402Axis::halt(double deceleration)
+{
+    std::optional<quint32> dec;
+    if (deceleration > 0)
+        dec = accelerationRaw(deceleration);
+    return runMotion(cia402::halt(m_connection, dec, this));
+}
+
+Reply *Cia402Axis::home(const HomingParams &params)
+{
+    if (!(m_features & Feature::Homing))
+        return Reply::failed(
+            obj::HomingMethod,
+            Error(Error::Kind::NotSupported, QStringLiteral("the drive has no homing mode")));
+    HomingSetPoint sp;
+    sp.method = params.method;
+    sp.speedFast = quint32(std::llround(params.speedFast));
+    if (m_connection->dictionary().contains(obj::HomingSpeedSlow))
+        sp.speedSlow = quint32(std::llround(params.speedSlow));
+    sp.acceleration = accelerationRaw(params.acceleration);
+    sp.offset = std::llround(params.offset);
+    sp.timeoutMs = kHomingTimeoutMs;
+    return runMotion(homing(m_connection, sp, this));
+}
+
+Reply *Cia402Axis::torque(double torquePerMille, double slope)
+{
+    if (!(m_features & Feature::Torque))
+        return Reply::failed(obj::TargetTorque,
+                             Error(Error::Kind::NotSupported,
+                                   QStringLiteral("the drive has no profile torque mode")));
+    return runMotion(profileTorque(m_connection, qint16(std::lround(torquePerMille)),
+                                   quint32(std::llround(std::abs(slope))), this));
+}
+
+Reply *Cia402Axis::stopNow()
+{
+    if (m_motion)
+        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("stopped")));
+    return m_controller.quickStop();
+}
+
+} // namespace db::motion

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "axisinterface.h"
+
+#include "cia402/drivecontroller.h"
+#include "cia402/modes.h"
+#include "cia402/scaling.h"
+
+#include <QHash>
+#include <QPointer>
+#include <QTimer>
+
+namespace db::motion {
+
+// AxisInterface over any CiA 402 drive reachable through a DeviceConnection (MovingCap over RefGo
+// OR/OW, any drive over CANopen SDO). Positions and velocities are the drive's user units
+// (607Ah, 6081h, 6064h, 606Ch already carry the factor group); accelerations are converted when
+// the drive uses the rotary MovingCap unit [100 rpm/min] (movingcap.md 9.1).
+//
+// Status: 6041h, 6064h, 606Ch and 60FDh are read every kStatusPollMs while connected (one round
+// at a time, never more than four requests in flight); statusChanged() after each round.
+class Cia402Axis : public AxisInterface
+{
+    Q_OBJECT
+public:
+    static constexpr int kStatusPollMs = 20;
+    static constexpr int kHomingTimeoutMs = 30000;
+
+    enum class AccelerationUnit { UserUnits, RotaryMotor };
+
+    explicit Cia402Axis(DeviceConnection *connection, QObject *parent = nullptr);
+    ~Cia402Axis() override;
+
+    // Reads the factor group (608Fh, 6091h, 6092h) and 6502h supported modes; the reply
+    // finishes when done (missing objects keep the defaults). Caller owns the reply.
+    Reply *initialize();
+    void setAccelerationUnit(AccelerationUnit unit) { m_accelerationUnit = unit; }
+    const cia402::Scaling &scaling() const { return m_scaling; }
+    DeviceConnection *connection() const { return m_connection; }
+
+    Features features() const override { return m_features; }
+    Status status() const override { return m_status; }
+    bool isConnected() const override;
+
+    Reply *power(bool on) override;
+    Reply *reset() override;
+    Reply *moveTo(double target, const Profile &profile) override;
+    Reply *moveVelocity(double velocity, const Profile &profile) override;
+    Reply *halt(double deceleration) override;
+    Reply *home(const HomingParams &params) override;
+    Reply *torque(double torquePerMille, double slope) override;
+    Reply *stopNow() override;
+
+private:
+    void onConnectionState(DeviceConnection::State state);
+    void pollStatus();
+    void onRoundDone();
+    Reply *runMotion(cia402::Sequence *sequence);
+    quint32 accelerationRaw(double user) const;
+
+    DeviceConnection *m_connection;
+    cia402::DriveController m_controller;
+    cia402::Scaling m_scaling;
+    AccelerationUnit m_accelerationUnit = AccelerationUnit::UserUnits;
+    Features m_features = Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
+    Status m_status;
+    QTimer m_pollTimer;
+    QHash<ObjectAddress, QVariant> m_round; // values of the running status round
+    int m_roundPending = 0;
+    QPointer<cia402::Sequence> m_motion;
+};
+
+} // namespace db::motion

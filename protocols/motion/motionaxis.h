@@ -1,0 +1,96 @@
+#pragma once
+
+#include "axisinterface.h"
+#include "motioncommand.h"
+#include "motionrules.h"
+#include "targettracker.h"
+
+#include <QPointer>
+#include <QTimer>
+
+namespace db::motion {
+
+// The command model of one axis (stoeber_motion.md Sec. 2, 6): the PLCopen state, the one
+// active motion command, the last valid target, refusal and abort rules, and the safety stops,
+// over any AxisInterface.
+//
+// Abort rules (Sec. 6.5): an accepted motion command aborts the active one (CommandAborted);
+// while MC_Stop is active (until standstill and Execute released) every command is refused;
+// MC_Home only from Standstill. A refusal puts the axis in ErrorStop and, if it moves, stops
+// it by quick stop [I: the seed says so for commands 1-3; the tool does it for all].
+// MC_Reset leaves ErrorStop.
+//
+// Safety: stopNow() sends a quick stop at once in every state. The deadman watchdog
+// (setWatchdogTimeout, at most kMaxWatchdogMs) stops the axis the same way when keepAlive() has
+// not been called for that long while a motion command is busy or the axis moves. A lost
+// connection fails the busy command with the cause.
+class MotionAxis : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxWatchdogMs = 500;
+
+    explicit MotionAxis(AxisInterface *axis, QObject *parent = nullptr);
+    ~MotionAxis() override;
+
+    AxisInterface *axis() const { return m_axis; }
+    void setConfig(const AxisConfig &config) { m_config = config; }
+    const AxisConfig &config() const { return m_config; }
+    AxisState state() const { return m_state; }
+    bool isReferenced() const { return m_referenced; }
+    // Drives with an absolute encoder are referenced from the start (movingcap.md 9.4).
+    void setReferenced(bool referenced) { m_referenced = referenced; }
+    const TargetTracker &targets() const { return m_tracker; }
+    MotionCommand *activeCommand() const { return m_active; }
+    Error lastError() const { return m_lastError; }
+
+    // 0 switches the watchdog off; other values are clamped to 1..kMaxWatchdogMs.
+    void setWatchdogTimeout(int ms);
+    int watchdogTimeout() const { return m_watchdogMs; }
+    void keepAlive();
+    void stopNow();
+
+Q_SIGNALS:
+    void stateChanged(db::motion::AxisState state);
+    void watchdogExpired();
+
+private:
+    friend class MotionCommand;
+    void start(MotionCommand *command);
+    void executeReleased(MotionCommand *command);
+    void forget(MotionCommand *command);
+
+    void startPower(MotionCommand *command);
+    void startReset(MotionCommand *command);
+    void startMotion(MotionCommand *command);
+    void refuse(MotionCommand *command, const Plan &plan);
+    Reply *request(MotionCommand *command, const Plan &plan);
+    void onAccepted(MotionCommand *command, quint64 generation, Reply *reply);
+    void onStatus();
+    void evaluateActive(const AxisInterface::Status &s);
+    void onConnectionLost(const Error &error);
+    void emergencyStop(const Error &cause, bool asError);
+    void abortActive(MotionCommand::Status status, const Error &error);
+    void setState(AxisState state);
+    bool motionInProgress() const;
+    bool controlsAxis(const MotionCommand *command) const;
+    AxisSnapshot snapshot() const;
+    // Runs reply and calls done(reply) once on this axis; the reply is deleted afterwards.
+    void whenFinished(Reply *reply, std::function<void(Reply *)> done);
+
+    AxisInterface *m_axis;
+    AxisConfig m_config;
+    AxisState m_state = AxisState::Disabled;
+    bool m_referenced = true;
+    bool m_powerWanted = false;
+    TargetTracker m_tracker;
+    QPointer<MotionCommand> m_active;
+    double m_activeVelocity = 0.0; // MC_MoveVelocity set velocity after clamping
+    quint64 m_rounds = 0; // status rounds seen
+    quint64 m_acceptedRound = 0; // m_rounds when the active command's set-point was taken
+    QTimer m_watchdog;
+    int m_watchdogMs = 0;
+    Error m_lastError;
+};
+
+} // namespace db::motion

@@ -1,0 +1,92 @@
+#include "motiontypes.h"
+
+namespace db::motion {
+
+QString commandName(CommandKind kind)
+{
+    switch (kind) {
+    case CommandKind::DoNothing:
+        return QStringLiteral("MC_DoNothing");
+    case CommandKind::MoveAbsolute:
+        return QStringLiteral("MC_MoveAbsolute");
+    case CommandKind::MoveRelative:
+        return QStringLiteral("MC_MoveRelative");
+    case CommandKind::MoveAdditive:
+        return QStringLiteral("MC_MoveAdditive");
+    case CommandKind::MoveVelocity:
+        return QStringLiteral("MC_MoveVelocity");
+    case CommandKind::Stop:
+        return QStringLiteral("MC_Stop");
+    case CommandKind::Home:
+        return QStringLiteral("MC_Home");
+    case CommandKind::TorqueControl:
+        return QStringLiteral("MC_TorqueControl");
+    case CommandKind::Halt:
+        return QStringLiteral("MC_Halt");
+    case CommandKind::Power:
+        return QStringLiteral("MC_Power");
+    case CommandKind::Reset:
+        return QStringLiteral("MC_Reset");
+    }
+    return QStringLiteral("MC_?");
+}
+
+bool isPositioning(CommandKind kind)
+{
+    return kind == CommandKind::MoveAbsolute || kind == CommandKind::MoveRelative
+        || kind == CommandKind::MoveAdditive;
+}
+
+QString axisStateName(AxisState state)
+{
+    switch (state) {
+    case AxisState::Disabled:
+        return QStringLiteral("Disabled");
+    case AxisState::Standstill:
+        return QStringLiteral("Standstill");
+    case AxisState::DiscreteMotion:
+        return QStringLiteral("Discrete Motion");
+    case AxisState::ContinuousMotion:
+        return QStringLiteral("Continuous Motion");
+    case AxisState::Stopping:
+        return QStringLiteral("Stopping");
+    case AxisState::ErrorStop:
+        return QStringLiteral("ErrorStop");
+    case AxisState::Homing:
+        return QStringLiteral("Homing");
+    }
+    return QStringLiteral("%1").arg(int(state));
+}
+
+QString refusalText(Refusal refusal)
+{
+    switch (refusal) {
+    case Refusal::None:
+        return {};
+    case Refusal::TargetOutsideSoftLimits:
+        return QStringLiteral("target outside the software limit switches");
+    case Refusal::DirectionNotPermitted:
+        return QStringLiteral("travel direction not permitted");
+    case Refusal::TargetOutsideCycle:
+        return QStringLiteral("target outside the cycle length");
+    case Refusal::HardwareLimitSwitch:
+        return QStringLiteral("hardware limit switch active in the travel direction");
+    case Refusal::ZeroProfileValue:
+        return QStringLiteral("velocity, acceleration, deceleration or jerk is zero");
+    case Refusal::ZeroAxisLimit:
+        return QStringLiteral("maximum acceleration or maximum jerk of the axis is zero");
+    case Refusal::NotReferenced:
+        return QStringLiteral("axis not referenced");
+    case Refusal::NotAtStandstill:
+        return QStringLiteral("axis not at standstill");
+    case Refusal::HomingInactive:
+        return QStringLiteral("homing method inactive");
+    case Refusal::StopActive:
+        return QStringLiteral("MC_Stop is active");
+    case Refusal::AxisNotReady:
+        return QStringLiteral("axis not enabled or in ErrorStop");
+    }
+    return {};
+}
+
+} // namespace db::motion

@@ -1,0 +1,151 @@
+// Level 2/3: the CiA 402 power state machine driver and the modes against the simulated
+// MovingCap in-process, over RefGo (OR/OW) and over CANopen SDO (SLCAN door, node 50).
+#include "cia402/drivecontroller.h"
+#include "cia402/modes.h"
+#include "cia402/statusword.h"
+#include "rig.h"
+#include "simulation/movingcapfaults.h"
+
+#include <QTest>
+
+using namespace db;
+using namespace db::cia402;
+using namespace db::test;
+
+class TestDriveController : public QObject
+{
+    Q_OBJECT
+private:
+    void transports()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("sim") << QStringLiteral("sim");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+
+private Q_SLOTS:
+    void enableAndDisable_data() { transports(); }
+    void enableAndDisable()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        auto r = awaitReply(dc.enableOperation());
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(decodeState(quint16(r->toUInt())), State::OperationEnabled);
+        QCOMPARE(rig->drive().state(), State::OperationEnabled);
+        QVERIFY(awaitReply(dc.switchOn()).ok());
+        QCOMPARE(rig->drive().state(), State::SwitchedOn);
+        QVERIFY(awaitReply(dc.shutdown()).ok());
+        QCOMPARE(rig->drive().state(), State::ReadyToSwitchOn);
+        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        QVERIFY(awaitReply(dc.disableVoltage()).ok());
+        QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
+    }
+    void faultResetThenEnable_data() { transports(); }
+    void faultResetThenEnable()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        rig->drive().injectFault(sim::faults::Stroke);
+        QTRY_COMPARE(rig->drive().state(), State::Fault);
+        QVERIFY(awaitReply(dc.faultReset()).ok());
+        QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
+        rig->drive().injectFault(sim::faults::Stroke);
+        QTRY_COMPARE(rig->drive().state(), State::Fault);
+        auto r = awaitReply(dc.enableOperation()); // plans 0 -> 0x80 -> 6 -> 7 -> 15
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(rig->drive().state(), State::OperationEnabled);
+    }
+    void quickStop_data() { transports(); }
+    void quickStop()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        QVERIFY(
+            awaitReply(profileVelocity(rig->connection.get(), 500, 1000, 1000, &dc)->start()).ok());
+        QTRY_VERIFY(rig->drive().axis().velocity() > 100);
+        QVERIFY(awaitReply(dc.quickStop()).ok());
+        QVERIFY(rig->drive().state() != State::OperationEnabled);
+        QTRY_VERIFY(!rig->drive().axis().isMoving());
+    }
+    void profilePositionHandshake_data() { transports(); }
+    void profilePositionHandshake()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        PositionSetPoint sp { 720, 7200, 2000, 2000, false, true };
+        auto r = awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start());
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        // Handshake finished: bit 4 back to 0, bit 12 cleared.
+        QCOMPARE(rig->drive().read({ 0x6040, 0 }).value().toUInt(), 0x0Fu);
+        QTRY_VERIFY(rig->drive().statusword() & sw::TargetReached);
+        QTRY_VERIFY(qAbs(rig->drive().axis().position() - 720) < 1);
+        sp = { 100, 7200, 2000, 2000, true, true }; // relative (bit 6): from the last target
+        QVERIFY(awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start()).ok());
+        QTRY_VERIFY(qAbs(rig->drive().axis().position() - 820) < 1);
+    }
+    void homingSetsOffset_data() { transports(); }
+    void homingSetsOffset()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        HomingSetPoint sp;
+        sp.method = 35;
+        sp.speedFast = 90;
+        sp.acceleration = 1000;
+        sp.offset = 1234;
+        auto r = awaitReply(homing(rig->connection.get(), sp, &dc)->start());
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(qRound(rig->drive().axis().position()), 1234);
+    }
+    void stepTimesOutWhenTheDriveDoesNotFollow()
+    {
+        auto rig = makeRig(QStringLiteral("sim"));
+        QVERIFY(rig);
+        rig->sim->frozen = true;
+        DriveController dc(rig->connection.get());
+        auto r = awaitReply(dc.enableOperation(), 3000);
+        QCOMPARE(r.error().kind(), Error::Kind::Timeout);
+        QVERIFY2(r.error().message().contains(QLatin1String("Ready to switch on")),
+                 qPrintable(r.error().message()));
+    }
+    void softwareEnableMissingFails()
+    {
+        // Input function 9 on IN1 (high required), IN1 low: switch-on raises FFF2h.
+        auto rig = makeRig(QStringLiteral("sim"), { { { 0x3511, 1 }, 0x0900 } });
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        auto r = awaitReply(dc.enableOperation());
+        QCOMPARE(r.error().kind(), Error::Kind::DeviceError);
+        QVERIFY(r.error().message().contains(QLatin1String("fault")));
+    }
+    void newRequestSupersedesOlder()
+    {
+        auto rig = makeRig(QStringLiteral("sim"));
+        QVERIFY(rig);
+        DriveController dc(rig->connection.get());
+        Reply *enable = dc.enableOperation();
+        Reply *disable = dc.disableVoltage();
+        QCOMPARE(awaitReply(enable).error().kind(), Error::Kind::Cancelled);
+        QVERIFY(awaitReply(disable).ok());
+        QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDriveController)
+#include "tst_drivecontroller.moc"

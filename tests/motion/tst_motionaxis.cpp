@@ -1,0 +1,330 @@
+// Level 2/3: the command model over Cia402Axis against the simulated MovingCap (in-process, over
+// RefGo and over CANopen SDO): sequences of stoeber_motion.md Sec. 10 and the safety stops.
+#include "motion/cia402axis.h"
+#include "motion/motionaxis.h"
+#include "rig.h"
+
+#include <QTest>
+
+using namespace db;
+using namespace db::motion;
+using namespace db::test;
+using Status = MotionCommand::Status;
+
+namespace {
+constexpr double kTolerance = 2.0; // units; the drive reports integer positions
+
+struct Axis
+{
+    std::unique_ptr<Rig> rig;
+    std::unique_ptr<Cia402Axis> cia;
+    std::unique_ptr<MotionAxis> axis;
+};
+
+std::unique_ptr<Axis> makeAxis(const QString &kind)
+{
+    auto a = std::make_unique<Axis>();
+    a->rig = makeRig(kind);
+    if (!a->rig)
+        return nullptr;
+    a->cia = std::make_unique<Cia402Axis>(a->rig->connection.get());
+    a->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
+    if (!awaitReply(a->cia->initialize()).ok())
+        return nullptr;
+    a->axis = std::make_unique<MotionAxis>(a->cia.get());
+    AxisConfig c;
+    c.maxVelocity = 50000;
+    c.maxAcceleration = 200000; // 6083h <= 20000 raw = 200000 units/s^2 here
+    c.positionWindow = 1.0;
+    c.velocityWindow = 10.0;
+    a->axis->setConfig(c);
+    return a;
+}
+
+MoveParams params(double position, double velocity = 20000, double acceleration = 100000)
+{
+    MoveParams p;
+    p.position = position;
+    p.velocity = velocity;
+    p.acceleration = p.deceleration = acceleration;
+    p.jerk = 1e6;
+    return p;
+}
+
+void pulse(MotionCommand &c)
+{
+    c.setExecute(false);
+    c.setExecute(true);
+}
+
+bool powerOn(MotionAxis *axis)
+{
+    MotionCommand power(axis, CommandKind::Power);
+    power.setEnable(true);
+    power.setExecute(true);
+    return QTest::qWaitFor([&] { return power.isFinished(); }, 5000)
+        && power.status() == Status::Done;
+}
+} // namespace
+
+class TestMotionAxis : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void absoluteThenAdditive_data() // S-09, the example, over each transport
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("sim") << QStringLiteral("sim");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+    void absoluteThenAdditive()
+    {
+        QFETCH(QString, kind);
+        auto a = makeAxis(kind);
+        QVERIFY(a);
+        QVERIFY(powerOn(a->axis.get()));
+        QCOMPARE(a->axis->state(), AxisState::Standstill);
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(1000));
+        abs.setExecute(true);
+        QCOMPARE(abs.status(), Status::Busy);
+        QCOMPARE(a->axis->state(), AxisState::DiscreteMotion);
+        QTRY_COMPARE_WITH_TIMEOUT(abs.status(), Status::Done, 5000);
+        QCOMPARE(a->axis->state(), AxisState::Standstill);
+        MotionCommand add(a->axis.get(), CommandKind::MoveAdditive);
+        add.setParams(params(200));
+        add.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(add.status(), Status::Done, 5000);
+        QCOMPARE(add.target(), 1200.0);
+        QVERIFY(qAbs(a->rig->drive().axis().position() - 1200) < kTolerance);
+    }
+    void newAbsoluteAbortsRunning() // S-02
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand first(a->axis.get(), CommandKind::MoveAbsolute);
+        first.setParams(params(1000, 2000));
+        first.setExecute(true);
+        QTRY_VERIFY(a->rig->drive().axis().position() > 200);
+        MotionCommand second(a->axis.get(), CommandKind::MoveAbsolute);
+        second.setParams(params(2000, 4000));
+        second.setExecute(true);
+        QCOMPARE(first.status(), Status::CommandAborted);
+        QTRY_COMPARE_WITH_TIMEOUT(second.status(), Status::Done, 5000);
+        QVERIFY(qAbs(a->rig->drive().axis().position() - 2000) < kTolerance);
+    }
+    void relativeFromActualPosition() // S-06
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand first(a->axis.get(), CommandKind::MoveRelative);
+        first.setParams(params(1000, 2000));
+        first.setExecute(true);
+        QTRY_VERIFY(a->rig->drive().axis().position() > 300);
+        MotionCommand second(a->axis.get(), CommandKind::MoveRelative);
+        second.setParams(params(1000, 2000));
+        const double actualAtStart = a->rig->drive().axis().position();
+        second.setExecute(true);
+        // Target = actual position at start + 1000 (the polled position lags <= ~2 rounds).
+        QVERIFY2(qAbs(second.target() - 1000 - actualAtStart) < 100,
+                 qPrintable(QString::number(second.target())));
+        QVERIFY(second.target() < 1999);
+        QTRY_COMPARE_WITH_TIMEOUT(second.status(), Status::Done, 5000);
+        QVERIFY(qAbs(a->rig->drive().axis().position() - second.target()) < kTolerance);
+    }
+    void stopRefusesOthersAndKeepsTarget() // S-10, S-20
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(1000, 2000, 20000));
+        abs.setExecute(true);
+        QTRY_VERIFY(a->rig->drive().axis().position() > 200);
+        MotionCommand stop(a->axis.get(), CommandKind::Stop);
+        stop.setParams(params(0, 0, 5000));
+        stop.setExecute(true);
+        QCOMPARE(abs.status(), Status::CommandAborted);
+        QCOMPARE(a->axis->state(), AxisState::Stopping);
+        MotionCommand other(a->axis.get(), CommandKind::MoveAbsolute);
+        other.setParams(params(0));
+        other.setExecute(true);
+        QTRY_COMPARE(other.status(), Status::Error);
+        QCOMPARE(other.refusal(), Refusal::StopActive);
+        QTRY_COMPARE_WITH_TIMEOUT(stop.status(), Status::Done, 5000);
+        QCOMPARE(a->axis->state(), AxisState::Stopping); // until Execute is released
+        stop.setExecute(false);
+        QCOMPARE(a->axis->state(), AxisState::Standstill);
+        MotionCommand add(a->axis.get(), CommandKind::MoveAdditive);
+        add.setParams(params(200));
+        add.setExecute(true);
+        QCOMPARE(add.target(), 1200.0);
+        QTRY_COMPARE_WITH_TIMEOUT(add.status(), Status::Done, 5000);
+    }
+    void enableOffMakesActualTheOrigin() // S-11
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(1000, 2000));
+        abs.setExecute(true);
+        QTRY_VERIFY(a->rig->drive().axis().position() > 300);
+        MotionCommand power(a->axis.get(), CommandKind::Power);
+        power.setEnable(false);
+        power.setExecute(true);
+        QCOMPARE(abs.status(), Status::CommandAborted);
+        QTRY_COMPARE(power.status(), Status::Done);
+        QCOMPARE(a->axis->state(), AxisState::Disabled);
+        QTRY_VERIFY(qAbs(a->cia->status().position - a->rig->drive().axis().position()) < 1);
+        const double stoppedAt = a->rig->drive().axis().position();
+        QVERIFY(powerOn(a->axis.get()));
+        MotionCommand add(a->axis.get(), CommandKind::MoveAdditive);
+        add.setParams(params(200));
+        add.setExecute(true);
+        QVERIFY2(qAbs(add.target() - (stoppedAt + 200)) < kTolerance,
+                 qPrintable(QString::number(add.target())));
+        QTRY_COMPARE_WITH_TIMEOUT(add.status(), Status::Done, 5000);
+    }
+    void velocitySequenceThenHalt() // S-18, S-23
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand vel(a->axis.get(), CommandKind::MoveVelocity);
+        for (double v : { 300.0, 200.0, 400.0 }) {
+            vel.setParams(params(0, v, 2000));
+            pulse(vel);
+            QTRY_COMPARE_WITH_TIMEOUT(vel.status(), Status::Done, 3000);
+            QVERIFY(qAbs(a->rig->drive().axis().velocity() - v) < 15);
+            QCOMPARE(a->axis->state(), AxisState::ContinuousMotion);
+        }
+        vel.setParams(params(0, 100, 1000));
+        pulse(vel);
+        QTRY_COMPARE(vel.status(), Status::Active);
+        MotionCommand halt(a->axis.get(), CommandKind::Halt);
+        halt.setParams(params(0, 0, 2000));
+        halt.setExecute(true);
+        QCOMPARE(vel.status(), Status::CommandAborted);
+        QTRY_COMPARE_WITH_TIMEOUT(halt.status(), Status::Done, 3000);
+        QCOMPARE(a->axis->state(), AxisState::DiscreteMotion); // MC_Halt until release
+        halt.setExecute(false);
+        QCOMPARE(a->axis->state(), AxisState::Standstill);
+        pulse(vel); // S-23: the aborted command starts again with a second Execute
+        QTRY_COMPARE_WITH_TIMEOUT(vel.status(), Status::Done, 3000);
+    }
+    void refusalFromMotionQuickStops() // D-10, S-30
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand vel(a->axis.get(), CommandKind::MoveVelocity);
+        vel.setParams(params(0, 500));
+        vel.setExecute(true);
+        QTRY_COMPARE(vel.status(), Status::Done);
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        QSignalSpy spy(&abs, &MotionCommand::statusChanged);
+        MoveParams p = params(0);
+        p.jerk = 0;
+        abs.setParams(p);
+        abs.setExecute(true);
+        QTRY_COMPARE(abs.status(), Status::Error);
+        QCOMPARE(spy.size(), 2);
+        QCOMPARE(spy.at(0).at(0).value<Status>(), Status::Busy);
+        QCOMPARE(abs.refusal(), Refusal::ZeroProfileValue);
+        QCOMPARE(vel.status(), Status::CommandAborted);
+        QCOMPARE(a->axis->state(), AxisState::ErrorStop);
+        QTRY_VERIFY(!a->rig->drive().axis().isMoving());
+        QVERIFY(a->rig->drive().state() != cia402::State::OperationEnabled);
+        MotionCommand reset(a->axis.get(), CommandKind::Reset);
+        reset.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(reset.status(), Status::Done, 3000);
+        QCOMPARE(a->axis->state(), AxisState::Standstill);
+        QCOMPARE(a->rig->drive().state(), cia402::State::OperationEnabled);
+    }
+    void homeSetsReference()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        a->axis->setReferenced(false);
+        MotionCommand home(a->axis.get(), CommandKind::Home);
+        HomingParams h;
+        h.method = 35;
+        h.offset = 100;
+        home.setHoming(h);
+        home.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(home.status(), Status::Done, 3000);
+        QVERIFY(a->axis->isReferenced());
+        QCOMPARE(qRound(a->rig->drive().axis().position()), 100);
+    }
+    void watchdogExpiryStopsTheAxis()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        a->axis->setWatchdogTimeout(200);
+        QSignalSpy expired(a->axis.get(), &MotionAxis::watchdogExpired);
+        MotionCommand vel(a->axis.get(), CommandKind::MoveVelocity);
+        vel.setParams(params(0, 500));
+        vel.setExecute(true);
+        QVERIFY(expired.wait(1000));
+        QCOMPARE(vel.status(), Status::Error);
+        QCOMPARE(vel.error().kind(), Error::Kind::Timeout);
+        QTRY_VERIFY(!a->rig->drive().axis().isMoving());
+        QCOMPARE(a->axis->state(), AxisState::ErrorStop);
+    }
+    void watchdogKeptAliveDoesNotStop()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        a->axis->setWatchdogTimeout(1000); // clamped to 500 ms
+        QCOMPARE(a->axis->watchdogTimeout(), MotionAxis::kMaxWatchdogMs);
+        QTimer refresh;
+        QObject::connect(&refresh, &QTimer::timeout, a->axis.get(), &MotionAxis::keepAlive);
+        refresh.start(50);
+        QSignalSpy expired(a->axis.get(), &MotionAxis::watchdogExpired);
+        MotionCommand vel(a->axis.get(), CommandKind::MoveVelocity);
+        vel.setParams(params(0, 500));
+        vel.setExecute(true);
+        QVERIFY(!expired.wait(800));
+        QCOMPARE(vel.status(), Status::Done);
+        refresh.stop(); // the GUI hangs: the watchdog stops the axis
+        QVERIFY(expired.wait(1000));
+        QTRY_VERIFY(!a->rig->drive().axis().isMoving());
+    }
+    void stopNowAlwaysWorks()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(100000, 2000));
+        abs.setExecute(true);
+        a->axis->stopNow(); // even before the set-point handshake has finished
+        QCOMPARE(abs.status(), Status::CommandAborted);
+        QTRY_VERIFY(a->rig->drive().state() != cia402::State::OperationEnabled);
+        QTRY_VERIFY(!a->rig->drive().axis().isMoving());
+        QVERIFY(a->rig->drive().axis().position() < 1000);
+    }
+    void disconnectFailsRunningCommand()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(100000, 2000));
+        abs.setExecute(true);
+        QTRY_COMPARE(abs.status(), Status::Active);
+        a->rig->sim->goAway();
+        QTRY_COMPARE(abs.status(), Status::Error);
+        QCOMPARE(abs.error().kind(), Error::Kind::Disconnected);
+        QVERIFY(abs.error().message().contains(QLatin1String("connection lost")));
+        QCOMPARE(a->axis->state(), AxisState::ErrorStop);
+    }
+    void torqueNotSupportedByMovingCap()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a && powerOn(a->axis.get()));
+        MotionCommand torque(a->axis.get(), CommandKind::TorqueControl);
+        torque.setExecute(true);
+        QTRY_COMPARE(torque.status(), Status::Error);
+        QCOMPARE(torque.error().kind(), Error::Kind::NotSupported);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMotionAxis)
+#include "tst_motionaxis.moc"

@@ -1,0 +1,110 @@
+// Level 4: the Morse panel offscreen. A video of a simulated LED is rendered (libavcodec), read
+// through the same loader the main window injects (app/morse), played, and the panel must show
+// the frame, the plot with threshold and timeline, the text and the IP; "Connect" asks for
+// refgo://IP and its menu for canopen+slcan://IP?node=50. Undecodable input shows its reason.
+#include "../morse/ledvideo.h"
+#include "morse/morseinput.h"
+#include "widgets/morsepanel.h"
+
+#include <QLabel>
+#include <QMenu>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <qcustomplot.h>
+
+using namespace db;
+using db::widgets::MorsePanel;
+using db::widgets::MorseSource;
+
+namespace {
+
+Result<MorseSource> load(const QString &path)
+{
+    auto rec = morseio::readRecording(path);
+    if (!rec)
+        return rec.error();
+    return MorseSource { rec->samples, rec->region, rec->frame, rec->frameSize.width(),
+                         rec->source };
+}
+
+morse::SignalOptions signal(const QString &text)
+{
+    morse::SignalOptions o;
+    o.text = text;
+    o.sampleRate = 25.0;
+    o.unit = 0.1;
+    o.startOffset = 0.6;
+    o.jitter = 0.1;
+    o.seed = 5;
+    return o;
+}
+
+} // namespace
+
+class TstMorsePanel : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void decodesVideoAndConnects()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("led.mp4"));
+        QVERIFY(morsetest::renderLedVideo(path, signal(QStringLiteral("MC+IP10+20+30+40:"))).ok());
+        MorsePanel panel;
+        panel.setLoader(load);
+        panel.resize(1000, 420);
+        panel.show();
+        QVERIFY(panel.openFile(path));
+        QVERIFY(panel.playing());
+        // Live: the plot fills while playing.
+        QTRY_VERIFY(panel.plot()->graph(0)->dataCount() > 50);
+        panel.finishPlayback();
+        QVERIFY(!panel.playing());
+        QCOMPARE(panel.ipText(), QStringLiteral("10.20.30.40"));
+        QVERIFY(panel.decoder().confident());
+        QVERIFY(panel.findChild<QPlainTextEdit *>(QStringLiteral("morseText"))
+                    ->toPlainText()
+                    .contains(QLatin1String("MC+IP10+20+30+40:")));
+        QVERIFY(panel.findChild<QLabel *>(QStringLiteral("morseIp"))
+                    ->text()
+                    .contains(QLatin1String("10.20.30.40")));
+        QVERIFY(!panel.findChild<QLabel *>(QStringLiteral("morseFrame"))->pixmap().isNull());
+        QVERIFY(panel.plot()->graph(1)->dataCount() > 0); // threshold
+        QVERIFY(panel.plot()->graph(2)->dataCount() > 0); // dits
+        QVERIFY(panel.plot()->graph(3)->dataCount() > 0); // dahs
+
+        QSignalSpy spy(&panel, &MorsePanel::connectRequested);
+        auto *button = panel.findChild<QToolButton *>(QStringLiteral("morseConnect"));
+        QVERIFY(button->isEnabled());
+        QTest::mouseClick(button, Qt::LeftButton, {}, QPoint(8, button->height() / 2));
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(spy.at(0).at(0).toString(), QStringLiteral("refgo://10.20.30.40"));
+        button->menu()->actions().at(1)->trigger();
+        QCOMPARE(spy.at(1).at(0).toString(), QStringLiteral("canopen+slcan://10.20.30.40?node=50"));
+    }
+
+    void undecodableShowsReason()
+    {
+        MorsePanel panel;
+        panel.setLoader(load);
+        QVERIFY(!panel.openFile(QStringLiteral("/nonexistent/led.mp4")));
+        QVERIFY(panel.statusText().contains(QLatin1String("no such file")));
+
+        morse::SignalOptions o = signal(QStringLiteral("ST+OK+TEMP+45:"));
+        o.sampleRate = 60.0;
+        panel.setSource({ morse::generateSignal(o).samples, {}, {}, 0, QStringLiteral("test") });
+        panel.finishPlayback();
+        QVERIFY(panel.ipText().isEmpty());
+        QVERIFY(!panel.findChild<QToolButton *>(QStringLiteral("morseConnect"))->isEnabled());
+        QVERIFY2(panel.statusText().contains(QLatin1String("without a valid")),
+                 qPrintable(panel.statusText()));
+    }
+};
+
+QTEST_MAIN(TstMorsePanel)
+#include "tst_morsepanel.moc"

@@ -1,0 +1,99 @@
+#pragma once
+
+#include "core/result.h"
+#include "morse/decoder.h"
+
+#include <QImage>
+#include <QRect>
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+class QCustomPlot;
+class QCPGraph;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QTimer;
+class QToolButton;
+
+namespace db::widgets {
+
+// What the panel plays: brightness samples, and for a video the LED region and a frame.
+struct MorseSource
+{
+    std::vector<morse::Sample> samples;
+    QRect region; // frame pixels; empty for CSV
+    QImage frame; // null for CSV; may be scaled down from the video's frames
+    int frameWidth = 0; // the video's frame width, the scale of `region`
+    QString description; // "video (mpeg4 160x120), 25 fps"
+};
+
+// The LED Morse decoder panel (issue 7): open a video or CSV, see the frame with the LED
+// region, a live brightness plot with the decision threshold and the dit/dah timeline, the
+// decoded text, and the IP with its confidence; "Connect" asks for a connection to that IP.
+//
+// Files are read through a loader that app/ injects (widgets know no video library). A loaded
+// recording is played into a morse::Decoder at kPlaybackSpeed times real time on a timer (the
+// plot replots at most kReplotHz); finishPlayback() decodes the rest at once.
+class MorsePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    using Loader = std::function<Result<MorseSource>(const QString &path)>;
+    static constexpr double kPlaybackSpeed = 8.0;
+    static constexpr int kReplotHz = 20;
+
+    explicit MorsePanel(QWidget *parent = nullptr);
+    ~MorsePanel() override;
+
+    void setLoader(Loader loader) { m_loader = std::move(loader); }
+    // Loads `path` through the loader and starts playback; false with the reason shown.
+    bool openFile(const QString &path);
+    void setSource(MorseSource source);
+    void finishPlayback();
+    bool playing() const;
+
+    const morse::Decoder &decoder() const { return *m_decoder; }
+    QString ipText() const; // "192.168.2.150" once complete, else empty
+    QString statusText() const;
+    QCustomPlot *plot() const { return m_plot; }
+
+Q_SIGNALS:
+    // "Connect" (refgo://IP) or its menu (canopen+slcan://IP?node=50).
+    void connectRequested(const QString &uri);
+
+private:
+    void chooseFile();
+    void step();
+    void feedUntil(std::size_t end);
+    void refresh();
+    void updateFrame();
+
+    Loader m_loader;
+    MorseSource m_source;
+    std::unique_ptr<morse::Decoder> m_decoder;
+    std::size_t m_fed = 0;
+    double m_playStart = 0.0; // recording time at playback start
+    qint64 m_wallStart = 0;
+    std::vector<double> m_thresholdT;
+    std::vector<double> m_thresholdV;
+
+    QTimer *m_timer;
+    QPushButton *m_open;
+    QLabel *m_sourceLabel;
+    QLabel *m_frame;
+    QCustomPlot *m_plot;
+    QCPGraph *m_brightness;
+    QCPGraph *m_threshold;
+    QCPGraph *m_dits;
+    QCPGraph *m_dahs;
+    QPlainTextEdit *m_text;
+    QLabel *m_ip;
+    QLabel *m_status;
+    QToolButton *m_connect;
+};
+
+} // namespace db::widgets

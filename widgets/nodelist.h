@@ -1,0 +1,66 @@
+#pragma once
+
+// The node list dock (issue 3 item 7): the CANopen nodes on the bus of a connection with their
+// NMT state, heartbeat age and name, and the NMT commands (start, stop, pre-operational, reset,
+// reset communication) for the selected node or, with "All nodes", as a broadcast (node 0).
+// It receives the services (NodeMonitor, NmtMaster) and never creates a transport.
+
+#include "canopen/canopenids.h"
+
+#include <QPointer>
+#include <QWidget>
+
+class QCheckBox;
+class QTableView;
+class QToolButton;
+
+namespace db {
+class CanBus;
+}
+namespace db::canopen {
+class CanopenConnection;
+class NmtMaster;
+class NodeMonitor;
+} // namespace db::canopen
+
+namespace db::widgets {
+
+class NodeListModel;
+
+class NodeList : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit NodeList(QWidget *parent = nullptr);
+    ~NodeList() override;
+
+    // Nodes on the connection's bus, its own node first in mind (named after its
+    // description). nullptr detaches. Not owned.
+    void setConnection(canopen::CanopenConnection *connection);
+    // The same from separate services (tests, other owners). Not owned; nullptrs detach.
+    void setServices(CanBus *bus, canopen::NodeMonitor *monitor, canopen::NmtMaster *nmt,
+                     canopen::NodeId ownNode = 0, const QString &ownName = {});
+
+    NodeListModel *model() const { return m_model; }
+    QTableView *view() const { return m_view; }
+    // The node the commands go to: the selected one, 0 with "All nodes", -1 when none.
+    int targetNode() const;
+    void selectNode(canopen::NodeId node);
+    bool broadcast() const;
+    void setBroadcast(bool on);
+
+public Q_SLOTS:
+    // Sends to targetNode(); false when there is none or the bus is not open.
+    bool sendCommand(db::canopen::NmtCommand command);
+
+private:
+    void updateActions();
+
+    NodeListModel *m_model;
+    QTableView *m_view;
+    QCheckBox *m_broadcast;
+    QList<QToolButton *> m_commandButtons;
+    QPointer<canopen::NmtMaster> m_nmt;
+};
+
+} // namespace db::widgets
