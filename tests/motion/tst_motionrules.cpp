@@ -5,6 +5,10 @@
 
 #include <QTest>
 
+Q_DECLARE_METATYPE(db::motion::MoveParams)
+Q_DECLARE_METATYPE(db::motion::AxisConfig)
+Q_DECLARE_METATYPE(db::motion::AxisSnapshot)
+
 using namespace db::motion;
 
 namespace {
@@ -285,10 +289,6 @@ private Q_SLOTS:
         QVERIFY2(qAbs(got - travel) < 1e-9, qPrintable(QString::number(got)));
     }
 };
-
-Q_DECLARE_METATYPE(db::motion::MoveParams)
-Q_DECLARE_METATYPE(db::motion::AxisConfig)
-Q_DECLARE_METATYPE(db::motion::AxisSnapshot)
 
 QTEST_GUILESS_MAIN(TestMotionRules)
 #include "tst_motionrules.moc"
