@@ -39,6 +39,13 @@ quint32 u32(const QByteArray &frame, int offset)
     return value;
 }
 
+QByteArray u32Bytes(quint32 value)
+{
+    QByteArray bytes(4, '\0');
+    putU32(bytes, 0, value);
+    return bytes;
+}
+
 void putU32(QByteArray &frame, int offset, quint32 value)
 {
     for (int i = 0; i < 4; ++i)

@@ -27,6 +27,7 @@ inline bool isAbort(const QByteArray &frame)
 ObjectAddress address(const QByteArray &frame);
 quint32 u32(const QByteArray &frame, int offset); // little-endian, 0 beyond the end
 void putU32(QByteArray &frame, int offset, quint32 value);
+QByteArray u32Bytes(quint32 value); // 4 bytes, little-endian
 
 // --- Abort (7.2.4.3.17) ------------------------------------------------------------------------
 QByteArray abort(ObjectAddress address, quint32 code);

@@ -1,6 +1,7 @@
 #include "sdoserver.h"
 
 #include "sdoabort.h"
+#include "sdocodec.h"
 
 #include <QLoggingCategory>
 #include <QtEndian>
@@ -10,23 +11,6 @@ namespace db::canopen {
 Q_LOGGING_CATEGORY(lcSdoServer, "drivebench.canopen.sdoserver")
 
 namespace {
-
-quint32 le32(const QByteArray &d, int at)
-{
-    return qFromLittleEndian<quint32>(d.constData() + at);
-}
-
-QByteArray le32Bytes(quint32 value)
-{
-    QByteArray b(4, '\0');
-    qToLittleEndian(value, b.data());
-    return b;
-}
-
-ObjectAddress addressOf(const QByteArray &d)
-{
-    return { qFromLittleEndian<quint16>(d.constData() + 1), quint8(d.at(3)) };
-}
 
 // -1, 0, 1 for a < b, a == b, a > b in the type's own arithmetic.
 int compareRaw(DataType type, const QVariant &a, const QVariant &b)
@@ -64,7 +48,7 @@ void SdoServer::handleRequest(const QCanBusFrame &frame)
     const int ccs = cmd >> 5;
     if (cmd == sdo::AbortByte || (ccs == sdo::CcsAbort && m_state != State::BlockDownload)) {
         if (m_state != State::Idle)
-            Q_EMIT transferFinished(m_address, m_download, le32(d, 4));
+            Q_EMIT transferFinished(m_address, m_download, sdocodec::u32(d, 4));
         enter(State::Idle);
         return;
     }
@@ -105,7 +89,7 @@ void SdoServer::initiateDownload(const QByteArray &d)
 {
     enter(State::Idle);
     const auto cmd = quint8(d.at(0));
-    m_address = addressOf(d);
+    m_address = sdocodec::address(d);
     m_download = true;
     if (const quint32 code = lookup(m_address, true))
         return abortTransfer(code);
@@ -121,7 +105,7 @@ void SdoServer::initiateDownload(const QByteArray &d)
         send(0x60);
         return finish(true);
     }
-    m_size = sized ? qint64(le32(d, 4)) : -1;
+    m_size = sized ? qint64(sdocodec::u32(d, 4)) : -1;
     if (const quint32 code = sized ? lengthCheck(m_size, true) : 0)
         return abortTransfer(code);
     m_toggle = false;
@@ -156,7 +140,7 @@ void SdoServer::downloadSegment(const QByteArray &d)
 void SdoServer::initiateUpload(const QByteArray &d)
 {
     enter(State::Idle);
-    m_address = addressOf(d);
+    m_address = sdocodec::address(d);
     m_download = false;
     if (const quint32 code = lookup(m_address, false))
         return abortTransfer(code);
@@ -172,7 +156,7 @@ void SdoServer::respondUpload()
         send(quint8(0x43 | ((4 - size) << 2)), m_data);
         return finish(false);
     }
-    send(0x41, le32Bytes(quint32(size)));
+    send(0x41, sdocodec::u32Bytes(quint32(size)));
     m_offset = 0;
     m_toggle = false;
     enter(State::UploadSegmented);
@@ -298,7 +282,7 @@ void SdoServer::abortTransfer(quint32 code)
     qCDebug(lcSdoServer).noquote() << QStringLiteral("node %1 aborts %2: %3")
                                           .arg(m_node)
                                           .arg(m_address.toString(), abortText(code));
-    send(sdo::AbortByte, le32Bytes(code));
+    send(sdo::AbortByte, sdocodec::u32Bytes(code));
     Q_EMIT transferFinished(m_address, m_download, code);
     enter(State::Idle);
 }

@@ -80,10 +80,6 @@ public:
     // Ends a running transfer without a frame (e.g. NMT reset).
     void reset();
 
-    // CRC of SDO block transfer (CiA 301 7.2.4.3.16): CRC-16/XMODEM, polynomial 0x1021, initial
-    // value 0, no reflection; crc carries a running value over several calls.
-    static quint16 blockCrc(const QByteArray &data, quint16 crc = 0);
-
 Q_SIGNALS:
     // A frame for the bus (COB-ID 0x580 + node, DLC 8).
     void response(const QCanBusFrame &frame);

@@ -1,6 +1,7 @@
 #include "sdoserver.h"
 
 #include "sdoabort.h"
+#include "sdocodec.h"
 
 #include <QtEndian>
 
@@ -9,38 +10,17 @@
 
 namespace db::canopen {
 
-namespace {
-
-quint32 le32(const QByteArray &d, int at)
-{
-    return qFromLittleEndian<quint32>(d.constData() + at);
-}
-
-QByteArray le32Bytes(quint32 value)
-{
-    QByteArray b(4, '\0');
-    qToLittleEndian(value, b.data());
-    return b;
-}
-
-ObjectAddress addressOf(const QByteArray &d)
-{
-    return { qFromLittleEndian<quint16>(d.constData() + 1), quint8(d.at(3)) };
-}
-
-} // namespace
-
 // ---- block download (7.2.4.3.9 - 7.2.4.3.12) ----
 
 void SdoServer::blockDownloadInitiate(const QByteArray &d)
 {
     enter(State::Idle);
     const auto cmd = quint8(d.at(0));
-    m_address = addressOf(d);
+    m_address = sdocodec::address(d);
     m_download = true;
     if (const quint32 code = lookup(m_address, true))
         return abortTransfer(code);
-    m_size = (cmd & 0x02) ? qint64(le32(d, 4)) : -1;
+    m_size = (cmd & 0x02) ? qint64(sdocodec::u32(d, 4)) : -1;
     if (const quint32 code = m_size >= 0 ? lengthCheck(m_size, true) : 0)
         return abortTransfer(code);
     m_crc = cmd & 0x04;
@@ -86,7 +66,7 @@ void SdoServer::blockDownloadEnd(const QByteArray &d)
     m_data.chop(unused);
     if (m_size >= 0 && m_data.size() != m_size)
         return abortTransfer(abort::LengthMismatch);
-    if (m_crc && qFromLittleEndian<quint16>(d.constData() + 1) != blockCrc(m_data))
+    if (m_crc && qFromLittleEndian<quint16>(d.constData() + 1) != sdocodec::crc16(m_data))
         return abortTransfer(abort::CrcError);
     if (const quint32 code = commitWrite(m_data))
         return abortTransfer(code);
@@ -101,7 +81,7 @@ void SdoServer::blockDownloadEnd(const QByteArray &d)
 void SdoServer::blockUploadInitiate(const QByteArray &d)
 {
     enter(State::Idle);
-    m_address = addressOf(d);
+    m_address = sdocodec::address(d);
     m_download = false;
     if (const quint32 code = lookup(m_address, false))
         return abortTransfer(code);
@@ -116,7 +96,7 @@ void SdoServer::blockUploadInitiate(const QByteArray &d)
     m_crc = quint8(d.at(0)) & 0x04;
     m_blockSize = blockSize;
     m_offset = 0;
-    send(0xC6, le32Bytes(quint32(m_data.size()))); // scs 6, sc = 1, size indicated
+    send(0xC6, sdocodec::u32Bytes(quint32(m_data.size()))); // scs 6, sc = 1, size indicated
     enter(State::BlockUploadStart);
 }
 
@@ -147,7 +127,7 @@ void SdoServer::blockUploadRequest(const QByteArray &d)
     QByteArray payload(8, '\0');
     payload[0] = char(0xC1 | (unused << 2));
     if (m_crc)
-        qToLittleEndian(blockCrc(m_data), payload.data() + 1);
+        qToLittleEndian(sdocodec::crc16(m_data), payload.data() + 1);
     sendRaw(payload);
     enter(State::BlockUploadEnd);
 }
@@ -166,16 +146,6 @@ void SdoServer::sendSubBlock()
         sendRaw(payload);
         m_segmentsSent = sequence;
     }
-}
-
-quint16 SdoServer::blockCrc(const QByteArray &data, quint16 crc)
-{
-    for (const char byte : data) {
-        crc ^= quint16(quint8(byte)) << 8;
-        for (int bit = 0; bit < 8; ++bit)
-            crc = (crc & 0x8000) ? quint16((crc << 1) ^ 0x1021) : quint16(crc << 1);
-    }
-    return crc;
 }
 
 } // namespace db::canopen

@@ -2,6 +2,7 @@
 // byte-exact slcan lines for SDO reads and writes on node 50, EMCY frames on 0x0B2.
 #include "canopen/movingcapcanopen.h"
 #include "canopen/sdoabort.h"
+#include "canopen/sdocodec.h"
 #include "resources/builtindescriptions.h"
 #include "simulation/movingcapdrive.h"
 #include "transport/slcancodec.h"
@@ -136,7 +137,7 @@ void TestMovingCapCanopen::blockUploadOfDeviceName()
     QVERIFY(segments.endsWith(slcan::encodeFrame(QCanBusFrame(0x5B2, QByteArray(1, 1) + "MovingC"))
                               + second));
     QByteArray end = QByteArray::fromHex("C5000000000000 00");
-    qToLittleEndian(SdoServer::blockCrc("MovingCap ETH"), end.data() + 1);
+    qToLittleEndian(sdocodec::crc16("MovingCap ETH"), end.data() + 1);
     QVERIFY(exchange(sdoLine("A2 02 7F 0000000000"), "\r")
                 .endsWith(slcan::encodeFrame(QCanBusFrame(0x5B2, end))));
 }

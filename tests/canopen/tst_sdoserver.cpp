@@ -1,6 +1,7 @@
 // Level 2: SdoServer byte-exact against hand-built client frames (CiA 301 7.2.4): expedited,
 // segmented and block transfers, CRC, toggle and sequence errors, abort codes, timeout.
 #include "canopen/sdoabort.h"
+#include "canopen/sdocodec.h"
 #include "canopen/sdoserver.h"
 #include "canopen/simulatednode.h"
 
@@ -246,7 +247,7 @@ void TestSdoServer::blockDownload()
              QList<QByteArray> { hex("A2 03 7F 00 00000000") });
     QCOMPARE(m_server->state(), SdoServer::State::BlockDownloadEnd);
     QByteArray end = hex("C5 0000 0000000000"); // n = 1 byte unused in the last segment
-    qToLittleEndian(SdoServer::blockCrc(kData20), end.data() + 1);
+    qToLittleEndian(sdocodec::crc16(kData20), end.data() + 1);
     QCOMPARE(request(end), QList<QByteArray> { hex("A1 00000000000000") });
     QCOMPARE(m_store->value({ 0x2010, 0 }).toByteArray(), kData20);
 }
@@ -273,7 +274,7 @@ void TestSdoServer::blockDownloadBadCrc()
     request(hex("02") + kData20.mid(7, 7));
     request(hex("83") + kData20.mid(14, 6) + QByteArray(1, 0));
     QByteArray end = hex("C5 0000 0000000000");
-    qToLittleEndian(quint16(SdoServer::blockCrc(kData20) ^ 1), end.data() + 1);
+    qToLittleEndian(quint16(sdocodec::crc16(kData20) ^ 1), end.data() + 1);
     QCOMPARE(request(end), QList<QByteArray> { abortFrame("10 20 00", abort::CrcError) });
     QVERIFY(m_store->value({ 0x2010, 0 }).toByteArray().isEmpty());
 }
@@ -290,7 +291,7 @@ void TestSdoServer::blockDownloadLostSegment()
     QCOMPARE(request(hex("82") + kData20.mid(14, 6) + QByteArray(1, 0)),
              QList<QByteArray> { hex("A2 02 7F 00 00000000") });
     QByteArray end = hex("C5 0000 0000000000");
-    qToLittleEndian(SdoServer::blockCrc(kData20), end.data() + 1);
+    qToLittleEndian(sdocodec::crc16(kData20), end.data() + 1);
     QCOMPARE(request(end), QList<QByteArray> { hex("A1 00000000000000") });
     QCOMPARE(m_store->value({ 0x2010, 0 }).toByteArray(), kData20);
 }
@@ -306,7 +307,7 @@ void TestSdoServer::blockUpload()
              (QList<QByteArray> { hex("01") + kData20.mid(0, 7), hex("02") + kData20.mid(7, 7),
                                   hex("83") + kData20.mid(14, 6) + QByteArray(1, 0) }));
     QByteArray end = hex("C5 0000 0000000000");
-    qToLittleEndian(SdoServer::blockCrc(kData20), end.data() + 1);
+    qToLittleEndian(sdocodec::crc16(kData20), end.data() + 1);
     QCOMPARE(request(hex("A2 03 7F 0000000000")), QList<QByteArray> { end });
     QCOMPARE(m_server->state(), SdoServer::State::BlockUploadEnd);
     QVERIFY(request(hex("A1 00000000000000")).isEmpty());
@@ -366,9 +367,9 @@ void TestSdoServer::clientAbortEndsTransfer()
 
 void TestSdoServer::crcVector()
 {
-    QCOMPARE(SdoServer::blockCrc("123456789"), quint16(0x31C3));
-    QCOMPARE(SdoServer::blockCrc("6789", SdoServer::blockCrc("12345")), quint16(0x31C3));
-    QCOMPARE(SdoServer::blockCrc({}), quint16(0));
+    QCOMPARE(sdocodec::crc16("123456789"), quint16(0x31C3));
+    QCOMPARE(sdocodec::crc16("6789", sdocodec::crc16("12345")), quint16(0x31C3));
+    QCOMPARE(sdocodec::crc16({}), quint16(0));
 }
 
 QTEST_GUILESS_MAIN(TestSdoServer)
