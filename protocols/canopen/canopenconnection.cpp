@@ -230,11 +230,13 @@ void CanopenConnection::doRead(Reply *reply, const ObjectDef *def)
                                                          : SdoClient::Mode::Segmented;
     Reply *inner = m_sdo->upload(m_node, reply->address(), mode, size);
     if (!def) {
-        chain(inner, reply, [](const QByteArray &b) { return valueFromUnknownBytes(b); });
+        Reply::forward(inner, reply, this,
+                       [](const QVariant &v) { return valueFromUnknownBytes(v.toByteArray()); });
         return;
     }
     const DataType type = def->type;
-    chain(inner, reply, [type, size](const QByteArray &bytes) -> Result<QVariant> {
+    Reply::forward(inner, reply, this, [type, size](const QVariant &v) -> Result<QVariant> {
+        const QByteArray bytes = v.toByteArray();
         // An expedited answer without size indication carries 4 bytes for smaller types.
         return codec::decode(type, size > 0 && bytes.size() > size ? bytes.left(size) : bytes);
     });
@@ -249,32 +251,7 @@ void CanopenConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectD
         return;
     }
     m_sdo->setTimeoutMs(requestTimeoutMs());
-    chain(m_sdo->download(m_node, reply->address(), *bytes, m_sdoMode), reply);
-}
-
-void CanopenConnection::chain(Reply *inner, Reply *outer,
-                              std::function<Result<QVariant>(const QByteArray &)> convert)
-{
-    inner->setParent(this); // not leaked if the connection goes first
-    QPointer<Reply> target(outer);
-    connect(inner, &Reply::finished, this, [inner, target, convert] {
-        inner->deleteLater();
-        if (!target)
-            return;
-        if (!inner->ok()) {
-            target->fail(inner->error());
-            return;
-        }
-        if (!convert) {
-            target->finish();
-            return;
-        }
-        const Result<QVariant> value = convert(inner->value().toByteArray());
-        if (value)
-            target->finish(*value);
-        else
-            target->fail(value.error());
-    });
+    Reply::forward(m_sdo->download(m_node, reply->address(), *bytes, m_sdoMode), reply, this);
 }
 
 } // namespace db::canopen

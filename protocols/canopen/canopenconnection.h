@@ -79,8 +79,6 @@ private:
     void onBusOpened();
     void onBusClosed(const Error &error);
     void probe();
-    void chain(Reply *inner, Reply *outer,
-               std::function<Result<QVariant>(const QByteArray &)> convert = {});
 
     CanBus *m_bus;
     Result<NodeId> m_nodeResult;

@@ -58,6 +58,28 @@ Reply *Reply::failed(ObjectAddress address, const Error &error)
     return reply;
 }
 
+void Reply::forward(Reply *inner, Reply *outer, QObject *owner,
+                    std::function<Result<QVariant>(const QVariant &)> convert)
+{
+    inner->setParent(owner);
+    QPointer<Reply> target(outer);
+    QObject::connect(inner, &Reply::finished, owner, [inner, target, convert] {
+        inner->deleteLater();
+        if (!target)
+            return;
+        if (!inner->ok()) {
+            target->fail(inner->error());
+            return;
+        }
+        const Result<QVariant> value =
+            convert ? convert(inner->value()) : Result<QVariant>(inner->value());
+        if (value)
+            target->finish(*value);
+        else
+            target->fail(value.error());
+    });
+}
+
 Result<QVariant> Reply::wait(Reply *reply, int safetyMs)
 {
     QPointer<Reply> guard(reply);

@@ -7,6 +7,8 @@
 #include <QObject>
 #include <QVariant>
 
+#include <functional>
+
 namespace db {
 
 // The answer to one asynchronous request (read, write, raw command), like QModbusReply.
@@ -37,6 +39,12 @@ public:
 
     // A reply that fails at once (e.g. "not connected"); finished() still comes from the loop.
     static Reply *failed(ObjectAddress address, const Error &error);
+
+    // Finishes `outer` when `inner` (an engine's reply, given to `owner`) finishes: with inner's
+    // error, or with inner's value passed through `convert` (as it is when convert is empty).
+    // Safe when outer is deleted first, and inner is not leaked when owner goes first.
+    static void forward(Reply *inner, Reply *outer, QObject *owner,
+                        std::function<Result<QVariant>(const QVariant &)> convert = {});
 
     // Blocks in a local event loop until the reply finishes (for the CLI and tests only) and
     // deletes it. Every protocol request has its own timeout; safetyMs is a last resort.

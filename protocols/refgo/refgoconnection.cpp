@@ -169,10 +169,10 @@ void RefgoConnection::doRead(Reply *reply, const ObjectDef *def)
         return;
     }
     m_client->setTimeoutMs(requestTimeoutMs());
-    chain(m_client->objectRead(reply->address()), reply,
-          [def = def ? std::optional<ObjectDef>(*def) : std::nullopt](const QVariant &v) {
-              return convertRead(def ? &*def : nullptr, v.toLongLong());
-          });
+    Reply::forward(m_client->objectRead(reply->address()), reply, this,
+                   [def = def ? std::optional<ObjectDef>(*def) : std::nullopt](const QVariant &v) {
+                       return convertRead(def ? &*def : nullptr, v.toLongLong());
+                   });
 }
 
 void RefgoConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def)
@@ -182,29 +182,7 @@ void RefgoConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef
         return;
     }
     m_client->setTimeoutMs(requestTimeoutMs());
-    chain(m_client->objectWrite(reply->address(), raw), reply);
-}
-
-void RefgoConnection::chain(Reply *inner, Reply *outer,
-                            std::function<Result<QVariant>(const QVariant &)> convert)
-{
-    inner->setParent(this); // not leaked if the connection goes first
-    QPointer<Reply> target(outer);
-    connect(inner, &Reply::finished, this, [inner, target, convert] {
-        inner->deleteLater();
-        if (!target)
-            return;
-        if (!inner->ok()) {
-            target->fail(inner->error());
-            return;
-        }
-        const Result<QVariant> value =
-            convert ? convert(inner->value()) : Result<QVariant>(inner->value());
-        if (value.ok())
-            target->finish(value.value());
-        else
-            target->fail(value.error());
-    });
+    Reply::forward(m_client->objectWrite(reply->address(), raw), reply, this);
 }
 
 } // namespace db::refgo

@@ -62,9 +62,6 @@ private:
     void init();
     void onOpened();
     void onClosed(const Error &error);
-    // Finishes `outer` when `inner` (a client reply owned here) finishes, via convert.
-    void chain(Reply *inner, Reply *outer,
-               std::function<Result<QVariant>(const QVariant &)> convert = {});
 
     ByteStream *m_stream = nullptr;
     RefgoClient *m_client = nullptr;

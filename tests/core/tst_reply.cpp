@@ -19,6 +19,8 @@ private Q_SLOTS:
     void waitReturnsTheResult();
     void waitReportsPendingAsTimeout();
     void waitOnAnAlreadyDeliveredReplyReturnsAtOnce();
+    void forwardConvertsTheValueOrPassesTheError();
+    void forwardSurvivesTheOuterReplyBeingDeleted();
 };
 
 void TestReply::finishesExactlyOnce()
@@ -90,6 +92,42 @@ void TestReply::waitOnAnAlreadyDeliveredReplyReturnsAtOnce()
     clock.start();
     QCOMPARE(Reply::wait(reply, 5000).value().toInt(), 7);
     QVERIFY(clock.elapsed() < 1000);
+}
+
+void TestReply::forwardConvertsTheValueOrPassesTheError()
+{
+    QObject owner;
+    auto *inner = new Reply;
+    auto *outer = new Reply;
+    Reply::forward(inner, outer, &owner, [](const QVariant &v) { return QVariant(v.toInt() * 2); });
+    inner->finish(21);
+    QCOMPARE(Reply::wait(outer, 1000).value().toInt(), 42);
+
+    auto *failing = new Reply;
+    auto *refused = new Reply;
+    Reply::forward(failing, refused, &owner, [](const QVariant &) -> Result<QVariant> {
+        return Error(Error::Kind::Malformed, QStringLiteral("not a number"));
+    });
+    failing->finish(1);
+    QCOMPARE(Reply::wait(refused, 1000).error().kind(), Error::Kind::Malformed);
+
+    auto *lost = new Reply;
+    auto *plain = new Reply;
+    Reply::forward(lost, plain, &owner);
+    lost->fail(Error(Error::Kind::Timeout, QStringLiteral("no answer")));
+    QCOMPARE(Reply::wait(plain, 1000).error().message(), QStringLiteral("no answer"));
+}
+
+void TestReply::forwardSurvivesTheOuterReplyBeingDeleted()
+{
+    QObject owner;
+    auto *inner = new Reply;
+    auto *outer = new Reply;
+    Reply::forward(inner, outer, &owner);
+    QSignalSpy innerDone(inner, &Reply::finished);
+    delete outer;
+    inner->finish(1);
+    QVERIFY(innerDone.wait(1000)); // no crash touching the deleted outer reply
 }
 
 QTEST_GUILESS_MAIN(TestReply)
