@@ -2,6 +2,8 @@
 
 #include "clisession.h"
 
+#include <QCommandLineOption>
+#include <QCommandLineParser>
 #include <QStringList>
 
 namespace db::cli {
@@ -17,6 +19,8 @@ struct Context
     QString file = {}; // --file: read/write the value as raw bytes from/to this file
     QString output = {}; // -o/--output (dcf)
     bool all = false; // --all (nmt: broadcast)
+    // Every parsed option, for command-specific ones (Command::options): parser->value("vel").
+    const QCommandLineParser *parser = nullptr;
 };
 
 struct Command
@@ -27,6 +31,9 @@ struct Command
     int minArgs;
     int maxArgs;
     int (*run)(Context &context);
+    // Options only this command (family) takes, added to the parser by main.cpp. Several
+    // commands may name the same option; it is added once.
+    QList<QCommandLineOption> (*options)() = nullptr;
 };
 
 const QList<Command> &commands();

@@ -65,7 +65,23 @@ int main(int argc, char *argv[])
         QStringLiteral("mode"));
     const QCommandLineOption all(
         QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
-    parser.addOptions({ timeout, connectTimeout, hex, type, verbose, file, output, sdo, all });
+    const QList<QCommandLineOption> common { timeout, connectTimeout, hex, type, verbose,
+                                             file,    output,         sdo, all };
+    parser.addOptions(common);
+    QStringList taken; // option names in use; each command family may add its own
+    for (const QCommandLineOption &o : common)
+        taken += o.names();
+    for (const cli::Command &c : cli::commands()) {
+        if (!c.options)
+            continue;
+        for (const QCommandLineOption &o : c.options()) {
+            bool fresh = true;
+            for (const QString &n : o.names())
+                fresh = fresh && !taken.contains(n);
+            if (fresh && parser.addOption(o))
+                taken += o.names();
+        }
+    }
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
     parser.process(app);
@@ -112,5 +128,6 @@ int main(int argc, char *argv[])
     context.file = parser.value(file);
     context.output = parser.value(output);
     context.all = parser.isSet(all);
+    context.parser = &parser;
     return command->run(context);
 }

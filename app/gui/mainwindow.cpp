@@ -22,6 +22,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 
 namespace db::gui {
@@ -64,11 +65,16 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     setWindowTitle(tr("drivebench"));
     setObjectName(QStringLiteral("MainWindow"));
 
-    auto *centre = new QScrollArea(this);
-    centre->setWidget(m_statusPanel);
-    centre->setWidgetResizable(true);
-    centre->setFrameShape(QFrame::NoFrame);
-    setCentralWidget(centre);
+    // The centre is a set of pages (drive status, object dictionary, scope, ...); docks around it.
+    m_pages = new QTabWidget(this);
+    m_pages->setObjectName(QStringLiteral("pages"));
+    m_pages->setDocumentMode(true);
+    auto *statusPage = new QScrollArea(m_pages);
+    statusPage->setWidget(m_statusPanel);
+    statusPage->setWidgetResizable(true);
+    statusPage->setFrameShape(QFrame::NoFrame);
+    m_pages->addTab(statusPage, tr("Drive Status"));
+    setCentralWidget(m_pages);
     createDocks();
     createMenus();
     statusBar()->addPermanentWidget(m_connectionState);

@@ -9,6 +9,7 @@
 #include <vector>
 
 class QLabel;
+class QTabWidget;
 
 namespace db::canopen {
 class CanopenConnection;
@@ -59,6 +60,8 @@ public:
     // CAN monitor and node list: attached to the current connection while it is a CANopen one.
     widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
     widgets::NodeList *nodeList() const { return m_nodeList; }
+    // The central pages (tabs): "Drive Status" first, then the larger tools.
+    QTabWidget *pages() const { return m_pages; }
     // Brings the CAN monitor's tab to the front.
     void showCanMonitor();
 
@@ -97,6 +100,7 @@ private:
     widgets::NodeList *m_nodeList = nullptr;
     QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
+    QTabWidget *m_pages = nullptr;
     QAction *m_disconnectAction = nullptr;
 };
 
