@@ -1,6 +1,7 @@
 // Corpus benchmark for the LED Morse decoder (not run by ctest).
 //
 //   morse_corpus [cases-per-condition=100] [seed=7]
+//   (MORSE_ONLY=name,name runs only those conditions; MORSE_VERBOSE=1 lists the failures)
 //
 // Prints, per condition: exact IP rate after the whole recording (3 message periods, random
 // start inside a message), confident rate, confident-but-wrong count, and the time from the
@@ -61,7 +62,12 @@ int main(int argc, char **argv)
     const bool verbose = qEnvironmentVariableIsSet("MORSE_VERBOSE");
     out << "condition                   n  exact%  conf%  wrongConf  reps-to-confident: median "
            "p95 max <=2%   exact% per rate 15/25/30/60/1000   ms/case\n";
+    // MORSE_ONLY=name1,name2 runs only those conditions.
+    const QStringList only =
+        qEnvironmentVariable("MORSE_ONLY").split(QLatin1Char(','), Qt::SkipEmptyParts);
     for (const CorpusCondition &cond : conditions()) {
+        if (!only.isEmpty() && !only.contains(cond.name))
+            continue;
         const std::vector<CorpusCase> corpus = makeCorpus(cond, count, seed);
         int exact = 0;
         int confident = 0;
