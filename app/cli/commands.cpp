@@ -2,6 +2,9 @@
 #include "commands_canopen.h"
 #include "commands_description.h"
 #include "commands_morse.h"
+#include "commands_motion.h"
+#include "commands_params.h"
+#include "commands_record.h"
 
 #include "core/valuecodec.h"
 #include "refgo/refgoconnection.h"
@@ -184,8 +187,31 @@ const QList<Command> &commands()
           dcf },
         { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,
           edsCheck },
+        { "backup", "URI -o FILE", "save every storable object of the device to a parameter set", 1,
+          1, backup, paramsOptions },
+        { "restore", "URI FILE [--only INDEX:SUB,...] [--store] [--no-verify]",
+          "write a parameter set (or its selected rows) safely, verify, optionally store", 2, 2,
+          restore, paramsOptions },
+        { "diff", "A B", "compare two parameter sets, each a URI or a file; exit 1 if they differ",
+          2, 2, diff, paramsOptions },
+        { "dump", "URI", "print every readable object with its value", 1, 1, dump, paramsOptions },
         { "morse", "FILE [X,Y,W,H]", "decode the LED Morse IP from a video or a CSV of samples", 1,
           2, morse },
+        { "enable", "URI", "enable the drive (MC_Power on); prints the axis state", 1, 1, enable,
+          motionOptions },
+        { "disable", "URI", "disable the drive (MC_Power off)", 1, 1, disable, motionOptions },
+        { "reset", "URI", "fault reset (MC_Reset)", 1, 1, reset, motionOptions },
+        { "home", "URI METHOD [--vel V --acc A]",
+          "home with a CiA 402 method, e.g. 35; prints the position", 2, 2, home, motionOptions },
+        { "move", "URI --abs|--rel|--add VALUE [--vel V --acc A --dec D]",
+          "move and wait for Done; prints the final actual position", 1, 1, move, motionOptions },
+        { "jog", "URI --vel V --time MS", "jog at V for MS ms, then halt; prints the position", 1,
+          1, jog, motionOptions },
+        { "record",
+          "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] -o "
+          "FILE",
+          "record objects (host polling) to CSV, optionally triggered", 1, 1, record,
+          recordOptions },
     };
     return list;
 }

@@ -14,6 +14,7 @@ sim::MovingCapOptions options(const QHash<ObjectAddress, QVariant> &initialValue
 {
     sim::MovingCapOptions o;
     o.initialValues = initialValues;
+    o.axisModel.velocityNoise = 2.0; // 606Ch ripples while moving, as a real drive's does (scope)
     return o;
 }
 } // namespace

@@ -6,10 +6,12 @@
 #include "widgets/connectiondialog.h"
 #include "widgets/devicelist.h"
 #include "widgets/drivestatuspanel.h"
+#include "widgets/jogpanel.h"
 #include "widgets/logconsole.h"
 #include "widgets/morsepanel.h"
 #include "widgets/nodelist.h"
 #include "widgets/objectaccessbox.h"
+#include "widgets/scopepage.h"
 #include "widgets/widgetstyle.h"
 
 #include <QApplication>
@@ -22,6 +24,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
 
@@ -69,6 +72,9 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     m_pages = new QTabWidget(this);
     m_pages->setObjectName(QStringLiteral("pages"));
     m_pages->setDocumentMode(true);
+    // Objects dragged from the Object Dictionary page to the Scope tab: hovering a tab opens it.
+    m_pages->tabBar()->setChangeCurrentOnDrag(true);
+    m_pages->tabBar()->setAcceptDrops(true);
     auto *statusPage = new QScrollArea(m_pages);
     statusPage->setWidget(m_statusPanel);
     statusPage->setWidgetResizable(true);
@@ -77,6 +83,10 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     setCentralWidget(m_pages);
     createDocks();
     createMenus();
+    createParameterPages();
+    // Scope (issue 6): records objects of the current connection.
+    m_scopePage = new widgets::ScopePage(m_pages);
+    m_pages->addTab(m_scopePage, tr("Scope"));
     statusBar()->addPermanentWidget(m_connectionState);
 
     connect(m_deviceList, &widgets::DeviceList::currentConnectionChanged, this,
@@ -85,7 +95,10 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     connect(m_deviceList, &widgets::DeviceList::connectRequested, this,
             [](DeviceConnection *c) { c->open(); });
     connect(m_deviceList, &widgets::DeviceList::disconnectRequested, this,
-            [](DeviceConnection *c) { c->close(); });
+            [this](DeviceConnection *c) {
+                stopMotionBeforeClose(c);
+                c->close();
+            });
     connect(m_deviceList, &widgets::DeviceList::removeRequested, this,
             &MainWindow::removeConnection);
 
@@ -100,6 +113,9 @@ MainWindow::~MainWindow()
     disconnect(m_deviceList, nullptr, this, nullptr);
     m_statusPanel->setConnection(nullptr);
     m_objectAccess->setConnection(nullptr);
+    m_jogPanel->setConnection(nullptr);
+    m_scopePage->setConnection(nullptr);
+    attachParameters(nullptr);
     attachCanopen(nullptr);
     m_connections.clear();
 }
@@ -126,6 +142,7 @@ void MainWindow::createDocks()
     QDockWidget *canMonitor = addDock(m_canMonitor, tr("CAN Monitor"),
                                       QStringLiteral("canMonitorDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(log, canMonitor);
+    createMotionDock();
     // Morse IP decoder (issue 7): files read by app/morse, "Connect" prefills the dialog.
     auto *morse = new widgets::MorsePanel(this);
     morse->setLoader(loadMorseSource);
@@ -218,6 +235,9 @@ void MainWindow::setCurrent(DeviceConnection *connection)
 {
     m_statusPanel->setConnection(connection);
     m_objectAccess->setConnection(connection);
+    m_jogPanel->setConnection(connection);
+    m_scopePage->setConnection(connection);
+    attachParameters(connection);
     attachCanopen(connection);
     updateStatusBar();
 }
@@ -247,6 +267,7 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     if (it == m_connections.end())
         return;
     std::shared_ptr<DeviceConnection> keep = *it;
+    stopMotionBeforeClose(connection);
     m_connections.erase(it);
     if (connection == m_canopen)
         attachCanopen(nullptr);
@@ -276,8 +297,10 @@ void MainWindow::showConnectDialogFor(const QString &uri)
 
 void MainWindow::disconnectCurrent()
 {
-    if (DeviceConnection *c = currentConnection())
+    if (DeviceConnection *c = currentConnection()) {
+        stopMotionBeforeClose(c);
         c->close();
+    }
 }
 
 void MainWindow::showAbout()
@@ -308,8 +331,10 @@ void MainWindow::closeAllConnections(int timeoutMs)
             return c->state() == DeviceConnection::State::Disconnected;
         });
     };
-    for (const auto &c : m_connections)
+    for (const auto &c : m_connections) {
+        stopMotionBeforeClose(c.get());
         c->close();
+    }
     if (allDown())
         return;
     QEventLoop loop;

@@ -19,9 +19,14 @@ namespace db::widgets {
 class CanMonitor;
 class DeviceList;
 class DriveStatusPanel;
+class JogPanel;
 class LogConsole;
 class NodeList;
 class ObjectAccessBox;
+class OdEditor;
+class ParamCompareView;
+class ParameterSetActions;
+class ScopePage;
 } // namespace db::widgets
 
 namespace db::gui {
@@ -64,6 +69,14 @@ public:
     QTabWidget *pages() const { return m_pages; }
     // Brings the CAN monitor's tab to the front.
     void showCanMonitor();
+    // The "Motion" dock (right): jog/motion panel of the current connection (issue 5).
+    widgets::JogPanel *jogPanel() const { return m_jogPanel; }
+    // Issue 4: "Object Dictionary" and "Parameter Sets" pages and the "Parameters" menu.
+    widgets::OdEditor *odEditor() const { return m_odEditor; }
+    widgets::ParamCompareView *compareView() const { return m_compareView; }
+    widgets::ParameterSetActions *parameterActions() const { return m_paramActions; }
+    // Issue 6: the "Scope" page, recording from the current connection.
+    widgets::ScopePage *scopePage() const { return m_scopePage; }
 
 public Q_SLOTS:
     void showConnectDialog();
@@ -84,6 +97,13 @@ private:
     // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
     // else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
+    // mainwindow_motion.cpp: the Motion dock, the application-wide Esc stop and the stops on
+    // window deactivation and before a connection is closed by the user.
+    void createMotionDock();
+    void stopMotionBeforeClose(DeviceConnection *connection);
+    // mainwindow_params.cpp: editor and parameter-set pages, the Parameters menu.
+    void createParameterPages();
+    void attachParameters(DeviceConnection *connection);
     void updateStatusBar();
     void loadSettings();
     void saveSettings() const;
@@ -98,6 +118,11 @@ private:
     widgets::LogConsole *m_log = nullptr;
     widgets::CanMonitor *m_canMonitor = nullptr;
     widgets::NodeList *m_nodeList = nullptr;
+    widgets::JogPanel *m_jogPanel = nullptr;
+    widgets::OdEditor *m_odEditor = nullptr;
+    widgets::ParamCompareView *m_compareView = nullptr;
+    widgets::ParameterSetActions *m_paramActions = nullptr;
+    widgets::ScopePage *m_scopePage = nullptr;
     QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
     QTabWidget *m_pages = nullptr;

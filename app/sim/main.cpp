@@ -1,13 +1,16 @@
 // drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
+//                            [--reject-write INDEX:SUB ...]
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
 #include "../common/demodrive.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
+#include "simulation/movingcapdrive.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QSet>
 #include <QSocketNotifier>
 #include <QTextStream>
 
@@ -92,7 +95,13 @@ int main(int argc, char *argv[])
         QCoreApplication::translate("sim",
                                     "canopen: this node's SDO server stays silent (repeatable)."),
         QStringLiteral("id"));
-    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply });
+    const QCommandLineOption rejectWrite(
+        QStringLiteral("reject-write"),
+        QCoreApplication::translate("sim",
+                                    "movingcap: writes to this object fail with a device error "
+                                    "(failure mode for tests; repeatable)."),
+        QStringLiteral("INDEX:SUB"));
+    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite });
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
@@ -197,7 +206,18 @@ int main(int argc, char *argv[])
         }
         presets.insert(*address, raw.value());
     }
+    QSet<ObjectAddress> rejected;
+    for (const QString &text : parser.values(rejectWrite)) {
+        const auto address = ObjectAddress::parse(text);
+        if (!address) {
+            err << "drivebench-sim: --reject-write takes INDEX:SUB, not '" << text << "'"
+                << Qt::endl;
+            return 2;
+        }
+        rejected.insert(*address);
+    }
     app::DemoDrive demo(presets);
+    demo.drive().setRejectedWrites(rejected);
     if (refgo >= 0) {
         if (auto listening = demo.startRefgo(quint16(refgo)); !listening) {
             err << "drivebench-sim: " << listening.error().toString() << Qt::endl;

@@ -122,7 +122,10 @@ void MotionAxis::startMotion(MotionCommand *command)
     AxisConfig config = m_config;
     if (command->kind() == CommandKind::Home)
         config.homingMethod = command->m_latchedHoming.method;
-    const Plan plan = planCommand(command->kind(), command->m_latched, config, axis,
+    MoveParams inputs = command->m_latched;
+    if (usesOverride(command->kind()))
+        inputs.overridePercent *= m_override / 100.0;
+    const Plan plan = planCommand(command->kind(), inputs, config, axis,
                                   m_tracker.origin(axis.position, m_config.positionWindow));
     command->m_limits = plan.flags;
     if (plan.refused()) {
@@ -135,6 +138,9 @@ void MotionAxis::startMotion(MotionCommand *command)
             Error(Error::Kind::Cancelled, QStringLiteral("aborted by %1").arg(command->name())));
     m_active = command;
     m_activeVelocity = plan.profile.velocity;
+    m_activeParams = command->m_latched;
+    m_overrideHeld = false;
+    m_inWindow.invalidate();
     if (isPositioning(command->kind())) {
         command->m_target = plan.target;
         m_tracker.setTarget(plan.target);
@@ -153,6 +159,10 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
     case CommandKind::MoveAbsolute:
     case CommandKind::MoveRelative:
     case CommandKind::MoveAdditive:
+        if (plan.profile.velocity == 0.0) { // override 0 at the start: stand until it rises
+            m_overrideHeld = true;
+            return m_axis->halt(plan.profile.deceleration);
+        }
         return m_axis->moveTo(plan.target, p);
     case CommandKind::MoveVelocity:
         return m_axis->moveVelocity(plan.profile.velocity, p);
@@ -243,6 +253,11 @@ void MotionAxis::onStatus()
         return;
     ++m_rounds;
     m_tracker.observe(s.position, m_config.positionWindow);
+    if (m_rounds == 1 && s.powered && !s.fault && m_state == AxisState::Disabled) {
+        // The drive was enabled before this model saw it (e.g. by an earlier CLI call).
+        m_powerWanted = true;
+        setState(AxisState::Standstill);
+    }
     if (s.fault && m_state != AxisState::ErrorStop) {
         const Error e(Error::Kind::DeviceError,
                       QStringLiteral("drive fault (statusword 0x%1)")
@@ -276,7 +291,15 @@ void MotionAxis::evaluateActive(const AxisInterface::Status &s)
     case CommandKind::MoveAbsolute:
     case CommandKind::MoveRelative:
     case CommandKind::MoveAdditive:
-        if (!s.moving && std::abs(s.position - c->m_target) <= m_config.positionWindow) {
+        // I180 (in window) may rise while still moving; Done = profile finished (not moving)
+        // and in the window for I87 since I180 rose (S-03, S-04).
+        if (m_overrideHeld || std::abs(s.position - c->m_target) > m_config.positionWindow) {
+            m_inWindow.invalidate();
+            return;
+        }
+        if (!m_inWindow.isValid())
+            m_inWindow.start();
+        if (!s.moving && m_inWindow.elapsed() >= m_config.positionWindowTimeMs) {
             m_active = nullptr;
             setState(AxisState::Standstill); // [I] A12
             c->setStatus(MotionCommand::Status::Done);

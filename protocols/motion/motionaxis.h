@@ -5,6 +5,7 @@
 #include "motionrules.h"
 #include "targettracker.h"
 
+#include <QElapsedTimer>
 #include <QPointer>
 #include <QTimer>
 
@@ -50,6 +51,14 @@ public:
     void keepAlive();
     void stopNow();
 
+    // Velocity override I230 in % (0..kMaxOverridePercent), multiplied into the velocity of
+    // MC_MoveAbsolute/Relative/Additive/MoveVelocity (Sec. 2.7, [I] multiplicative): at their next
+    // start and at once for the running one. 0 holds a positioning axis without Done until the
+    // override rises again (S-26); an MC_Stop meanwhile ends the command for good (S-27).
+    static constexpr double kMaxOverridePercent = 200.0;
+    void setVelocityOverride(double percent);
+    double velocityOverride() const { return m_override; }
+
 Q_SIGNALS:
     void stateChanged(db::motion::AxisState state);
     void watchdogExpired();
@@ -74,6 +83,7 @@ private:
     void setState(AxisState state);
     bool motionInProgress() const;
     bool controlsAxis(const MotionCommand *command) const;
+    static bool usesOverride(CommandKind kind);
     AxisSnapshot snapshot() const;
     // Runs reply and calls done(reply) once on this axis; the reply is deleted afterwards.
     void whenFinished(Reply *reply, std::function<void(Reply *)> done);
@@ -91,6 +101,10 @@ private:
     QTimer m_watchdog;
     int m_watchdogMs = 0;
     Error m_lastError;
+    double m_override = 100.0;
+    bool m_overrideHeld = false; // the active positioning stands because the override is 0
+    MoveParams m_activeParams; // latched inputs of the active command, before the axis override
+    QElapsedTimer m_inWindow; // since the active positioning entered its window (I87)
 };
 
 } // namespace db::motion

@@ -74,6 +74,9 @@ struct AxisConfig
     double softLimitNegative = 0.0; // I51
     double softLimitPositive = 0.0; // I50
     double positionWindow = 1.0; // I22
+    // I87 (CiA 402: 6068h): Done only once the position has stayed in the window this long
+    // (S-03/S-04; [R] timed from entering the window).
+    int positionWindowTimeMs = 0;
     double velocityWindow = 1.0; // C40
     int homingMethod = 35; // A586; 0 = inactive (R9)
 };

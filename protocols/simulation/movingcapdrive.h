@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
+#include <QSet>
 
 #include <functional>
 #include <optional>
@@ -78,6 +79,11 @@ public:
     Result<bool> input(int number) const; // TI
     quint32 tpsr() const; // TPSR bits
     int ts() const; // TS 0/1/2/9
+
+    // ---- failure mode (tests, drivebench-sim --reject-write) ----
+    // Valid writes to these objects fail with a device error (CANopen abort 08000022 "present
+    // device state"), as a drive refusing a parameter in its current state would.
+    void setRejectedWrites(const QSet<ObjectAddress> &addresses) { m_rejectedWrites = addresses; }
 
     // ---- observation ----
     cia402::State state() const { return m_machine.state(); }
@@ -176,6 +182,7 @@ private:
 
     double m_temperature = 35.0;
     quint16 m_lastStatusword = 0xFFFF;
+    QSet<ObjectAddress> m_rejectedWrites;
 };
 
 } // namespace db::sim

@@ -28,6 +28,11 @@ Result<void> MovingCapDrive::write(ObjectAddress address, const QVariant &value)
     auto raw = m_store.checkWrite(address, value);
     if (!raw)
         return raw.error();
+    if (m_rejectedWrites.contains(address))
+        return Error(Error::Kind::DeviceError,
+                     QStringLiteral("%1 refused in the present device state (simulated)")
+                         .arg(address.toString()),
+                     0x08000022);
     bool handled = false;
     if (auto special = writeSpecial(address, raw.value(), handled); !special)
         return special;
@@ -43,7 +48,7 @@ void MovingCapDrive::refreshComputed()
     m_store.set({ 0x6041, 0 }, statusword());
     m_store.set({ 0x6061, 0 }, m_store.value({ 0x6060, 0 }));
     m_store.set({ 0x6064, 0 }, qRound64(m_axis.position()));
-    m_store.set({ 0x606C, 0 }, qRound64(m_axis.velocity()));
+    m_store.set({ 0x606C, 0 }, qRound64(m_axis.measuredVelocity()));
     m_store.set({ 0x6078, 0 }, qRound64(m_axis.current()));
     m_store.set({ 0x60FC, 0 }, qRound64(m_axis.demandPosition() * userToIncrements()));
     m_store.set({ 0x60FD, 0 }, combinedInputs());

@@ -214,6 +214,7 @@ void SimulatedAxis::step(double dt)
         return;
     if (!m_powered) {
         m_current = 0.0;
+        m_measuredVelocity = m_actualVelocity;
         return;
     }
     applySoftLimitInVelocityMode();
@@ -243,6 +244,15 @@ void SimulatedAxis::step(double dt)
         else
             current += m_model.holdingCurrent;
         m_current = std::clamp(current + noise(), -m_currentLimit, m_currentLimit);
+    }
+
+    m_measuredVelocity = m_actualVelocity;
+    if (m_model.velocityNoise > 0 && std::abs(m_actualVelocity) > kStandstillVelocity) {
+        m_velocityNoiseState ^= m_velocityNoiseState << 13;
+        m_velocityNoiseState ^= m_velocityNoiseState >> 17;
+        m_velocityNoiseState ^= m_velocityNoiseState << 5;
+        m_measuredVelocity +=
+            (double(m_velocityNoiseState % 2001) / 1000.0 - 1.0) * m_model.velocityNoise;
     }
 
     if (m_mode == Mode::Homing && blocked()) {

@@ -27,6 +27,10 @@ public:
         double frictionCurrent = 40.0; // 0.1 % of rated while moving
         double holdingCurrent = 8.0; // 0.1 % of rated at standstill
         double noiseAmplitude = 3.0; // +/- 0.1 % of rated
+        // +/- units/s on the measured velocity (606Ch) while moving: a real drive estimates the
+        // speed from encoder differences, so it ripples. 0 = exact (the factory default, which
+        // the simulation tests rely on); the demo drive turns it on.
+        double velocityNoise = 0.0;
         double blockDetectionTime = 0.1; // s pressing against a stop before "blocked"
         double blockFollowingError = 1.0; // units demand ahead of actual at a stop
     };
@@ -63,6 +67,8 @@ public:
     Mode mode() const { return m_mode; }
     double position() const { return m_actual; }
     double velocity() const { return m_actualVelocity; }
+    // velocity() plus the measurement ripple (Model::velocityNoise) while moving; what 606Ch shows.
+    double measuredVelocity() const { return m_measuredVelocity; }
     double demandPosition() const { return m_demand.position; }
     double demandVelocity() const { return m_demand.velocity; }
     double target() const { return m_target; }
@@ -88,6 +94,8 @@ private:
     Mode m_mode = Mode::Hold;
     double m_actual = 0.0;
     double m_actualVelocity = 0.0;
+    double m_measuredVelocity = 0.0;
+    quint32 m_velocityNoiseState = 0x6C8E9CF5u; // own sequence: the current noise stays as it was
     double m_target = 0.0;
     double m_stopDeceleration = 1.0;
     struct Queued

@@ -1,0 +1,360 @@
+#include "commands_motion.h"
+
+#include "cia402/modes.h"
+#include "motion/axislimits.h"
+#include "motion/cia402axis.h"
+#include "motion/motionaxis.h"
+
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+
+#include <functional>
+#include <memory>
+
+namespace db::cli {
+
+using namespace motion;
+
+namespace {
+
+const QString kAbs = QStringLiteral("abs");
+const QString kRel = QStringLiteral("rel");
+const QString kAdd = QStringLiteral("add");
+const QString kVel = QStringLiteral("vel");
+const QString kAcc = QStringLiteral("acc");
+const QString kDec = QStringLiteral("dec");
+const QString kTime = QStringLiteral("time");
+const QString kWait = QStringLiteral("wait");
+constexpr int kStopFlushMs = 1000; // a quick stop after a timeout: time to reach the drive
+constexpr int kFirstStatusRounds = 2; // status rounds read before a command starts
+
+// One axis for one command: the session, the CiA 402 axis and the command model on it.
+struct Axis
+{
+    explicit Axis(Context &c)
+        : session(c.registry, c.options)
+    { }
+    Session session;
+    std::unique_ptr<Cia402Axis> cia;
+    std::unique_ptr<MotionAxis> model;
+    int waitMs = kDefaultWaitMs;
+    bool rotary = false;
+};
+
+// Runs the event loop until done() or timeoutMs; keeps the deadman watchdog fed meanwhile
+// (this process is alive and watching).
+bool waitUntil(Axis &axis, const std::function<bool()> &done, int timeoutMs)
+{
+    const QDeadlineTimer deadline(timeoutMs);
+    while (!done()) {
+        if (deadline.hasExpired())
+            return false;
+        axis.model->keepAlive();
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 20);
+    }
+    return true;
+}
+
+bool waitRounds(Axis &axis, int rounds, int timeoutMs)
+{
+    int seen = 0;
+    const auto c =
+        QObject::connect(axis.cia.get(), &AxisInterface::statusChanged, [&seen] { ++seen; });
+    const bool ok = waitUntil(
+        axis, [&] { return seen >= rounds; }, timeoutMs);
+    QObject::disconnect(c);
+    return ok;
+}
+
+Result<double> number(Context &c, const QString &option)
+{
+    bool ok = false;
+    const double v = c.parser->value(option).toDouble(&ok);
+    if (!ok)
+        return Error(
+            Error::Kind::InvalidArgument,
+            QStringLiteral("--%1 takes a number, not '%2'").arg(option, c.parser->value(option)));
+    return v;
+}
+
+// Opens the connection, reads the scaling and the drive's limits and waits for the drive's
+// status, so that the model knows whether it is enabled.
+Result<std::unique_ptr<Axis>> openAxis(Context &c)
+{
+    auto axis = std::make_unique<Axis>(c);
+    if (c.parser && c.parser->isSet(kWait)) {
+        const auto w = number(c, kWait);
+        if (!w || *w <= 0)
+            return Error(Error::Kind::InvalidArgument, QStringLiteral("--wait takes ms > 0"));
+        axis->waitMs = int(*w);
+    }
+    if (auto opened = axis->session.open(c.args.at(0)); !opened)
+        return opened.error();
+    DeviceConnection *conn = axis->session.connection();
+    const ObjectDictionary &dict = conn->dictionary();
+    if (!dict.contains(cia402::obj::PositionActual))
+        return Error(Error::Kind::NotSupported,
+                     QStringLiteral("%1: no CiA 402 drive description (give ?eds=FILE)")
+                         .arg(conn->uri().toString()));
+    axis->cia = std::make_unique<Cia402Axis>(conn);
+    axis->rotary =
+        dict.identity.productName.contains(QLatin1String("MovingCap"), Qt::CaseInsensitive);
+    if (axis->rotary)
+        axis->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
+    if (auto init = Reply::wait(axis->cia->initialize()); !init)
+        return init.error().prefixed(QStringLiteral("reading the scaling"));
+    QHash<ObjectAddress, QVariant> values;
+    for (ObjectAddress a : axislimits::objects(dict))
+        if (auto v = axis->session.read(a))
+            values.insert(a, v.value());
+    axis->model = std::make_unique<MotionAxis>(axis->cia.get());
+    axis->model->setConfig(
+        axislimits::fromValues(values, dict, axis->cia->scaling(), axis->rotary));
+    axis->model->setWatchdogTimeout(MotionAxis::kMaxWatchdogMs);
+    if (!waitRounds(*axis, kFirstStatusRounds, c.options.requestTimeoutMs * 4))
+        return Error(Error::Kind::Timeout, QStringLiteral("no status from the drive"));
+    return axis;
+}
+
+double readUser(Axis &axis, ObjectAddress address, bool acceleration)
+{
+    const auto v = axis.session.read(address);
+    if (!v)
+        return 0.0;
+    const double raw = v->toDouble();
+    return acceleration && axis.rotary ? axis.cia->scaling().rotaryAccelerationToUser(raw) : raw;
+}
+
+// Starts the command, waits for its end and reports it; 0 when it is Done.
+int runToEnd(Context &c, Axis &axis, MotionCommand &command)
+{
+    command.setExecute(true);
+    if (!waitUntil(
+            axis, [&] { return command.isFinished(); }, axis.waitMs)) {
+        axis.model->stopNow();
+        waitUntil(
+            axis, [&] { return !axis.cia->status().powered; }, kStopFlushMs);
+        return fail(c,
+                    Error(Error::Kind::Timeout,
+                          QStringLiteral("%1 not done within %2 ms (--wait); axis stopped")
+                              .arg(command.name())
+                              .arg(axis.waitMs)));
+    }
+    if (command.status() == MotionCommand::Status::Done)
+        return ExitOk;
+    if (command.refusal() != Refusal::None) {
+        c.err << "drivebench-cli: " << command.error().message() << Qt::endl;
+        return ExitDeviceError;
+    }
+    return fail(c, command.error());
+}
+
+void printPosition(Context &c, Axis &axis)
+{
+    waitRounds(axis, 1, c.options.requestTimeoutMs * 2); // a round read after the end
+    const double p = axis.cia->status().position;
+    if (c.options.verbose)
+        c.out << "position: " << p << " (" << axisStateName(axis.model->state()) << ")" << Qt::endl;
+    else
+        c.out << p << Qt::endl;
+}
+
+int power(Context &c, CommandKind kind, bool on)
+{
+    auto axis = openAxis(c);
+    if (!axis)
+        return fail(c, axis.error());
+    MotionCommand command(axis.value()->model.get(), kind);
+    command.setEnable(on);
+    if (const int rc = runToEnd(c, *axis.value(), command); rc != ExitOk)
+        return rc;
+    c.out << axisStateName(axis.value()->model->state()) << Qt::endl;
+    return ExitOk;
+}
+
+} // namespace
+
+QList<QCommandLineOption> motionOptions()
+{
+    const auto tr = [](const char *text) {
+        return QCoreApplication::translate("cli", text);
+    };
+    return {
+        QCommandLineOption(kAbs, tr("move: absolute target (user units)."), QStringLiteral("pos")),
+        QCommandLineOption(kRel, tr("move: distance from the actual position."),
+                           QStringLiteral("dist")),
+        QCommandLineOption(kAdd, tr("move: distance from the last target (MC_MoveAdditive)."),
+                           QStringLiteral("dist")),
+        QCommandLineOption(kVel, tr("move, jog, home: velocity (units/s)."), QStringLiteral("v")),
+        QCommandLineOption(kAcc, tr("move, jog, home: acceleration (units/s²)."),
+                           QStringLiteral("a")),
+        QCommandLineOption(kDec, tr("move, jog: deceleration (units/s²)."), QStringLiteral("d")),
+        QCommandLineOption(kTime, tr("jog: how long to jog (ms)."), QStringLiteral("ms")),
+        QCommandLineOption(kWait,
+                           tr("motion commands: longest wait for the end (ms, default "
+                              "60000)."),
+                           QStringLiteral("ms")),
+    };
+}
+
+int enable(Context &c)
+{
+    return power(c, CommandKind::Power, true);
+}
+
+int disable(Context &c)
+{
+    return power(c, CommandKind::Power, false);
+}
+
+int reset(Context &c)
+{
+    return power(c, CommandKind::Reset, true);
+}
+
+int home(Context &c)
+{
+    bool ok = false;
+    const int method = c.args.at(1).toInt(&ok);
+    if (!ok)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("METHOD is a CiA 402 homing method number, not '%1'")
+                              .arg(c.args.at(1))));
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    HomingParams h;
+    h.method = method;
+    h.speedFast = h.speedSlow = readUser(axis, cia402::obj::HomingSpeedFast, false);
+    h.acceleration = readUser(axis, cia402::obj::HomingAcceleration, true);
+    h.offset = readUser(axis, cia402::obj::HomeOffset, false);
+    for (const auto &[option, field] :
+         { std::pair { kVel, &h.speedFast }, { kAcc, &h.acceleration } }) {
+        if (!c.parser->isSet(option))
+            continue;
+        const auto v = number(c, option);
+        if (!v)
+            return fail(c, v.error());
+        *field = *v;
+    }
+    h.speedSlow = h.speedFast;
+    MotionCommand command(axis.model.get(), CommandKind::Home);
+    command.setHoming(h);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+int move(Context &c)
+{
+    CommandKind kind = CommandKind::DoNothing;
+    QString option;
+    int given = 0;
+    for (const auto &[name, k] : { std::pair { kAbs, CommandKind::MoveAbsolute },
+                                   { kRel, CommandKind::MoveRelative },
+                                   { kAdd, CommandKind::MoveAdditive } }) {
+        if (c.parser->isSet(name)) {
+            kind = k;
+            option = name;
+            ++given;
+        }
+    }
+    if (given != 1)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("move takes exactly one of --abs, --rel, --add")));
+    MoveParams p;
+    if (const auto v = number(c, option); v)
+        p.position = *v;
+    else
+        return fail(c, v.error());
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    // The drive's own profile unless given.
+    p.velocity = readUser(axis, cia402::obj::ProfileVelocity, false);
+    p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
+    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    p.jerk = axis.model->config().maxJerk;
+    for (const auto &[name, field] : { std::pair { kVel, &p.velocity },
+                                       { kAcc, &p.acceleration },
+                                       { kDec, &p.deceleration } }) {
+        if (!c.parser->isSet(name))
+            continue;
+        const auto v = number(c, name);
+        if (!v)
+            return fail(c, v.error());
+        *field = *v;
+    }
+    MotionCommand command(axis.model.get(), kind);
+    command.setParams(p);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+int jog(Context &c)
+{
+    if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("jog needs --vel V (signed) and --time MS")));
+    const auto v = number(c, kVel);
+    const auto t = number(c, kTime);
+    if (!v || !t)
+        return fail(c, !v ? v.error() : t.error());
+    if (*t <= 0 || *t > kDefaultWaitMs)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.velocity = *v;
+    p.acceleration = p.deceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
+    for (const auto &[name, field] :
+         { std::pair { kAcc, &p.acceleration }, { kDec, &p.deceleration } }) {
+        if (!c.parser->isSet(name))
+            continue;
+        const auto x = number(c, name);
+        if (!x)
+            return fail(c, x.error());
+        *field = *x;
+    }
+    p.jerk = axis.model->config().maxJerk;
+    MotionCommand jogging(axis.model.get(), CommandKind::MoveVelocity);
+    jogging.setParams(p);
+    jogging.setExecute(true);
+    // Jog for the time unless the command ends early (refused, fault, link lost).
+    const QDeadlineTimer until { qint64(*t) };
+    waitUntil(
+        axis,
+        [&] {
+            return until.hasExpired() || jogging.status() == MotionCommand::Status::Error
+                || jogging.status() == MotionCommand::Status::CommandAborted;
+        },
+        int(*t) + kStopFlushMs);
+    if (jogging.status() == MotionCommand::Status::Error) {
+        if (jogging.refusal() != Refusal::None) {
+            c.err << "drivebench-cli: " << jogging.error().message() << Qt::endl;
+            return ExitDeviceError;
+        }
+        return fail(c, jogging.error());
+    }
+    MotionCommand halt(axis.model.get(), CommandKind::Halt);
+    halt.setParams(p);
+    if (const int rc = runToEnd(c, axis, halt); rc != ExitOk)
+        return rc;
+    halt.setExecute(false); // leaves Discrete Motion (Sec. 3.12)
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+} // namespace db::cli

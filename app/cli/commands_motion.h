@@ -1,0 +1,31 @@
+#pragma once
+
+#include "commands.h"
+
+namespace db::cli {
+
+// Motion commands over any CiA 402 drive (issue 5), through the PLCopen command model
+// (protocols/motion) on a Cia402Axis. Each run opens the connection, reads the factor group and
+// the drive's limits, runs one command and waits for its end, every wait bounded by --wait
+// (default kDefaultWaitMs). A command the model refuses exits with ExitDeviceError and prints
+// "drivebench-cli: MC_... refused: <reason>".
+//
+//   enable URI                 MC_Power on; prints the PLCopen state
+//   disable URI                MC_Power off
+//   reset URI                  MC_Reset (fault reset; the power stage stays off: enable)
+//   home URI METHOD            MC_Home with the CiA 402 method; prints the position
+//   move URI --abs|--rel|--add VALUE [--vel V --acc A --dec D]
+//                              waits for Done, prints the final actual position; the profile
+//                              defaults to the drive's 6081h/6083h/6084h
+//   jog URI --vel V --time MS  MC_MoveVelocity for MS ms, then MC_Halt; prints the position
+constexpr int kDefaultWaitMs = 60000;
+
+int enable(Context &context);
+int disable(Context &context);
+int reset(Context &context);
+int home(Context &context);
+int move(Context &context);
+int jog(Context &context);
+QList<QCommandLineOption> motionOptions();
+
+} // namespace db::cli

@@ -1,0 +1,244 @@
+#include "commands_record.h"
+
+#include "scope/csv.h"
+#include "scope/pollingsource.h"
+#include "scope/recorder.h"
+
+#include <QEventLoop>
+#include <QTimer>
+#include <algorithm>
+#include <cmath>
+
+namespace db::cli {
+
+namespace {
+
+constexpr double kDefaultWaitS = 30;
+constexpr double kDefaultPostS = 1;
+constexpr int kDefaultRateMs = 10;
+
+Error usage(const QString &text)
+{
+    return Error(Error::Kind::InvalidArgument, text);
+}
+
+// A number of seconds >= 0 from option `name`, or `fallback` when it is not given.
+Result<double> seconds(Context &c, const QString &name, double fallback)
+{
+    if (!c.parser->isSet(name))
+        return fallback;
+    bool ok = false;
+    const double v = c.parser->value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v < 0)
+        return usage(QStringLiteral("--%1 takes a number of seconds >= 0, not '%2'")
+                         .arg(name, c.parser->value(name)));
+    return v;
+}
+
+struct Settings
+{
+    QList<ObjectAddress> objects;
+    int rateMs = kDefaultRateMs;
+    double durationS = -1; // < 0: not given
+    QString trigger;
+    double preS = 0;
+    double postS = kDefaultPostS;
+    double waitS = kDefaultWaitS;
+    qint64 capacity = scope::TraceBuffer::kDefaultCapacity;
+};
+
+Result<Settings> parseSettings(Context &c)
+{
+    Settings s;
+    for (const QString &text : c.parser->values(QStringLiteral("obj"))) {
+        for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            const auto address = ObjectAddress::parse(item.trimmed());
+            if (!address)
+                return address.error();
+            if (s.objects.contains(*address))
+                return usage(QStringLiteral("--obj %1 given twice").arg(address->toString()));
+            s.objects.append(*address);
+        }
+    }
+    if (s.objects.isEmpty())
+        return usage(QStringLiteral("record needs at least one --obj INDEX:SUB"));
+    if (c.output.isEmpty())
+        return usage(QStringLiteral("record needs -o FILE.csv"));
+    if (c.parser->isSet(QStringLiteral("rate-ms"))) {
+        bool ok = false;
+        s.rateMs = c.parser->value(QStringLiteral("rate-ms")).toInt(&ok);
+        if (!ok || s.rateMs < 0)
+            return usage(QStringLiteral("--rate-ms takes a number of ms >= 0 (0 = as fast as "
+                                        "the link allows)"));
+    }
+    if (c.parser->isSet(QStringLiteral("capacity"))) {
+        bool ok = false;
+        s.capacity = c.parser->value(QStringLiteral("capacity")).toLongLong(&ok);
+        if (!ok || s.capacity < 1)
+            return usage(QStringLiteral("--capacity takes a number of samples >= 1"));
+    }
+    const auto duration = seconds(c, QStringLiteral("duration"), -1);
+    if (!duration)
+        return duration.error();
+    s.durationS = *duration;
+    s.trigger = c.parser->value(QStringLiteral("trigger"));
+    if (s.trigger.isEmpty()) {
+        if (s.durationS <= 0)
+            return usage(QStringLiteral("record needs --duration S (> 0) or --trigger SPEC"));
+        return s;
+    }
+    const auto pre = seconds(c, QStringLiteral("pre"), 0);
+    const auto post =
+        seconds(c, QStringLiteral("post"), s.durationS > 0 ? s.durationS : kDefaultPostS);
+    const auto wait = seconds(c, QStringLiteral("wait"), kDefaultWaitS);
+    for (const auto *r : { &pre, &post, &wait }) {
+        if (!*r)
+            return r->error();
+    }
+    s.preS = *pre;
+    s.postS = *post;
+    s.waitS = *wait;
+    return s;
+}
+
+// QTimer takes an int of ms: long durations are capped at ~24 days.
+int timerMs(double seconds)
+{
+    return int(std::min(std::ceil(seconds * 1000), 2.0e9));
+}
+
+qint64 totalLost(const scope::Recorder &r)
+{
+    qint64 n = 0;
+    for (int i = 0; i < r.channelCount(); ++i)
+        n += r.buffer(i).lostAtSource();
+    return n;
+}
+
+} // namespace
+
+QList<QCommandLineOption> recordOptions()
+{
+    return {
+        { QStringLiteral("obj"), QStringLiteral("record: an object to record (repeatable)."),
+          QStringLiteral("index:sub") },
+        { QStringLiteral("rate-ms"),
+          QStringLiteral("record: sample period per object in ms (default 10; 0 = as fast as "
+                         "the link allows)."),
+          QStringLiteral("ms") },
+        { QStringLiteral("duration"),
+          QStringLiteral("record: seconds to record (with --trigger: the default --post)."),
+          QStringLiteral("s") },
+        { QStringLiteral("trigger"),
+          QStringLiteral("record: CHANNEL,CONDITION, e.g. 6064:0,rising,100 or 6041:0,bit3,set."),
+          QStringLiteral("spec") },
+        { QStringLiteral("pre"), QStringLiteral("record: seconds kept before the trigger."),
+          QStringLiteral("s") },
+        { QStringLiteral("post"), QStringLiteral("record: seconds recorded after the trigger."),
+          QStringLiteral("s") },
+        { QStringLiteral("wait"),
+          QStringLiteral("record: longest wait for the trigger in s (default 30)."),
+          QStringLiteral("s") },
+        { QStringLiteral("capacity"),
+          QStringLiteral("record: most samples kept per object (default 10000000)."),
+          QStringLiteral("n") },
+    };
+}
+
+int record(Context &c)
+{
+    const auto settings = parseSettings(c);
+    if (!settings)
+        return fail(c, settings.error());
+    const Settings &s = *settings;
+
+    Session session(c.registry, c.options);
+    if (auto opened = session.open(c.args.at(0)); !opened)
+        return fail(c, opened.error());
+    scope::PollingSource source(session.connection());
+    for (ObjectAddress address : s.objects) {
+        if (auto added = source.addChannel(address, s.rateMs); !added)
+            return fail(c, added.error());
+    }
+    scope::Recorder recorder;
+    recorder.addSource(&source);
+    recorder.setCapacity(s.capacity);
+    if (!s.trigger.isEmpty()) {
+        QStringList ids;
+        for (const scope::ChannelInfo &info : source.channels())
+            ids.append(info.id);
+        scope::Trigger base;
+        base.preTriggerS = s.preS;
+        base.postTriggerS = s.postS;
+        const auto trigger = scope::Trigger::parse(s.trigger, ids, base);
+        if (!trigger)
+            return fail(c, trigger.error());
+        recorder.setMode(scope::Recorder::Mode::Single);
+        recorder.setTrigger(*trigger);
+    }
+
+    Error failure;
+    bool triggerTimedOut = false;
+    QEventLoop loop;
+    QObject::connect(&recorder, &scope::Recorder::errorOccurred,
+                     [&](const Error &e) { failure = e; });
+    QObject::connect(&recorder, &scope::Recorder::stateChanged, &loop,
+                     [&](scope::Recorder::State state) {
+                         if (state == scope::Recorder::State::Stopped)
+                             loop.quit();
+                     });
+    QTimer deadline;
+    deadline.setSingleShot(true);
+    if (s.trigger.isEmpty()) {
+        QObject::connect(&deadline, &QTimer::timeout, &recorder, &scope::Recorder::stop);
+        deadline.start(timerMs(s.durationS));
+    } else {
+        QObject::connect(&deadline, &QTimer::timeout, &recorder, [&] {
+            if (recorder.state() == scope::Recorder::State::Armed) {
+                triggerTimedOut = true;
+                recorder.stop();
+            }
+        });
+        deadline.start(timerMs(s.waitS));
+    }
+    recorder.start();
+    if (recorder.isRunning()) {
+        if (!s.trigger.isEmpty())
+            c.out << "armed: waiting for " << s.trigger << " (at most " << s.waitS << " s)"
+                  << Qt::endl;
+        loop.exec();
+    }
+    if (triggerTimedOut)
+        return fail(c,
+                    Error(Error::Kind::Timeout,
+                          QStringLiteral("trigger %1 did not fire within %2 s; nothing written")
+                              .arg(s.trigger)
+                              .arg(s.waitS)));
+    const scope::Recording rec = recorder.recording();
+    if (failure.isError() && rec.isEmpty())
+        return fail(c, failure);
+    if (auto saved = scope::csv::save(c.output, rec); !saved)
+        return fail(c, saved.error());
+    qint64 samples = 0;
+    for (const scope::RecordedChannel &ch : rec.channels)
+        samples += ch.buffer.size();
+    const qint64 lost = totalLost(recorder);
+    c.out << "recorded " << samples << " samples of " << rec.channels.size() << " objects over "
+          << QString::number(rec.endTime() - rec.startTime(), 'f', 3) << " s";
+    if (rec.hasTriggerTime())
+        c.out << ", triggered at " << QString::number(rec.triggerTime, 'f', 6) << " s";
+    c.out << ", " << lost << " lost -> " << c.output << Qt::endl;
+    if (failure.isError())
+        return fail(
+            c,
+            failure.prefixed(QStringLiteral("recording stopped early (%1 written)").arg(c.output)));
+    if (lost > 0) {
+        c.err << "drivebench-cli: " << lost
+              << " samples were lost (the link is slower than --rate-ms asks); gaps are marked in "
+              << c.output << Qt::endl;
+        return ExitFailure;
+    }
+    return ExitOk;
+}
+
+} // namespace db::cli

@@ -1,0 +1,94 @@
+// MainWindow: the "Motion" dock (issue 5) and the stops that must work whatever has the focus.
+#include "mainwindow.h"
+
+#include "widgets/jogpanel.h"
+#include "widgets/logconsole.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QEventLoop>
+#include <QKeyEvent>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTimer>
+
+namespace db::gui {
+
+namespace {
+// How long a user's disconnect waits for the quick stop to reach the drive (the stop is written
+// from the event loop; closing at once would cancel it).
+constexpr int kStopBeforeCloseMs = 500;
+constexpr int kDockWidth = 460; // initial width of the Motion dock: fields show their units
+
+// Esc anywhere in the application quick-stops a moving axis, and the main window losing the
+// activation halts a jog. The filter sits on qApp, so it sees the key before any widget can
+// consume it, and it never consumes it: Esc still closes a dialog or a menu.
+class MotionStopFilter : public QObject
+{
+public:
+    MotionStopFilter(QWidget *window, widgets::JogPanel *panel)
+        : QObject(window)
+        , m_window(window)
+        , m_panel(panel)
+    { }
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::KeyPress
+            && static_cast<QKeyEvent *>(event)->key() == Qt::Key_Escape) {
+            m_panel->stopAll(QObject::tr("Esc"));
+        } else if (event->type() == QEvent::WindowDeactivate && watched == m_window) {
+            m_panel->stopJog(QObject::tr("window deactivated"));
+        }
+        return false;
+    }
+
+private:
+    QWidget *m_window;
+    widgets::JogPanel *m_panel;
+};
+} // namespace
+
+void MainWindow::createMotionDock()
+{
+    m_jogPanel = new widgets::JogPanel(this);
+    m_jogPanel->setObjectName(QStringLiteral("jogPanel"));
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidget(m_jogPanel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(m_jogPanel->minimumSizeHint().width()
+                            + scroll->verticalScrollBar()->sizeHint().width());
+    auto *dock = new QDockWidget(tr("Motion"), this);
+    dock->setObjectName(QStringLiteral("motionDock")); // for saveState()/restoreState()
+    dock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    // The panel is tall: the right dock area takes the full height, beside the log.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    resizeDocks({ dock }, { kDockWidth }, Qt::Horizontal); // until restoreState() knows better
+    qApp->installEventFilter(new MotionStopFilter(this, m_jogPanel));
+    connect(m_jogPanel, &widgets::JogPanel::stopped, this, [this](const QString &reason) {
+        if (widgets::LogConsole *log = logConsole())
+            log->warning(tr("Motion stopped: %1").arg(reason));
+    });
+}
+
+void MainWindow::stopMotionBeforeClose(DeviceConnection *connection)
+{
+    if (!m_jogPanel || !connection || m_jogPanel->connection() != connection
+        || !m_jogPanel->isMotionInProgress())
+        return;
+    m_jogPanel->stopAll(tr("connection closed by the user"));
+    motion::AxisInterface *axis = m_jogPanel->cia402Axis();
+    QEventLoop loop;
+    QTimer::singleShot(kStopBeforeCloseMs, &loop, &QEventLoop::quit);
+    connect(axis, &motion::AxisInterface::statusChanged, &loop, [axis, &loop] {
+        if (!axis->status().powered) // quick stop active or off: the stop arrived
+            loop.quit();
+    });
+    loop.exec(QEventLoop::ExcludeUserInputEvents);
+}
+
+} // namespace db::gui

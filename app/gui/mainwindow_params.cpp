@@ -1,0 +1,72 @@
+// MainWindow, issue 4: the object-dictionary editor and parameter-set pages and the
+// "Parameters" menu. Only composition; the widgets do the work.
+
+#include "mainwindow.h"
+
+#include "widgets/logconsole.h"
+#include "widgets/odeditor.h"
+#include "widgets/paramcompareview.h"
+#include "widgets/parametersetactions.h"
+
+#include <QMenuBar>
+#include <QStatusBar>
+#include <QTabWidget>
+
+namespace db::gui {
+
+namespace {
+constexpr int kMessageMs = 10000; // status bar messages of parameter commands
+}
+
+void MainWindow::createParameterPages()
+{
+    m_odEditor = new widgets::OdEditor(m_pages);
+    m_compareView = new widgets::ParamCompareView(m_pages);
+    m_paramActions = new widgets::ParameterSetActions(this, this);
+    m_pages->addTab(m_odEditor, tr("Object Dictionary"));
+    m_pages->addTab(m_compareView, tr("Parameter Sets"));
+    m_odEditor->addToolActions({ m_paramActions->backUpAction(), m_paramActions->compareAction(),
+                                 m_paramActions->storeAction() });
+
+    QMenu *menu = new QMenu(tr("&Parameters"), this);
+    menu->addAction(m_paramActions->backUpAction());
+    menu->addAction(m_paramActions->compareAction());
+    menu->addSeparator();
+    menu->addAction(m_paramActions->storeAction());
+    menu->addAction(m_paramActions->factoryDefaultsAction());
+    menu->addSeparator();
+    menu->addAction(m_paramActions->exportDcfAction());
+    // Before Help, which is the last menu.
+    const QList<QAction *> menus = menuBar()->actions();
+    menuBar()->insertMenu(menus.isEmpty() ? nullptr : menus.last(), menu);
+
+    connect(m_paramActions, &widgets::ParameterSetActions::compareRequested, this, [this] {
+        m_pages->setCurrentWidget(m_compareView);
+        m_compareView->chooseFile();
+    });
+    connect(m_paramActions, &widgets::ParameterSetActions::message, this,
+            [this](const QString &text, bool ok) {
+                statusBar()->showMessage(text, kMessageMs);
+                if (ok)
+                    m_log->info(text);
+                else
+                    m_log->error(text);
+            });
+    connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
+            [this](const RestoreReport &report) {
+                const QString text = report.summary();
+                if (report.succeeded())
+                    m_log->info(text);
+                else
+                    m_log->error(text);
+            });
+}
+
+void MainWindow::attachParameters(DeviceConnection *connection)
+{
+    m_odEditor->setConnection(connection);
+    m_compareView->setConnection(connection);
+    m_paramActions->setConnection(connection);
+}
+
+} // namespace db::gui

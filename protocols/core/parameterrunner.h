@@ -1,0 +1,223 @@
+#pragma once
+
+#include "deviceconnection.h"
+#include "parameterset.h"
+
+#include <QHash>
+#include <QObject>
+#include <QPointer>
+#include <QSet>
+#include <QStringList>
+
+#include <memory>
+#include <vector>
+
+namespace db {
+
+// Backup and restore of parameter sets through any DeviceConnection (ARCHITECTURE.md habit 5:
+// small enum state machines on the event loop; nothing blocks). The connection must outlive the
+// runner or the run fails with Error::Kind::Disconnected; the runner never opens or closes it.
+
+// CiA 301 7.5.2.13/14: the signatures written to 1010h/1011h sub 1 (ASCII, little-endian).
+namespace parameters {
+constexpr quint32 kStoreSignature = 0x65766173; // "save" (MovingCap: OW1010,1,1702257011)
+constexpr quint32 kLoadSignature = 0x64616F6C; // "load"
+constexpr ObjectAddress kStoreAll { 0x1010, 1 };
+constexpr ObjectAddress kRestoreDefaultsAll { 0x1011, 1 };
+
+// Writes "save" to 1010h sub 1 through the normal write(). The caller owns the reply.
+Reply *storeParameters(DeviceConnection *connection);
+// Writes "load" to 1011h sub 1: the device takes its factory defaults (on CANopen after the
+// next reset). Ask the user first. The caller owns the reply.
+Reply *restoreFactoryDefaults(DeviceConnection *connection);
+} // namespace parameters
+
+// Reads objects into a ParameterSet.
+//
+//   Idle --start()--> Reading --(all done)--> Finished (result ok)
+//                       |  read fails for one object -> warning, object skipped, continue
+//                       |  connection lost / not connected -> Finished (error)
+//                       +--cancel()--> Finished (Error::Kind::Cancelled)
+//
+// finished() fires exactly once per start(): from the event loop, or inside cancel() (never
+// inside start()). A timeout skips one object like a device error; two in a row end the backup.
+class ParameterBackup : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Scope {
+        Storable, // every storable, readable object of the connection's dictionary (default)
+        Readable, // every readable object (the CLI's dump)
+    };
+    Q_ENUM(Scope)
+
+    static constexpr int kDefaultPipelineDepth = 1; // requests in flight at a time
+
+    explicit ParameterBackup(DeviceConnection *connection, QObject *parent = nullptr);
+    ~ParameterBackup() override;
+
+    void setScope(Scope scope) { m_scope = scope; }
+    // Reads exactly these addresses instead of the scope (objects the dictionary does not know
+    // are read too and typed as returned).
+    void setAddresses(const QList<ObjectAddress> &addresses) { m_explicit = addresses; }
+    // 1..8 requests in flight; the protocol engines queue them, so >1 only hides latency.
+    void setPipelineDepth(int depth);
+
+    // Ignored while running.
+    void start();
+    // Stops at once; finished() is emitted inside cancel() with Error::Kind::Cancelled, no set.
+    void cancel();
+    bool isRunning() const { return m_state == State::Reading; }
+
+    // After finished(): the set, or the fatal error; never a partial set marked complete.
+    // Identity: the dictionary's, with vendor id and product code as the device reports them in
+    // 1018h.1/.2 (read first, when the description has them); source = the connection's URI.
+    Result<ParameterSet> result() const;
+    // One line per object that could not be read ("2000:3 Foo: SDO abort 06020000 ...").
+    QStringList warnings() const { return m_warnings; }
+    QList<ObjectAddress> failedAddresses() const { return m_failed; }
+
+Q_SIGNALS:
+    void progress(int done, int total);
+    void finished();
+
+private:
+    enum class State { Idle, Reading, Finished };
+
+    void issueNext();
+    void onReply(Reply *reply);
+    void finish(const Error &error);
+
+    QPointer<DeviceConnection> m_connection;
+    State m_state = State::Idle;
+    Scope m_scope = Scope::Storable;
+    QList<ObjectAddress> m_explicit;
+    int m_depth = kDefaultPipelineDepth;
+    QList<ObjectAddress> m_todo;
+    int m_next = 0;
+    int m_done = 0;
+    QList<QPointer<Reply>> m_inFlight;
+    ParameterSet m_set;
+    Error m_error;
+    QStringList m_warnings;
+    QList<ObjectAddress> m_failed;
+    QSet<ObjectAddress> m_identityOnly; // 1018h reads that fill the identity, not the set
+    int m_timeoutsInRow = 0;
+};
+
+// ---- Restore ----
+
+enum class RestoreOutcome {
+    Verified, // written and read back equal
+    Written, // written, not read back (verification off, write-only object, cancelled)
+    Failed, // the device refused the write (reason holds its error text)
+    Mismatch, // written, but the read-back value differs (readBack holds it) or failed
+    Skipped, // not attempted: read-only, unknown object, cancelled, after a fatal error
+};
+
+QString restoreOutcomeName(RestoreOutcome outcome); // "verified", "written", ...
+
+struct RestoreRow
+{
+    ObjectAddress address;
+    QString name;
+    DataType type = DataType::Unsigned32;
+    QVariant value; // the set's value
+    QVariant readBack; // valid after a read-back
+    RestoreOutcome outcome = RestoreOutcome::Skipped;
+    QString reason; // device error, mismatch or skip reason; empty when Verified
+};
+
+struct RestoreReport
+{
+    QList<RestoreRow> rows; // selected rows, in the order they were (or would be) written
+    bool storeRequested = false;
+    bool stored = false; // 1010h "save" was written successfully
+    QString storeReason; // why not stored (error text, or "not stored: 2 rows failed")
+    Error error; // fatal error that stopped the run (connection lost, Cancelled); else None
+    QStringList notes; // e.g. "PDO 1400h left disabled (COB-ID bit 31 set)"
+
+    int count(RestoreOutcome outcome) const;
+    // Every row Verified or Written, no fatal error, and the store done when requested.
+    bool succeeded() const;
+    // Multi-line text: counts, then which rows were written, failed (with reason), mismatched
+    // and skipped (by address and name), then the store result and notes.
+    QString summary() const;
+};
+
+// Writes the selected rows of a set, in a safe order, verifying each.
+//
+// Order (CiA 301 7.5.2.35-38): for each RPDO/TPDO whose communication (1400h-15FFh,
+// 1800h-19FFh) or mapping (1600h-17FFh, 1A00h-1BFFh) rows are selected:
+//   COB-ID (sub 1) := current | bit 31 (disable) -> other communication subs -> mapping sub 0 := 0
+//   -> mapping entries -> mapping sub 0 := n -> COB-ID := set value (or the previous one).
+// All other rows in address order. The PDO steps run before the other rows.
+// Rules: read-only/const rows and rows the connection's dictionary does not know are Skipped;
+// write-only rows are Written without read-back. A failed row does not stop the run; a
+// connection loss or cancel() does (rows not yet written are Skipped). A PDO the runner had
+// disabled when it stopped is listed in the report's notes.
+// Store (1010h sub 1 = "save") runs only when requested and every row succeeded.
+//
+//   Idle --start()--> Writing <-> Verifying --> Storing --> Finished
+class ParameterRestore : public QObject
+{
+    Q_OBJECT
+public:
+    explicit ParameterRestore(DeviceConnection *connection, QObject *parent = nullptr);
+    ~ParameterRestore() override;
+
+    void setParameterSet(const ParameterSet &set) { m_set = set; }
+    // Rows to write; empty = every row of the set. Addresses not in the set are ignored.
+    void setSelection(const QList<ObjectAddress> &selection) { m_selection = selection; }
+    void setVerify(bool verify) { m_verify = verify; }
+    void setStoreAfterwards(bool store) { m_store = store; }
+
+    // Ignored while running. finished() fires exactly once per start(), from the event loop.
+    void start();
+    // Takes effect after the request in flight; the report marks the rest Skipped.
+    void cancel();
+    bool isRunning() const { return m_state != State::Idle && m_state != State::Finished; }
+
+    // Complete after finished(); empty before start().
+    const RestoreReport &report() const { return m_report; }
+
+Q_SIGNALS:
+    // Counts steps: the rows plus the PDO helper steps (disable, clear mapping, re-enable).
+    void progress(int done, int total);
+    void finished();
+
+private:
+    enum class State { Idle, Writing, Verifying, Storing, Finished };
+    struct Step;
+
+    void plan();
+    void runNext();
+    void advance();
+    QString blockReason(const Step &step) const;
+    void onWriteDone(Reply *reply);
+    void onReadBackDone(Reply *reply);
+    void store();
+    void onStoreDone(Reply *reply);
+    void stopWithError(const Error &error);
+    void finish();
+    void track(Reply *reply, void (ParameterRestore::*handler)(Reply *));
+
+    QPointer<DeviceConnection> m_connection;
+    State m_state = State::Idle;
+    ParameterSet m_set;
+    QList<ObjectAddress> m_selection;
+    bool m_verify = true;
+    bool m_store = false;
+    bool m_cancelRequested = false;
+    int m_timeoutsInRow = 0;
+    std::unique_ptr<std::vector<Step>> m_steps; // Step is private to the .cpp
+    int m_stepIndex = 0;
+    QPointer<Reply> m_inFlight;
+    QHash<ObjectAddress, QVariant> m_current; // values read before changing a PDO
+    QHash<quint16, QString> m_groupBlocked; // PDO comm index -> why its steps are not run
+    QHash<quint16, QString> m_mappingBlocked; // ... why its mapping steps are not run
+    QSet<quint16> m_disabled; // PDOs this run disabled and has not re-enabled yet
+    RestoreReport m_report;
+};
+
+} // namespace db

@@ -1,0 +1,29 @@
+#include "channel.h"
+
+#include "core/objectdictionary.h"
+
+namespace db::scope {
+
+QString ChannelInfo::label() const
+{
+    return name.isEmpty() ? id : id + QLatin1Char(' ') + name;
+}
+
+ChannelInfo ChannelInfo::forObject(ObjectAddress address, const ObjectDictionary &dictionary,
+                                   const QString &device, int rateMs)
+{
+    ChannelInfo info;
+    info.id = address.toString();
+    info.address = address;
+    info.device = device;
+    info.sourceRateMs = rateMs;
+    if (const ObjectDef *def = dictionary.find(address)) {
+        info.name = def->name;
+        info.unit = def->unit;
+        info.scale = def->factor;
+        info.offset = def->offset;
+    }
+    return info;
+}
+
+} // namespace db::scope

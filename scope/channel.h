@@ -1,0 +1,45 @@
+#pragma once
+// One recorded signal: what it is and how its raw values are shown.
+#include "core/objectaddress.h"
+#include <QList>
+#include <QMetaType>
+#include <QString>
+
+namespace db {
+
+class ObjectDictionary;
+
+namespace scope {
+
+// Static description of a channel. Raw values are recorded as they come from the device;
+// scale/offset only change how they are displayed and may be changed after recording
+// (display = raw * scale + offset).
+struct ChannelInfo
+{
+    QString id; // "6064:0" (ObjectAddress::toString()); unique within one device
+    ObjectAddress address;
+    QString name; // "Position actual value"; may be empty for objects without description
+    QString unit; // unit of the displayed value ("inc", "mA"); may be empty
+    QString device; // connection URI of the device the channel comes from
+    double scale = 1.0;
+    double offset = 0.0;
+    int sourceRateMs = 0; // requested sample period; 0 = as fast as the link allows / event driven
+
+    double display(double raw) const { return raw * scale + offset; }
+    // The raw value that displays as `value` (inverse of display(); scale must not be 0).
+    double raw(double value) const { return (value - offset) / scale; }
+    // "6064:0 Position actual value" (the CSV column header and the CLI's name).
+    QString label() const;
+
+    // A channel for `address` with name, unit and scaling (factor/offset) taken from the
+    // dictionary when it knows the object; otherwise named by the address only.
+    static ChannelInfo forObject(ObjectAddress address, const ObjectDictionary &dictionary,
+                                 const QString &device, int rateMs = 0);
+
+    friend bool operator==(const ChannelInfo &, const ChannelInfo &) = default;
+};
+
+} // namespace scope
+} // namespace db
+
+Q_DECLARE_METATYPE(db::scope::ChannelInfo)

@@ -1,0 +1,219 @@
+// drivebench-cli motion commands end to end (issue 5): enable, move --abs/--add/--rel, jog,
+// home, disable and refusals against `drivebench-sim movingcap` over RefGo and over CANopen
+// (SLCAN on loopback, node 50). The simulated drive has software limits of +-100000 (607Dh).
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+
+class TestCliMotion : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+
+    void enableMoveJogHomeDisable_data();
+    void enableMoveJogHomeDisable();
+    void refusedMoveNamesTheRule_data();
+    void refusedMoveNamesTheRule();
+    void usageErrorsExitWithTwo_data();
+    void usageErrorsExitWithTwo();
+    void tooShortWaitStopsTheAxis();
+
+private:
+    struct Run
+    {
+        int exitCode = -1;
+        QString out;
+        QString err;
+    };
+    Run cli(const QStringList &args, int timeoutMs = 30000);
+    QString uri(const QString &transport) const
+    {
+        return transport == u"refgo"
+            ? QStringLiteral("refgo://127.0.0.1:%1").arg(m_refgoPort)
+            : QStringLiteral("canopen+slcan://127.0.0.1:%1?node=50").arg(m_slcanPort);
+    }
+    static double position(const Run &r)
+    {
+        bool ok = false;
+        const double p = r.out.trimmed().toDouble(&ok);
+        return ok ? p : qQNaN();
+    }
+    void addTransports()
+    {
+        QTest::addColumn<QString>("transport");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+
+    QProcess m_sim;
+    quint16 m_refgoPort = 0;
+    quint16 m_slcanPort = 0;
+};
+
+TestCliMotion::Run TestCliMotion::cli(const QStringList &args, int timeoutMs)
+{
+    QProcess p;
+    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs) };
+    }
+    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
+             QString::fromUtf8(p.readAllStandardOutput()),
+             QString::fromUtf8(p.readAllStandardError()) };
+}
+
+void TestCliMotion::initTestCase()
+{
+    m_sim.start(QStringLiteral(DRIVEBENCH_SIM),
+                { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
+                  QStringLiteral("--slcan-port"), QStringLiteral("0"), QStringLiteral("--set"),
+                  QStringLiteral("607D:1=-100000"), QStringLiteral("--set"),
+                  QStringLiteral("607D:2=100000") });
+    QVERIFY(m_sim.waitForStarted());
+    QString banner;
+    QTRY_VERIFY_WITH_TIMEOUT((banner += QString::fromUtf8(m_sim.readAllStandardOutput()),
+                              banner.count(QLatin1Char('\n')) >= 2),
+                             10000);
+    const auto refgo =
+        QRegularExpression(QStringLiteral("RefGo listening on 127\\.0\\.0\\.1:(\\d+)"))
+            .match(banner);
+    const auto slcan =
+        QRegularExpression(QStringLiteral("SLCAN listening on 127\\.0\\.0\\.1:(\\d+)"))
+            .match(banner);
+    QVERIFY2(refgo.hasMatch() && slcan.hasMatch(), qPrintable(banner));
+    m_refgoPort = quint16(refgo.captured(1).toUInt());
+    m_slcanPort = quint16(slcan.captured(1).toUInt());
+}
+
+void TestCliMotion::cleanupTestCase()
+{
+    m_sim.terminate();
+    QVERIFY(m_sim.waitForFinished(5000));
+}
+
+void TestCliMotion::enableMoveJogHomeDisable_data()
+{
+    addTransports();
+}
+
+void TestCliMotion::enableMoveJogHomeDisable()
+{
+    QFETCH(QString, transport);
+    const QString u = uri(transport);
+    Run r = cli({ QStringLiteral("enable"), u });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(r.out.trimmed(), QStringLiteral("Standstill"));
+
+    r = cli({ QStringLiteral("move"), u, QStringLiteral("--abs"), QStringLiteral("1000"),
+              QStringLiteral("--vel"), QStringLiteral("3000") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(qAbs(position(r) - 1000) <= 2, qPrintable(r.out));
+
+    // MC_MoveAdditive in a new process: no target known, so the actual position is the origin
+    // (stoeber_motion.md 3.3 rule 2).
+    r = cli({ QStringLiteral("move"), u, QStringLiteral("--add"), QStringLiteral("200"),
+              QStringLiteral("--vel"), QStringLiteral("3000") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(qAbs(position(r) - 1200) <= 2, qPrintable(r.out));
+
+    r = cli({ QStringLiteral("move"), u, QStringLiteral("--rel"), QStringLiteral("-700"),
+              QStringLiteral("--vel"), QStringLiteral("3000"), QStringLiteral("--acc"),
+              QStringLiteral("50000"), QStringLiteral("--dec"), QStringLiteral("50000") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(qAbs(position(r) - 500) <= 2, qPrintable(r.out));
+
+    r = cli({ QStringLiteral("jog"), u, QStringLiteral("--vel"), QStringLiteral("-400"),
+              QStringLiteral("--time"), QStringLiteral("400") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const double afterJog = position(r);
+    QVERIFY2(afterJog < 480 && afterJog > 0, qPrintable(r.out)); // moved negative, then halted
+
+    r = cli({ QStringLiteral("home"), u, QStringLiteral("35") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(qAbs(position(r)) <= 1, qPrintable(r.out)); // set zero: 607Ch = 0
+
+    r = cli({ QStringLiteral("disable"), u });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(r.out.trimmed(), QStringLiteral("Disabled"));
+}
+
+void TestCliMotion::refusedMoveNamesTheRule_data()
+{
+    addTransports();
+}
+
+void TestCliMotion::refusedMoveNamesTheRule()
+{
+    QFETCH(QString, transport);
+    const QString u = uri(transport);
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+    Run r = cli({ QStringLiteral("move"), u, QStringLiteral("--abs"), QStringLiteral("10"),
+                  QStringLiteral("--vel"), QStringLiteral("100") });
+    QCOMPARE(r.exitCode, 6);
+    QVERIFY2(r.err.contains(QLatin1String("not enabled")), qPrintable(r.err));
+
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    r = cli({ QStringLiteral("move"), u, QStringLiteral("--abs"), QStringLiteral("150000"),
+              QStringLiteral("--vel"), QStringLiteral("1000") });
+    QCOMPARE(r.exitCode, 6);
+    QVERIFY2(r.err.contains(QLatin1String("MC_MoveAbsolute refused: target outside the software "
+                                          "limit")),
+             qPrintable(r.err));
+    r = cli({ QStringLiteral("move"), u, QStringLiteral("--rel"), QStringLiteral("10"),
+              QStringLiteral("--vel"), QStringLiteral("0") });
+    QCOMPARE(r.exitCode, 6);
+    QVERIFY2(r.err.contains(QLatin1String("is zero")), qPrintable(r.err));
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+void TestCliMotion::usageErrorsExitWithTwo_data()
+{
+    QTest::addColumn<QStringList>("args");
+    const QString u = QStringLiteral("refgo://127.0.0.1:1");
+    QTest::newRow("move without target") << QStringList { QStringLiteral("move"), u };
+    QTest::newRow("move with two targets")
+        << QStringList { QStringLiteral("move"),  u,
+                         QStringLiteral("--abs"), QStringLiteral("1"),
+                         QStringLiteral("--rel"), QStringLiteral("2") };
+    QTest::newRow("move with a bad number")
+        << QStringList { QStringLiteral("move"), u, QStringLiteral("--abs"), QStringLiteral("x") };
+    QTest::newRow("jog without time")
+        << QStringList { QStringLiteral("jog"), u, QStringLiteral("--vel"), QStringLiteral("5") };
+    QTest::newRow("home with a bad method")
+        << QStringList { QStringLiteral("home"), u, QStringLiteral("zero") };
+}
+
+void TestCliMotion::usageErrorsExitWithTwo()
+{
+    QFETCH(QStringList, args);
+    const Run r = cli(args);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY(r.err.startsWith(QLatin1String("drivebench-cli: ")));
+}
+
+void TestCliMotion::tooShortWaitStopsTheAxis()
+{
+    const QString u = uri(QStringLiteral("refgo"));
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    Run r = cli({ QStringLiteral("move"), u, QStringLiteral("--abs"), QStringLiteral("90000"),
+                  QStringLiteral("--vel"), QStringLiteral("1000"), QStringLiteral("--wait"),
+                  QStringLiteral("300") });
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains(QLatin1String("axis stopped")), qPrintable(r.err));
+    // The drive stands (quick stop active): a fault reset enables it again.
+    r = cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") });
+    QCOMPARE(r.exitCode, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(
+        cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed(),
+        QStringLiteral("0"), 5000);
+    r = cli({ QStringLiteral("reset"), u });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+QTEST_GUILESS_MAIN(TestCliMotion)
+#include "tst_cli_motion.moc"

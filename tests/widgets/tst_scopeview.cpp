@@ -1,0 +1,407 @@
+// Level 4: the scope plot and page offscreen, on synthetic recordings (Recorder::load) and on a
+// FakeConnection for live polling and drops.
+#include "fakeconnection.h"
+#include "scope/csv.h"
+#include "scope/recorder.h"
+#include "widgets/scopeanalysisdialog.h"
+#include "widgets/scopechannelmodel.h"
+#include "widgets/scopecursors.h"
+#include "widgets/scopemeasurements.h"
+#include "widgets/scopepage.h"
+#include "widgets/scopeplot.h"
+
+#include <qcustomplot.h>
+
+#include <QLabel>
+#include <QMimeData>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace db;
+using namespace db::widgets;
+
+namespace {
+
+// Channel 0: "position" = 2 * t (inc); channel 1: "current" = 100 * sin(2 pi t) (mA); samples
+// every 1 ms over [0, 10] s; the current has a gap (lost samples) at t = 5 s.
+scope::Recording syntheticRecording(qint64 samples = 10001)
+{
+    scope::Recording rec;
+    rec.device = QStringLiteral("fake://device");
+    rec.startedAt = QDateTime::currentDateTimeUtc();
+    scope::RecordedChannel position;
+    position.info.id = QStringLiteral("6064:0");
+    position.info.address = ObjectAddress(0x6064, 0);
+    position.info.name = QStringLiteral("Position actual value");
+    position.info.unit = QStringLiteral("inc");
+    position.info.device = rec.device;
+    position.buffer.setCapacity(samples);
+    scope::RecordedChannel current;
+    current.info.id = QStringLiteral("6078:0");
+    current.info.address = ObjectAddress(0x6078, 0);
+    current.info.name = QStringLiteral("Current actual value");
+    current.info.unit = QStringLiteral("mA");
+    current.info.device = rec.device;
+    current.buffer.setCapacity(samples);
+    for (qint64 i = 0; i < samples; ++i) {
+        const double t = double(i) * 1e-3;
+        position.buffer.append(t, 2.0 * t);
+        if (i == samples / 2)
+            current.buffer.markLost(10);
+        current.buffer.append(t, std::round(100.0 * std::sin(2.0 * M_PI * t)));
+    }
+    rec.channels = { position, current };
+    return rec;
+}
+
+double graphMax(const QCPGraph *g)
+{
+    double m = -INFINITY;
+    for (auto it = g->data()->constBegin(); it != g->data()->constEnd(); ++it) {
+        if (!std::isnan(it->value))
+            m = std::max(m, it->value);
+    }
+    return m;
+}
+
+} // namespace
+
+class TstScopeView : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void channelsAppearWithGapsAndDecimation()
+    {
+        ScopePage page;
+        page.resize(1200, 700);
+        page.recorder()->load(syntheticRecording(1'000'001)); // 1e6 samples per channel
+        page.plot()->refreshNow();
+        QCOMPARE(page.channelModel()->rowCount(), 2);
+        QVERIFY(page.plot()->graph(0));
+        QVERIFY(page.plot()->graph(1));
+        QCOMPARE(page.plot()->lanes(), QList<int>({ 1 }));
+        // Decimated to the pixels: about two points per column, not a million.
+        const int points = page.plot()->graph(0)->data()->size();
+        QVERIFY2(points > 100 && points < 5000, qPrintable(QString::number(points)));
+        QCOMPARE(graphMax(page.plot()->graph(0)), 2.0 * 1000.0);
+        // The lost samples of the current are a break (NaN) in its line.
+        int breaks = 0;
+        const QCPGraph *current = page.plot()->graph(1);
+        for (auto it = current->data()->constBegin(); it != current->data()->constEnd(); ++it)
+            breaks += std::isnan(it->value) ? 1 : 0;
+        QCOMPARE(breaks, 1);
+        // The whole recording is in view after loading.
+        QCOMPARE(page.plot()->timeLower(), 0.0);
+        QCOMPARE(page.plot()->timeUpper(), 1000.0);
+    }
+
+    void separateLanesShareTheTimeAxis()
+    {
+        ScopePage page;
+        page.recorder()->load(syntheticRecording());
+        ScopeChannelModel *model = page.channelModel();
+        QVERIFY(model->setData(model->index(1, ScopeChannelModel::Lane), 2, Qt::EditRole));
+        QVERIFY(!model->setData(model->index(1, ScopeChannelModel::Lane), 9, Qt::EditRole));
+        page.plot()->refreshNow();
+        QCOMPARE(page.plot()->lanes(), QList<int>({ 1, 2 }));
+        QCPAxisRect *lane2 = page.plot()->laneRect(2);
+        QVERIFY(lane2);
+        QCOMPARE(page.plot()->graph(1)->valueAxis(), lane2->axis(QCPAxis::atLeft));
+        page.plot()->setTimeRange(2.0, 3.0);
+        QCOMPARE(lane2->axis(QCPAxis::atBottom)->range().lower, 2.0);
+        QCOMPARE(page.plot()->laneRect(1)->axis(QCPAxis::atBottom)->range().upper, 3.0);
+        QVERIFY(!page.plot()->isFollowing());
+        QVERIFY(lane2->axis(QCPAxis::atLeft)->label().contains(QStringLiteral("mA")));
+    }
+
+    void cursorsMeasureAKnownRecording()
+    {
+        ScopePage page;
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        page.setCursorsEnabled(true);
+        page.plot()->cursors()->setPositions(2.0, 4.0);
+        ScopeMeasurements *m = page.measurements();
+        QTRY_COMPARE(m->table()->rowCount(), 2);
+        QTRY_COMPARE(m->value(0, ScopeMeasurements::AtA), 4.0);
+        QCOMPARE(m->value(0, ScopeMeasurements::AtB), 8.0);
+        QCOMPARE(m->value(0, ScopeMeasurements::Dy), 4.0);
+        QVERIFY(std::abs(m->value(0, ScopeMeasurements::Mean) - 6.0) < 1e-9);
+        QCOMPARE(m->value(0, ScopeMeasurements::Min), 4.0);
+        QCOMPARE(m->value(0, ScopeMeasurements::Max), 8.0);
+        QCOMPARE(m->value(0, ScopeMeasurements::PeakToPeak), 4.0);
+        // RMS of 2t over [2, 4] = sqrt(4 * (4^3 - 2^3) / 3 / 2) = 6.1101
+        QVERIFY(std::abs(m->value(0, ScopeMeasurements::Rms) - std::sqrt(4.0 * 56.0 / 6.0)) < 1e-3);
+        // The sine: two full periods between the cursors -> mean ~0, peak-peak 200.
+        QVERIFY(std::abs(m->value(1, ScopeMeasurements::Mean)) < 0.5);
+        QCOMPARE(m->value(1, ScopeMeasurements::PeakToPeak), 200.0);
+        QVERIFY(m->summary()->text().contains(QStringLiteral("2 s")));
+        QVERIFY(m->summary()->text().contains(QStringLiteral("0.5 Hz")));
+    }
+
+    void cursorIsDraggedWithTheMouse()
+    {
+        ScopePage page;
+        page.resize(1200, 700);
+        page.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&page));
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        page.setCursorsEnabled(true);
+        page.plot()->cursors()->setPositions(2.0, 8.0);
+        QCustomPlot *plot = page.plot()->customPlot();
+        plot->replot();
+        QCPAxisRect *rect = page.plot()->laneRect(1);
+        QCPAxis *x = rect->axis(QCPAxis::atBottom);
+        const int y = rect->center().y();
+        const QPoint from(int(std::round(x->coordToPixel(2.0))), y);
+        const QPoint to(int(std::round(x->coordToPixel(5.0))), y);
+        QTest::mousePress(plot, Qt::LeftButton, {}, from);
+        QTest::mouseMove(plot, to);
+        QTest::mouseRelease(plot, Qt::LeftButton, {}, to);
+        QVERIFY2(std::abs(page.plot()->cursors()->a() - 5.0) < 0.05,
+                 qPrintable(QString::number(page.plot()->cursors()->a())));
+        QCOMPARE(page.plot()->cursors()->b(), 8.0);
+        // The drag moved the cursor, not the view.
+        QCOMPARE(x->range().lower, 0.0);
+    }
+
+    void rubberBandAndWheelZoomTime()
+    {
+        ScopePage page;
+        page.resize(1200, 700);
+        page.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&page));
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        QCustomPlot *plot = page.plot()->customPlot();
+        plot->replot();
+        QCPAxisRect *rect = page.plot()->laneRect(1);
+        QCPAxis *x = rect->axis(QCPAxis::atBottom);
+        const QPoint from(int(x->coordToPixel(2.0)), rect->top() + 20);
+        const QPoint to(int(x->coordToPixel(4.0)), rect->bottom() - 20);
+        QTest::mousePress(plot, Qt::LeftButton, Qt::ShiftModifier, from);
+        QTest::mouseMove(plot, to);
+        QTest::mouseRelease(plot, Qt::LeftButton, Qt::ShiftModifier, to);
+        QVERIFY2(std::abs(page.plot()->timeLower() - 2.0) < 0.05,
+                 qPrintable(QString::number(page.plot()->timeLower())));
+        QVERIFY(std::abs(page.plot()->timeUpper() - 4.0) < 0.05);
+        QVERIFY(!page.plot()->isFollowing());
+        // The zoomed view is decimated anew for its range (one sample beyond each edge).
+        const double firstKey = page.plot()->graph(0)->data()->constBegin()->key;
+        QVERIFY2(firstKey <= page.plot()->timeLower() && firstKey > page.plot()->timeLower() - 0.01,
+                 qPrintable(QString::number(firstKey)));
+
+        // Wheel: zooms time only, around the mouse.
+        const double span = page.plot()->timeUpper() - page.plot()->timeLower();
+        const std::pair<double, double> before(rect->axis(QCPAxis::atLeft)->range().lower,
+                                               rect->axis(QCPAxis::atLeft)->range().upper);
+        QWheelEvent wheel(QPointF(rect->center()), plot->mapToGlobal(QPointF(rect->center())),
+                          QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                          false);
+        QCoreApplication::sendEvent(plot, &wheel);
+        QVERIFY(page.plot()->timeUpper() - page.plot()->timeLower() < span * 0.95);
+        QCOMPARE(rect->axis(QCPAxis::atLeft)->range().lower, before.first);
+
+        // Autoscale brings the whole recording back and follows again.
+        page.plot()->autoscale();
+        QCOMPARE(page.plot()->timeLower(), 0.0);
+        QVERIFY(page.plot()->isFollowing());
+    }
+
+    void visibilityAndScalingChangeTheView()
+    {
+        ScopePage page;
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        page.setCursorsEnabled(true);
+        page.plot()->cursors()->setPositions(2.0, 4.0);
+        ScopeChannelModel *model = page.channelModel();
+
+        QVERIFY(model->setData(model->index(0, ScopeChannelModel::Name), Qt::Unchecked,
+                               Qt::CheckStateRole));
+        page.plot()->refreshNow();
+        QVERIFY(!page.plot()->graph(0));
+        QVERIFY(page.plot()->graph(1));
+        QTRY_COMPARE(page.measurements()->table()->rowCount(), 1);
+        QVERIFY(model->setData(model->index(0, ScopeChannelModel::Name), Qt::Checked,
+                               Qt::CheckStateRole));
+
+        // Display scaling after recording: raw values stay, the view and measurements change.
+        QVERIFY(model->setData(model->index(0, ScopeChannelModel::Scale), 0.5, Qt::EditRole));
+        QVERIFY(model->setData(model->index(0, ScopeChannelModel::Offset), 100.0, Qt::EditRole));
+        QVERIFY(!model->setData(model->index(0, ScopeChannelModel::Scale), 0.0, Qt::EditRole));
+        page.plot()->refreshNow();
+        QCOMPARE(graphMax(page.plot()->graph(0)), 2.0 * 10.0 * 0.5 + 100.0);
+        QCOMPARE(page.recorder()->buffer(0).value(1000), 2.0);
+        QTRY_COMPARE(page.measurements()->value(0, ScopeMeasurements::AtA), 4.0 * 0.5 + 100.0);
+
+        // Colour of a channel.
+        ScopeChannelStyle style = page.plot()->channelStyle(1);
+        style.color = QColor(Qt::magenta);
+        page.plot()->setChannelStyle(1, style);
+        page.plot()->refreshNow();
+        QCOMPARE(page.plot()->graph(1)->pen().color(), QColor(Qt::magenta));
+    }
+
+    void analysisOfTheCursorRange()
+    {
+        ScopePage page;
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        auto *view = page.findChild<QTableView *>(QStringLiteral("scopeChannels"));
+        QVERIFY(view);
+        view->setCurrentIndex(page.channelModel()->index(1, 0));
+        page.setCursorsEnabled(true);
+        page.plot()->cursors()->setPositions(0.0, 4.0); // four periods of the 1 Hz sine
+        page.showAnalysis();
+        auto *dialog = page.findChild<ScopeAnalysisDialog *>();
+        QVERIFY(dialog);
+        QVERIFY2(dialog->spectrum().ok(), qPrintable(dialog->spectrum().error().toString()));
+        QVERIFY2(std::abs(dialog->spectrum()->peakFrequency() - 1.0) < 0.3,
+                 qPrintable(QString::number(dialog->spectrum()->peakFrequency())));
+        QCOMPARE(dialog->statistics().count, 4001);
+        QCOMPARE(dialog->statistics().max, 100.0);
+        QVERIFY(dialog->spectrumPlot()->graphCount() == 1);
+        dialog->close();
+    }
+
+    void replotsAreCoalesced()
+    {
+        ScopePage page;
+        page.resize(1000, 600);
+        page.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&page));
+        page.recorder()->load(syntheticRecording());
+        QSignalSpy replots(page.plot()->customPlot(), &QCustomPlot::afterReplot);
+        QVERIFY(replots.wait(2000)); // the first frame after loading
+        replots.clear();
+        const int rounds = 5;
+        for (int r = 0; r < rounds; ++r) {
+            for (int i = 0; i < 500; ++i)
+                Q_EMIT page.recorder()->dataAppended(); // a burst of batches
+            QVERIFY(replots.wait(2000));
+        }
+        // One replot per frame, not per batch (2500 batches here).
+        QVERIFY2(replots.size() <= rounds + 1, qPrintable(QString::number(replots.size())));
+
+        // Hidden: no replot at all, whatever arrives.
+        page.hide();
+        replots.clear();
+        for (int i = 0; i < 100; ++i)
+            Q_EMIT page.recorder()->dataAppended();
+        QVERIFY(!replots.wait(3 * 1000 / ScopePlot::kReplotHz + 100));
+        // Shown again: it catches up.
+        page.show();
+        QVERIFY(replots.wait(2000));
+    }
+
+    void dropOfObjectsCreatesChannels()
+    {
+        test::FakeConnection connection;
+        connection.setValue({ 0x6064, 0 }, qint64(1234));
+        connection.setValue({ 0x6078, 0 }, qint64(-56));
+        connection.open();
+        QTRY_VERIFY(connection.isConnected());
+        ScopePage page;
+        page.setConnection(&connection);
+
+        QMimeData mime;
+        mime.setData(QString::fromLatin1(ScopePage::kObjectsMimeType), "6064:0\n6078:0\n");
+        QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QCoreApplication::sendEvent(&page, &enter);
+        QVERIFY(enter.isAccepted());
+        QCoreApplication::sendEvent(&page, &drop);
+        QCOMPARE(page.recorder()->channelCount(), 2);
+        QCOMPARE(page.recorder()->channelInfo(0).id, QStringLiteral("6064:0"));
+        QCOMPARE(page.recorder()->channelInfo(1).id, QStringLiteral("6078:0"));
+
+        // Again: already there, named in the status line; a bad line names itself.
+        QDragEnterEvent enterAgain(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QCoreApplication::sendEvent(&page, &enterAgain);
+        QDropEvent again(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QCoreApplication::sendEvent(&page, &again);
+        QCOMPARE(page.recorder()->channelCount(), 2);
+        QVERIFY2(page.statusText().contains(QStringLiteral("already")),
+                 qPrintable(page.statusText()));
+        QMimeData bad;
+        bad.setData(QString::fromLatin1(ScopePage::kObjectsMimeType), "6064:0\nxyz:q\n");
+        QVERIFY(!ScopePage::parseObjects(&bad));
+        QVERIFY(ScopePage::parseObjects(&bad).error().message().contains(QStringLiteral("line 2")));
+
+        // Record them live (Run mode), then stop: samples arrive and are drawn.
+        page.start();
+        QCOMPARE(page.recorder()->state(), scope::Recorder::State::Recording);
+        QTRY_VERIFY_WITH_TIMEOUT(page.recorder()->buffer(1).size() >= 20, 10000);
+        page.stop();
+        QCOMPARE(page.recorder()->state(), scope::Recorder::State::Stopped);
+        QCOMPARE(page.recorder()->buffer(0).value(0), 1234.0);
+        page.plot()->refreshNow();
+        QVERIFY(page.plot()->graph(1)->data()->size() > 0);
+        QVERIFY(page.removeChannel(0));
+        QCOMPARE(page.recorder()->channelCount(), 1);
+    }
+
+    void startWithoutDeviceIsRefusedWithAReason()
+    {
+        ScopePage page;
+        page.recorder()->load(syntheticRecording(100));
+        page.start();
+        QVERIFY(!page.recorder()->isRunning());
+        QVERIFY(page.statusText().contains(QStringLiteral("connect")));
+        QVERIFY(!page.addChannels({ ObjectAddress(0x6064, 0) }));
+    }
+
+    void csvExportThenReopen()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        ScopePage page;
+        page.recorder()->load(syntheticRecording());
+        page.channelModel()->setData(page.channelModel()->index(1, ScopeChannelModel::Scale), 0.001,
+                                     Qt::EditRole);
+        const QString whole = dir.filePath(QStringLiteral("whole.csv"));
+        const QString visible = dir.filePath(QStringLiteral("visible.csv"));
+        QVERIFY(page.exportCsv(whole, false));
+        page.plot()->refreshNow();
+        page.plot()->setTimeRange(2.0, 3.0);
+        QVERIFY(page.exportCsv(visible, true));
+        QVERIFY(page.exportImage(dir.filePath(QStringLiteral("plot.png"))));
+        QVERIFY(page.exportImage(dir.filePath(QStringLiteral("plot.pdf"))));
+        QVERIFY(!page.exportImage(dir.filePath(QStringLiteral("plot.txt"))));
+
+        ScopePage reopened;
+        const Result<void> r = reopened.openRecording(whole);
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(reopened.recorder()->channelCount(), 2);
+        QCOMPARE(reopened.recorder()->buffer(0).size(), page.recorder()->buffer(0).size());
+        QCOMPARE(reopened.recorder()->channelInfo(1).scale, 0.001);
+        QCOMPARE(reopened.recorder()->buffer(1).value(250), page.recorder()->buffer(1).value(250));
+        reopened.plot()->refreshNow();
+        QCOMPARE(reopened.plot()->timeUpper(), 10.0);
+
+        QVERIFY(reopened.openRecording(visible));
+        QVERIFY(std::abs(reopened.recorder()->buffer(0).size() - 1001) <= 1);
+        QVERIFY(reopened.recorder()->buffer(0).firstTime() >= 2.0);
+        QVERIFY(reopened.recorder()->buffer(0).lastTime() <= 3.0);
+
+        const QString broken = dir.filePath(QStringLiteral("broken.csv"));
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("time_s,a\n1,2\n0,x\n");
+        f.close();
+        const Result<void> bad = reopened.openRecording(broken);
+        QVERIFY(!bad);
+        QVERIFY(bad.error().message().contains(QStringLiteral("broken.csv")));
+        QVERIFY(reopened.recorder()->buffer(0).lastTime() <= 3.0); // the old recording stays
+    }
+};
+
+QTEST_MAIN(TstScopeView)
+#include "tst_scopeview.moc"

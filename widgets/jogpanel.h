@@ -1,0 +1,141 @@
+#pragma once
+
+#include "core/deviceconnection.h"
+#include "motion/cia402axis.h"
+#include "motion/motionaxis.h"
+
+#include <QPointer>
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace db::widgets {
+
+class Lamp;
+class MotionForm;
+
+// Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
+// step jog, the motion command form, status lamps, live position/velocity and the drive's
+// limits. The panel builds a Cia402Axis and a MotionAxis on the connection it is given; it never
+// creates transports.
+//
+// Jog: while a jog button or key (Left/Minus, Right/Plus; auto-repeat ignored) is held, the
+// axis moves towards the software limit (MC_MoveAbsolute to 607Dh, so the limit is never
+// passed) or, without software limits, with MC_MoveVelocity. Release halts it with the jog
+// deceleration (MC_Halt).
+//
+// Safety contract: a running jog halts on button or key release, on window deactivation, when
+// the focus leaves the panel and when the panel is hidden. stopAll() (Esc, wired application-
+// wide by the main window) quick-stops any motion. A lost connection or, for CANopen, a lost
+// heartbeat of the node quick-stops and fails the running command with the cause. The
+// MotionAxis deadman watchdog runs with kWatchdogMs; the panel's keep-alive timer (every
+// kKeepAliveMs, object name "keepAliveTimer") feeds it, so an event loop that stops turning
+// stops the drive. Every stop names its reason in lastStopReason() and stopped().
+class JogPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kWatchdogMs = 300;
+    static constexpr int kKeepAliveMs = 100;
+    static constexpr double kDefaultJogVelocity = 500.0;
+    static constexpr double kDefaultJogAcceleration = 5000.0;
+    static constexpr double kDefaultStep = 100.0;
+
+    explicit JogPanel(QWidget *parent = nullptr);
+    ~JogPanel() override;
+
+    // May be null. The connection is not owned; the panel copes with its destruction.
+    void setConnection(DeviceConnection *connection);
+    DeviceConnection *connection() const { return m_connection; }
+    motion::MotionAxis *motionAxis() const { return m_motion.get(); }
+    motion::Cia402Axis *cia402Axis() const { return m_cia.get(); }
+    MotionForm *motionForm() const { return m_form; }
+    // Limits read from the drive (607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
+    bool limitsKnown() const { return m_limitsKnown; }
+
+    // +1 or -1 while a jog runs, else 0.
+    int jogDirection() const { return m_jogDirection; }
+    bool isMotionInProgress() const;
+    QString lastStopReason() const { return m_lastStopReason; }
+
+public Q_SLOTS:
+    void enableDrive();
+    void disableDrive();
+    void resetFault();
+    void startJog(int direction);
+    // Hold-to-run released: halts a running jog with the ramp. No-op without a jog.
+    void stopJog(const QString &reason);
+    void stepJog(int direction);
+    // Quick stop of any motion; no-op when nothing moves (so Esc in a dialog stays harmless).
+    void stopAll(const QString &reason);
+
+Q_SIGNALS:
+    void stopped(const QString &reason);
+
+protected:
+    void keyPressEvent(QKeyEvent *event) override;
+    void keyReleaseEvent(QKeyEvent *event) override;
+    void changeEvent(QEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    void buildUi();
+    void teardown();
+    void onInitialized(Reply *reply, quint64 generation);
+    void readLimits(quint64 generation);
+    void applyLimits(const QHash<ObjectAddress, QVariant> &values);
+    bool rotaryAcceleration() const;
+    void onConnectionLost(const Error &error);
+    void onHeartbeatLost(int node);
+    void onFocusChanged(QWidget *old, QWidget *now);
+    void runPower(motion::CommandKind kind, bool enable);
+    void render();
+    void renderLimits();
+    void setMessage(const QString &text, const QColor &color = {});
+    void noteStop(const QString &reason);
+    motion::MoveParams jogParams() const;
+
+    QPointer<DeviceConnection> m_connection;
+    std::unique_ptr<motion::Cia402Axis> m_cia;
+    std::unique_ptr<motion::MotionAxis> m_motion;
+    std::unique_ptr<motion::MotionCommand> m_power;
+    std::unique_ptr<motion::MotionCommand> m_reset;
+    std::unique_ptr<motion::MotionCommand> m_jog;
+    std::unique_ptr<motion::MotionCommand> m_jogHalt;
+    std::unique_ptr<motion::MotionCommand> m_step;
+    QList<QMetaObject::Connection> m_connectionSignals;
+    quint64 m_generation = 0; // which connection a late reply belongs to
+    bool m_limitsKnown = false;
+    motion::AxisConfig m_config;
+    QString m_positionUnit;
+    QString m_velocityUnit;
+    int m_jogDirection = 0;
+    QString m_lastStopReason;
+    QTimer *m_keepAlive = nullptr; // child "keepAliveTimer"
+
+    QPushButton *m_enableButton = nullptr;
+    QPushButton *m_disableButton = nullptr;
+    QPushButton *m_resetButton = nullptr;
+    QLabel *m_state = nullptr;
+    QLabel *m_position = nullptr;
+    QLabel *m_velocity = nullptr;
+    QLabel *m_message = nullptr;
+    QList<Lamp *> m_lamps;
+    QDoubleSpinBox *m_jogVelocity = nullptr;
+    QDoubleSpinBox *m_jogAcceleration = nullptr;
+    QDoubleSpinBox *m_stepSize = nullptr;
+    QDoubleSpinBox *m_override = nullptr;
+    QPushButton *m_jogMinus = nullptr;
+    QPushButton *m_jogPlus = nullptr;
+    QPushButton *m_stepMinus = nullptr;
+    QPushButton *m_stepPlus = nullptr;
+    QLabel *m_limits = nullptr;
+    MotionForm *m_form = nullptr;
+};
+
+} // namespace db::widgets

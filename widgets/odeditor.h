@@ -1,0 +1,98 @@
+#pragma once
+
+#include "core/deviceconnection.h"
+
+#include <QPointer>
+#include <QWidget>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QHBoxLayout;
+class QLabel;
+class QLineEdit;
+class QTreeView;
+
+namespace db::widgets {
+
+class OdBitFieldView;
+class OdEditorDelegate;
+class OdEditorFilter;
+class OdEditorModel;
+class OdEditorPoller;
+
+// The object-dictionary editor page (issue 4 item 1): every object of the current device in a
+// tree grouped by communication / manufacturer / profile, a filter by index, name or value,
+// live refresh of the visible rows, in-place editing checked before anything is sent, a details
+// pane with the bits of the selected word, read/write by index for objects the description does
+// not know, and dragging objects out (OdEditorModel::kMimeType).
+//
+// After connecting it reads every readable object once (in the background, OdEditorPoller's
+// limits), then refreshes only the rows on screen at the chosen period. Values from the device
+// never cause a write; a write is sent only when the user commits an edit.
+class OdEditor : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit OdEditor(QWidget *parent = nullptr);
+    ~OdEditor() override;
+
+    // May be null; not owned. The dictionary is taken from the connection.
+    void setConnection(DeviceConnection *connection);
+    DeviceConnection *connection() const { return m_connection; }
+
+    // Buttons for these actions are shown in the editor's tool row (e.g. the Parameters menu).
+    void addToolActions(const QList<QAction *> &actions);
+
+    OdEditorModel *model() const { return m_model; }
+    OdEditorFilter *filter() const { return m_filter; }
+    OdEditorPoller *poller() const { return m_poller; }
+    QTreeView *view() const { return m_view; }
+    OdBitFieldView *details() const { return m_details; }
+
+    void setFilterText(const QString &text);
+    void setHex(bool hex);
+    // One of OdEditorPoller::kPeriodsMs (0 = off); other values pick the nearest.
+    void setRefreshPeriodMs(int ms);
+    int refreshPeriodMs() const;
+    // The status line: the last refusal, write result or device error.
+    QString statusText() const;
+    // The addresses of the rows currently on screen (what a refresh round reads).
+    QList<ObjectAddress> visibleAddresses() const;
+
+public Q_SLOTS:
+    void readAll();
+    // Dialog for objects missing from the description (address + type).
+    void showAccessByIndex();
+
+Q_SIGNALS:
+    // After every write the editor sent: ok, or the device's (or connection's) error.
+    void writeFinished(db::ObjectAddress address, bool ok, const QString &message);
+
+private:
+    void onStateChanged();
+    void onWriteRequested(ObjectAddress address, const QVariant &raw);
+    void onCurrentChanged();
+    void onModelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight);
+    void showStatus(const QString &text, const QColor &color = {});
+    void updateCounts();
+
+    QPointer<DeviceConnection> m_connection;
+    QMetaObject::Connection m_stateConnection;
+    quint64 m_generation = 0;
+
+    OdEditorModel *m_model;
+    OdEditorFilter *m_filter;
+    OdEditorPoller *m_poller;
+    OdEditorDelegate *m_delegate;
+    QLineEdit *m_filterEdit;
+    QCheckBox *m_hex;
+    QComboBox *m_rate;
+    QHBoxLayout *m_tools;
+    QTreeView *m_view;
+    OdBitFieldView *m_details;
+    QLabel *m_counts;
+    QLabel *m_status;
+};
+
+} // namespace db::widgets

@@ -1,0 +1,108 @@
+#include "odeditorpoller.h"
+
+#include "odeditormodel.h"
+
+namespace db::widgets {
+
+OdEditorPoller::OdEditorPoller(OdEditorModel *model, QObject *parent)
+    : QObject(parent)
+    , m_model(model)
+{
+    m_timer.setSingleShot(false);
+    connect(&m_timer, &QTimer::timeout, this, &OdEditorPoller::tick);
+}
+
+void OdEditorPoller::setConnection(DeviceConnection *connection)
+{
+    if (connection == m_connection)
+        return;
+    clear();
+    m_connection = connection;
+}
+
+void OdEditorPoller::setPeriodMs(int ms)
+{
+    m_periodMs = qMax(0, ms);
+    if (m_periodMs == 0) {
+        m_timer.stop();
+        return;
+    }
+    m_timer.start(m_periodMs);
+}
+
+bool OdEditorPoller::wanted(ObjectAddress address) const
+{
+    const ObjectDef *def = m_model->definition(address);
+    // Objects being written are left alone until the write has finished.
+    return def && def->readable() && m_model->state(address) != OdEditorModel::CellState::Writing
+        && !m_queued.contains(address);
+}
+
+void OdEditorPoller::readNow(const QList<ObjectAddress> &addresses, bool urgent)
+{
+    for (ObjectAddress a : addresses) {
+        if (!wanted(a))
+            continue;
+        m_queued.insert(a);
+        (urgent ? m_urgent : m_background).append(a);
+    }
+    pump();
+}
+
+void OdEditorPoller::readAll()
+{
+    readNow(m_model->addresses(), false);
+}
+
+void OdEditorPoller::clear()
+{
+    ++m_generation; // replies in flight are dropped when they arrive
+    m_inFlight = 0;
+    m_urgent.clear();
+    m_background.clear();
+    m_queued.clear();
+}
+
+void OdEditorPoller::tick()
+{
+    // The previous round is still running: skip this one rather than pile up requests.
+    if (!m_urgent.isEmpty() || !m_connection || !m_connection->isConnected() || !m_visibleRows)
+        return;
+    readNow(m_visibleRows(), true);
+}
+
+void OdEditorPoller::pump()
+{
+    if (!m_connection || !m_connection->isConnected())
+        return;
+    while (m_inFlight < kMaxInFlight && (!m_urgent.isEmpty() || !m_background.isEmpty())) {
+        const ObjectAddress a =
+            !m_urgent.isEmpty() ? m_urgent.takeFirst() : m_background.takeFirst();
+        m_queued.remove(a);
+        Reply *reply = m_connection->read(a);
+        reply->setParent(this);
+        ++m_inFlight;
+        ++m_sent;
+        m_maxInFlight = qMax(m_maxInFlight, m_inFlight);
+        const quint64 generation = m_generation;
+        connect(reply, &Reply::finished, this,
+                [this, reply, generation] { onReply(reply, generation); });
+    }
+}
+
+void OdEditorPoller::onReply(Reply *reply, quint64 generation)
+{
+    reply->deleteLater();
+    if (generation != m_generation)
+        return;
+    --m_inFlight;
+    if (reply->ok())
+        m_model->setValue(reply->address(), reply->value());
+    else if (reply->error().kind() != Error::Kind::Cancelled)
+        m_model->setReadFailed(reply->address(), reply->error().toString());
+    pump();
+    if (m_inFlight == 0 && m_urgent.isEmpty() && m_background.isEmpty())
+        Q_EMIT idle();
+}
+
+} // namespace db::widgets

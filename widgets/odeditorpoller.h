@@ -1,0 +1,78 @@
+#pragma once
+
+#include "core/deviceconnection.h"
+
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QSet>
+#include <QTimer>
+
+#include <functional>
+
+namespace db::widgets {
+
+class OdEditorModel;
+
+// Reads values for the editor without flooding the device: at most kMaxInFlight requests at a
+// time, queued addresses are never queued twice, and a refresh round starts only when the
+// previous one has finished (a slow device lowers the rate instead of building a backlog).
+//
+// Two queues: `urgent` (read-backs after writes, the visible rows of a refresh round) before
+// `background` (the one-time read of every object after connecting). Results go into the model
+// with setValue()/setReadFailed(); nothing here ever writes.
+class OdEditorPoller : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxInFlight = 2;
+    // Refresh periods offered by the editor (0 = off).
+    static constexpr int kPeriodsMs[] = { 0, 250, 1000, 5000 };
+
+    explicit OdEditorPoller(OdEditorModel *model, QObject *parent = nullptr);
+
+    void setConnection(DeviceConnection *connection);
+    // Who is visible now; called at every refresh tick (empty or not set: nothing is refreshed).
+    void setVisibleRows(std::function<QList<ObjectAddress>()> visibleRows)
+    {
+        m_visibleRows = std::move(visibleRows);
+    }
+
+    int periodMs() const { return m_periodMs; }
+    void setPeriodMs(int ms); // 0 = off
+
+    void readNow(const QList<ObjectAddress> &addresses, bool urgent = true);
+    // Every readable object of the model, in the background.
+    void readAll();
+    void clear();
+
+    int pending() const { return int(m_urgent.size() + m_background.size()); }
+    int inFlight() const { return m_inFlight; }
+    // Statistics for tests and the status line.
+    int requestsSent() const { return m_sent; }
+    int maxInFlightSeen() const { return m_maxInFlight; }
+
+Q_SIGNALS:
+    // Emitted when a queue drains (e.g. the read-all pass has finished).
+    void idle();
+
+private:
+    void tick();
+    void pump();
+    void onReply(Reply *reply, quint64 generation);
+    bool wanted(ObjectAddress address) const;
+
+    OdEditorModel *m_model;
+    QPointer<DeviceConnection> m_connection;
+    std::function<QList<ObjectAddress>()> m_visibleRows;
+    QTimer m_timer;
+    int m_periodMs = 0;
+    QList<ObjectAddress> m_urgent;
+    QList<ObjectAddress> m_background;
+    QSet<ObjectAddress> m_queued;
+    int m_inFlight = 0;
+    int m_sent = 0;
+    int m_maxInFlight = 0;
+    quint64 m_generation = 0;
+};
+
+} // namespace db::widgets

@@ -1,0 +1,101 @@
+#include "odeditormodel.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+namespace db::widgets::odtext {
+
+namespace {
+bool isScaled(const ObjectDef &def)
+{
+    return datatype::isNumeric(def.type) && def.type != DataType::Boolean
+        && (def.factor != 1.0 || def.offset != 0.0);
+}
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("db::widgets::OdEditorModel", text);
+}
+
+// Words made of bits (6040h, 6041h, 1002h, ...) read better in hex, whatever the toggle says.
+bool isBitWord(const ObjectDef &def)
+{
+    if (!datatype::isUnsignedInteger(def.type))
+        return false;
+    const quint16 i = def.address.index;
+    return !def.bitFields.isEmpty()
+        || (def.address.sub == 0 && (i == 0x6040 || i == 0x6041 || i == 0x60FD));
+}
+
+QString number(const ObjectDef &def, const QVariant &raw, bool hex)
+{
+    if ((hex || isBitWord(def)) && datatype::isInteger(def.type))
+        return codec::toText(def.type, raw, codec::TextFormat::Hex);
+    if (isScaled(def))
+        return QString::number(codec::toPhysical(raw, def.factor, def.offset), 'g', 10);
+    return codec::toText(def.type, raw, codec::TextFormat::Decimal);
+}
+} // namespace
+
+QString display(const ObjectDef &def, const QVariant &raw, bool hex)
+{
+    if (!raw.isValid())
+        return {};
+    if (def.type == DataType::VisibleString || def.type == DataType::UnicodeString)
+        return raw.toString();
+    QString text = number(def, raw, hex);
+    if (datatype::isInteger(def.type) && !def.enumeration.isEmpty()) {
+        const auto it = def.enumeration.constFind(raw.toLongLong());
+        if (it != def.enumeration.cend())
+            text += QStringLiteral(" (%1)").arg(*it);
+    }
+    const bool shownHex = (hex || isBitWord(def)) && !isScaled(def);
+    if (!def.unit.isEmpty() && datatype::isNumeric(def.type) && !shownHex)
+        text += QLatin1Char(' ') + def.unit;
+    return text;
+}
+
+QString edit(const ObjectDef &def, const QVariant &raw, bool hex)
+{
+    if (!raw.isValid())
+        return {};
+    if (def.type == DataType::VisibleString || def.type == DataType::UnicodeString)
+        return raw.toString();
+    return number(def, raw, hex);
+}
+
+Result<QVariant> parse(const ObjectDef &def, const QString &text)
+{
+    if (!def.writable()) {
+        return Error(Error::Kind::AccessDenied,
+                     tr("%1 is %2 and cannot be written")
+                         .arg(def.address.toString(), access::name(def.access)));
+    }
+    const QString t = text.trimmed();
+    if (t.isEmpty() && datatype::isNumeric(def.type))
+        return Error(Error::Kind::InvalidArgument, tr("enter a value"));
+    // Physical input for scaled objects, unless the user typed a raw hex pattern.
+    if (isScaled(def) && !t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
+        bool ok = false;
+        const double physical = QLocale::c().toDouble(t, &ok);
+        if (!ok) {
+            return Error(Error::Kind::InvalidArgument, tr("'%1' is not a number").arg(t.left(40)));
+        }
+        auto raw = codec::fromPhysical(def.type, physical, def.factor, def.offset);
+        if (!raw)
+            return raw.error();
+        return def.validate(raw.value());
+    }
+    return def.parseText(t);
+}
+
+QString limits(const ObjectDef &def, bool hex)
+{
+    if (!def.minimum.isValid() && !def.maximum.isValid())
+        return {};
+    const QString low = def.minimum.isValid() ? number(def, def.minimum, hex) : QString();
+    const QString high = def.maximum.isValid() ? number(def, def.maximum, hex) : QString();
+    return QStringLiteral("%1 … %2").arg(low, high);
+}
+
+} // namespace db::widgets::odtext

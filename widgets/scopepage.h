@@ -1,0 +1,140 @@
+#pragma once
+
+#include "core/objectaddress.h"
+#include "core/result.h"
+#include "scope/pollingsource.h"
+#include "scope/recorder.h"
+
+#include <QPointer>
+#include <QTimer>
+#include <QWidget>
+
+class QAction;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QMimeData;
+class QPushButton;
+class QSpinBox;
+class QTableView;
+
+namespace db::widgets {
+
+class ScopeChannelModel;
+class ScopeMeasurements;
+class ScopePlot;
+
+// The scope page: channels (added by address or dropped from the object-dictionary editor),
+// acquisition mode and trigger, Start/Stop and status, the plot with cursors and their
+// measurements, CSV/PNG/PDF export, opening a saved recording, spectrum/step analysis.
+//
+// Ownership: the page owns its Recorder and the PollingSource it makes on the connection given
+// to setConnection() (never a transport). Start re-creates the source with the page's channels
+// on the current connection (so a loaded recording can be recorded again); the recorded data
+// stays in the Recorder until the next Start or Open. Changing the connection stops recording;
+// the channels keep their data.
+class ScopePage : public QWidget
+{
+    Q_OBJECT
+public:
+    // Drag and drop between widgets: UTF-8 text, one ObjectAddress::toString() per line.
+    static constexpr const char *kObjectsMimeType = "application/x-drivebench-objects";
+    static constexpr int kStatusHz = 4;
+    static constexpr int kMeasureDelayMs = 40; // coalesces cursor drags
+
+    explicit ScopePage(QWidget *parent = nullptr);
+    ~ScopePage() override;
+
+    void setConnection(DeviceConnection *connection);
+    DeviceConnection *connection() const { return m_connection; }
+
+    scope::Recorder *recorder() const { return m_recorder; }
+    ScopePlot *plot() const { return m_plot; }
+    ScopeChannelModel *channelModel() const { return m_model; }
+    ScopeMeasurements *measurements() const { return m_measurements; }
+
+    // Adds polling channels on the current connection (while not recording). rateMs < 0 takes
+    // the page's rate box. Addresses already present are skipped. The error names every
+    // address that could not be added and why; the others are added.
+    Result<void> addChannels(const QList<ObjectAddress> &addresses, int rateMs = -1);
+    bool removeChannel(int index);
+    // The addresses in a drag's mime data (kObjectsMimeType); InvalidArgument naming a bad line.
+    static Result<QList<ObjectAddress>> parseObjects(const QMimeData *mime);
+
+    // Trigger settings of the controls (channel -1 when no channel is chosen).
+    scope::Trigger triggerSettings() const;
+    void setTriggerSettings(const scope::Trigger &trigger);
+    // Mode as in scope::Recorder::Mode (the combo box's index).
+    void setMode(int mode);
+
+    void setCursorsEnabled(bool enabled);
+    bool cursorsEnabled() const;
+
+    Result<void> exportCsv(const QString &fileName, bool visibleRangeOnly) const;
+    // PNG or PDF by the file's suffix.
+    Result<void> exportImage(const QString &fileName) const;
+    Result<void> openRecording(const QString &fileName);
+    // The last problem or result shown in the status line.
+    QString statusText() const;
+
+public Q_SLOTS:
+    // Records the channels on the current connection with the controls' mode and trigger; a
+    // refused start is shown in the status line.
+    void start();
+    void stop();
+    void showAnalysis();
+
+protected:
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
+
+private:
+    QWidget *createChannelPanel();
+    QWidget *createAcquisitionPanel();
+    QWidget *createToolBar();
+    void updateControls();
+    void updateStatus();
+    void updateTriggerChannels();
+    void scheduleMeasurements();
+    void measure();
+    void showMessage(const QString &text, bool error);
+    void addFromEdit();
+    void removeSelected();
+    void chooseColor(int row);
+    void promptOpen();
+    void promptExportCsv(bool visibleRangeOnly);
+    void promptExportImage();
+    Result<void> rebuildSource();
+
+    QPointer<DeviceConnection> m_connection;
+    scope::Recorder *m_recorder;
+    QPointer<scope::PollingSource> m_source;
+    ScopePlot *m_plot;
+    ScopeChannelModel *m_model;
+    ScopeMeasurements *m_measurements;
+    QTableView *m_channelView = nullptr;
+    QLineEdit *m_addressEdit = nullptr;
+    QSpinBox *m_rateBox = nullptr;
+    QPushButton *m_addButton = nullptr;
+    QPushButton *m_removeButton = nullptr;
+    QComboBox *m_modeBox = nullptr;
+    QDoubleSpinBox *m_rollBox = nullptr;
+    QComboBox *m_triggerChannelBox = nullptr;
+    QComboBox *m_triggerKindBox = nullptr;
+    QDoubleSpinBox *m_levelBox = nullptr;
+    QDoubleSpinBox *m_level2Box = nullptr;
+    QSpinBox *m_bitBox = nullptr;
+    QDoubleSpinBox *m_preBox = nullptr;
+    QDoubleSpinBox *m_postBox = nullptr;
+    QPushButton *m_startButton = nullptr;
+    QPushButton *m_stopButton = nullptr;
+    QLabel *m_stateLabel = nullptr;
+    QLabel *m_countLabel = nullptr;
+    QLabel *m_messageLabel = nullptr;
+    QAction *m_cursorAction = nullptr;
+    QTimer m_statusTimer;
+    QTimer m_measureTimer;
+};
+
+} // namespace db::widgets

@@ -1,0 +1,373 @@
+// ScopePage: channels, recording, drag and drop, cursors, files and analysis.
+#include "scopepage.h"
+
+#include "core/deviceconnection.h"
+#include "scope/csv.h"
+#include "scope/pollingsource.h"
+#include "scope/recorder.h"
+#include "scopeanalysisdialog.h"
+#include "scopechannelmodel.h"
+#include "scopecursors.h"
+#include "scopemeasurements.h"
+#include "scopeplot.h"
+
+#include <qcustomplot.h>
+
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QSpinBox>
+#include <QTableView>
+
+namespace db::widgets {
+
+void ScopePage::setConnection(DeviceConnection *connection)
+{
+    if (connection == m_connection)
+        return;
+    m_recorder->stop();
+    // The old source goes; its channels stay in the recorder with their data (orphans) and are
+    // recorded on the new connection at the next Start.
+    delete m_source;
+    m_connection = connection;
+    updateControls();
+}
+
+Result<QList<ObjectAddress>> ScopePage::parseObjects(const QMimeData *mime)
+{
+    if (!mime || !mime->hasFormat(QString::fromLatin1(kObjectsMimeType)))
+        return Error(Error::Kind::InvalidArgument, tr("no drivebench objects in the drop"));
+    const QString text = QString::fromUtf8(mime->data(QString::fromLatin1(kObjectsMimeType)));
+    QList<ObjectAddress> addresses;
+    int lineNumber = 0;
+    for (const QString &raw : text.split(QLatin1Char('\n'))) {
+        ++lineNumber;
+        const QString line = raw.trimmed();
+        if (line.isEmpty())
+            continue;
+        const Result<ObjectAddress> a = ObjectAddress::parse(line);
+        if (!a)
+            return Error(Error::Kind::InvalidArgument,
+                         tr("line %1 \"%2\": %3").arg(lineNumber).arg(line, a.error().message()));
+        addresses.append(*a);
+    }
+    if (addresses.isEmpty())
+        return Error(Error::Kind::InvalidArgument, tr("the drop holds no object address"));
+    return addresses;
+}
+
+Result<void> ScopePage::addChannels(const QList<ObjectAddress> &addresses, int rateMs)
+{
+    if (m_recorder->isRunning())
+        return Error(Error::Kind::Busy, tr("stop recording to change the channels"));
+    if (!m_connection)
+        return Error(Error::Kind::InvalidArgument,
+                     tr("no device: connect one to add channels from it"));
+    if (!m_source)
+        m_source = new scope::PollingSource(m_connection, this);
+    const int rate = rateMs >= 0 ? rateMs : m_rateBox->value();
+    QStringList problems;
+    for (const ObjectAddress &address : addresses) {
+        bool present = false;
+        for (int i = 0; i < m_recorder->channelCount(); ++i)
+            present = present || m_recorder->channelInfo(i).address == address;
+        if (present) {
+            problems.append(tr("%1 is already recorded").arg(address.toString()));
+            continue;
+        }
+        const Result<int> index = m_source->addChannel(address, rate);
+        if (!index) {
+            problems.append(tr("%1: %2").arg(address.toString(), index.error().message()));
+            continue;
+        }
+        m_model->setRateMs(address.toString(), rate);
+        m_recorder->addChannel(m_source, *index);
+    }
+    if (!problems.isEmpty()) {
+        const QString text = problems.join(QStringLiteral("; "));
+        showMessage(text, true);
+        return Error(Error::Kind::InvalidArgument, text);
+    }
+    showMessage(
+        tr("%n channel(s) ready; press Start to record.", nullptr, m_recorder->channelCount()),
+        false);
+    return {};
+}
+
+bool ScopePage::removeChannel(int index)
+{
+    // The source keeps polling the object until Start re-creates it; the recorder forgets it now.
+    return m_recorder->removeChannel(index);
+}
+
+void ScopePage::addFromEdit()
+{
+    QList<ObjectAddress> addresses;
+    for (const QString &part : m_addressEdit->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const Result<ObjectAddress> a = ObjectAddress::parse(part.trimmed());
+        if (!a) {
+            showMessage(tr("\"%1\": %2").arg(part.trimmed(), a.error().message()), true);
+            return;
+        }
+        addresses.append(*a);
+    }
+    if (addresses.isEmpty()) {
+        showMessage(tr("Type an object address such as 6064:0."), true);
+        return;
+    }
+    if (addChannels(addresses))
+        m_addressEdit->clear();
+}
+
+void ScopePage::removeSelected()
+{
+    const QModelIndex current = m_channelView->currentIndex();
+    if (current.isValid())
+        removeChannel(current.row());
+}
+
+void ScopePage::chooseColor(int row)
+{
+    ScopeChannelStyle style = m_plot->channelStyle(row);
+    const QColor color = QColorDialog::getColor(style.color, this, tr("Channel colour"));
+    if (!color.isValid())
+        return;
+    style.color = color;
+    m_plot->setChannelStyle(row, style);
+}
+
+void ScopePage::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (event->mimeData()->hasFormat(QString::fromLatin1(kObjectsMimeType))
+        && !m_recorder->isRunning())
+        event->acceptProposedAction();
+}
+
+void ScopePage::dropEvent(QDropEvent *event)
+{
+    const Result<QList<ObjectAddress>> addresses = parseObjects(event->mimeData());
+    if (!addresses) {
+        showMessage(addresses.error().message(), true);
+        return;
+    }
+    addChannels(*addresses);
+    event->acceptProposedAction();
+}
+
+scope::Trigger ScopePage::triggerSettings() const
+{
+    scope::Trigger t;
+    t.channel = m_triggerChannelBox->count() > 0 ? m_triggerChannelBox->currentIndex() : -1;
+    t.kind = scope::Trigger::Kind(m_triggerKindBox->currentIndex());
+    t.level = m_levelBox->value();
+    t.level2 = m_level2Box->value();
+    t.bit = m_bitBox->value();
+    t.preTriggerS = m_preBox->value();
+    t.postTriggerS = m_postBox->value();
+    return t;
+}
+
+void ScopePage::setTriggerSettings(const scope::Trigger &trigger)
+{
+    if (trigger.channel >= 0 && trigger.channel < m_triggerChannelBox->count())
+        m_triggerChannelBox->setCurrentIndex(trigger.channel);
+    m_triggerKindBox->setCurrentIndex(int(trigger.kind));
+    m_levelBox->setValue(trigger.level);
+    m_level2Box->setValue(trigger.level2);
+    m_bitBox->setValue(trigger.bit);
+    m_preBox->setValue(trigger.preTriggerS);
+    m_postBox->setValue(trigger.postTriggerS);
+}
+
+void ScopePage::setMode(int mode)
+{
+    m_modeBox->setCurrentIndex(mode);
+}
+
+Result<void> ScopePage::rebuildSource()
+{
+    // Every channel of the page, with its scaling and rate, on the current connection.
+    QList<scope::ChannelInfo> infos;
+    for (int i = 0; i < m_recorder->channelCount(); ++i) {
+        scope::ChannelInfo info = m_recorder->channelInfo(i);
+        info.sourceRateMs = m_model->rateMs(info.id, info.sourceRateMs);
+        info.device = m_connection->uri().toString();
+        infos.append(info);
+    }
+    auto *source = new scope::PollingSource(m_connection, this);
+    for (const scope::ChannelInfo &info : std::as_const(infos)) {
+        const Result<int> added = source->addChannel(info);
+        if (!added) {
+            delete source;
+            return added.error().prefixed(info.label());
+        }
+    }
+    m_recorder->removeAllChannels();
+    delete m_source;
+    m_source = source;
+    m_recorder->addSource(source);
+    return {};
+}
+
+void ScopePage::start()
+{
+    if (m_recorder->isRunning())
+        return;
+    if (!m_connection || !m_connection->isConnected()) {
+        showMessage(tr("No connected device: connect one first."), true);
+        return;
+    }
+    if (m_recorder->channelCount() == 0) {
+        showMessage(tr("No channels: add an object address or drag objects here."), true);
+        return;
+    }
+    const scope::Trigger trigger = triggerSettings();
+    if (const Result<void> r = rebuildSource(); !r) {
+        showMessage(r.error().message(), true);
+        return;
+    }
+    setTriggerSettings(trigger);
+    const auto mode = scope::Recorder::Mode(m_modeBox->currentIndex());
+    m_recorder->setMode(mode);
+    m_recorder->setRollWindowS(m_rollBox->value());
+    m_recorder->setTrigger(trigger);
+    showMessage({}, false);
+    m_recorder->start();
+}
+
+void ScopePage::stop()
+{
+    m_recorder->stop();
+}
+
+void ScopePage::setCursorsEnabled(bool enabled)
+{
+    if (m_cursorAction->isChecked() != enabled)
+        m_cursorAction->setChecked(enabled); // comes back here through toggled()
+    ScopeCursors *cursors = m_plot->cursors();
+    if (enabled && !cursors->isEnabled())
+        cursors->placeWithin(m_plot->timeLower(), m_plot->timeUpper());
+    cursors->setEnabled(enabled);
+    m_plot->customPlot()->replot(QCustomPlot::rpQueuedReplot);
+    scheduleMeasurements();
+}
+
+bool ScopePage::cursorsEnabled() const
+{
+    return m_plot->cursors()->isEnabled();
+}
+
+void ScopePage::scheduleMeasurements()
+{
+    if (!m_measureTimer.isActive())
+        m_measureTimer.start();
+}
+
+void ScopePage::measure()
+{
+    ScopeCursors *cursors = m_plot->cursors();
+    if (!cursors->isEnabled()) {
+        m_measurements->clear();
+        return;
+    }
+    m_measurements->update(*m_recorder, *m_plot, cursors->a(), cursors->b());
+}
+
+Result<void> ScopePage::exportCsv(const QString &fileName, bool visibleRangeOnly) const
+{
+    if (visibleRangeOnly)
+        return scope::csv::save(fileName, m_recorder->recording(), m_plot->timeLower(),
+                                m_plot->timeUpper());
+    return scope::csv::save(fileName, m_recorder->recording());
+}
+
+Result<void> ScopePage::exportImage(const QString &fileName) const
+{
+    QCustomPlot *plot = m_plot->customPlot();
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
+    bool ok = false;
+    if (suffix == QLatin1String("pdf"))
+        ok = plot->savePdf(fileName);
+    else if (suffix == QLatin1String("png"))
+        ok = plot->savePng(fileName, 0, 0, 2.0);
+    else
+        return Error(Error::Kind::InvalidArgument,
+                     tr("%1: choose a .png or .pdf file name").arg(fileName));
+    if (!ok)
+        return Error(Error::Kind::Io, tr("%1: cannot be written").arg(fileName));
+    return {};
+}
+
+Result<void> ScopePage::openRecording(const QString &fileName)
+{
+    Result<scope::Recording> recording = scope::csv::load(fileName);
+    if (!recording)
+        return recording.error();
+    m_recorder->load(*recording);
+    for (const scope::RecordedChannel &c : recording->channels)
+        m_model->setRateMs(c.info.id, c.info.sourceRateMs);
+    if (recording->trigger.isValid())
+        setTriggerSettings(recording->trigger);
+    m_plot->autoscale();
+    return {};
+}
+
+void ScopePage::promptOpen()
+{
+    const QString file = QFileDialog::getOpenFileName(this, tr("Open recording"), {},
+                                                      tr("Recordings (*.csv);;All files (*)"));
+    if (file.isEmpty())
+        return;
+    const Result<void> r = openRecording(file);
+    showMessage(r ? tr("Opened %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
+}
+
+void ScopePage::promptExportCsv(bool visibleRangeOnly)
+{
+    const QString file =
+        QFileDialog::getSaveFileName(this, tr("Export recording"), {}, tr("CSV (*.csv)"));
+    if (file.isEmpty())
+        return;
+    const Result<void> r = exportCsv(file, visibleRangeOnly);
+    showMessage(r ? tr("Saved %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
+}
+
+void ScopePage::promptExportImage()
+{
+    const QString file = QFileDialog::getSaveFileName(this, tr("Export image"), {},
+                                                      tr("PNG image (*.png);;PDF (*.pdf)"));
+    if (file.isEmpty())
+        return;
+    const Result<void> r = exportImage(file);
+    showMessage(r ? tr("Saved %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
+}
+
+void ScopePage::showAnalysis()
+{
+    int channel =
+        m_channelView->currentIndex().isValid() ? m_channelView->currentIndex().row() : -1;
+    for (int i = 0; channel < 0 && i < m_recorder->channelCount(); ++i) {
+        if (m_plot->channelStyle(i).visible)
+            channel = i;
+    }
+    if (channel < 0) {
+        showMessage(tr("Nothing to analyse: record or open a recording first."), true);
+        return;
+    }
+    ScopeCursors *cursors = m_plot->cursors();
+    const double t0 =
+        cursors->isEnabled() ? std::min(cursors->a(), cursors->b()) : m_plot->timeLower();
+    const double t1 =
+        cursors->isEnabled() ? std::max(cursors->a(), cursors->b()) : m_plot->timeUpper();
+    auto *dialog = new ScopeAnalysisDialog(m_recorder->channelInfo(channel),
+                                           m_recorder->buffer(channel), t0, t1, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+}
+
+} // namespace db::widgets
