@@ -26,10 +26,17 @@ int failFile(Context &c, const Error &error)
     return exitCodeFor(error);
 }
 
-// Runs a backup to its end in a local event loop (the CLI is synchronous by design).
-Result<ParameterSet> runBackup(Context &c, DeviceConnection *connection,
-                               ParameterBackup::Scope scope)
+// Opens uri in session and runs a backup to its end in a local event loop (the CLI is
+// synchronous by design). A device without a description has nothing to back up: usage error.
+Result<ParameterSet> backupFrom(Context &c, Session &session, const QString &uri,
+                                ParameterBackup::Scope scope)
 {
+    if (auto opened = session.open(uri); !opened)
+        return opened.error();
+    DeviceConnection *connection = session.connection();
+    if (connection->dictionary().isEmpty())
+        return usage(QStringLiteral("no device description for %1: give ?eds=FILE")
+                         .arg(connection->uri().toString()));
     ParameterBackup backup(connection);
     backup.setScope(scope);
     QEventLoop loop;
@@ -73,13 +80,7 @@ int backup(Context &c)
     if (c.output.isEmpty())
         return fail(c, usage(QStringLiteral("backup needs the output file: -o FILE")));
     Session session(c.registry, c.options);
-    if (auto opened = session.open(c.args.at(0)); !opened)
-        return fail(c, opened.error());
-    if (session.connection()->dictionary().isEmpty())
-        return fail(c,
-                    usage(QStringLiteral("no device description for %1: give ?eds=FILE")
-                              .arg(session.connection()->uri().toString())));
-    const auto set = runBackup(c, session.connection(), ParameterBackup::Scope::Storable);
+    const auto set = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Storable);
     if (!set)
         return fail(c, set.error());
     if (auto saved = set->save(c.output); !saved)
@@ -166,9 +167,7 @@ int diff(Context &c)
             continue;
         }
         Session session(c.registry, c.options);
-        if (auto opened = session.open(side); !opened)
-            return fail(c, opened.error());
-        auto set = runBackup(c, session.connection(), ParameterBackup::Scope::Storable);
+        auto set = backupFrom(c, session, side, ParameterBackup::Scope::Storable);
         if (!set)
             return fail(c, set.error());
         if (!dictionary)
@@ -193,13 +192,7 @@ int diff(Context &c)
 int dump(Context &c)
 {
     Session session(c.registry, c.options);
-    if (auto opened = session.open(c.args.at(0)); !opened)
-        return fail(c, opened.error());
-    if (session.connection()->dictionary().isEmpty())
-        return fail(c,
-                    usage(QStringLiteral("no device description for %1: give ?eds=FILE")
-                              .arg(session.connection()->uri().toString())));
-    const auto set = runBackup(c, session.connection(), ParameterBackup::Scope::Readable);
+    const auto set = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Readable);
     if (!set)
         return fail(c, set.error());
     const ObjectDictionary &dict = session.connection()->dictionary();

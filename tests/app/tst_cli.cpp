@@ -1,6 +1,8 @@
 // drivebench-cli end to end against drivebench-sim on an OS-chosen loopback port, and against
 // peers that refuse, stay silent or answer garbage. Every failure must end quickly with a
 // one-line error that names the cause and a non-zero exit code.
+#include "clirun.h"
+
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
@@ -33,13 +35,7 @@ private Q_SLOTS:
     void simRefusesBadArguments();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-        qint64 ms = 0;
-    };
+    using Run = db::test::CliRun;
     Run cli(const QStringList &args, int timeoutMs = 15000);
     QString uri() const { return QStringLiteral("refgo://127.0.0.1:%1").arg(m_port); }
 
@@ -49,30 +45,16 @@ private:
 
 TestCli::Run TestCli::cli(const QStringList &args, int timeoutMs)
 {
-    QProcess p;
-    QElapsedTimer clock;
-    clock.start();
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()), clock.elapsed() };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, timeoutMs);
 }
 
 void TestCli::initTestCase()
 {
-    m_sim.start(QStringLiteral(DRIVEBENCH_SIM),
-                { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
-                  QStringLiteral("--set"), QStringLiteral("3511:8=110") });
-    QVERIFY(m_sim.waitForStarted());
-    QString banner;
-    QTRY_VERIFY_WITH_TIMEOUT((banner += QString::fromUtf8(m_sim.readAllStandardOutput()),
-                              banner.contains(QLatin1Char('\n'))),
-                             10000);
+    const QString banner = db::test::startAndReadBanner(
+        m_sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
+          QStringLiteral("--set"), QStringLiteral("3511:8=110") },
+        1);
     const auto m =
         QRegularExpression(QStringLiteral("listening on 127\\.0\\.0\\.1:(\\d+)")).match(banner);
     QVERIFY2(m.hasMatch(), qPrintable(banner));

@@ -3,6 +3,8 @@
 // over Qt's virtualcan (LOCK virtualcan): 1008h, a 1 kB string and a 100 kB domain written and
 // read back by segmented and by block SDO, scan, nmt, lss, pdo, dcf, and the failures (abort,
 // timeout, garbage, refused, bad arguments) with clear errors and non-zero exits, never a hang.
+#include "clirun.h"
+
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRandomGenerator>
@@ -37,12 +39,7 @@ private Q_SLOTS:
     void simRefusesBadNodeLists();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Run = db::test::CliRun;
     Run cli(const QStringList &args, int timeoutMs = 30000);
     QString slcan(const QString &query = {}) const
     {
@@ -65,31 +62,18 @@ private:
 
 TestCliCanopen::Run TestCliCanopen::cli(const QStringList &args, int timeoutMs)
 {
-    QProcess p;
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs) };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()) };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, timeoutMs);
 }
 
 void TestCliCanopen::initTestCase()
 {
     QVERIFY(m_dir.isValid());
-    m_sim.start(QStringLiteral(DRIVEBENCH_SIM),
-                { QStringLiteral("canopen"), QStringLiteral("--slcan-port"), QStringLiteral("0"),
-                  QStringLiteral("--virtualcan"), QStringLiteral("can0"), QStringLiteral("--nodes"),
-                  QStringLiteral("1,2,5,9"), QStringLiteral("--no-reply-node"),
-                  QStringLiteral("9") });
-    QVERIFY(m_sim.waitForStarted());
-    QString banner;
-    QTRY_VERIFY_WITH_TIMEOUT((banner += QString::fromUtf8(m_sim.readAllStandardOutput()),
-                              banner.count(QLatin1Char('\n')) >= 2),
-                             10000);
+    const QString banner = db::test::startAndReadBanner(
+        m_sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("canopen"), QStringLiteral("--slcan-port"), QStringLiteral("0"),
+          QStringLiteral("--virtualcan"), QStringLiteral("can0"), QStringLiteral("--nodes"),
+          QStringLiteral("1,2,5,9"), QStringLiteral("--no-reply-node"), QStringLiteral("9") },
+        2);
     const auto m = QRegularExpression(QStringLiteral("SLCAN listening on 127\\.0\\.0\\.1:(\\d+)"))
                        .match(banner);
     QVERIFY2(m.hasMatch(), qPrintable(banner));

@@ -1,5 +1,7 @@
 // drivebench-cli eds-check: a summary and the warnings for every shared description file, one
 // error line and a non-zero exit for files that are not descriptions.
+#include "clirun.h"
+
 #include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -15,12 +17,7 @@ private Q_SLOTS:
     void brokenFilesFailWithOneLine();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Run = db::test::CliRun;
     static Run cli(const QStringList &args);
 };
 
@@ -38,16 +35,7 @@ QString sharedFile(const QString &relative)
 
 TestCliDescriptions::Run TestCliDescriptions::cli(const QStringList &args)
 {
-    QProcess p;
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(15000)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang") };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()) };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, 15000);
 }
 
 void TestCliDescriptions::summarizesSharedFiles_data()

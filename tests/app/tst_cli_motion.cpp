@@ -1,6 +1,8 @@
 // drivebench-cli motion commands end to end (issue 5): enable, move --abs/--add/--rel, jog,
 // home, disable and refusals against `drivebench-sim movingcap` over RefGo and over CANopen
 // (SLCAN on loopback, node 50). The simulated drive has software limits of +-100000 (607Dh).
+#include "clirun.h"
+
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
@@ -21,12 +23,7 @@ private Q_SLOTS:
     void tooShortWaitStopsTheAxis();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Run = db::test::CliRun;
     Run cli(const QStringList &args, int timeoutMs = 30000);
     QString uri(const QString &transport) const
     {
@@ -54,30 +51,18 @@ private:
 
 TestCliMotion::Run TestCliMotion::cli(const QStringList &args, int timeoutMs)
 {
-    QProcess p;
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs) };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()) };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, timeoutMs);
 }
 
 void TestCliMotion::initTestCase()
 {
-    m_sim.start(QStringLiteral(DRIVEBENCH_SIM),
-                { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
-                  QStringLiteral("--slcan-port"), QStringLiteral("0"), QStringLiteral("--set"),
-                  QStringLiteral("607D:1=-100000"), QStringLiteral("--set"),
-                  QStringLiteral("607D:2=100000") });
-    QVERIFY(m_sim.waitForStarted());
-    QString banner;
-    QTRY_VERIFY_WITH_TIMEOUT((banner += QString::fromUtf8(m_sim.readAllStandardOutput()),
-                              banner.count(QLatin1Char('\n')) >= 2),
-                             10000);
+    const QString banner = db::test::startAndReadBanner(
+        m_sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
+          QStringLiteral("--slcan-port"), QStringLiteral("0"), QStringLiteral("--set"),
+          QStringLiteral("607D:1=-100000"), QStringLiteral("--set"),
+          QStringLiteral("607D:2=100000") },
+        2);
     const auto refgo =
         QRegularExpression(QStringLiteral("RefGo listening on 127\\.0\\.0\\.1:(\\d+)"))
             .match(banner);

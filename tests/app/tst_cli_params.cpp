@@ -1,6 +1,8 @@
 // drivebench-cli backup/restore/diff/dump end to end against drivebench-sim on OS-chosen
 // loopback ports, over RefGo and over CANopen (SLCAN over TCP), plus the failure cases: a
 // simulator that rejects a write, and corrupt or foreign files that must change nothing.
+#include "clirun.h"
+
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -23,12 +25,7 @@ private Q_SLOTS:
     void usageErrors();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Run = db::test::CliRun;
     Run cli(const QStringList &args);
     // Starts drivebench-sim movingcap with extra arguments; returns the RefGo and SLCAN URIs.
     bool startSim(QProcess &sim, const QStringList &extra, QString *refgo, QString *slcan);
@@ -43,16 +40,7 @@ private:
 
 TestCliParams::Run TestCliParams::cli(const QStringList &args)
 {
-    QProcess p;
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(20000)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang") };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()) };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, 20000);
 }
 
 bool TestCliParams::startSim(QProcess &sim, const QStringList &extra, QString *refgo,

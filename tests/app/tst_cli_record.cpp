@@ -2,6 +2,8 @@
 // started with `drivebench-cli refgo ... G` is recorded with position, current and velocity,
 // triggered on the start of motion; the CSV is read back and checked. Plus the failures: a
 // trigger that never fires, usage errors, a refused connection.
+#include "clirun.h"
+
 #include "scope/csv.h"
 
 #include <QElapsedTimer>
@@ -27,12 +29,7 @@ private Q_SLOTS:
     void refusedConnectionExitsWithThree();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QString out;
-        QString err;
-    };
+    using Run = db::test::CliRun;
     Run cli(const QStringList &args, int timeoutMs = 20000);
     QString uri() const { return QStringLiteral("refgo://127.0.0.1:%1").arg(m_port); }
     QString file(const char *name) const { return m_dir.filePath(QString::fromLatin1(name)); }
@@ -44,29 +41,15 @@ private:
 
 TestCliRecord::Run TestCliRecord::cli(const QStringList &args, int timeoutMs)
 {
-    QProcess p;
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs) };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()) };
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, timeoutMs);
 }
 
 void TestCliRecord::initTestCase()
 {
     QVERIFY(m_dir.isValid());
-    m_sim.start(
-        QStringLiteral(DRIVEBENCH_SIM),
-        { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0") });
-    QVERIFY(m_sim.waitForStarted());
-    QString banner;
-    QTRY_VERIFY_WITH_TIMEOUT((banner += QString::fromUtf8(m_sim.readAllStandardOutput()),
-                              banner.contains(QLatin1Char('\n'))),
-                             10000);
+    const QString banner = db::test::startAndReadBanner(
+        m_sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0") }, 1);
     const auto m =
         QRegularExpression(QStringLiteral("listening on 127\\.0\\.0\\.1:(\\d+)")).match(banner);
     QVERIFY2(m.hasMatch(), qPrintable(banner));
