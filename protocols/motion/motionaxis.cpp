@@ -253,9 +253,16 @@ void MotionAxis::onStatus()
         return;
     ++m_rounds;
     m_tracker.observe(s.position, m_config.positionWindow);
-    if (m_rounds == 1 && s.powered && !s.fault && m_state == AxisState::Disabled) {
-        // The drive was enabled before this model saw it (e.g. by an earlier CLI call).
+    // The drive was enabled before this model saw it (e.g. by an earlier CLI call), or by
+    // someone else (web UI, another tool): PLCopen's state follows the drive. Two rounds in a
+    // row, so that a status read still in flight while MC_Power switched off does not count.
+    m_externalOnRounds = s.powered && !s.fault && m_state == AxisState::Disabled && !m_powerWanted
+        ? m_externalOnRounds + 1
+        : 0;
+    if (s.powered && !s.fault && m_state == AxisState::Disabled
+        && (m_rounds == 1 || m_externalOnRounds >= 2)) {
         m_powerWanted = true;
+        m_externalOnRounds = 0;
         setState(AxisState::Standstill);
     }
     if (s.fault && m_state != AxisState::ErrorStop) {

@@ -97,6 +97,7 @@ private:
     QPointer<MotionCommand> m_active;
     double m_activeVelocity = 0.0; // MC_MoveVelocity set velocity after clamping
     quint64 m_rounds = 0; // status rounds seen
+    int m_externalOnRounds = 0; // rounds in a row the drive was on while the model was Disabled
     quint64 m_acceptedRound = 0; // m_rounds when the active command's set-point was taken
     QTimer m_watchdog;
     int m_watchdogMs = 0;

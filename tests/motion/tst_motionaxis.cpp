@@ -4,6 +4,7 @@
 #include "motion/motionaxis.h"
 #include "rig.h"
 
+#include <QSignalSpy>
 #include <QTest>
 
 using namespace db;
@@ -184,6 +185,26 @@ private Q_SLOTS:
         QVERIFY2(qAbs(add.target() - (stoppedAt + 200)) < kTolerance,
                  qPrintable(QString::number(add.target())));
         QTRY_COMPARE_WITH_TIMEOUT(add.status(), Status::Done, 5000);
+    }
+    void driveEnabledElsewhereIsAdopted()
+    {
+        // PLCopen's axis state follows the drive: enabled by another tool (web UI, RefGo
+        // terminal) the axis is at Standstill; switched off by MC_Power it stays Disabled.
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a);
+        QSignalSpy rounds(a->cia.get(), &AxisInterface::statusChanged);
+        QTRY_VERIFY(rounds.count() >= 3);
+        QCOMPARE(a->axis->state(), AxisState::Disabled);
+        for (int word : { 6, 7, 15 })
+            QVERIFY(bool(a->rig->drive().write({ 0x6040, 0 }, word)));
+        QTRY_COMPARE(a->axis->state(), AxisState::Standstill);
+        MotionCommand power(a->axis.get(), CommandKind::Power);
+        power.setEnable(false);
+        power.setExecute(true);
+        QTRY_COMPARE(power.status(), Status::Done);
+        rounds.clear();
+        QTRY_VERIFY(rounds.count() >= 4);
+        QCOMPARE(a->axis->state(), AxisState::Disabled);
     }
     void velocitySequenceThenHalt() // S-18, S-23
     {
