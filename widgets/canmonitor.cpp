@@ -112,7 +112,7 @@ QWidget *CanMonitor::createFilterBar()
     auto *row = new QHBoxLayout(bar);
     row->setContentsMargins(0, 0, 0, 0);
     m_idEdit = makeEdit(QStringLiteral("idFilter"), tr("580-5FF, 81-FF"),
-                        tr("COB-IDs in hex: single ids and ranges, comma separated"), 12, bar);
+                        tr("COB-IDs in hex: single ids and ranges, comma separated"), 10, bar);
     m_directionBox = new QComboBox(bar);
     m_directionBox->setObjectName(QStringLiteral("directionFilter"));
     m_directionBox->addItem(tr("RX + TX"), int(CanFrameFilter::Direction::Both));
@@ -123,9 +123,9 @@ QWidget *CanMonitor::createFilterBar()
                                "this object"),
                             7, bar);
     m_dataEdit = makeEdit(QStringLiteral("dataFilter"), tr("4B 41 60 ?? 27"),
-                          tr("Data from byte 0 in hex; ?? matches any byte, ? any digit"), 16, bar);
+                          tr("Data from byte 0 in hex; ?? matches any byte, ? any digit"), 13, bar);
     m_textEdit = makeEdit(QStringLiteral("textFilter"), tr("Search decoded text"),
-                          tr("Text in the service or the CANopen reading"), 14, bar);
+                          tr("Text in the service or the CANopen reading"), 10, bar);
     m_textEdit->setFont(font());
     const auto label = [bar](const QString &text) {
         return new QLabel(text, bar);

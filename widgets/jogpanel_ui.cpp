@@ -20,7 +20,7 @@ using namespace motion;
 
 namespace {
 constexpr double kUnbounded = 1e9;
-constexpr int kFieldMinimumWidth = 90;
+constexpr int kFieldMinimumWidth = 76;
 constexpr double kInt32Max = 2147483647.0;
 
 // Lamps in display order; render() fills them in the same order.
@@ -96,7 +96,7 @@ void JogPanel::buildUi()
         auto *lamp = new Lamp(tr(lamps[i].text), lamps[i].color, powerBox);
         lamp->setObjectName(lampNames.at(i));
         m_lamps.append(lamp);
-        lampGrid->addWidget(lamp, i / 4, i % 4);
+        lampGrid->addWidget(lamp, i / 3, i % 3); // three columns: the dock stays narrow
     }
     m_position = valueLabel(QStringLiteral("position"), powerBox);
     m_velocity = valueLabel(QStringLiteral("velocity"), powerBox);

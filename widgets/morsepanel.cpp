@@ -46,7 +46,7 @@ MorsePanel::MorsePanel(QWidget *parent)
 {
     setObjectName(QStringLiteral("MorsePanel"));
     m_frame->setObjectName(QStringLiteral("morseFrame"));
-    m_frame->setMinimumSize(kFrameWidth, 180);
+    m_frame->setMinimumSize(kFrameWidth * 3 / 4, 135);
     m_frame->setAlignment(Qt::AlignCenter);
     m_frame->setText(tr("LED frame"));
     m_frame->setFrameShape(QFrame::StyledPanel);
@@ -76,7 +76,7 @@ MorsePanel::MorsePanel(QWidget *parent)
         Q_EMIT connectRequested(QStringLiteral("canopen+slcan://%1?node=50").arg(ipText()));
     });
 
-    m_plot->setMinimumSize(360, 200);
+    m_plot->setMinimumSize(300, 150);
     m_plot->xAxis->setLabel(tr("time (s)"));
     m_plot->yAxis->setLabel(tr("brightness"));
     m_brightness = m_plot->addGraph();

@@ -19,7 +19,7 @@ using namespace motion;
 
 namespace {
 constexpr double kUnbounded = 1e9;
-constexpr int kFieldMinimumWidth = 90;
+constexpr int kFieldMinimumWidth = 76;
 
 QDoubleSpinBox *spin(const QString &name, double value, QWidget *parent, int decimals = 1)
 {

@@ -75,13 +75,13 @@ NodeList::NodeList(QWidget *parent)
         m_commandButtons.append(button);
     }
     buttons->addStretch(1);
-    buttons->addWidget(m_broadcast);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(4);
     layout->addWidget(m_view, 1);
     layout->addLayout(buttons);
+    layout->addWidget(m_broadcast); // own row: the dock stays narrow on a laptop screen
 
     connect(m_broadcast, &QCheckBox::toggled, this, &NodeList::updateActions);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,

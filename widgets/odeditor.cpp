@@ -17,6 +17,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QToolButton>
@@ -63,7 +64,7 @@ OdEditor::OdEditor(QWidget *parent)
     m_filter->setSourceModel(m_model);
     m_filterEdit->setPlaceholderText(tr("Filter by index, name or value (e.g. 6041, velocity)"));
     m_filterEdit->setClearButtonEnabled(true);
-    m_filterEdit->setMinimumWidth(280);
+    m_filterEdit->setMinimumWidth(140);
     for (int ms : OdEditorPoller::kPeriodsMs)
         m_rate->addItem(periodName(ms), ms);
     m_rate->setToolTip(tr("Live refresh of the rows on screen"));
@@ -231,15 +232,19 @@ void OdEditor::readAll()
     m_poller->readAll();
 }
 
-void OdEditor::addToolActions(const QList<QAction *> &actions)
+void OdEditor::addToolActions(const QString &title, const QList<QAction *> &actions)
 {
-    m_tools->addSpacing(12);
-    for (QAction *action : actions) {
-        auto *button = new QToolButton(this);
-        button->setDefaultAction(action);
-        button->setToolButtonStyle(Qt::ToolButtonTextOnly);
-        m_tools->addWidget(button);
-    }
+    // One drop-down button, so that the tool row fits a laptop screen next to the docks.
+    auto *button = new QToolButton(this);
+    button->setObjectName(QStringLiteral("toolMenu"));
+    button->setText(title);
+    button->setPopupMode(QToolButton::InstantPopup);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto *menu = new QMenu(button);
+    menu->addActions(actions);
+    button->setMenu(menu);
+    m_tools->addSpacing(8);
+    m_tools->addWidget(button);
 }
 
 void OdEditor::setFilterText(const QString &text)

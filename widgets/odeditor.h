@@ -41,8 +41,9 @@ public:
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
 
-    // Buttons for these actions are shown in the editor's tool row (e.g. the Parameters menu).
-    void addToolActions(const QList<QAction *> &actions);
+    // A drop-down button `title` with these actions in the editor's tool row (e.g. the
+    // Parameters menu's backup, compare and store).
+    void addToolActions(const QString &title, const QList<QAction *> &actions);
 
     OdEditorModel *model() const { return m_model; }
     OdEditorFilter *filter() const { return m_filter; }

@@ -20,6 +20,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableView>
@@ -64,8 +65,14 @@ ScopePage::ScopePage(QWidget *parent)
     setAcceptDrops(true);
     m_plot->setRecorder(m_recorder);
 
-    auto *left = new QWidget(this);
-    left->setMinimumWidth(380); // channel names stay readable next to the plot
+    // The controls scroll vertically, so that the page fits a laptop screen with the docks.
+    auto *leftScroll = new QScrollArea(this);
+    leftScroll->setWidgetResizable(true);
+    leftScroll->setFrameShape(QFrame::NoFrame);
+    leftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    leftScroll->setMinimumWidth(270); // channel names stay readable next to the plot
+    auto *left = new QWidget(leftScroll);
+    leftScroll->setWidget(left);
     auto *leftLayout = new QVBoxLayout(left);
     leftLayout->setContentsMargins(0, 0, 4, 0);
     leftLayout->addWidget(createChannelPanel(), 1);
@@ -85,7 +92,7 @@ ScopePage::ScopePage(QWidget *parent)
     rightLayout->addWidget(vertical, 1);
 
     auto *split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(left);
+    split->addWidget(leftScroll);
     split->addWidget(right);
     split->setStretchFactor(1, 1);
     split->setSizes({ 360, 900 });

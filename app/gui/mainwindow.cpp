@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -102,7 +103,12 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     connect(m_deviceList, &widgets::DeviceList::removeRequested, this,
             &MainWindow::removeConnection);
 
-    resize(1280, 820);
+    // First start: 1600x1000 or the screen's free area, whichever is smaller (a laptop's
+    // 1366x768 too); restoreGeometry() replaces this once the user has placed the window.
+    QSize size(1600, 1000);
+    if (const QScreen *screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size());
+    resize(size);
     loadSettings();
     updateStatusBar();
 }
@@ -147,8 +153,14 @@ void MainWindow::createDocks()
     auto *morse = new widgets::MorsePanel(this);
     morse->setLoader(loadMorseSource);
     connect(morse, &widgets::MorsePanel::connectRequested, this, &MainWindow::showConnectDialogFor);
-    tabifyDockWidget(
-        log, addDock(morse, tr("Morse IP"), QStringLiteral("morseDock"), Qt::BottomDockWidgetArea));
+    // In a scroll area: the bottom docks stay low on a laptop screen.
+    auto *morseScroll = new QScrollArea(this);
+    morseScroll->setWidget(morse);
+    morseScroll->setWidgetResizable(true);
+    morseScroll->setFrameShape(QFrame::NoFrame);
+    tabifyDockWidget(log,
+                     addDock(morseScroll, tr("Morse IP"), QStringLiteral("morseDock"),
+                             Qt::BottomDockWidgetArea));
     log->raise();
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     m_objectAccess->setMinimumWidth(320);

@@ -25,7 +25,8 @@ void MainWindow::createParameterPages()
     m_paramActions = new widgets::ParameterSetActions(this, this);
     m_pages->addTab(m_odEditor, tr("Object Dictionary"));
     m_pages->addTab(m_compareView, tr("Parameter Sets"));
-    m_odEditor->addToolActions({ m_paramActions->backUpAction(), m_paramActions->compareAction(),
+    m_odEditor->addToolActions(tr("Parameter set"),
+                               { m_paramActions->backUpAction(), m_paramActions->compareAction(),
                                  m_paramActions->storeAction() });
 
     QMenu *menu = new QMenu(tr("&Parameters"), this);

@@ -6,8 +6,10 @@
 #include "widgets/logconsole.h"
 #include "widgets/objectaccessbox.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -93,6 +95,34 @@ private Q_SLOTS:
         MainWindow again(m_registry);
         QCOMPARE(again.recentConnections(),
                  (QStringList { QStringLiteral("fake://b"), QStringLiteral("fake://a") }));
+    }
+
+    void fitsALaptopScreen()
+    {
+        // 1366x768 is still a common commissioning laptop: every dock and page together must
+        // fit (the docks can be closed, but the default arrangement must not overflow).
+        MainWindow window(m_registry);
+        window.show();
+        QVERIFY(window.openConnection(QStringLiteral("fake://drive1")).ok());
+        QString parts;
+        for (const QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+            if (dock->isVisible())
+                parts += QStringLiteral(" %1=%2x%3")
+                             .arg(dock->objectName())
+                             .arg(dock->minimumSizeHint().width())
+                             .arg(dock->minimumSizeHint().height());
+        }
+        for (int i = 0; i < window.pages()->count(); ++i)
+            parts += QStringLiteral(" '%1'=%2x%3")
+                         .arg(window.pages()->tabText(i))
+                         .arg(window.pages()->widget(i)->minimumSizeHint().width())
+                         .arg(window.pages()->widget(i)->minimumSizeHint().height());
+        const QSize min = window.minimumSizeHint().expandedTo(window.minimumSize());
+        QVERIFY2(min.width() <= 1366 && min.height() <= 740,
+                 qPrintable(QStringLiteral("window needs %1x%2:%3")
+                                .arg(min.width())
+                                .arg(min.height())
+                                .arg(parts)));
     }
 };
 
