@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QPushButton>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QToolButton>
@@ -234,12 +235,10 @@ void OdEditor::readAll()
 
 void OdEditor::addToolActions(const QString &title, const QList<QAction *> &actions)
 {
-    // One drop-down button, so that the tool row fits a laptop screen next to the docks.
-    auto *button = new QToolButton(this);
+    // One drop-down button, so that the tool row fits a laptop screen next to the docks. A push
+    // button draws its menu arrow beside the text (a tool button's would cover it).
+    auto *button = new QPushButton(title, this);
     button->setObjectName(QStringLiteral("toolMenu"));
-    button->setText(title);
-    button->setPopupMode(QToolButton::InstantPopup);
-    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
     auto *menu = new QMenu(button);
     menu->addActions(actions);
     button->setMenu(menu);
