@@ -146,7 +146,7 @@ QWidget *ScopePage::createChannelPanel()
     auto *layout = new QVBoxLayout(box);
     m_channelView = new QTableView(box);
     m_channelView->setObjectName(QStringLiteral("scopeChannels"));
-    m_channelView->setModel(m_model);
+    m_channelView->setModel(createTableModel()); // m_model, with the PDO of PDO channels
     m_channelView->verticalHeader()->setVisible(false);
     m_channelView->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     m_channelView->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -186,6 +186,7 @@ QWidget *ScopePage::createChannelPanel()
     rateRow->addStretch(1);
     rateRow->addWidget(m_removeButton);
     layout->addLayout(rateRow);
+    layout->addWidget(createSourceRow(box));
     connect(m_addButton, &QPushButton::clicked, this, &ScopePage::addFromEdit);
     connect(m_addressEdit, &QLineEdit::returnPressed, this, &ScopePage::addFromEdit);
     connect(m_removeButton, &QPushButton::clicked, this, &ScopePage::removeSelected);
@@ -299,6 +300,12 @@ void ScopePage::updateControls()
     m_addButton->setEnabled(!running);
     m_removeButton->setEnabled(!running && m_recorder->channelCount() > 0);
     m_addressEdit->setEnabled(!running);
+    const bool canopen = m_connection && m_connection->protocolKey() == u"canopen";
+    m_sourceLabel->setVisible(canopen);
+    m_sourceBox->setVisible(canopen);
+    m_sourceBox->setEnabled(!running);
+    m_mapButton->setVisible(canopen);
+    m_mapButton->setEnabled(!running && !m_unmapped.isEmpty() && !m_pdoRequest);
 }
 
 void ScopePage::updateStatus()

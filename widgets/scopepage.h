@@ -2,6 +2,8 @@
 
 #include "core/objectaddress.h"
 #include "core/result.h"
+#include "scope/pdodiscovery.h"
+#include "scope/pdosource.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
 
@@ -9,6 +11,9 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <optional>
+
+class QAbstractItemModel;
 class QAction;
 class QComboBox;
 class QDoubleSpinBox;
@@ -29,11 +34,17 @@ class ScopePlot;
 // acquisition mode and trigger, Start/Stop and status, the plot with cursors and their
 // measurements, CSV/PNG/PDF export, opening a saved recording, spectrum/step analysis.
 //
-// Ownership: the page owns its Recorder and the PollingSource it makes on the connection given
-// to setConnection() (never a transport). Start re-creates the source with the page's channels
-// on the current connection (so a loaded recording can be recorded again); the recorded data
-// stays in the Recorder until the next Start or Open. Changing the connection stops recording;
-// the channels keep their data.
+// Ownership: the page owns its Recorder and the PollingSource/PdoSource it makes on the
+// connection given to setConnection() (never a transport). Start re-creates the sources with the
+// page's channels on the current connection (so a loaded recording can be recorded again); the
+// recorded data stays in the Recorder until the next Start or Open. Changing the connection stops
+// recording; the channels keep their data.
+//
+// On a CANopen connection, new channels come from host polling (SDO) or, passively, from the
+// TPDOs that already carry them (the "Source" box): the page reads the node's PDO configuration
+// (read-only) and samples the PDO frames; it sends nothing and never changes the NMT state.
+// Objects in no TPDO can be mapped into one with "Map to TPDO…" (opt-in, after a confirmation:
+// it changes the device's PDO configuration).
 class ScopePage : public QWidget
 {
     Q_OBJECT
@@ -62,6 +73,23 @@ public:
     // The addresses in a drag's mime data (kObjectsMimeType); InvalidArgument naming a bad line.
     static Result<QList<ObjectAddress>> parseObjects(const QMimeData *mime);
 
+    // Where new channels come from (the "Source" box; PDO only on a CANopen connection).
+    enum class ChannelSource { Polling, Pdo };
+    void setChannelSource(ChannelSource source);
+    ChannelSource channelSource() const;
+    // PDO (passive): reads the node's TPDO configuration (read-only, asynchronous) and adds the
+    // objects found in a TPDO as PDO channels; objects in no TPDO are named in the status line
+    // and kept for mapToTpdo(). pdoLookupFinished() follows in every case.
+    void addPdoChannels(const QList<ObjectAddress> &addresses);
+    // The objects of the last PDO lookup that are in no TPDO.
+    QList<ObjectAddress> unmappedObjects() const { return m_unmapped; }
+    // OPT-IN, without asking (the "Map to TPDO…" button asks first): writes TPDO tpdoNumber
+    // (0-based) so that it carries unmappedObjects() every eventMs (RAM only), then adds them as
+    // PDO channels. pdoLookupFinished() follows.
+    void mapToTpdo(int tpdoNumber, int eventMs);
+    // The PDO a channel (id) is sampled from; nullopt for polling channels.
+    std::optional<scope::PdoSource::Mapping> pdoMapping(const QString &id) const;
+
     // Trigger settings of the controls (channel -1 when no channel is chosen).
     scope::Trigger triggerSettings() const;
     void setTriggerSettings(const scope::Trigger &trigger);
@@ -77,6 +105,9 @@ public:
     Result<void> openRecording(const QString &fileName);
     // The last problem or result shown in the status line.
     QString statusText() const;
+
+Q_SIGNALS:
+    void pdoLookupFinished(bool ok);
 
 public Q_SLOTS:
     // Records the channels on the current connection with the controls' mode and trigger; a
@@ -106,10 +137,23 @@ private:
     void promptExportCsv(bool visibleRangeOnly);
     void promptExportImage();
     Result<void> rebuildSource();
+    void onPdoPlan(Reply *reply);
+    void promptMapToTpdo();
+    QString channelSourceNote(const QString &id) const;
+    QWidget *createSourceRow(QWidget *parent);
+    void watchPdoArrival();
+    QAbstractItemModel *createTableModel();
 
     QPointer<DeviceConnection> m_connection;
     scope::Recorder *m_recorder;
     QPointer<scope::PollingSource> m_source;
+    QPointer<scope::PdoSource> m_pdoSource;
+    QHash<QString, scope::PdoChannelPlanEntry> m_pdoMappings; // channel id -> its PDO
+    QList<canopen::PdoConfig> m_tpdos; // the node's TPDOs as last read
+    int m_pdoWatch = 0; // counts starts: a first-PDO check of an earlier run is ignored
+    QList<ObjectAddress> m_unmapped; // objects of the last PDO lookup in no TPDO
+    int m_proposedTpdo = 0; // 0-based TPDO offered by "Map to TPDO…"
+    QPointer<Reply> m_pdoRequest; // lookup or TPDO write in flight
     ScopePlot *m_plot;
     ScopeChannelModel *m_model;
     ScopeMeasurements *m_measurements;
@@ -118,6 +162,9 @@ private:
     QSpinBox *m_rateBox = nullptr;
     QPushButton *m_addButton = nullptr;
     QPushButton *m_removeButton = nullptr;
+    QComboBox *m_sourceBox = nullptr;
+    QLabel *m_sourceLabel = nullptr;
+    QPushButton *m_mapButton = nullptr;
     QComboBox *m_modeBox = nullptr;
     QDoubleSpinBox *m_rollBox = nullptr;
     QComboBox *m_triggerChannelBox = nullptr;

@@ -34,6 +34,9 @@ void ScopePage::setConnection(DeviceConnection *connection)
     // The old source goes; its channels stay in the recorder with their data (orphans) and are
     // recorded on the new connection at the next Start.
     delete m_source;
+    delete m_pdoSource;
+    delete m_pdoRequest; // a lookup on the old connection
+    m_unmapped.clear();
     m_connection = connection;
     updateControls();
 }
@@ -101,6 +104,8 @@ Result<void> ScopePage::addChannels(const QList<ObjectAddress> &addresses, int r
 
 bool ScopePage::removeChannel(int index)
 {
+    if (!m_recorder->isRunning() && index >= 0 && index < m_recorder->channelCount())
+        m_pdoMappings.remove(m_recorder->channelInfo(index).id);
     // The source keeps polling the object until Start re-creates it; the recorder forgets it now.
     return m_recorder->removeChannel(index);
 }
@@ -120,8 +125,12 @@ void ScopePage::addFromEdit()
         showMessage(tr("Type an object address such as 6064:0."), true);
         return;
     }
-    if (addChannels(addresses))
+    if (channelSource() == ChannelSource::Pdo) {
+        addPdoChannels(addresses);
         m_addressEdit->clear();
+    } else if (addChannels(addresses)) {
+        m_addressEdit->clear();
+    }
 }
 
 void ScopePage::removeSelected()
@@ -155,7 +164,10 @@ void ScopePage::dropEvent(QDropEvent *event)
         showMessage(addresses.error().message(), true);
         return;
     }
-    addChannels(*addresses);
+    if (channelSource() == ChannelSource::Pdo)
+        addPdoChannels(*addresses);
+    else
+        addChannels(*addresses);
     event->acceptProposedAction();
 }
 
@@ -189,31 +201,6 @@ void ScopePage::setMode(int mode)
     m_modeBox->setCurrentIndex(mode);
 }
 
-Result<void> ScopePage::rebuildSource()
-{
-    // Every channel of the page, with its scaling and rate, on the current connection.
-    QList<scope::ChannelInfo> infos;
-    for (int i = 0; i < m_recorder->channelCount(); ++i) {
-        scope::ChannelInfo info = m_recorder->channelInfo(i);
-        info.sourceRateMs = m_model->rateMs(info.id, info.sourceRateMs);
-        info.device = m_connection->uri().toString();
-        infos.append(info);
-    }
-    auto *source = new scope::PollingSource(m_connection, this);
-    for (const scope::ChannelInfo &info : std::as_const(infos)) {
-        const Result<int> added = source->addChannel(info);
-        if (!added) {
-            delete source;
-            return added.error().prefixed(info.label());
-        }
-    }
-    m_recorder->removeAllChannels();
-    delete m_source;
-    m_source = source;
-    m_recorder->addSource(source);
-    return {};
-}
-
 void ScopePage::start()
 {
     if (m_recorder->isRunning())
@@ -238,6 +225,7 @@ void ScopePage::start()
     m_recorder->setTrigger(trigger);
     showMessage({}, false);
     m_recorder->start();
+    watchPdoArrival();
 }
 
 void ScopePage::stop()

@@ -70,11 +70,24 @@ Result<ObjectTarget> openObject(Context &c, Session &session)
         return opened.error();
     ObjectTarget target;
     target.address = *address;
-    target.def = session.connection()->dictionary().find(*address);
+    DeviceConnection *connection = session.connection();
+    target.def = connection->dictionary().find(*address);
     const auto type = typeFor(c, target.def);
     if (!type)
         return type.error();
     target.type = *type;
+    if (!target.def && !c.type.isEmpty()) {
+        // --type describes the object for this run, so the connection reads and writes it with
+        // that size (a CANopen SDO of 2 bytes for u16, not a guess from the value).
+        ObjectDictionary dictionary = connection->dictionary();
+        ObjectDef def;
+        def.address = *address;
+        def.name = QStringLiteral("(not in the description)");
+        def.type = *type;
+        dictionary.insert(def);
+        connection->setDictionary(dictionary);
+        target.def = connection->dictionary().find(*address);
+    }
     return target;
 }
 
@@ -208,10 +221,10 @@ const QList<Command> &commands()
         { "jog", "URI --vel V --time MS", "jog at V for MS ms, then halt; prints the position", 1,
           1, jog, motionOptions },
         { "record",
-          "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] -o "
-          "FILE",
-          "record objects (host polling) to CSV, optionally triggered", 1, 1, record,
-          recordOptions },
+          "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] "
+          "[--pdo | --configure-tpdo N [--event-ms MS]] -o FILE",
+          "record objects (host polling or CANopen PDOs) to CSV, optionally triggered", 1, 1,
+          record, recordOptions },
     };
     return list;
 }

@@ -1,6 +1,8 @@
 #include "commands_record.h"
 
+#include "commands_record_pdo.h"
 #include "scope/csv.h"
+#include "scope/pdodiscovery.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
 
@@ -8,6 +10,7 @@
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace db::cli {
 
@@ -16,6 +19,10 @@ namespace {
 constexpr double kDefaultWaitS = 30;
 constexpr double kDefaultPostS = 1;
 constexpr int kDefaultRateMs = 10;
+constexpr int kDefaultEventMs = 10; // --configure-tpdo without --event-ms (and --rate-ms)
+// With --pdo, the first PDO must arrive within this time (or 3 expected periods when longer);
+// otherwise the recording ends with the probable cause (node not operational).
+constexpr int kFirstPdoMs = 1500;
 
 Error usage(const QString &text)
 {
@@ -45,7 +52,24 @@ struct Settings
     double postS = kDefaultPostS;
     double waitS = kDefaultWaitS;
     qint64 capacity = scope::TraceBuffer::kDefaultCapacity;
+    bool pdo = false; // --pdo or --configure-tpdo: passive PDO sampling instead of polling
+    int configureTpdo = -1; // 0-based TPDO number to configure first; -1 = none
+    int eventMs = kDefaultEventMs;
 };
+
+// A whole number in [min, max] from option `name`.
+Result<int> integer(Context &c, const QString &name, int min, int max, const QString &what)
+{
+    bool ok = false;
+    const int v = c.parser->value(name).toInt(&ok);
+    if (!ok || v < min || v > max)
+        return usage(QStringLiteral("--%1 takes %2 (%3..%4), not '%5'")
+                         .arg(name, what)
+                         .arg(min)
+                         .arg(max)
+                         .arg(c.parser->value(name)));
+    return v;
+}
 
 Result<Settings> parseSettings(Context &c)
 {
@@ -76,6 +100,27 @@ Result<Settings> parseSettings(Context &c)
         s.capacity = c.parser->value(QStringLiteral("capacity")).toLongLong(&ok);
         if (!ok || s.capacity < 1)
             return usage(QStringLiteral("--capacity takes a number of samples >= 1"));
+    }
+    s.pdo = c.parser->isSet(QStringLiteral("pdo"));
+    if (c.parser->isSet(QStringLiteral("configure-tpdo"))) {
+        const auto n =
+            integer(c, QStringLiteral("configure-tpdo"), 1, canopen::PdoConfig::kMaxPerDirection,
+                    QStringLiteral("a TPDO number"));
+        if (!n)
+            return n.error();
+        s.configureTpdo = *n - 1;
+        s.pdo = true;
+        s.eventMs =
+            c.parser->isSet(QStringLiteral("rate-ms")) && s.rateMs > 0 ? s.rateMs : kDefaultEventMs;
+    }
+    if (c.parser->isSet(QStringLiteral("event-ms"))) {
+        if (s.configureTpdo < 0)
+            return usage(QStringLiteral("--event-ms goes with --configure-tpdo N"));
+        const auto ms = integer(c, QStringLiteral("event-ms"), 1, 0xFFFF,
+                                QStringLiteral("the event timer in ms"));
+        if (!ms)
+            return ms.error();
+        s.eventMs = *ms;
     }
     const auto duration = seconds(c, QStringLiteral("duration"), -1);
     if (!duration)
@@ -142,6 +187,17 @@ QList<QCommandLineOption> recordOptions()
         { QStringLiteral("capacity"),
           QStringLiteral("record: most samples kept per object (default 10000000)."),
           QStringLiteral("n") },
+        { QStringLiteral("pdo"),
+          QStringLiteral("record: CANopen: sample the objects passively from the TPDOs that "
+                         "carry them (writes nothing).") },
+        { QStringLiteral("configure-tpdo"),
+          QStringLiteral("record: CANopen: first map the objects into TPDO N (CHANGES the "
+                         "device's PDO configuration), then sample it."),
+          QStringLiteral("n") },
+        { QStringLiteral("event-ms"),
+          QStringLiteral("record: event timer of --configure-tpdo in ms (default --rate-ms, "
+                         "else 10)."),
+          QStringLiteral("ms") },
     };
 }
 
@@ -155,17 +211,30 @@ int record(Context &c)
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
-    scope::PollingSource source(session.connection());
-    for (ObjectAddress address : s.objects) {
-        if (auto added = source.addChannel(address, s.rateMs); !added)
-            return fail(c, added.error());
+    std::unique_ptr<scope::TraceSource> source;
+    scope::PdoSource *pdoSource = nullptr;
+    scope::PdoChannelPlan plan;
+    if (s.pdo) {
+        auto made =
+            makePdoSource(c, session.connection(), { s.objects, s.configureTpdo, s.eventMs }, plan);
+        if (!made)
+            return fail(c, made.error());
+        pdoSource = made->get();
+        source = std::move(made).value();
+    } else {
+        auto polling = std::make_unique<scope::PollingSource>(session.connection());
+        for (ObjectAddress address : s.objects) {
+            if (auto added = polling->addChannel(address, s.rateMs); !added)
+                return fail(c, added.error());
+        }
+        source = std::move(polling);
     }
     scope::Recorder recorder;
-    recorder.addSource(&source);
+    recorder.addSource(source.get());
     recorder.setCapacity(s.capacity);
     if (!s.trigger.isEmpty()) {
         QStringList ids;
-        for (const scope::ChannelInfo &info : source.channels())
+        for (const scope::ChannelInfo &info : source->channels())
             ids.append(info.id);
         scope::Trigger base;
         base.preTriggerS = s.preS;
@@ -201,6 +270,18 @@ int record(Context &c)
         });
         deadline.start(timerMs(s.waitS));
     }
+    // --pdo: a bounded wait for the first frame, so that a silent node fails with its cause.
+    int firstPdoMs = kFirstPdoMs;
+    for (const scope::PdoChannelPlanEntry &e : std::as_const(plan.found))
+        firstPdoMs = std::max(firstPdoMs, 3 * e.mapping.expectedPeriodMs);
+    QTimer firstPdo;
+    firstPdo.setSingleShot(true);
+    QObject::connect(&firstPdo, &QTimer::timeout, &recorder, [&] {
+        if (pdoSource && pdoSource->framesSeen() == 0)
+            recorder.stop();
+    });
+    if (pdoSource)
+        firstPdo.start(firstPdoMs);
     recorder.start();
     if (recorder.isRunning()) {
         if (!s.trigger.isEmpty())
@@ -208,6 +289,10 @@ int record(Context &c)
                   << Qt::endl;
         loop.exec();
     }
+    if (pdoSource && pdoSource->framesSeen() == 0 && !failure.isError())
+        return fail(
+            c,
+            noPdoError(c, session.connection(), plan, std::min(firstPdoMs, deadline.interval())));
     if (triggerTimedOut)
         return fail(c,
                     Error(Error::Kind::Timeout,
@@ -233,9 +318,10 @@ int record(Context &c)
             c,
             failure.prefixed(QStringLiteral("recording stopped early (%1 written)").arg(c.output)));
     if (lost > 0) {
-        c.err << "drivebench-cli: " << lost
-              << " samples were lost (the link is slower than --rate-ms asks); gaps are marked in "
-              << c.output << Qt::endl;
+        c.err << "drivebench-cli: " << lost << " samples were lost ("
+              << (pdoSource ? "PDOs missed their expected period"
+                            : "the link is slower than --rate-ms asks")
+              << "); gaps are marked in " << c.output << Qt::endl;
         return ExitFailure;
     }
     return ExitOk;

@@ -15,12 +15,19 @@ namespace db::cli {
 //   the channel must be one of the --obj): prints "armed: ..." once sampling runs, waits at most
 //   --wait seconds (default 30) for the trigger, then keeps --pre seconds before it (default 0)
 //   and --post seconds after it (default: --duration, else 1).
+// - With --pdo (CANopen only): instead of polling, samples the objects PASSIVELY from the TPDOs
+//   that carry them (found by reading the node's PDO configuration, read-only; timestamps when a
+//   frame arrives; loss = missed event-timer/SYNC periods). Objects in no TPDO exit 2 naming
+//   them. No PDO within max(1.5 s, 3 periods) exits 4 naming the probable cause (node not
+//   operational: record never sends NMT commands). --configure-tpdo N [--event-ms MS] (opt-in)
+//   first maps the objects into TPDO N (RAM; says so on stderr), then samples as --pdo.
 // Prints one summary line. Exit 0 with every sample recorded; lost samples are reported on
 // stderr and give exit 1 (the file is still written). A trigger that never fires exits 4 without
 // a file; a connection lost while recording writes what was recorded and exits 3.
 int record(Context &context);
 
-// --obj, --rate-ms, --duration, --trigger, --pre, --post, --wait, --capacity.
+// --obj, --rate-ms, --duration, --trigger, --pre, --post, --wait, --capacity, --pdo,
+// --configure-tpdo, --event-ms.
 QList<QCommandLineOption> recordOptions();
 
 } // namespace db::cli

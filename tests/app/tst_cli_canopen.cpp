@@ -30,6 +30,7 @@ private Q_SLOTS:
     void lssSelectsAndInquires();
     void pdoPrintsTheConfiguration();
     void dcfExportsCurrentValues();
+    void typeGivesTheSizeOfAnUnknownObject();
     void abortExitsWithSix();
     void silentNodeTimesOutWithFour();
     void garbageOnTheLinkFailsQuickly();
@@ -228,6 +229,23 @@ void TestCliCanopen::dcfExportsCurrentValues()
     r = cli(
         { QStringLiteral("dcf"), slcan(QStringLiteral("?node=1")), QStringLiteral("-o"), file });
     QCOMPARE(r.exitCode, 2); // no description: nothing to export
+}
+
+void TestCliCanopen::typeGivesTheSizeOfAnUnknownObject()
+{
+    // Without ?eds= the client knows nothing of 1800h.5 (UNSIGNED16 on the node): --type u16
+    // makes it a 2-byte download, which the node accepts; without it the size is a guess.
+    const QString bare = slcan(QStringLiteral("?node=2"));
+    const Run w = cli({ QStringLiteral("write"), bare, QStringLiteral("1800:5"),
+                        QStringLiteral("37"), QStringLiteral("--type"), QStringLiteral("u16") });
+    QVERIFY2(w.exitCode == 0, qPrintable(w.err));
+    const Run r = cli({ QStringLiteral("read"), slcan(QStringLiteral("?node=2&eds=") + eds()),
+                        QStringLiteral("1800:5") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(r.out.trimmed(), QStringLiteral("37"));
+    const Run back = cli({ QStringLiteral("write"), bare, QStringLiteral("1800:5"),
+                           QStringLiteral("0"), QStringLiteral("--type"), QStringLiteral("u16") });
+    QVERIFY2(back.exitCode == 0, qPrintable(back.err));
 }
 
 void TestCliCanopen::abortExitsWithSix()

@@ -1,7 +1,9 @@
 // drivebench-cli record end to end against drivebench-sim on an OS-chosen loopback port: a move
 // started with `drivebench-cli refgo ... G` is recorded with position, current and velocity,
 // triggered on the start of motion; the CSV is read back and checked. Plus the failures: a
-// trigger that never fires, usage errors, a refused connection.
+// trigger that never fires, usage errors, a refused connection. And `record --pdo` against
+// `drivebench-sim canopen` over SLCAN: passive sampling of a default TPDO (the PDO configuration
+// is unchanged afterwards), an object in no TPDO, --configure-tpdo, a pre-operational node.
 #include "clirun.h"
 
 #include "scope/csv.h"
@@ -28,14 +30,31 @@ private Q_SLOTS:
     void usageErrorsExitWithTwo();
     void refusedConnectionExitsWithThree();
 
+    void pdoSamplesADefaultTpdoPassively();
+    void pdoObjectInNoTpdoIsNamed();
+    void configureTpdoThenSamples();
+    void preoperationalNodeGivesTheReason();
+    void pdoNeedsACanopenUri();
+
 private:
     using Run = db::test::CliRun;
     Run cli(const QStringList &args, int timeoutMs = 20000);
     QString uri() const { return QStringLiteral("refgo://127.0.0.1:%1").arg(m_port); }
     QString file(const char *name) const { return m_dir.filePath(QString::fromLatin1(name)); }
+    QString canopen(int node) const
+    {
+        return QStringLiteral("canopen+slcan://127.0.0.1:%1?node=%2&eds=" DRIVEBENCH_SOURCE_DIR
+                              "/resources/devices/drivebench_testnode.json")
+            .arg(m_canopenPort)
+            .arg(node);
+    }
+    // Runs drivebench-cli and requires exit 0.
+    QString ok(const QStringList &args);
 
     QProcess m_sim;
+    QProcess m_canopenSim;
     quint16 m_port = 0;
+    quint16 m_canopenPort = 0;
     QTemporaryDir m_dir;
 };
 
@@ -54,12 +73,30 @@ void TestCliRecord::initTestCase()
         QRegularExpression(QStringLiteral("listening on 127\\.0\\.0\\.1:(\\d+)")).match(banner);
     QVERIFY2(m.hasMatch(), qPrintable(banner));
     m_port = quint16(m.captured(1).toUInt());
+
+    const QString canopenBanner = db::test::startAndReadBanner(
+        m_canopenSim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("canopen"), QStringLiteral("--slcan-port"), QStringLiteral("0"),
+          QStringLiteral("--nodes"), QStringLiteral("1,2,5") },
+        1);
+    m_canopenPort = db::test::listeningPort(canopenBanner, QStringLiteral("SLCAN"));
+    QVERIFY2(m_canopenPort != 0, qPrintable(canopenBanner));
+}
+
+QString TestCliRecord::ok(const QStringList &args)
+{
+    const Run r = cli(args);
+    if (r.exitCode != 0)
+        qWarning().noquote() << args.join(u' ') << "->" << r.exitCode << r.err;
+    return r.exitCode == 0 ? r.out : QStringLiteral("<failed>");
 }
 
 void TestCliRecord::cleanupTestCase()
 {
     m_sim.terminate();
+    m_canopenSim.terminate();
     QVERIFY(m_sim.waitForFinished(5000));
+    QVERIFY(m_canopenSim.waitForFinished(5000));
 }
 
 void TestCliRecord::recordsAMoveTriggeredOnMotion()
@@ -197,6 +234,9 @@ void TestCliRecord::usageErrorsExitWithTwo_data()
     QTest::newRow("bad trigger") << QStringList {
         "--obj", "6064:0", "--trigger", "6064:0,sideways,3", "-o", o
     } << "unknown condition";
+    QTest::newRow("bad tpdo number")
+        << QStringList { "--obj", "6064:0", "--configure-tpdo", "0", "--duration", "1", "-o", o }
+        << "--configure-tpdo takes a TPDO number";
     QTest::newRow("string object")
         << QStringList { "--obj", "1008:0", "--duration", "1", "-o", o } << "not a number";
 }
@@ -219,6 +259,147 @@ void TestCliRecord::refusedConnectionExitsWithThree()
               QStringLiteral("1"), QStringLiteral("-o"), file("refused.csv") });
     QCOMPARE(r.exitCode, 3);
     QVERIFY(!QFile::exists(file("refused.csv")));
+}
+
+void TestCliRecord::pdoSamplesADefaultTpdoPassively()
+{
+    // The device side, as a PLC would set it up: TPDO1 (6041:0, 6064:0) every 20 ms, started.
+    QVERIFY(
+        ok({ QStringLiteral("write"), canopen(1), QStringLiteral("1800:5"), QStringLiteral("20") })
+            .isEmpty());
+    QVERIFY(ok({ QStringLiteral("nmt"), canopen(1), QStringLiteral("start") })
+                .contains(QLatin1String("operational")));
+    const QString before = ok({ QStringLiteral("pdo"), canopen(1) });
+    QVERIFY(before.contains(QLatin1String("TPDO1 cob 0x181 enabled")));
+
+    const QString csvFile = file("pdo.csv");
+    const Run r =
+        cli({ QStringLiteral("record"), canopen(1), QStringLiteral("--obj"),
+              QStringLiteral("6064:0,6041:0"), QStringLiteral("--pdo"),
+              QStringLiteral("--duration"), QStringLiteral("0.6"), QStringLiteral("-o"), csvFile });
+    QVERIFY2(r.exitCode == 0
+                 || (r.exitCode == 1 && r.err.contains(QLatin1String("samples were lost"))),
+             qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QLatin1String("pdo: 6064:0 from TPDO1 (COB-ID 0x181) bytes 2..5, "
+                                          "every 20 ms")),
+             qPrintable(r.out));
+    QVERIFY(r.out.contains(QLatin1String("pdo: 6041:0 from TPDO1 (COB-ID 0x181) bytes 0..1")));
+    QVERIFY(!r.err.contains(QLatin1String("changed")));
+    const auto rec = scope::csv::load(csvFile);
+    QVERIFY2(rec.ok(), qPrintable(rec.error().toString()));
+    QCOMPARE(rec->channels.size(), 2);
+    QCOMPARE(rec->channels[0].info.name, QStringLiteral("Position actual value"));
+    const scope::TraceBuffer &pos = rec->channels[0].buffer;
+    const qint64 n = pos.size() + pos.lostAtSource();
+    QVERIFY2(n >= 15 && n <= 35, qPrintable(QString::number(n))); // 0.6 s / 20 ms = 30
+    QCOMPARE(pos.value(0), 1234.0); // the test node's default, signed 32 bit
+    QCOMPARE(rec->channels[1].buffer.value(0), double(0x0250));
+    // Passive: the node's PDO configuration is as before.
+    QCOMPARE(ok({ QStringLiteral("pdo"), canopen(1) }), before);
+}
+
+void TestCliRecord::pdoObjectInNoTpdoIsNamed()
+{
+    const QString csvFile = file("unmapped.csv");
+    const Run r =
+        cli({ QStringLiteral("record"), canopen(1), QStringLiteral("--obj"),
+              QStringLiteral("6064:0,2103:0"), QStringLiteral("--pdo"),
+              QStringLiteral("--duration"), QStringLiteral("0.3"), QStringLiteral("-o"), csvFile });
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QLatin1String("2103:0 Test integer32 is in no TPDO of node 1; use "
+                                          "--configure-tpdo N to map it")),
+             qPrintable(r.err));
+    QVERIFY(!r.err.contains(QLatin1String("6064:0")));
+    QVERIFY(!QFile::exists(csvFile));
+}
+
+void TestCliRecord::configureTpdoThenSamples()
+{
+    QVERIFY(ok({ QStringLiteral("nmt"), canopen(2), QStringLiteral("start") })
+                .contains(QLatin1String("operational")));
+    const QString csvFile = file("configured.csv");
+    const Run r =
+        cli({ QStringLiteral("record"), canopen(2), QStringLiteral("--obj"),
+              QStringLiteral("2103:0,2101:0"), QStringLiteral("--configure-tpdo"),
+              QStringLiteral("2"), QStringLiteral("--event-ms"), QStringLiteral("25"),
+              QStringLiteral("--duration"), QStringLiteral("0.5"), QStringLiteral("-o"), csvFile });
+    QVERIFY2(r.exitCode == 0
+                 || (r.exitCode == 1 && r.err.contains(QLatin1String("samples were lost"))),
+             qPrintable(r.out + r.err));
+    QVERIFY2(r.err.contains(QLatin1String("the PDO configuration of node 2 was changed")),
+             qPrintable(r.err));
+    QVERIFY(r.out.contains(QLatin1String("pdo: 2103:0 from TPDO2 (COB-ID 0x282) bytes 0..3, "
+                                         "every 25 ms")));
+    const auto rec = scope::csv::load(csvFile);
+    QVERIFY2(rec.ok(), qPrintable(rec.error().toString()));
+    QCOMPARE(rec->channels.size(), 2);
+    QVERIFY(rec->channels[0].buffer.size() >= 10);
+    QCOMPARE(rec->channels[0].buffer.value(0), -100000.0);
+    QCOMPARE(rec->channels[1].buffer.value(0), -300.0);
+    // The node keeps the new mapping; a plain --pdo finds it there now.
+    QVERIFY(ok({ QStringLiteral("pdo"), canopen(2) })
+                .contains(QLatin1String("TPDO2 cob 0x282 enabled type 0xff inhibit 0 event 25 ms: "
+                                        "2103:0/32 2101:0/16")));
+}
+
+void TestCliRecord::preoperationalNodeGivesTheReason()
+{
+    QVERIFY(
+        ok({ QStringLiteral("write"), canopen(5), QStringLiteral("1800:5"), QStringLiteral("20") })
+            .isEmpty());
+    QVERIFY(ok({ QStringLiteral("nmt"), canopen(5), QStringLiteral("preop") })
+                .contains(QLatin1String("pre-operational")));
+    const QStringList args = { QStringLiteral("record"), canopen(5),
+                               QStringLiteral("--obj"),  QStringLiteral("6064:0"),
+                               QStringLiteral("--pdo"),  QStringLiteral("--duration"),
+                               QStringLiteral("5"),      QStringLiteral("-o"),
+                               file("preop.csv") };
+    Run r = cli(args);
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains(QLatin1String("no PDO arrived from node 5 within 1.5 s (TPDO1 "
+                                          "(COB-ID 0x185))")),
+             qPrintable(r.err));
+    // The node's heartbeat (1017h = 500 ms) tells its state; the cause and the command to fix it.
+    QVERIFY2(r.err.contains(QLatin1String("node 5 is pre-operational (heartbeat), not "
+                                          "operational: NMT start it (drivebench-cli nmt ")),
+             qPrintable(r.err));
+    QVERIFY(!r.err.contains(QLatin1String("no event timer"))); // it has one
+    QVERIFY(!QFile::exists(file("preop.csv")));
+    QVERIFY(r.ms < 4500); // bounded by the first-PDO wait, not by --duration
+
+    // The stated cause is the real one: started, the same command records.
+    QVERIFY(ok({ QStringLiteral("nmt"), canopen(5), QStringLiteral("start") })
+                .contains(QLatin1String("operational")));
+    r = cli({ QStringLiteral("record"), canopen(5), QStringLiteral("--obj"),
+              QStringLiteral("6064:0"), QStringLiteral("--pdo"), QStringLiteral("--duration"),
+              QStringLiteral("0.3"), QStringLiteral("-o"), file("started.csv") });
+    QVERIFY2(r.exitCode == 0 || r.exitCode == 1, qPrintable(r.err));
+    QVERIFY(QFile::exists(file("started.csv")));
+}
+
+void TestCliRecord::pdoNeedsACanopenUri()
+{
+    Run r = cli({ QStringLiteral("record"), uri(), QStringLiteral("--obj"),
+                  QStringLiteral("6064:0"), QStringLiteral("--pdo"), QStringLiteral("--duration"),
+                  QStringLiteral("0.3"), QStringLiteral("-o"), file("refgo-pdo.csv") });
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QLatin1String("need a canopen+... URI")), qPrintable(r.err));
+    r = cli({ QStringLiteral("record"), canopen(1), QStringLiteral("--obj"),
+              QStringLiteral("6064:0"), QStringLiteral("--event-ms"), QStringLiteral("10"),
+              QStringLiteral("--duration"), QStringLiteral("0.3"), QStringLiteral("-o"),
+              file("x.csv") });
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QLatin1String("--event-ms goes with --configure-tpdo")),
+             qPrintable(r.err));
+    // More than a PDO carries: refused before anything is written.
+    r = cli({ QStringLiteral("record"), canopen(1), QStringLiteral("--obj"),
+              QStringLiteral("6064:0,2102:0,2103:0"), QStringLiteral("--configure-tpdo"),
+              QStringLiteral("2"), QStringLiteral("--duration"), QStringLiteral("0.3"),
+              QStringLiteral("-o"), file("x.csv") });
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(QLatin1String("the objects need 96 bits; a PDO carries at most 64")),
+             qPrintable(r.err));
+    QVERIFY(!r.err.contains(QLatin1String("was changed")));
 }
 
 QTEST_GUILESS_MAIN(TestCliRecord)

@@ -1,8 +1,15 @@
 // Level 4: the scope plot and page offscreen, on synthetic recordings (Recorder::load) and on a
 // FakeConnection for live polling and drops.
+#include "canopen/canopenconnection.h"
+#include "canopen/nmtmaster.h"
+#include "canopen/nodemonitor.h"
+#include "common/protocols.h"
+#include "common/simnodes.h"
 #include "fakeconnection.h"
+#include "resources/builtindescriptions.h"
 #include "scope/csv.h"
 #include "scope/recorder.h"
+#include "transport/canbus.h"
 #include "widgets/scopeanalysisdialog.h"
 #include "widgets/scopechannelmodel.h"
 #include "widgets/scopecursors.h"
@@ -12,6 +19,7 @@
 
 #include <qcustomplot.h>
 
+#include <QComboBox>
 #include <QLabel>
 #include <QMimeData>
 #include <QSignalSpy>
@@ -346,6 +354,82 @@ private slots:
         QVERIFY(page.plot()->graph(1)->data()->size() > 0);
         QVERIFY(page.removeChannel(0));
         QCOMPARE(page.recorder()->channelCount(), 1);
+    }
+
+    void pdoChannelsFromASimulatedNode()
+    {
+        app::SimNodes sim;
+        QVERIFY(sim.create({ { 5 }, {}, {} }).ok());
+        QVERIFY(sim.startSlcan(0).ok());
+        auto made = app::protocolRegistry().create(
+            QStringLiteral("canopen+slcan://127.0.0.1:%1?node=5").arg(sim.slcanPort()));
+        QVERIFY(made.ok());
+        auto *connection = qobject_cast<canopen::CanopenConnection *>(made->get());
+        QVERIFY(connection);
+        connection->setDictionary(
+            resources::builtinDescription(QStringLiteral("drivebench_testnode")).valueOr({}));
+        connection->open();
+        QTRY_VERIFY(connection->isConnected());
+        // The device side, as a PLC would set it up: TPDO1 (6041:0, 6064:0) every 20 ms.
+        QVERIFY(Reply::wait(connection->write({ 0x1800, 5 }, 20)).ok());
+        QVERIFY(connection->nmt()->start(5));
+
+        ScopePage page;
+        page.setConnection(connection);
+        auto *sourceBox = page.findChild<QComboBox *>(QStringLiteral("scopeSource"));
+        QVERIFY(sourceBox && sourceBox->isVisibleTo(&page));
+        page.setChannelSource(ScopePage::ChannelSource::Pdo);
+        QSignalSpy looked(&page, &ScopePage::pdoLookupFinished);
+        page.addPdoChannels({ ObjectAddress(0x6064, 0), ObjectAddress(0x2103, 0) });
+        QVERIFY(looked.wait(5000));
+        QCOMPARE(looked.takeFirst().at(0).toBool(), false); // 2103:0 is in no TPDO
+        QVERIFY2(page.statusText().contains(
+                     QStringLiteral("2103:0 Test integer32 is in no TPDO of node 5")),
+                 qPrintable(page.statusText()));
+        QCOMPARE(page.recorder()->channelCount(), 1);
+        QCOMPARE(page.unmappedObjects(), QList<ObjectAddress> { ObjectAddress(0x2103, 0) });
+        const auto mapping = page.pdoMapping(QStringLiteral("6064:0"));
+        QVERIFY(mapping);
+        QCOMPARE(mapping->cobId, 0x185u);
+        QCOMPARE(mapping->byteOffset, 2);
+        QCOMPARE(mapping->expectedPeriodMs, 20);
+        auto *table = page.findChild<QTableView *>(QStringLiteral("scopeChannels"));
+        QCOMPARE(table->model()->index(0, ScopeChannelModel::Rate).data().toString(),
+                 QStringLiteral("PDO 0x185"));
+
+        // Opt-in: TPDO2 now carries 2103:0 every 20 ms; it becomes a PDO channel.
+        page.mapToTpdo(1, 20);
+        QVERIFY(looked.wait(5000));
+        QCOMPARE(looked.takeFirst().at(0).toBool(), true);
+        QCOMPARE(page.recorder()->channelCount(), 2);
+        QCOMPARE(page.pdoMapping(QStringLiteral("2103:0"))->cobId, 0x285u);
+        QVERIFY(page.unmappedObjects().isEmpty());
+
+        // Recording is passive: samples arrive and the page sends nothing.
+        int sent = 0;
+        connect(connection->bus(), &CanBus::frameSent, this, [&] { ++sent; });
+        page.start();
+        QCOMPARE(page.recorder()->state(), scope::Recorder::State::Recording);
+        QTRY_VERIFY_WITH_TIMEOUT(page.recorder()->buffer(0).size() >= 10
+                                     && page.recorder()->buffer(1).size() >= 10,
+                                 10000);
+        page.stop();
+        QCOMPARE(sent, 0);
+        QCOMPARE(page.recorder()->buffer(0).value(0), 1234.0);
+        QCOMPARE(page.recorder()->buffer(1).value(0), -100000.0);
+        QCOMPARE(page.recorder()->channelInfo(0).name, QStringLiteral("Position actual value"));
+
+        // A pre-operational node sends no PDO: the page says why (from the node's heartbeat).
+        QVERIFY(connection->nmt()->enterPreOperational(5));
+        QTRY_COMPARE(connection->monitor()->state(5), canopen::NmtState::PreOperational);
+        page.start();
+        QTRY_VERIFY_WITH_TIMEOUT(page.statusText().contains(QStringLiteral(
+                                     "node 5 is pre-operational (heartbeat), not operational: "
+                                     "NMT start it")),
+                                 5000);
+        QVERIFY(page.statusText().contains(QStringLiteral("6064:0, 2103:0")));
+        page.stop();
+        connection->close();
     }
 
     void startWithoutDeviceIsRefusedWithAReason()

@@ -1,0 +1,95 @@
+#include "commands_record_pdo.h"
+
+#include "canopen/canopenconnection.h"
+#include "canopen/nodemonitor.h"
+#include "canopen/pdoclient.h"
+
+namespace db::cli {
+
+namespace {
+
+// "TPDO1 (COB-ID 0x181)"
+QString pdoName(const scope::PdoChannelPlanEntry &e)
+{
+    return QStringLiteral("TPDO%1 (COB-ID 0x%2)")
+        .arg(e.tpdoNumber + 1)
+        .arg(e.mapping.cobId, 3, 16, QLatin1Char('0'));
+}
+
+} // namespace
+
+Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnection *connection,
+                                                        const PdoRecordRequest &s,
+                                                        scope::PdoChannelPlan &plan)
+{
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(connection);
+    if (!conn)
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("--pdo and --configure-tpdo need a canopen+... URI"));
+    const ObjectDictionary &dictionary = conn->dictionary();
+    if (s.configureTpdo >= 0) {
+        canopen::PdoClient client(conn->sdo());
+        const auto written = Reply::wait(scope::configureTpdo(
+            &client, conn->node(), s.configureTpdo, s.objects, dictionary, s.eventMs));
+        // InvalidArgument is refused before any write; a device error may come half way.
+        if (!written)
+            return written.error().prefixed(
+                QStringLiteral("configuring TPDO%1 of node %2%3")
+                    .arg(s.configureTpdo + 1)
+                    .arg(conn->node())
+                    .arg(written.error().kind() == Error::Kind::InvalidArgument
+                             ? QString()
+                             : QStringLiteral(" (it may be left disabled)")));
+        c.err << "drivebench-cli: the PDO configuration of node " << conn->node()
+              << " was changed (RAM only, not stored): "
+              << written->value<canopen::PdoConfig>().toString() << Qt::endl;
+    }
+    const auto discovered = Reply::wait(scope::discoverPdoChannels(conn, s.objects));
+    if (!discovered)
+        return discovered.error();
+    plan = discovered->value<scope::PdoChannelPlan>();
+    if (!plan.isComplete())
+        return Error(Error::Kind::InvalidArgument,
+                     plan.missingText(dictionary)
+                         + QStringLiteral("; use --configure-tpdo N to map it (this changes the "
+                                          "device's PDO configuration)"));
+    auto source = std::make_unique<scope::PdoSource>(conn);
+    if (auto added = scope::addPlannedChannels(*source, plan, dictionary, conn->uri().toString());
+        !added)
+        return added.error();
+    for (const scope::PdoChannelPlanEntry &e : std::as_const(plan.found)) {
+        const int size = datatype::byteSize(e.mapping.type);
+        c.out << "pdo: " << e.address.toString() << " from " << pdoName(e) << " bytes "
+              << e.mapping.byteOffset << ".." << e.mapping.byteOffset + size - 1;
+        if (e.mapping.expectedPeriodMs > 0)
+            c.out << ", every " << e.mapping.expectedPeriodMs << " ms";
+        c.out << Qt::endl;
+    }
+    return source;
+}
+
+Error noPdoError(const Context &c, DeviceConnection *connection, const scope::PdoChannelPlan &plan,
+                 int waitedMs)
+{
+    QStringList pdos;
+    for (const scope::PdoChannelPlanEntry &e : plan.found) {
+        if (!pdos.contains(pdoName(e)))
+            pdos.append(pdoName(e));
+    }
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(connection);
+    const canopen::NmtState heard =
+        conn ? conn->monitor()->state(plan.node) : canopen::NmtState::Unknown;
+    QString text = QStringLiteral("no PDO arrived from node %1 within %2 s (%3): %4")
+                       .arg(plan.node)
+                       .arg(waitedMs / 1000.0)
+                       .arg(pdos.join(QStringLiteral(", ")), scope::silentPdoCause(plan, heard));
+    if (heard != canopen::NmtState::Operational)
+        text += QStringLiteral(" (drivebench-cli nmt %1 start; record never changes the NMT "
+                               "state)")
+                    .arg(c.args.value(0));
+    else
+        text += QStringLiteral(" (--configure-tpdo N --event-ms MS makes it cyclic)");
+    return Error(Error::Kind::Timeout, text);
+}
+
+} // namespace db::cli

@@ -1,0 +1,357 @@
+// ScopePage: channel sources (host polling, passive CANopen PDOs) and the opt-in TPDO mapping.
+#include "scopepage.h"
+
+#include "canopen/canopenconnection.h"
+#include "canopen/nodemonitor.h"
+#include "canopen/pdoclient.h"
+#include "scope/pdodiscovery.h"
+#include "scope/recorder.h"
+#include "scopechannelmodel.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QIdentityProxyModel>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTimer>
+
+#include <functional>
+
+namespace db::widgets {
+
+namespace {
+
+constexpr int kDefaultEventMs = 10; // "Map to TPDO…" when the rate box says "max rate"
+// After Start, PDO channels without a frame after this time get the probable cause shown.
+constexpr int kFirstPdoMs = 1500;
+
+// The channel table: the page's ScopeChannelModel, with the PDO of PDO channels in the rate
+// column (not editable there: the device decides when a PDO is sent).
+class ChannelTableModel : public QIdentityProxyModel
+{
+public:
+    ChannelTableModel(ScopeChannelModel *model, std::function<QString(int, bool)> note,
+                      QObject *parent)
+        : QIdentityProxyModel(parent)
+        , m_note(std::move(note))
+    {
+        setSourceModel(model);
+    }
+
+    QVariant data(const QModelIndex &index, int role) const override
+    {
+        if (index.column() == ScopeChannelModel::Rate
+            && (role == Qt::DisplayRole || role == Qt::ToolTipRole)) {
+            const QString note = m_note(index.row(), role == Qt::ToolTipRole);
+            if (!note.isEmpty())
+                return note;
+        }
+        return QIdentityProxyModel::data(index, role);
+    }
+
+    Qt::ItemFlags flags(const QModelIndex &index) const override
+    {
+        Qt::ItemFlags f = QIdentityProxyModel::flags(index);
+        if (index.column() == ScopeChannelModel::Rate && !m_note(index.row(), false).isEmpty())
+            f &= ~Qt::ItemIsEditable;
+        return f;
+    }
+
+private:
+    std::function<QString(int, bool)> m_note;
+};
+
+} // namespace
+
+QAbstractItemModel *ScopePage::createTableModel()
+{
+    return new ChannelTableModel(
+        m_model,
+        [this](int row, bool tooltip) -> QString {
+            if (row < 0 || row >= m_recorder->channelCount())
+                return {};
+            const QString id = m_recorder->channelInfo(row).id;
+            const auto found = m_pdoMappings.constFind(id);
+            if (found == m_pdoMappings.cend())
+                return {};
+            const scope::PdoSource::Mapping *it = &found->mapping;
+            const QString cob = QStringLiteral("0x%1").arg(it->cobId, 3, 16, QLatin1Char('0'));
+            if (!tooltip)
+                return tr("PDO %1").arg(cob);
+            const int size = datatype::byteSize(it->type);
+            QString text = tr("Sampled passively from the PDO with COB-ID %1, bytes %2..%3")
+                               .arg(cob)
+                               .arg(it->byteOffset)
+                               .arg(it->byteOffset + size - 1);
+            if (it->expectedPeriodMs > 0)
+                text += tr(", expected every %1 ms (later frames count as lost samples)")
+                            .arg(it->expectedPeriodMs);
+            return text;
+        },
+        this);
+}
+
+QWidget *ScopePage::createSourceRow(QWidget *parent)
+{
+    auto *row = new QWidget(parent);
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_sourceLabel = new QLabel(tr("Source"), row);
+    m_sourceBox = new QComboBox(row);
+    m_sourceBox->setObjectName(QStringLiteral("scopeSource"));
+    m_sourceBox->addItems({ tr("Polling (SDO)"), tr("PDO (passive)") });
+    m_sourceBox->setToolTip(
+        tr("Polling: the host reads each object by SDO at the rate above.\nPDO (passive): "
+           "samples the TPDOs that already carry the objects; sends nothing and changes neither "
+           "the PDO configuration nor the NMT state (the node must be operational)."));
+    m_mapButton = new QPushButton(tr("Map to TPDO…"), row);
+    m_mapButton->setObjectName(QStringLiteral("scopeMapTpdo"));
+    m_mapButton->setToolTip(tr("Map the objects that are in no TPDO into one (changes the "
+                               "device's PDO configuration; asks first)"));
+    layout->addWidget(m_sourceLabel);
+    layout->addWidget(m_sourceBox, 1);
+    layout->addWidget(m_mapButton);
+    connect(m_mapButton, &QPushButton::clicked, this, &ScopePage::promptMapToTpdo);
+    return row;
+}
+
+void ScopePage::setChannelSource(ChannelSource source)
+{
+    m_sourceBox->setCurrentIndex(int(source));
+}
+
+ScopePage::ChannelSource ScopePage::channelSource() const
+{
+    const bool canopen = m_connection && m_connection->protocolKey() == u"canopen";
+    return canopen ? ChannelSource(m_sourceBox->currentIndex()) : ChannelSource::Polling;
+}
+
+std::optional<scope::PdoSource::Mapping> ScopePage::pdoMapping(const QString &id) const
+{
+    const auto it = m_pdoMappings.constFind(id);
+    return it == m_pdoMappings.cend() ? std::nullopt : std::make_optional(it->mapping);
+}
+
+void ScopePage::addPdoChannels(const QList<ObjectAddress> &addresses)
+{
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    QString refused;
+    if (m_recorder->isRunning())
+        refused = tr("stop recording to change the channels");
+    else if (!conn || !conn->isConnected())
+        refused = tr("PDO channels need a connected CANopen device");
+    else if (m_pdoRequest)
+        refused = tr("wait for the PDO configuration being read");
+    if (!refused.isEmpty()) {
+        showMessage(refused, true);
+        Q_EMIT pdoLookupFinished(false);
+        return;
+    }
+    showMessage(tr("Reading the PDO configuration of node %1…").arg(conn->node()), false);
+    Reply *reply = scope::discoverPdoChannels(conn, addresses);
+    m_pdoRequest = reply;
+    connect(reply, &Reply::finished, this, [this, reply] { onPdoPlan(reply); });
+    updateControls();
+}
+
+void ScopePage::onPdoPlan(Reply *reply)
+{
+    reply->deleteLater();
+    m_pdoRequest = nullptr;
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    if (!reply->ok() || !conn || m_recorder->isRunning()) {
+        showMessage(reply->ok() ? tr("the connection changed or recording started")
+                                : reply->error().message(),
+                    true);
+        updateControls();
+        Q_EMIT pdoLookupFinished(false);
+        return;
+    }
+    const auto plan = reply->value().value<scope::PdoChannelPlan>();
+    if (!m_pdoSource)
+        m_pdoSource = new scope::PdoSource(conn, this);
+    QStringList problems;
+    for (const scope::PdoChannelPlanEntry &entry : plan.found) {
+        const QString id = entry.address.toString();
+        bool present = false;
+        for (int i = 0; i < m_recorder->channelCount(); ++i)
+            present = present || m_recorder->channelInfo(i).id == id;
+        if (present) {
+            problems.append(tr("%1 is already recorded").arg(id));
+            continue;
+        }
+        scope::PdoChannelPlan one = plan;
+        one.found = { entry };
+        const auto added = scope::addPlannedChannels(*m_pdoSource, one, conn->dictionary(),
+                                                     conn->uri().toString());
+        if (!added) {
+            problems.append(added.error().message());
+            continue;
+        }
+        m_pdoMappings.insert(id, entry);
+        m_recorder->addChannel(m_pdoSource, added->constFirst());
+    }
+    m_unmapped = plan.missing;
+    m_tpdos = plan.tpdos;
+    // Offer the first disabled TPDO for mapping, else the last one the node has.
+    m_proposedTpdo = plan.tpdos.isEmpty() ? 0 : plan.tpdos.constLast().number;
+    for (const canopen::PdoConfig &c : plan.tpdos) {
+        if (!c.isEnabled() || c.entries.isEmpty()) {
+            m_proposedTpdo = c.number;
+            break;
+        }
+    }
+    if (!plan.missing.isEmpty())
+        problems.append(plan.missingText(conn->dictionary())
+                        + tr(" (use \"Map to TPDO…\" to map it)"));
+    if (problems.isEmpty())
+        showMessage(tr("%n PDO channel(s) added; press Start to record (node %1 must be "
+                       "operational).",
+                       nullptr, int(plan.found.size()))
+                        .arg(conn->node()),
+                    false);
+    else
+        showMessage(problems.join(QStringLiteral("; ")), true);
+    updateControls();
+    Q_EMIT pdoLookupFinished(problems.isEmpty());
+}
+
+void ScopePage::promptMapToTpdo()
+{
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    if (!conn || m_unmapped.isEmpty())
+        return;
+    bool ok = false;
+    const int number = QInputDialog::getInt(this, tr("Map to TPDO"),
+                                            tr("TPDO number of node %1:").arg(conn->node()),
+                                            m_proposedTpdo + 1, 1, 4, 1, &ok);
+    if (!ok)
+        return;
+    const int eventMs = m_rateBox->value() > 0 ? m_rateBox->value() : kDefaultEventMs;
+    QStringList names;
+    for (ObjectAddress a : std::as_const(m_unmapped))
+        names.append(a.toString());
+    const auto answer = QMessageBox::warning(
+        this, tr("Change the PDO configuration?"),
+        tr("This changes the PDO configuration of node %1: TPDO%2 will carry %3, sent every %4 "
+           "ms. Whatever TPDO%2 carried before is replaced (in the device's RAM; nothing is "
+           "stored). A PLC or other master using TPDO%2 will see the change.\n\nChange it?")
+            .arg(conn->node())
+            .arg(number)
+            .arg(names.join(QStringLiteral(", ")))
+            .arg(eventMs),
+        QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Yes)
+        mapToTpdo(number - 1, eventMs);
+}
+
+void ScopePage::mapToTpdo(int tpdoNumber, int eventMs)
+{
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    if (!conn || m_unmapped.isEmpty() || m_pdoRequest || m_recorder->isRunning()) {
+        showMessage(tr("nothing to map (add PDO channels first; stop recording)"), true);
+        Q_EMIT pdoLookupFinished(false);
+        return;
+    }
+    const QList<ObjectAddress> objects = m_unmapped;
+    auto *client = new canopen::PdoClient(conn->sdo(), this);
+    Reply *reply = scope::configureTpdo(client, conn->node(), tpdoNumber, objects,
+                                        conn->dictionary(), eventMs);
+    client->setParent(reply);
+    m_pdoRequest = reply;
+    showMessage(tr("Writing TPDO%1 of node %2…").arg(tpdoNumber + 1).arg(conn->node()), false);
+    connect(reply, &Reply::finished, this, [this, reply, objects, tpdoNumber] {
+        reply->deleteLater();
+        m_pdoRequest = nullptr;
+        if (!reply->ok()) {
+            showMessage(reply->error()
+                            .prefixed(tr("TPDO%1 was not changed completely (it may be left "
+                                         "disabled)")
+                                          .arg(tpdoNumber + 1))
+                            .message(),
+                        true);
+            updateControls();
+            Q_EMIT pdoLookupFinished(false);
+            return;
+        }
+        addPdoChannels(objects); // read back what the device now sends
+    });
+    updateControls();
+}
+
+void ScopePage::watchPdoArrival()
+{
+    const int run = ++m_pdoWatch;
+    if (m_pdoMappings.isEmpty() || !m_recorder->isRunning())
+        return;
+    QTimer::singleShot(kFirstPdoMs, this, [this, run] {
+        auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+        if (run != m_pdoWatch || !m_recorder->isRunning() || !conn)
+            return;
+        scope::PdoChannelPlan silent;
+        silent.node = conn->node();
+        silent.tpdos = m_tpdos;
+        QStringList ids;
+        for (int i = 0; i < m_recorder->channelCount(); ++i) {
+            const QString id = m_recorder->channelInfo(i).id;
+            const auto it = m_pdoMappings.constFind(id);
+            if (it != m_pdoMappings.cend() && m_recorder->buffer(i).size() == 0
+                && m_recorder->buffer(i).lostAtSource() == 0) {
+                silent.found.append(*it);
+                ids.append(id);
+            }
+        }
+        if (silent.found.isEmpty())
+            return;
+        showMessage(tr("No PDO within %1 s for %2: %3 (the scope never changes the NMT state).")
+                        .arg(kFirstPdoMs / 1000.0)
+                        .arg(ids.join(QStringLiteral(", ")),
+                             scope::silentPdoCause(silent, conn->monitor()->state(conn->node()))),
+                    true);
+    });
+}
+
+Result<void> ScopePage::rebuildSource()
+{
+    // Every channel of the page, with its scaling, on the current connection: polling channels
+    // at their rate, PDO channels from their PDO. The recorder's channel order is kept.
+    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    auto *polling = new scope::PollingSource(m_connection, this);
+    auto *pdo = conn ? new scope::PdoSource(conn, this) : nullptr;
+    QList<std::pair<scope::TraceSource *, int>> order;
+    for (int i = 0; i < m_recorder->channelCount(); ++i) {
+        scope::ChannelInfo info = m_recorder->channelInfo(i);
+        info.device = m_connection->uri().toString();
+        Result<int> added = 0;
+        const std::optional<scope::PdoSource::Mapping> mapping = pdoMapping(info.id);
+        if (mapping && !pdo) {
+            added =
+                Error(Error::Kind::InvalidArgument, tr("a PDO channel needs a CANopen connection"));
+        } else if (mapping) {
+            info.sourceRateMs = mapping->expectedPeriodMs;
+            added = pdo->addChannel(info, *mapping);
+        } else {
+            info.sourceRateMs = m_model->rateMs(info.id, info.sourceRateMs);
+            added = polling->addChannel(info);
+        }
+        if (!added) {
+            delete polling;
+            delete pdo;
+            return added.error().prefixed(info.label());
+        }
+        order.append({ mapping ? static_cast<scope::TraceSource *>(pdo) : polling, *added });
+    }
+    m_recorder->removeAllChannels();
+    delete m_source;
+    delete m_pdoSource;
+    m_source = polling;
+    m_pdoSource = pdo;
+    for (const auto &[source, index] : std::as_const(order))
+        m_recorder->addChannel(source, index);
+    return {};
+}
+
+} // namespace db::widgets
