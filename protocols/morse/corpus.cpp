@@ -49,6 +49,20 @@ std::vector<CorpusCase> makeCorpus(const CorpusCondition &cond, int count, unsig
     return out;
 }
 
+namespace {
+
+// Message periods between starts[0] and t, each period with its own (jittered) length.
+double periodsSent(const std::vector<double> &starts, double t)
+{
+    for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+        if (t < starts[k + 1])
+            return double(k) + std::max(0.0, t - starts[k]) / (starts[k + 1] - starts[k]);
+    }
+    return double(starts.size()); // not reached: the recording ends before the last start
+}
+
+} // namespace
+
 CaseOutcome runCase(const CorpusCase &c, double chunkSeconds)
 {
     const Signal sig = generateSignal(c.signal);
@@ -66,9 +80,11 @@ CaseOutcome runCase(const CorpusCase &c, double chunkSeconds)
         if (decoder.confident()) {
             if (decoder.ip().toString() != truth)
                 out.wrongConfident = true;
-            if (out.repetitionsToConfident < 0.0)
-                out.repetitionsToConfident =
-                    (decoder.slicer().lastTime() - sig.firstMessageStart) / sig.messagePeriod;
+            if (out.repetitionsToConfident < 0.0) {
+                const double t = decoder.slicer().lastTime();
+                out.nominalRepetitionsToConfident = (t - sig.firstMessageStart) / sig.messagePeriod;
+                out.repetitionsToConfident = periodsSent(sig.messageStarts, t);
+            }
         }
     }
     decoder.finish();

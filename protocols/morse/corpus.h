@@ -40,8 +40,13 @@ struct CaseOutcome
     bool confident = false; // final confidence >= threshold
     bool wrongConfident = false; // confident in a wrong IP at any time
     // Time from the start of the first complete message to the first confident IP, in
-    // message periods; < 0 when never confident.
+    // message periods as sent (k + the fraction of the k-th period after the first complete
+    // message, with the jittered lengths of the messages): <= 2 is "before the third message
+    // began"; < 0 when never confident.
     double repetitionsToConfident = -1.0;
+    // The same in nominal periods (unjittered message length): jitter that stretches the first
+    // two messages pushes their end past 2.0 here.
+    double nominalRepetitionsToConfident = -1.0;
     Reason reason = Reason::None;
     QString decoded;
     QString text; // decoded text, for reports

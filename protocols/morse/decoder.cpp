@@ -19,6 +19,7 @@ constexpr std::size_t kMinIntervals = 12; // before that, no unit estimate is tr
 constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
 constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
+constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one message
 
 // Character-by-character reading of a stretch the grammar rejected (other text, status).
 QString hardText(const StretchInput &s)
@@ -142,8 +143,33 @@ void Decoder::update(bool final)
     IpVoter voter;
     int complete = 0;
     QString corrected;
-    for (const StretchInput &stretch : splitStretches(m_symbols.elements)) {
-        const StretchParse parse = cachedParse(stretch);
+    const std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
+    for (std::size_t i = 0; i < stretches.size(); ++i) {
+        StretchInput stretch = stretches[i];
+        StretchParse parse = cachedParse(stretch, ParseMode::Strict);
+        // A closed stretch the grammar rejects: first the word gap after it may be noise inside
+        // the message (re-read joined with what follows), then its damaged characters are
+        // skipped at the ends (ParseMode::Salvage).
+        StretchInput joined = stretch;
+        for (std::size_t j = i + 1; !parse.ok && !joined.openEnd && joined.gapAfter > 0.0
+             && j < stretches.size() && j <= i + kMaxJoins;
+             ++j) {
+            joined = joinStretches(joined, stretches[j]);
+            const StretchParse p = cachedParse(joined, ParseMode::Strict);
+            if (p.ok) {
+                stretch = joined;
+                parse = p;
+                i = j;
+            }
+        }
+        if (!parse.ok && !stretch.openEnd)
+            parse = cachedParse(stretch, ParseMode::Salvage);
+        qCDebug(lcMorse) << "stretch" << stretch.start << stretch.marks.size() << "ok" << parse.ok
+                         << parse.text
+                         << QList<int>(parse.observation.octets.begin(),
+                                       parse.observation.octets.end())
+                         << QList<double>(parse.observation.weight.begin(),
+                                          parse.observation.weight.end());
         if (!corrected.isEmpty())
             corrected += QLatin1Char(' ');
         corrected += parse.ok ? parse.text : hardText(stretch);
@@ -172,14 +198,14 @@ void Decoder::update(bool final)
     }
 }
 
-StretchParse Decoder::cachedParse(const StretchInput &stretch)
+StretchParse Decoder::cachedParse(const StretchInput &stretch, ParseMode mode)
 {
     // Closed stretches do not change until the model does (then the cache is cleared).
-    const auto key = std::make_tuple(stretch.start, stretch.marks.size(), stretch.openEnd);
+    const auto key = std::make_tuple(stretch.start, stretch.marks.size(), stretch.openEnd, mode);
     const auto it = m_cache.find(key);
     if (it != m_cache.end())
         return it->second;
-    return m_cache[key] = parseStretch(stretch, m_model);
+    return m_cache[key] = parseStretch(stretch, m_model, mode);
 }
 
 DecoderState Decoder::state() const

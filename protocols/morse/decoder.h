@@ -99,7 +99,7 @@ public:
 private:
     void update(bool final);
     void event(DecoderEvent::Kind kind, QString detail = {});
-    StretchParse cachedParse(const StretchInput &stretch);
+    StretchParse cachedParse(const StretchInput &stretch, ParseMode mode);
 
     DecoderOptions m_options;
     LevelSlicer m_slicer;
@@ -116,7 +116,7 @@ private:
     bool m_wasIdle = false;
     bool m_closedMessage = false;
     double m_confidentAt = -1.0;
-    std::map<std::tuple<double, std::size_t, bool>, StretchParse> m_cache; // by stretch
+    std::map<std::tuple<double, std::size_t, bool, ParseMode>, StretchParse> m_cache; // by stretch
     ElementModel m_model;
     double m_modelUnit = 0.0;
     double m_modelDuty = 0.0;

@@ -81,7 +81,13 @@ void IpVoter::add(const IpObservation &obs)
 {
     for (std::size_t i = 0; i < 4; ++i) {
         if (obs.octets[i] >= 0) {
-            m_votes[i][obs.octets[i]] += obs.weight[i];
+            Votes &v = m_votes[i][obs.octets[i]];
+            v.weight += obs.weight[i];
+            v.perDigit = v.perDigit && obs.digits[i] > 0
+                && (v.digitCount == 0 || v.digitCount == obs.digits[i]);
+            v.digitCount = obs.digits[i];
+            for (std::size_t d = 0; d < 3; ++d)
+                v.digits[d] += obs.digitWeight[i][d];
             ++m_readings[i];
         }
     }
@@ -97,14 +103,22 @@ IpEstimate IpVoter::estimate() const
     for (std::size_t i = 0; i < 4; ++i) {
         double total = 0;
         double best = 0;
+        double support = 0;
         for (const auto &[value, votes] : m_votes[i]) {
-            total += votes;
-            if (votes > best) {
-                best = votes;
+            total += votes.weight;
+            if (votes.weight > best) {
+                best = votes.weight;
                 e.octets[i] = value;
+                support = best;
+                if (votes.perDigit) {
+                    const auto n = static_cast<std::ptrdiff_t>(votes.digitCount);
+                    const double least =
+                        *std::min_element(votes.digits.begin(), votes.digits.begin() + n);
+                    support = std::max(best, least);
+                }
             }
         }
-        const double lead = best - (total - best);
+        const double lead = support - (total - best);
         const double c =
             m_readings[i] >= 2 ? std::clamp(lead / kLead, 0.0, 1.0) : std::min(kSingle, best / 2.0);
         confidence = std::min(confidence, c);

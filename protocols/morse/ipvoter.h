@@ -20,6 +20,10 @@ struct IpObservation
     // Vote weight of each octet, (0, IpVoter::kMaxWeight]: 1 for a plain reading, less when an
     // element of it was close to the dit/dah boundary (see messageparser.h).
     std::array<double, 4> weight { 1.0, 1.0, 1.0, 1.0 };
+    // From the sequence decoder: the weight of each digit of each octet (weight is their
+    // least); digits[k] == 0 when not known.
+    std::array<std::array<double, 3>, 4> digitWeight {};
+    std::array<int, 4> digits {};
 };
 
 // Parses decoded text into observations. The text is split into stretches at ':' (end of a
@@ -41,7 +45,10 @@ std::vector<IpObservation> parseIpObservations(const QString &text);
 // With plain readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. A clear
 // reading (weight up to kMaxWeight) outvotes one with an element at the dit/dah boundary
 // (small weight), so that two readings can already be confident when they disagree only
-// where one of them was unsure. The IP confidence is the lowest octet confidence; kConfident
+// where one of them was unsure. Readings that agree and carry digit weights support their value
+// digit by digit: the least over the digits of the summed digit weights (two readings each
+// unsure at a different digit confirm each other's unsure digit). The IP confidence is the
+// lowest octet confidence; kConfident
 // (0.75) is the manual's "two identical texts in a row" made per octet and weighted.
 class IpVoter
 {
@@ -56,7 +63,14 @@ public:
     int observations() const { return m_count; }
 
 private:
-    std::array<std::map<int, double>, 4> m_votes; // octet value -> summed weight
+    struct Votes
+    {
+        double weight = 0.0; // summed
+        std::array<double, 3> digits {}; // summed digit weights
+        int digitCount = 0; // digits of the readings, 0 before the first
+        bool perDigit = true; // every reading carried digit weights for as many digits
+    };
+    std::array<std::map<int, Votes>, 4> m_votes; // by octet value
     std::vector<std::array<int, 4>> m_complete;
     std::array<int, 4> m_readings {};
     int m_count = 0;

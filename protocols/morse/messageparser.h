@@ -41,6 +41,19 @@ struct StretchInput
     bool openStart = false; // the recording began inside this stretch
     bool openEnd = false; // the stretch is still arriving
     bool firstComplete = false; // with openStart: the first mark begins a character
+    double gapAfter = 0.0; // units of the word gap that closed the stretch; 0: none (long mark)
+};
+
+// How much of a stretch the grammar must explain.
+enum class ParseMode {
+    // Every mark, from "MC+IP" (or, with openStart, from the cut) to ':' (or, with openEnd,
+    // to the last complete character).
+    Strict,
+    // Salvage for a closed stretch that Strict rejects (noise corrupted a character beyond
+    // one lost element): the parse may skip whole characters at the start and at the end, at
+    // kSkipCost per mark. Octets are still reported only where their position in the message
+    // is anchored: counted from a prefix character ("IP" read) or back from ':'.
+    Salvage,
 };
 
 struct StretchParse
@@ -64,7 +77,16 @@ ElementModel estimateModel(const std::vector<Element> &timeline, double samplePe
 // Parses one stretch. Octets whose digits were all seen get a weight margin / 4 nats, in
 // [0.05, IpVoter::kMaxWeight], where margin is the least cost difference between a digit and its
 // nearest rival reading (another digit or '+') on the same marks: small when an element was
-// close to the dit/dah boundary. A digit repaired by a lost-element edit counts half.
-StretchParse parseStretch(const StretchInput &in, const ElementModel &model);
+// close to the dit/dah boundary. A digit repaired by a lost-element edit counts half. An octet
+// whose position in the message is not anchored (read after a cut start, in a stretch that does
+// not reach ':') is not reported.
+StretchParse parseStretch(const StretchInput &in, const ElementModel &model,
+                          ParseMode mode = ParseMode::Strict);
+
+// `a` followed by `b` as one stretch, the word gap between them (a.gapAfter) read as an
+// ordinary gap. A word gap never occurs inside a message; one that does is noise (a mark lost
+// between two gaps, which then merge), so a closed stretch the grammar rejects is re-read
+// joined with the next one. Requires a.gapAfter > 0.
+StretchInput joinStretches(const StretchInput &a, const StretchInput &b);
 
 } // namespace db::morse

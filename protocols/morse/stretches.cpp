@@ -44,6 +44,7 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
             endsInLetterGap = false;
             break;
         case ElementKind::WordGap:
+            cur.gapAfter = e.units;
             close(false);
             break;
         case ElementKind::IntraGap:
@@ -62,6 +63,17 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
         }
     }
     close(true);
+    return out;
+}
+
+StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
+{
+    StretchInput out = a;
+    out.gaps.push_back(a.gapAfter);
+    out.marks.insert(out.marks.end(), b.marks.begin(), b.marks.end());
+    out.gaps.insert(out.gaps.end(), b.gaps.begin(), b.gaps.end());
+    out.openEnd = b.openEnd;
+    out.gapAfter = b.gapAfter;
     return out;
 }
 

@@ -146,6 +146,38 @@ private slots:
         voter.add(a);
         QVERIFY(voter.estimate().confidence >= IpVoter::kConfident); // 3:1
     }
+
+    // Two agreeing readings of "168", each unsure at a different digit: by octet weight
+    // (0.3 + 0.3) not confident, digit by digit (1.5 + 0.3 at the least) they are.
+    void votingDigitByDigit()
+    {
+        IpObservation first;
+        first.octets = { 10, 168, 0, 1 };
+        first.weight = { 1.5, 0.3, 1.5, 1.5 };
+        first.digitWeight = {
+            { { 1.5, 1.5, 0 }, { 0.3, 1.5, 1.5 }, { 1.5, 0, 0 }, { 1.5, 0, 0 } }
+        };
+        first.digits = { 2, 3, 1, 1 };
+        IpObservation second = first;
+        second.digitWeight[1] = { 1.5, 1.5, 0.3 };
+        IpVoter voter;
+        voter.add(first);
+        voter.add(second);
+        QVERIFY(voter.estimate().confidence >= IpVoter::kConfident);
+        // The same weights without digit weights (text-parsed readings): not confident.
+        first.digits = { 0, 0, 0, 0 };
+        second.digits = first.digits;
+        IpVoter plain;
+        plain.add(first);
+        plain.add(second);
+        QVERIFY(plain.estimate().confidence < IpVoter::kConfident);
+        // Unsure at the same digit both times: not confident either.
+        IpVoter same;
+        first.digits = { 2, 3, 1, 1 };
+        same.add(first);
+        same.add(first);
+        QVERIFY(same.estimate().confidence < IpVoter::kConfident);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstMorseCode)

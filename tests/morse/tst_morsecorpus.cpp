@@ -7,10 +7,11 @@
 // The rows assert the targets of issue 7: 100 % exact on clean signals, >= 99 % exact with
 // +-30 % jitter and noise at 6 dB, and a confident IP within two repetitions (asserted as
 // >= 99 % of the cases confident no later than two message periods after the first complete
-// message began). Where the decoder does not reach a target yet, the check is marked
-// QEXPECT_FAIL with the measured figure, so the gap stays visible (XFAIL) and turns into a
-// failure (XPASS) once it is closed. Other conditions (drift, duty error) have no target in
-// the issue: they assert only that no case is ever confident in a wrong address.
+// message began, periods counted as sent, i.e. before the third message begins: with jitter the
+// first two messages can last longer than two nominal periods). Where the decoder does not reach a
+// target yet, the check is marked QEXPECT_FAIL with the measured figure, so the gap stays visible
+// (XFAIL) and turns into a failure (XPASS) once it is closed. Other conditions (drift, duty error)
+// have no target in the issue: they assert only that no case is ever confident in a wrong address.
 //
 // Decodability (CorpusCondition::minSamplesPerUnit): a dit shorter than a frame cannot be told
 // from its gaps (at 15 fps a 60 ms dit is 0.9 frames), so the corpus draws dits of at least
@@ -51,11 +52,10 @@ private slots:
         constexpr double kNone = -1.0;
         row("clean", { {}, 0.0, kInf, 0.0, 0.0, 0.0, 2.0 }, 60, 1.0, 0.99);
         row("jitter 30% + noise 6 dB", { {}, 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 }, 100, 0.99, 0.99,
-            "confident within two repetitions: 90 % measured (seed 20240601)");
-        row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
-            "confident within two repetitions: 96 % measured (seed 20240601)");
+            "confident within two repetitions: 97 % measured (seed 20240601)");
+        row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
         row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
-            "confident within two repetitions: 92 % measured (seed 20240601)");
+            "confident within two repetitions: 96 % measured (seed 20240601)");
         row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, kNone,
             kNone);
         row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, kNone, kNone);

@@ -1,6 +1,8 @@
 // The decoder on generated signals: the spec example (movingcap.md 2.2), streaming partial
 // results and events, and the reasons given when nothing can be decoded.
 #include "morse/decoder.h"
+#include "morse/messageparser.h"
+#include "morse/morsecode.h"
 #include "morse/signalgenerator.h"
 
 #include <QTest>
@@ -19,6 +21,32 @@ SignalOptions specSignal(double rate, double unit)
     o.startOffset = 0.37;
     return o;
 }
+
+// A stretch with the nominal ITU lengths of `text` (units), closed at both ends.
+StretchInput nominalStretch(const QString &text)
+{
+    StretchInput s;
+    for (QChar c : text) {
+        for (QChar e : codeFor(c)) {
+            s.marks.push_back(e == QLatin1Char('-') ? 3.0 : 1.0);
+            s.gaps.push_back(1.0);
+        }
+        s.gaps.back() = 3.0;
+    }
+    s.gaps.pop_back();
+    return s;
+}
+
+// The first mark of character `index` of `text` in nominalStretch(text).
+std::size_t markOf(const QString &text, int index)
+{
+    std::size_t at = 0;
+    for (int i = 0; i < index; ++i)
+        at += static_cast<std::size_t>(codeFor(text[i]).size());
+    return at;
+}
+
+const std::array<int, 4> kSpecIp { 192, 168, 2, 150 };
 
 Reason reasonOf(const std::vector<Sample> &samples)
 {
@@ -161,6 +189,78 @@ private slots:
         o.repetitions = 4;
         const Signal sig = generateSignal(o);
         QCOMPARE(reasonOf(sig.samples), Reason::NoValidIp);
+    }
+
+    // Noise that corrupts a character beyond one edit: Strict rejects the stretch, Salvage
+    // skips the damaged header and still reads all four octets (anchored by the 'P').
+    void salvageSkipsDamagedHeader()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+150:");
+        StretchInput s = nominalStretch(text);
+        s.marks[markOf(text, 3)] = 9.0; // 'I': a mark far longer than any nominal
+        const ElementModel model;
+        QVERIFY(!parseStretch(s, model).ok);
+        const StretchParse p = parseStretch(s, model, ParseMode::Salvage);
+        QVERIFY(p.ok);
+        QCOMPARE(p.observation.octets, kSpecIp);
+        QVERIFY2(p.text.endsWith(QLatin1String("P192+168+2+150:")), qPrintable(p.text));
+    }
+
+    // Status text (movingcap.md 2.2: the LED sends other text too) never salvages into octets.
+    void salvageIgnoresStatusText()
+    {
+        const StretchInput s = nominalStretch(QStringLiteral("ERR+5:"));
+        QVERIFY(!parseStretch(s, ElementModel()).ok);
+        QVERIFY(!parseStretch(s, ElementModel(), ParseMode::Salvage).ok);
+    }
+
+    // The last dit of '6' lost: its gaps merge into 5.5 units, a word gap inside the message.
+    // The two halves are read as one stretch again.
+    void joinAcrossSpuriousWordGap()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+150:");
+        const StretchInput full = nominalStretch(text);
+        const std::size_t lost = markOf(text, 11) - 1; // last mark of the '6' in 168
+        StretchInput a;
+        a.marks.assign(full.marks.begin(), full.marks.begin() + std::ptrdiff_t(lost));
+        a.gaps.assign(full.gaps.begin(), full.gaps.begin() + std::ptrdiff_t(lost - 1));
+        a.gapAfter = 5.5;
+        StretchInput b;
+        b.marks.assign(full.marks.begin() + std::ptrdiff_t(lost + 1), full.marks.end());
+        b.gaps.assign(full.gaps.begin() + std::ptrdiff_t(lost + 1), full.gaps.end());
+        const ElementModel model;
+        QVERIFY(!parseStretch(a, model).ok);
+        const StretchParse p = parseStretch(joinStretches(a, b), model);
+        QVERIFY(p.ok);
+        QCOMPARE(p.observation.octets, kSpecIp);
+        QVERIFY(p.observation.weight[1] <= 0.5); // the repaired octet counts half at most
+    }
+
+    // A noise dip splits the first dah of the '9' in 192: read as one mark with an edit.
+    void insertedElementIsRepaired()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+150:");
+        StretchInput s = nominalStretch(text);
+        const std::size_t at = markOf(text, 6);
+        s.marks[at] = 1.2;
+        s.marks.insert(s.marks.begin() + std::ptrdiff_t(at) + 1, 1.2);
+        s.gaps.insert(s.gaps.begin() + std::ptrdiff_t(at), 0.6);
+        const StretchParse p = parseStretch(s, ElementModel());
+        QVERIFY(p.ok);
+        QCOMPARE(p.observation.octets, kSpecIp);
+        QVERIFY(p.observation.weight[0] <= 0.5);
+    }
+
+    // Cut at both ends ("4+34+" of some message): which octet "34" is, is unknown.
+    void unanchoredOctetsAreNotReported()
+    {
+        StretchInput s = nominalStretch(QStringLiteral("4+34+"));
+        s.openStart = true;
+        s.firstComplete = true;
+        s.openEnd = true;
+        const StretchParse p = parseStretch(s, ElementModel());
+        QVERIFY(p.ok);
+        QCOMPARE(p.observation.octets, (std::array<int, 4> { -1, -1, -1, -1 }));
     }
 
     void otherTextIsTolerated()

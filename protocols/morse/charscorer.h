@@ -1,0 +1,192 @@
+// Internal to protocols/morse (messageparser.cpp): the characters of the message grammar,
+// their nominal ITU patterns and the cost of reading a character on measured lengths.
+#pragma once
+
+#include "messageparser.h"
+#include "morsecode.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace db::morse::detail {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kHuber = 2.0; // sigmas
+constexpr double kEditCost = 6.0; // nats: a lost element is rarer than a 3-sigma deviation
+
+// The characters of the grammar: the prefix, the digits, the separator and the end mark.
+constexpr std::array kChars { 'M', 'C', '+', 'I', 'P', '0', '1', '2',
+                              '3', '4', '5', '6', '7', '8', '9', ':' };
+constexpr int kPlus = 2;
+constexpr int kDigit0 = 5;
+constexpr int kColon = 15;
+
+// ITU codes of kChars, looked up once.
+inline const std::array<QString, kChars.size()> &codes()
+{
+    static const std::array<QString, kChars.size()> table = [] {
+        std::array<QString, kChars.size()> t;
+        for (std::size_t c = 0; c < kChars.size(); ++c)
+            t[c] = codeFor(QLatin1Char(kChars[c]));
+        return t;
+    }();
+    return table;
+}
+
+// Nominal lengths (units) of a character's marks and of the gaps after them.
+struct Pattern
+{
+    std::vector<double> marks;
+    std::vector<double> gaps;
+};
+
+// Per character: [0] the pattern as sent; [1] every pattern with one element lost.
+using Patterns = std::array<std::array<std::vector<Pattern>, 2>, kChars.size()>;
+
+inline const Patterns &patterns()
+{
+    static const Patterns table = [] {
+        Patterns t;
+        for (std::size_t c = 0; c < kChars.size(); ++c) {
+            Pattern p;
+            for (QChar e : codes()[c]) {
+                p.marks.push_back(e == QLatin1Char('-') ? 3.0 : 1.0);
+                p.gaps.push_back(1.0);
+            }
+            p.gaps.back() = 3.0;
+            t[c][0].push_back(p);
+            for (std::size_t j = 0; j + 1 < p.marks.size(); ++j) {
+                const auto at = std::ptrdiff_t(j);
+                Pattern merged = p; // a gap filled: marks j and j + 1 merge
+                merged.marks[j] += p.gaps[j] + p.marks[j + 1];
+                merged.marks.erase(merged.marks.begin() + at + 1);
+                merged.gaps.erase(merged.gaps.begin() + at);
+                t[c][1].push_back(merged);
+                Pattern lost = p; // mark j + 1 swallowed: its gaps merge
+                lost.gaps[j] += p.marks[j + 1] + p.gaps[j + 1];
+                lost.marks.erase(lost.marks.begin() + at + 1);
+                lost.gaps.erase(lost.gaps.begin() + at + 1);
+                t[c][1].push_back(lost);
+            }
+        }
+        return t;
+    }();
+    return table;
+}
+
+inline std::size_t codeLength(int c)
+{
+    return static_cast<std::size_t>(codes()[static_cast<std::size_t>(c)].size());
+}
+
+struct Scorer
+{
+    const StretchInput &in;
+    const ElementModel &m;
+
+    Scorer(const StretchInput &input, const ElementModel &model)
+        : in(input)
+        , m(model)
+    {
+        for (std::size_t k = 0; k < kSigmas; ++k) {
+            const double kk = static_cast<double>(k);
+            m_sigma[k] = std::sqrt(m.relJitter * m.relJitter * kk * kk + m.absSigma * m.absSigma);
+        }
+        for (std::size_t k = 0; k < kSigmas; ++k)
+            m_logRatio[k] = std::log(m_sigma[k] / m_sigma[1]);
+    }
+    // Nominal lengths are whole units (1 + 3 + 3 at most after a merge).
+    static constexpr std::size_t kSigmas = 12;
+    std::array<double, kSigmas> m_sigma {};
+    std::array<double, kSigmas> m_logRatio {};
+    // Negative log-likelihood of a length x (units) with nominal k, offset so that it is never
+    // negative (ln s relative to the dit's); *z grows to |x - k| / s.
+    double element(double x, double k, double *z) const
+    {
+        const auto ki = std::min(kSigmas - 1, static_cast<std::size_t>(k));
+        const double s = m_sigma[ki];
+        const double e = std::abs(x - k) / s;
+        *z = std::max(*z, e);
+        // Huber: quadratic near the nominal, linear in the tails, so that one element disturbed
+        // by noise beyond the estimated spread does not outweigh the rest of the message.
+        const double h = e < kHuber ? 0.5 * e * e : kHuber * (e - 0.5 * kHuber);
+        return h + m_logRatio[ki];
+    }
+    // Cost of the nominal lengths `marks` (and gaps between them, then a letter gap) on the
+    // measured marks from i; inf when they do not fit or exceed maxZ.
+    double pattern(std::size_t i, const std::vector<double> &marks, const std::vector<double> &gaps,
+                   double *worstZ) const
+    {
+        const std::size_t len = marks.size();
+        if (len == 0 || i + len > in.marks.size())
+            return kInf;
+        double z = 0.0;
+        double cost = 0.0;
+        for (std::size_t j = 0; j < len && z <= m.maxZ; ++j) {
+            cost += element(in.marks[i + j], marks[j], &z);
+            if (i + j < in.gaps.size())
+                cost += element(in.gaps[i + j], gaps[j], &z);
+        }
+        if (worstZ)
+            *worstZ = z;
+        return z > m.maxZ ? kInf : cost;
+    }
+    // Cost of character c on marks from i with one element added by noise (one mark more): a
+    // dip that splits a mark, or a spike inside a gap (also the letter gap after the
+    // character). The three measured lengths around it are read as the one nominal element.
+    double inserted(std::size_t i, int c, double *worstZ) const
+    {
+        const Pattern &p = patterns()[static_cast<std::size_t>(c)][0].front();
+        const std::size_t len = p.marks.size();
+        if (i + len + 1 > in.marks.size())
+            return kInf;
+        // Measured elements from mark i: marks at even, gaps at odd positions.
+        const std::size_t avail = 2 * (in.marks.size() - i) - 1;
+        auto raw = [&](std::size_t e) {
+            return e % 2 == 0 ? in.marks[i + e / 2] : in.gaps[i + e / 2];
+        };
+        double best = kInf;
+        for (std::size_t q = 0; q < 2 * len && q + 2 < avail; ++q) {
+            double z = 0.0;
+            double cost = 0.0;
+            for (std::size_t e = 0; e < 2 * len && z <= m.maxZ; ++e) {
+                const std::size_t r = e < q ? e : e + 2;
+                if (r >= avail)
+                    break; // the letter gap after the stretch's last mark is not measured
+                const double x = e == q ? raw(q) + raw(q + 1) + raw(q + 2) : raw(r);
+                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2], &z);
+            }
+            if (z <= m.maxZ && cost < best) {
+                best = cost;
+                if (worstZ)
+                    *worstZ = z;
+            }
+        }
+        return best + kEditCost;
+    }
+    // Cost of character c on marks from i. edit 0: as sent. 1: the best reading with one
+    // element lost (one mark less): a mark swallowed by noise (its gaps merge) or a gap filled
+    // by noise (its marks merge). 2: one element added (inserted()). Edits cost kEditCost more.
+    double character(std::size_t i, int c, int edit, double *worstZ) const
+    {
+        if (edit == 2)
+            return inserted(i, c, worstZ);
+        const bool edited = edit == 1;
+        double best = kInf;
+        for (const Pattern &p : patterns()[static_cast<std::size_t>(c)][edited]) {
+            double z = 0.0;
+            const double cost = pattern(i, p.marks, p.gaps, &z);
+            if (cost < best) {
+                best = cost;
+                if (worstZ)
+                    *worstZ = z;
+            }
+        }
+        return best + (edited ? kEditCost : 0.0);
+    }
+};
+
+} // namespace db::morse::detail
