@@ -71,32 +71,7 @@ Result<void> Session::open(const QString &uriText)
         canopen->setSdoMode(*mode);
     }
 
-    QEventLoop loop;
-    QObject::connect(m_connection.get(), &DeviceConnection::stateChanged, &loop,
-                     [&](DeviceConnection::State s) {
-                         if (s == DeviceConnection::State::Connected
-                             || s == DeviceConnection::State::Disconnected)
-                             loop.quit();
-                     });
-    bool timedOut = false;
-    QTimer::singleShot(m_options.connectTimeoutMs, &loop, [&] {
-        timedOut = true;
-        loop.quit();
-    });
-    m_connection->open();
-    if (m_connection->state() == DeviceConnection::State::Connecting)
-        loop.exec();
-    if (m_connection->isConnected())
-        return {};
-    if (timedOut)
-        return Error(Error::Kind::Timeout,
-                     QStringLiteral("no connection to %1 within %2 ms")
-                         .arg(m_connection->uri().toString())
-                         .arg(m_options.connectTimeoutMs));
-    return m_connection->lastError().isError()
-        ? m_connection->lastError()
-        : Error(Error::Kind::Disconnected,
-                QStringLiteral("cannot connect to %1").arg(m_connection->uri().toString()));
+    return m_connection->openAndWait(m_options.connectTimeoutMs);
 }
 
 Result<QVariant> Session::read(ObjectAddress address)

@@ -11,7 +11,6 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QLoggingCategory>
-#include <QTimer>
 
 #include <algorithm>
 #include <cstdio>
@@ -28,18 +27,8 @@ std::shared_ptr<DeviceConnection> connect(const QString &uri)
         return {};
     }
     auto connection = created.value();
-    QEventLoop loop;
-    QObject::connect(connection.get(), &DeviceConnection::stateChanged, &loop,
-                     [&](DeviceConnection::State s) {
-                         if (s != DeviceConnection::State::Connecting)
-                             loop.quit();
-                     });
-    QTimer::singleShot(5000, &loop, &QEventLoop::quit);
-    connection->open();
-    if (connection->state() == DeviceConnection::State::Connecting)
-        loop.exec();
-    if (!connection->isConnected()) {
-        std::fprintf(stderr, "cannot connect to %s\n", qPrintable(uri));
+    if (auto opened = connection->openAndWait(5000); !opened) {
+        std::fprintf(stderr, "%s\n", qPrintable(opened.error().toString()));
         return {};
     }
     return connection;

@@ -39,19 +39,8 @@ Result<Figures> run(const QString &uri, int objects, int rateMs, double seconds)
     if (!made)
         return made.error();
     std::shared_ptr<DeviceConnection> connection = *made;
-    QEventLoop loop;
-    QTimer::singleShot(kConnectMs, &loop, &QEventLoop::quit);
-    QObject::connect(connection.get(), &DeviceConnection::stateChanged, &loop,
-                     [&](DeviceConnection::State s) {
-                         if (s == DeviceConnection::State::Connected
-                             || s == DeviceConnection::State::Disconnected)
-                             loop.quit();
-                     });
-    connection->open();
-    if (!connection->isConnected())
-        loop.exec();
-    if (!connection->isConnected())
-        return Error(Error::Kind::Timeout, QStringLiteral("cannot connect to %1").arg(uri));
+    if (auto opened = connection->openAndWait(kConnectMs); !opened)
+        return opened.error();
 
     scope::PollingSource source(connection.get());
     for (int i = 0; i < objects; ++i) {

@@ -2,6 +2,9 @@
 
 #include "logging.h"
 
+#include <QEventLoop>
+#include <QTimer>
+
 namespace db {
 
 DeviceConnection::DeviceConnection(const ConnectionUri &uri, QObject *parent)
@@ -24,6 +27,34 @@ void DeviceConnection::open()
     m_lastError = {};
     setState(State::Connecting);
     doOpen();
+}
+
+Result<void> DeviceConnection::openAndWait(int timeoutMs)
+{
+    QEventLoop loop;
+    connect(this, &DeviceConnection::stateChanged, &loop, [&loop](State s) {
+        if (s == State::Connected || s == State::Disconnected)
+            loop.quit();
+    });
+    bool timedOut = false;
+    QTimer::singleShot(timeoutMs, &loop, [&] {
+        timedOut = true;
+        loop.quit();
+    });
+    open();
+    if (m_state == State::Connecting)
+        loop.exec();
+    if (isConnected())
+        return {};
+    if (timedOut)
+        return Error(Error::Kind::Timeout,
+                     QStringLiteral("no connection to %1 within %2 ms")
+                         .arg(m_uri.toString())
+                         .arg(timeoutMs));
+    return m_lastError.isError()
+        ? m_lastError
+        : Error(Error::Kind::Disconnected,
+                QStringLiteral("cannot connect to %1").arg(m_uri.toString()));
 }
 
 void DeviceConnection::close()

@@ -46,6 +46,10 @@ public:
     // Non-blocking: stateChanged(Connecting) now, then Connected, or Disconnected with
     // errorOccurred() when the attempt fails. Ignored unless Disconnected.
     void open();
+    // Blocks in a local event loop until open() has connected or failed (for the CLI,
+    // benchmarks and tests only, like Reply::wait). The error names the cause: the link's own
+    // error, or a timeout after timeoutMs.
+    Result<void> openAndWait(int timeoutMs);
     // Non-blocking: pending requests fail with Error::Kind::Cancelled; ends in Disconnected.
     // Also stops an automatic reconnect that is waiting for its next attempt.
     void close();
