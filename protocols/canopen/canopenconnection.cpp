@@ -158,11 +158,6 @@ void CanopenConnection::onBusClosed(const Error &error)
     setState(State::Disconnected, error);
 }
 
-Reply *CanopenConnection::storeParameters()
-{
-    return write(kStoreParameters, QVariant::fromValue<qulonglong>(kStoreSignature));
-}
-
 QVariant CanopenConnection::valueFromUnknownBytes(const QByteArray &bytes)
 {
     const qsizetype n = bytes.size();

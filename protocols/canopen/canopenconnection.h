@@ -29,9 +29,6 @@ class CanopenConnection : public DeviceConnection
 {
     Q_OBJECT
 public:
-    // "save" signature written to 1010h.01h (CiA 301 7.5.2.13).
-    static constexpr quint32 kStoreSignature = 0x65766173;
-    static constexpr ObjectAddress kStoreParameters { 0x1010, 0x01 };
     static constexpr ObjectAddress kDeviceType { 0x1000, 0x00 };
 
     // Takes ownership of bus. A bad ?node= makes open() fail with InvalidArgument.
@@ -58,9 +55,6 @@ public:
     void setSdoMode(SdoClient::Mode mode) { m_sdoMode = mode; }
     // "auto", "expedited", "segmented", "block" (InvalidArgument otherwise).
     static Result<SdoClient::Mode> sdoModeFromText(const QString &text);
-
-    // 1010h.01 = "save": parameters stored permanently. Caller owns the reply.
-    Reply *storeParameters();
 
     // Raw bytes -> value for objects the dictionary does not know: 1..4 and 8 bytes as an
     // unsigned integer (qlonglong), anything else as the QByteArray (pure).

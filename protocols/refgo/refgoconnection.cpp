@@ -153,15 +153,6 @@ Reply *RefgoConnection::command(const QString &raw)
     return m_client->execute(raw);
 }
 
-Reply *RefgoConnection::storeParameters()
-{
-    if (!isConnected())
-        return Reply::failed(kStoreParameters,
-                             Error(Error::Kind::Disconnected,
-                                   QStringLiteral("not connected to %1").arg(uri().toString())));
-    return write(kStoreParameters, QVariant::fromValue<qulonglong>(kStoreSignature));
-}
-
 void RefgoConnection::doRead(Reply *reply, const ObjectDef *def)
 {
     if (def && !carriedByRefgo(def->type)) {

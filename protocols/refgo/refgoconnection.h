@@ -20,9 +20,6 @@ class RefgoConnection : public DeviceConnection
 public:
     static constexpr int kDefaultPort = 10001;
     static constexpr int kDefaultReconnectIntervalMs = 2000;
-    // "save" signature written to 1010h.01h (spec 3.6, 9.9).
-    static constexpr quint32 kStoreSignature = 1702257011;
-    static constexpr ObjectAddress kStoreParameters { 0x1010, 0x01 };
 
     // Makes its own TcpStream to uri.host():uri.portOr(10001).
     explicit RefgoConnection(const ConnectionUri &uri, QObject *parent = nullptr);
@@ -38,8 +35,6 @@ public:
 
     // A raw RefGo command; the reply's value is the result lines (QStringList). Caller owns it.
     Reply *command(const QString &raw);
-    // OW1010,1,1702257011: saves all parameters permanently. Caller owns the reply.
-    Reply *storeParameters();
 
     // The engine, for typed commands (motion, TPSR, ...). Owned by the connection.
     RefgoClient *client() const { return m_client; }

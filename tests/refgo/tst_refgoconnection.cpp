@@ -2,6 +2,7 @@
 // unsupported types, raw commands, store, connect errors, lost link, auto-reconnect.
 
 #include "awaitreply.h"
+#include "core/parameterrunner.h"
 #include "refgo/refgoconnection.h"
 #include "scriptedstream.h"
 
@@ -212,7 +213,7 @@ void TstRefgoConnection::unsupportedTypesAreRefusedWithoutTraffic()
 void TstRefgoConnection::storeParametersWritesSaveSignature()
 {
     connectNow();
-    Reply *reply = m_connection->storeParameters();
+    Reply *reply = parameters::storeParameters(m_connection); // OW1010,1,"save"
     QCOMPARE(m_stream->takeWritten(), QByteArray("OW1010,1,1702257011\r"));
     m_stream->feed("OW1010,1,1702257011\r\nOW1010,1,1702257011,OK\r\n>");
     QVERIFY(test::await(reply, kWaitMs).ok());
