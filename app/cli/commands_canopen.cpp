@@ -63,18 +63,8 @@ public:
             return bus.error();
         m_uri = *uri;
         m_bus.reset(bus.value());
-        QObject::connect(m_bus.get(), &CanBus::closed, m_bus.get(),
-                         [this](const Error &e) { m_failure = e; });
         QObject::connect(m_bus.get(), &CanBus::frameSent, m_bus.get(), [this] { ++m_sent; });
-        m_bus->open();
-        waitUntil([&] { return m_bus->isOpen() || m_failure.isError(); }, timeoutMs);
-        if (m_bus->isOpen())
-            return {};
-        return m_failure.isError() ? m_failure
-                                   : Error(Error::Kind::Timeout,
-                                           QStringLiteral("CAN bus %1 did not open within %2 ms")
-                                               .arg(m_bus->name())
-                                               .arg(timeoutMs));
+        return m_bus->openAndWait(timeoutMs);
     }
     CanBus *bus() const { return m_bus.get(); }
     const ConnectionUri &uri() const { return m_uri; }
@@ -87,7 +77,6 @@ public:
 
 private:
     ConnectionUri m_uri;
-    Error m_failure;
     int m_sent = 0;
     std::unique_ptr<CanBus> m_bus;
 };

@@ -6,9 +6,6 @@
 #include "transport/qtcanbus.h"
 #include "transport/slcanserver.h"
 
-#include <QEventLoop>
-#include <QTimer>
-
 namespace db::app {
 
 namespace {
@@ -111,22 +108,8 @@ Result<void> SimNodes::startVirtualCan(const QString &interfaceName)
 {
     d->virtualCan = std::make_unique<QtCanBus>(QStringLiteral("virtualcan"), interfaceName);
     QtCanBus *bus = d->virtualCan.get();
-    Error failure;
-    QEventLoop loop;
-    connect(bus, &CanBus::opened, &loop, &QEventLoop::quit);
-    connect(bus, &CanBus::closed, &loop, [&](const Error &error) {
-        failure = error;
-        loop.quit();
-    });
-    QTimer::singleShot(kVirtualCanOpenMs, &loop, &QEventLoop::quit);
-    bus->open();
-    if (bus->state() == CanBus::State::Opening)
-        loop.exec();
-    if (!bus->isOpen())
-        return failure.isError()
-            ? failure
-            : Error(Error::Kind::Timeout,
-                    QStringLiteral("virtualcan %1 did not open").arg(interfaceName));
+    if (auto opened = bus->openAndWait(kVirtualCanOpenMs); !opened)
+        return opened.error();
     for (canopen::SimulatedNode *node : d->nodes)
         node->attach(bus);
     if (!d->started) {

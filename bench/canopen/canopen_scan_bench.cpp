@@ -62,14 +62,8 @@ int main(int argc, char **argv)
         nodes.back()->start();
     }
     SlcanBus bus(new TcpStream(QStringLiteral("127.0.0.1"), server.port()));
-    QEventLoop opening;
-    QObject::connect(&bus, &CanBus::opened, &opening, &QEventLoop::quit);
-    QObject::connect(&bus, &CanBus::closed, &opening, &QEventLoop::quit);
-    bus.open();
-    if (!bus.isOpen())
-        opening.exec();
-    if (!bus.isOpen()) {
-        std::fprintf(stderr, "cannot open %s\n", qPrintable(bus.name()));
+    if (auto opened = bus.openAndWait(5000); !opened) {
+        std::fprintf(stderr, "%s\n", qPrintable(opened.error().toString()));
         return 1;
     }
     SdoClient sdo(&bus);

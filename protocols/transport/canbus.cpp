@@ -1,5 +1,8 @@
 #include "canbus.h"
 
+#include <QEventLoop>
+#include <QTimer>
+
 namespace db {
 
 void CanBus::open()
@@ -54,6 +57,27 @@ void CanBus::reportSent(const QCanBusFrame &frame)
 {
     Q_EMIT traffic(frame, true);
     Q_EMIT frameSent(frame);
+}
+
+Result<void> CanBus::openAndWait(int timeoutMs)
+{
+    Error failure;
+    QEventLoop loop;
+    connect(this, &CanBus::opened, &loop, &QEventLoop::quit);
+    connect(this, &CanBus::closed, &loop, [&](const Error &error) {
+        failure = error;
+        loop.quit();
+    });
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    open();
+    if (m_state == State::Opening)
+        loop.exec();
+    if (isOpen())
+        return {};
+    return failure.isError()
+        ? failure
+        : Error(Error::Kind::Timeout,
+                QStringLiteral("%1 did not open within %2 ms").arg(name()).arg(timeoutMs));
 }
 
 } // namespace db

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/error.h"
+#include "core/result.h"
 
 #include <QCanBusFrame>
 #include <QObject>
@@ -28,6 +29,9 @@ public:
     bool isOpen() const { return m_state == State::Open; }
 
     void open();
+    // Blocks in a local event loop until open() has opened the bus or failed (for command-line
+    // tools, benchmarks and tests only). The error is the bus's own, or a timeout.
+    Result<void> openAndWait(int timeoutMs);
     void close();
     // Queues one frame; false (and no effect) unless open. frameSent() follows once it is out.
     bool send(const QCanBusFrame &frame);
