@@ -176,7 +176,9 @@ void Decoder::update(bool final)
         if (!parse.ok)
             continue;
         const IpObservation &obs = parse.observation;
-        if (std::none_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; }))
+        if (std::none_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; })
+            && std::all_of(obs.cost.begin(), obs.cost.end(),
+                           [](const auto &c) { return c.empty(); }))
             continue;
         voter.add(obs);
         if (obs.complete && ++complete > m_completeSeen) {

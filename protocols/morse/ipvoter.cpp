@@ -3,6 +3,7 @@
 #include <QList>
 
 #include <algorithm>
+#include <limits>
 
 namespace db::morse {
 namespace {
@@ -79,18 +80,26 @@ std::vector<IpObservation> parseIpObservations(const QString &text)
 
 void IpVoter::add(const IpObservation &obs)
 {
+    constexpr double softCap = kMaxWeight * kNatsPerWeight;
+    Reading r;
     for (std::size_t i = 0; i < 4; ++i) {
-        if (obs.octets[i] >= 0) {
-            Votes &v = m_votes[i][obs.octets[i]];
-            v.weight += obs.weight[i];
-            v.perDigit = v.perDigit && obs.digits[i] > 0
-                && (v.digitCount == 0 || v.digitCount == obs.digits[i]);
-            v.digitCount = obs.digits[i];
-            for (std::size_t d = 0; d < 3; ++d)
-                v.digits[d] += obs.digitWeight[i][d];
-            ++m_readings[i];
+        if (obs.octets[i] < 0 && obs.cost[i].empty())
+            continue;
+        if (obs.cost[i].empty()) {
+            r.cap[i] = std::clamp(obs.weight[i], 0.01, kMaxWeight) * kNatsPerWeight;
+        } else {
+            r.cap[i] = softCap;
+            for (const auto &[value, nats] : obs.cost[i]) {
+                if (nats < softCap)
+                    r.cost[i][value] = std::max(0.0, nats);
+            }
         }
+        if (obs.octets[i] < 0)
+            continue; // a prefix of the octet (an open stretch): its costs, no value read
+        r.cost[i][obs.octets[i]] = 0.0;
+        r.value[i] = obs.octets[i];
     }
+    m_readings.push_back(std::move(r));
     if (obs.complete)
         m_complete.push_back(obs.octets);
     ++m_count;
@@ -98,30 +107,104 @@ void IpVoter::add(const IpObservation &obs)
 
 IpEstimate IpVoter::estimate() const
 {
+    // Candidates per octet: the values read, the kCandidates other values with the least summed
+    // cost (octets taken one by one), and kOther standing for every value no reading considers.
+    constexpr int kOther = -2;
+    std::array<std::vector<int>, 4> candidates;
+    for (std::size_t i = 0; i < 4; ++i) {
+        std::map<int, double> total;
+        for (const Reading &r : m_readings) {
+            if (r.cap[i] > 0.0) {
+                for (const auto &entry : r.cost[i])
+                    total.try_emplace(entry.first, 0.0);
+            }
+        }
+        std::vector<std::pair<double, int>> ranked;
+        for (auto &[value, sum] : total) {
+            for (const Reading &r : m_readings) {
+                const auto it = r.cost[i].find(value);
+                sum += r.cap[i] <= 0.0 ? 0.0 : (it == r.cost[i].end() ? r.cap[i] : it->second);
+            }
+            ranked.emplace_back(sum, value);
+        }
+        std::sort(ranked.begin(), ranked.end());
+        // Every value a reading read whole, then the cheapest others.
+        for (const Reading &r : m_readings) {
+            if (r.value[i] >= 0
+                && std::find(candidates[i].begin(), candidates[i].end(), r.value[i])
+                    == candidates[i].end())
+                candidates[i].push_back(r.value[i]);
+        }
+        const std::size_t read = candidates[i].size();
+        for (std::size_t k = 0; k < ranked.size() && candidates[i].size() < read + kCandidates;
+             ++k) {
+            if (std::find(candidates[i].begin(), candidates[i].end(), ranked[k].second)
+                == candidates[i].end())
+                candidates[i].push_back(ranked[k].second);
+        }
+        candidates[i].push_back(kOther);
+    }
+    // cost[r][i][c]: reading r's cost for candidate c of octet i (0 where r did not read i).
+    std::vector<std::array<std::vector<double>, 4>> cost(m_readings.size());
+    for (std::size_t r = 0; r < m_readings.size(); ++r) {
+        for (std::size_t i = 0; i < 4; ++i) {
+            const Reading &reading = m_readings[r];
+            for (int value : candidates[i]) {
+                const auto it = reading.cost[i].find(value);
+                cost[r][i].push_back(reading.cap[i] <= 0.0
+                                         ? 0.0
+                                         : (it == reading.cost[i].end()
+                                                ? reading.cap[i]
+                                                : std::min(it->second, reading.cap[i])));
+            }
+        }
+    }
+    // Every combination of candidates; per octet and candidate the cheapest address using it.
+    std::array<std::vector<double>, 4> cheapest;
+    for (std::size_t i = 0; i < 4; ++i)
+        cheapest[i].assign(candidates[i].size(), std::numeric_limits<double>::infinity());
+    std::array<std::size_t, 4> c {};
+    while (true) {
+        double total = 0.0;
+        for (const auto &rc : cost)
+            total += std::min(kMessageCap, rc[0][c[0]] + rc[1][c[1]] + rc[2][c[2]] + rc[3][c[3]]);
+        for (std::size_t i = 0; i < 4; ++i)
+            cheapest[i][c[i]] = std::min(cheapest[i][c[i]], total);
+        std::size_t i = 0;
+        while (i < 4 && ++c[i] == candidates[i].size())
+            c[i++] = 0;
+        if (i == 4)
+            break;
+    }
     IpEstimate e;
     double confidence = 1.0;
     for (std::size_t i = 0; i < 4; ++i) {
-        double total = 0;
-        double best = 0;
-        double support = 0;
-        for (const auto &[value, votes] : m_votes[i]) {
-            total += votes.weight;
-            if (votes.weight > best) {
-                best = votes.weight;
-                e.octets[i] = value;
-                support = best;
-                if (votes.perDigit) {
-                    const auto n = static_cast<std::ptrdiff_t>(votes.digitCount);
-                    const double least =
-                        *std::min_element(votes.digits.begin(), votes.digits.begin() + n);
-                    support = std::max(best, least);
-                }
-            }
+        // The voted value is one that some reading read whole (a prefix alone names none).
+        auto support = [&](int value) {
+            return std::count_if(m_readings.begin(), m_readings.end(),
+                                 [&](const Reading &r) { return r.value[i] == value; });
+        };
+        std::size_t at = candidates[i].size();
+        for (std::size_t k = 0; k < candidates[i].size(); ++k) {
+            if (candidates[i][k] >= 0 && support(candidates[i][k]) > 0
+                && (at == candidates[i].size() || cheapest[i][k] < cheapest[i][at]))
+                at = k;
         }
-        const double lead = support - (total - best);
-        const double c =
-            m_readings[i] >= 2 ? std::clamp(lead / kLead, 0.0, 1.0) : std::min(kSingle, best / 2.0);
-        confidence = std::min(confidence, c);
+        if (at == candidates[i].size()) {
+            confidence = 0.0;
+            continue;
+        }
+        double second = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < cheapest[i].size(); ++k) {
+            if (k != at)
+                second = std::min(second, cheapest[i][k]);
+        }
+        e.octets[i] = candidates[i][at];
+        const double lead = std::max(0.0, second - cheapest[i][at]);
+        const double conf = support(e.octets[i]) >= 2
+            ? std::clamp(lead / (kLead * kNatsPerWeight), 0.0, 1.0)
+            : std::min(kSingle, lead / (2.0 * kNatsPerWeight));
+        confidence = std::min(confidence, conf);
     }
     e.confidence = confidence;
     e.messages = static_cast<int>(std::count(m_complete.begin(), m_complete.end(), e.octets));

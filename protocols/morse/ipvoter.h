@@ -20,10 +20,13 @@ struct IpObservation
     // Vote weight of each octet, (0, IpVoter::kMaxWeight]: 1 for a plain reading, less when an
     // element of it was close to the dit/dah boundary (see messageparser.h).
     std::array<double, 4> weight { 1.0, 1.0, 1.0, 1.0 };
-    // From the sequence decoder: the weight of each digit of each octet (weight is their
-    // least); digits[k] == 0 when not known.
-    std::array<std::array<double, 3>, 4> digitWeight {};
-    std::array<int, 4> digits {};
+    // Soft evidence from the sequence decoder (messageparser.h), per octet read: for each value
+    // the parse could also have given that octet, how much worse (nats) the best such parse
+    // explains the measured lengths than the best parse overall (0 for the value read). Empty
+    // for readings from text: those say only "this value, with this weight". An octet still
+    // arriving when the stretch ends (octets[k] == -1) may have costs too: its digits so far
+    // fit several values ("20": 20 and 200-209 cost nothing, the others more).
+    std::array<std::map<int, double>, 4> cost;
 };
 
 // Parses decoded text into observations. The text is split into stretches at ':' (end of a
@@ -39,17 +42,22 @@ struct IpObservation
 // Other text is ignored.
 std::vector<IpObservation> parseIpObservations(const QString &text);
 
-// Weighted votes per octet over all observations. An octet's confidence is
-//     lead / kLead, clamped to [0, 1], once it was read at least twice (lead = summed weight of
-//     the winning value minus that of all others); min(kSingle, weight / 2) after one reading.
-// With plain readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. A clear
-// reading (weight up to kMaxWeight) outvotes one with an element at the dit/dah boundary
-// (small weight), so that two readings can already be confident when they disagree only
-// where one of them was unsure. Readings that agree and carry digit weights support their value
-// digit by digit: the least over the digits of the summed digit weights (two readings each
-// unsure at a different digit confirm each other's unsure digit). The IP confidence is the
-// lowest octet confidence; kConfident
-// (0.75) is the manual's "two identical texts in a row" made per octet and weighted.
+// Combines the readings into the most likely address. Every reading gives every value v of
+// an octet it read a cost in nats: its soft cost for v (IpObservation::cost) capped at
+// kMaxWeight * kNatsPerWeight, or, for a reading from text, 0 for the value read and
+// weight * kNatsPerWeight for any other. That is a log-likelihood ratio when the readings are
+// independent: two readings that agree but are each unsure against a different rival (another
+// digit, another split into characters) confirm each other; two unsure against the same rival
+// do not. A reading costs an address the sum over its octets, capped at kMessageCap: noise that
+// garbles one message garbles several of its octets, and such a reading must not outvote the
+// clean ones octet by octet. The voted address has the least total cost over all readings
+// (searched over the few cheapest values of each octet). An octet's lead is how much more the
+// best address with another value there costs; its confidence is lead / (kLead *
+// kNatsPerWeight), clamped to [0, 1], once two readings read its value, and min(kSingle, lead /
+// (2 * kNatsPerWeight)) while only one did (the others garbled or cut off). With plain text
+// readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. The IP confidence is
+// the lowest octet confidence; kConfident (0.75) is the manual's "two identical texts in a row"
+// made per octet and weighted.
 class IpVoter
 {
 public:
@@ -57,22 +65,23 @@ public:
     static constexpr double kLead = 1.5;
     static constexpr double kSingle = 0.5;
     static constexpr double kMaxWeight = 1.5;
+    static constexpr double kNatsPerWeight = 4.0;
+    static constexpr double kMessageCap = 2.0 * kMaxWeight * kNatsPerWeight;
+    static constexpr std::size_t kCandidates = 5; // values per octet searched jointly
 
     void add(const IpObservation &observation);
     IpEstimate estimate() const;
     int observations() const { return m_count; }
 
 private:
-    struct Votes
+    struct Reading
     {
-        double weight = 0.0; // summed
-        std::array<double, 3> digits {}; // summed digit weights
-        int digitCount = 0; // digits of the readings, 0 before the first
-        bool perDigit = true; // every reading carried digit weights for as many digits
+        std::array<std::map<int, double>, 4> cost; // by value; values not listed cost `cap`
+        std::array<double, 4> cap {}; // 0: octet not read
+        std::array<int, 4> value { -1, -1, -1, -1 }; // the value read
     };
-    std::array<std::map<int, Votes>, 4> m_votes; // by octet value
+    std::vector<Reading> m_readings;
     std::vector<std::array<int, 4>> m_complete;
-    std::array<int, 4> m_readings {};
     int m_count = 0;
 };
 

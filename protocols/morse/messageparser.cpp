@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <unordered_map>
 
 namespace db::morse {
@@ -19,6 +20,8 @@ constexpr double kMinWeight = 0.05;
 // Salvage: nats per skipped mark, about what a mark and its gap 2.5 sigma off their nominal
 // cost, so that a character is skipped only when no reading of the grammar explains it.
 constexpr double kSkipCost = 3.0;
+// Soft octet costs beyond this (nats) are not kept: the voter caps each reading lower.
+constexpr double kSoftRange = 2.0 * IpVoter::kMaxWeight * IpVoter::kNatsPerWeight;
 
 // Grammar states: P(j) expects prefix character j of "MC+IP"; O(k, n, v) is inside octet k
 // after n digits of value v; U(k) is inside octet k whose first digits were before the
@@ -63,6 +66,20 @@ int next(int s, int c)
     return c == kColon && n >= 1 && k == 3 ? kEnd : -1;
 }
 
+// The drive sends octets in plain decimal ("MC+IP192+168+2+150:"), so a digit after a leading
+// zero is an unlikely reading. It stays possible (a firmware that pads would still decode) at
+// this cost in nats, which settles readings such as "020" against "120" or "20".
+constexpr double kLeadingZeroCost = 3.0;
+
+// Prior cost of character c in state s (anchored form), beyond how well it fits the marks.
+double prior(int s, int c)
+{
+    if (s < kOctetBase || s >= kUnknownBase || c < kDigit0 || c >= kDigit0 + 10)
+        return 0.0;
+    const int rel = s - kOctetBase;
+    return (rel / 256) % 4 >= 1 && rel % 256 == 0 ? kLeadingZeroCost : 0.0;
+}
+
 struct Cell
 {
     double cost = 0.0;
@@ -75,6 +92,85 @@ struct Cell
 std::size_t consumed(int c, int edit)
 {
     return codeLength(c) + (edit == 2 ? 1 : 0) - (edit == 1 ? 1 : 0);
+}
+
+struct Option
+{
+    int ch;
+    int edit;
+    double cost;
+};
+using Layers = std::vector<std::unordered_map<int, Cell>>;
+
+// Soft evidence per octet (IpObservation::cost): for every octet k and value v, the cheapest
+// parse of the whole stretch in which octet k is closed with value v, minus the cheapest parse
+// overall. Forward costs are the DP's layers; a backward pass over the same (sparse) states
+// gives the cheapest completion. An octet whose position is a guess (reached from a cut start)
+// counts only on completions that reach ':', which anchor it.
+std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
+                                                const std::vector<std::vector<Option>> &options,
+                                                bool openEnd, bool salvage, double bestCost)
+{
+    const std::size_t n = layer.size() - 1;
+    std::vector<std::unordered_map<int, double>> back(n + 1); // any accepted end
+    std::vector<std::unordered_map<int, double>> backEnd(n + 1); // ends after ':'
+    for (std::size_t i = n + 1; i-- > 0;) {
+        for (const auto &entry : layer[i]) {
+            const int st = entry.first;
+            double b = kInf;
+            double be = kInf;
+            if (salvage ? i >= 1 : i == n) {
+                const double skip = kSkipCost * double(n - i);
+                b = (openEnd || salvage || st == kEnd) ? skip : kInf;
+                be = st == kEnd ? skip : kInf;
+            }
+            for (std::size_t o = 0; i < n && o < options[i].size(); ++o) {
+                const Option &op = options[i][o];
+                const bool unanchored = st >= kStates;
+                int t = next(unanchored ? st - kStates : st, op.ch);
+                if (t < 0)
+                    continue;
+                t += unanchored && t != kEnd ? kStates : 0;
+                const std::size_t j = i + consumed(op.ch, op.edit);
+                const auto it = back[j].find(t);
+                if (it == back[j].end())
+                    continue;
+                const double cc = op.cost + prior(unanchored ? st - kStates : st, op.ch);
+                b = std::min(b, cc + it->second);
+                be = std::min(be, cc + backEnd[j].at(t));
+            }
+            back[i][st] = b;
+            backEnd[i][st] = be;
+        }
+    }
+    std::array<std::map<int, double>, 4> out;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (const auto &[st, cell] : layer[i]) {
+            const bool unanchored = st >= kStates;
+            const int s = unanchored ? st - kStates : st;
+            if (s < kOctetBase || s >= kUnknownBase || (s - kOctetBase) / 256 % 4 == 0)
+                continue; // not inside an octet with at least one digit
+            const int k = (s - kOctetBase) / 1024;
+            const int v = (s - kOctetBase) % 256;
+            for (const Option &op : options[i]) {
+                int t = next(s, op.ch);
+                if (t < 0 || (op.ch != kPlus && op.ch != kColon))
+                    continue;
+                t += unanchored && t != kEnd ? kStates : 0;
+                const std::size_t j = i + consumed(op.ch, op.edit);
+                const auto &table = unanchored ? backEnd : back;
+                const auto it = table[j].find(t);
+                if (it == table[j].end() || it->second == kInf)
+                    continue;
+                const double delta = cell.cost + op.cost + it->second - bestCost;
+                auto &slot = out[std::size_t(k)];
+                const auto [pos, fresh] = slot.try_emplace(v, delta);
+                if (!fresh)
+                    pos->second = std::min(pos->second, delta);
+            }
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -91,12 +187,6 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     using Costs = std::vector<std::array<double, kChars.size()>>;
     std::array<Costs, 3> charCost { Costs(n), Costs(n), Costs(n) };
     // The readings that fit at all, per start mark: the DP visits only these.
-    struct Option
-    {
-        int ch;
-        int edit;
-        double cost;
-    };
     std::vector<std::vector<Option>> options(n);
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < int(kChars.size()); ++c) {
@@ -113,7 +203,7 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     // of the ~4100 states only the few hundred consistent with the marks are ever reached.
     // States from kStates up are the same states without an anchor: reached from a cut start
     // inside an octet (U(k)), so that k is a guess until ':' confirms it.
-    std::vector<std::unordered_map<int, Cell>> layer(n + 1);
+    Layers layer(n + 1);
     const bool salvage = mode == ParseMode::Salvage;
     if (!in.openStart && !salvage) {
         layer[0][0] = {};
@@ -151,8 +241,9 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
                     continue;
                 t += unanchored && t != kEnd ? kStates : 0;
                 auto [it, fresh] = layer[i + consumed(ch, edit)].try_emplace(t);
-                if (fresh || cell.cost + cc < it->second.cost)
-                    it->second = { cell.cost + cc, st, ch, edit };
+                const double step = cc + prior(unanchored ? st - kStates : st, ch);
+                if (fresh || cell.cost + step < it->second.cost)
+                    it->second = { cell.cost + step, st, ch, edit };
             }
         }
     }
@@ -200,7 +291,6 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     if (i > 0)
         out.text += QLatin1Char('?');
     double margin = kInf;
-    std::vector<double> digitWeights; // of the octet being read
     for (const Taken &t : path) {
         double z = 0.0;
         scorer.character(t.at, t.ch, t.edit, &z);
@@ -223,8 +313,6 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             if (t.edit != 0) // a repaired digit: half a vote
                 ownMargin = std::min(ownMargin, kClearMargin / 2.0);
             margin = std::min(margin, ownMargin);
-            digitWeights.push_back(
-                std::clamp(ownMargin / kClearMargin, kMinWeight, IpVoter::kMaxWeight));
         }
         if ((t.ch == kPlus || t.ch == kColon) && known) {
             const int rel = from - kOctetBase;
@@ -232,16 +320,9 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             out.observation.octets[k] = rel % 256;
             out.observation.weight[k] =
                 std::clamp(margin / kClearMargin, kMinWeight, IpVoter::kMaxWeight);
-            if (digitWeights.size() <= 3) {
-                std::copy(digitWeights.begin(), digitWeights.end(),
-                          out.observation.digitWeight[k].begin());
-                out.observation.digits[k] = int(digitWeights.size());
-            }
         }
-        if (t.ch == kPlus || t.ch == kColon || !known) {
+        if (t.ch == kPlus || t.ch == kColon || !known)
             margin = kInf;
-            digitWeights.clear();
-        }
     }
     if (end < n)
         out.text += QLatin1Char('?');
@@ -252,6 +333,54 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
                                     [](int v) { return v >= 0; });
     if (salvage && read < 2)
         return {};
+    // The octet still arriving at the end of an open stretch: its digits so far are a prefix of
+    // its value ("20" fits 20 and 200-209). Each end state inside that octet gives a prefix.
+    std::map<int, double> prefix;
+    int open = -1;
+    if (in.openEnd && !salvage && best >= kOctetBase && best < kUnknownBase
+        && (best - kOctetBase) / 256 % 4 >= 1) {
+        open = (best - kOctetBase) / 1024;
+        for (const auto &[st, cell] : layer[end]) {
+            const int rel = st - kOctetBase;
+            if (st < kOctetBase || st >= kUnknownBase || rel / 1024 != open || rel / 256 % 4 == 0)
+                continue;
+            const int digits = rel / 256 % 4;
+            const int value = rel % 256;
+            if (digits > 1 && value < (digits == 2 ? 10 : 100))
+                continue; // a leading zero: no plain decimal value starts so
+            for (int w = 0; w <= 255; ++w) {
+                const int length = w >= 100 ? 3 : (w >= 10 ? 2 : 1);
+                if (length >= digits
+                    && w / (length - digits == 2 ? 100 : (length - digits == 1 ? 10 : 1))
+                        == value) {
+                    const auto [it, fresh] = prefix.try_emplace(w, cell.cost - bestCost);
+                    it->second = std::min(it->second, cell.cost - bestCost);
+                }
+            }
+        }
+    }
+    const bool anyOctet = open >= 0
+        || std::any_of(out.observation.octets.begin(), out.observation.octets.end(),
+                       [](int v) { return v >= 0; });
+    const auto soft = anyOctet ? octetCosts(layer, options, in.openEnd, salvage, bestCost)
+                               : std::array<std::map<int, double>, 4> {};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const bool isOpen = int(k) == open;
+        if (out.observation.octets[k] < 0 && !isOpen)
+            continue;
+        for (const auto &[value, nats] : soft[k]) {
+            if (nats < kSoftRange)
+                out.observation.cost[k][value] = std::max(0.0, nats);
+        }
+        if (!isOpen) {
+            out.observation.cost[k][out.observation.octets[k]] = 0.0;
+            continue;
+        }
+        for (const auto &[value, nats] : prefix) {
+            const auto [it, fresh] = out.observation.cost[k].try_emplace(value, nats);
+            it->second = std::max(0.0, std::min(it->second, nats));
+        }
+    }
     out.observation.complete = std::all_of(
         out.observation.octets.begin(), out.observation.octets.end(), [](int v) { return v >= 0; });
     out.ok = true;

@@ -6,6 +6,8 @@
 
 #include <QTest>
 
+#include <map>
+
 using namespace db::morse;
 
 class TstMorseCode : public QObject
@@ -147,36 +149,61 @@ private slots:
         QVERIFY(voter.estimate().confidence >= IpVoter::kConfident); // 3:1
     }
 
-    // Two agreeing readings of "168", each unsure at a different digit: by octet weight
-    // (0.3 + 0.3) not confident, digit by digit (1.5 + 0.3 at the least) they are.
-    void votingDigitByDigit()
+    // Soft readings: each says how much worse every other value of an octet explains the marks.
+    // `rival` of octet `octet` costs `nats` more than the value read; every other value is far.
+    static IpObservation soft(std::array<int, 4> octets, int octet = -1, int rival = -1,
+                              double nats = 0.0)
     {
-        IpObservation first;
-        first.octets = { 10, 168, 0, 1 };
-        first.weight = { 1.5, 0.3, 1.5, 1.5 };
-        first.digitWeight = {
-            { { 1.5, 1.5, 0 }, { 0.3, 1.5, 1.5 }, { 1.5, 0, 0 }, { 1.5, 0, 0 } }
-        };
-        first.digits = { 2, 3, 1, 1 };
-        IpObservation second = first;
-        second.digitWeight[1] = { 1.5, 1.5, 0.3 };
+        IpObservation o;
+        o.octets = octets;
+        o.complete = true;
+        if (octet >= 0)
+            o.cost[std::size_t(octet)][rival] = nats;
+        for (std::size_t k = 0; k < 4; ++k)
+            o.cost[k][octets[k]] = 0.0;
+        return o;
+    }
+
+    // Two agreeing readings of "168", each unsure against a different rival: 169 and 178 each
+    // lose clearly to the other reading, so 168 is confident. Unsure against the same rival
+    // twice, it is not.
+    void votingWithSoftEvidence()
+    {
         IpVoter voter;
-        voter.add(first);
-        voter.add(second);
+        voter.add(soft({ 10, 168, 0, 1 }, 1, 169, 0.8));
+        voter.add(soft({ 10, 168, 0, 1 }, 1, 178, 0.8));
+        QCOMPARE(voter.estimate().toString(), QStringLiteral("10.168.0.1"));
         QVERIFY(voter.estimate().confidence >= IpVoter::kConfident);
-        // The same weights without digit weights (text-parsed readings): not confident.
-        first.digits = { 0, 0, 0, 0 };
-        second.digits = first.digits;
-        IpVoter plain;
-        plain.add(first);
-        plain.add(second);
-        QVERIFY(plain.estimate().confidence < IpVoter::kConfident);
-        // Unsure at the same digit both times: not confident either.
+
         IpVoter same;
-        first.digits = { 2, 3, 1, 1 };
-        same.add(first);
-        same.add(first);
+        same.add(soft({ 10, 168, 0, 1 }, 1, 169, 0.8));
+        same.add(soft({ 10, 168, 0, 1 }, 1, 169, 0.8));
+        QCOMPARE(same.estimate().toString(), QStringLiteral("10.168.0.1"));
         QVERIFY(same.estimate().confidence < IpVoter::kConfident);
+        // A third, clear reading settles it.
+        same.add(soft({ 10, 168, 0, 1 }));
+        QVERIFY(same.estimate().confidence >= IpVoter::kConfident);
+    }
+
+    // A message garbled by noise disagrees in several octets. It costs every address at most
+    // IpVoter::kMessageCap, so it does not outvote a clean reading octet by octet once a third
+    // reading confirms the clean one where they differ; the octets only the clean reading read
+    // are not confident on that one reading.
+    void garbledReadingDoesNotOutvote()
+    {
+        IpVoter voter;
+        voter.add(soft({ 169, 91, 212, 115 }));
+        voter.add(soft({ 6, 135, 241, 5 }));
+        IpObservation partial; // "MC+IP6+1" of a third message
+        partial.octets = { 6, -1, -1, -1 };
+        partial.cost[0] = { { 6, 0.0 } };
+        voter.add(partial);
+        const IpEstimate e = voter.estimate();
+        QCOMPARE(e.toString(), QStringLiteral("6.135.241.5"));
+        QVERIFY(e.confidence < IpVoter::kConfident);
+        voter.add(soft({ 6, 135, 241, 5 }));
+        QVERIFY(voter.estimate().confidence >= IpVoter::kConfident);
+        QCOMPARE(voter.estimate().messages, 2);
     }
 };
 

@@ -236,6 +236,28 @@ private slots:
         QVERIFY(p.observation.weight[1] <= 0.5); // the repaired octet counts half at most
     }
 
+    // The first dah of the '2' in 192 measured at 1.75 units, close to the dit/dah boundary of
+    // the default model ("...--" is '3'):
+    // the soft costs (IpObservation::cost) name 193 as a close rival, other values as far off,
+    // and a leading zero ("092" would need the '1' read as '0') as unlikely.
+    void softCostsNameTheRival()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+150:");
+        StretchInput s = nominalStretch(text);
+        s.marks[markOf(text, 7) + 2] = 1.75;
+        const StretchParse p = parseStretch(s, ElementModel());
+        QVERIFY(p.ok);
+        const auto &cost = p.observation.cost[0];
+        QCOMPARE(cost.at(p.observation.octets[0]), 0.0);
+        QVERIFY(cost.count(193) == 1);
+        QVERIFY2(cost.at(193) < 2.0, qPrintable(QString::number(cost.at(193))));
+        QVERIFY(cost.count(182) == 0 || cost.at(182) > 6.0);
+        QVERIFY(cost.count(92) == 0 || cost.at(92) > 6.0);
+        // The clean octets have no close rival.
+        for (const auto &[value, nats] : p.observation.cost[1])
+            QVERIFY(value == 168 || nats > 3.0);
+    }
+
     // A noise dip splits the first dah of the '9' in 192: read as one mark with an edit.
     void insertedElementIsRepaired()
     {
