@@ -17,11 +17,14 @@ demo | test | build) ;;
 esac
 
 # Everything the build, the tests and the demo need, from Debian 12's own archive.
+# Camera (Morse panel): Qt 6.4 on Debian uses its GStreamer media backend; V4L2 cameras are
+# listed and opened by GStreamer's v4l2 plugin from gstreamer1.0-plugins-good.
 packages=(
     cmake ninja-build g++ pkg-config
     qt6-base-dev qt6-serialbus-dev libqt6serialbus6 qt6-l10n-tools
     libqcustomplot-dev libeigen3-dev
     libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
+    qt6-multimedia-dev gstreamer1.0-plugins-good
     fonts-dejavu-core xvfb xauth
 )
 

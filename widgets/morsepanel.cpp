@@ -1,5 +1,8 @@
 #include "morsepanel.h"
 
+#include "morselivesource.h"
+
+#include <QComboBox>
 #include <QDateTime>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -36,6 +39,10 @@ MorsePanel::MorsePanel(QWidget *parent)
     , m_decoder(std::make_unique<morse::Decoder>())
     , m_timer(new QTimer(this))
     , m_open(new QPushButton(tr("Open video or CSV…"), this))
+    , m_cameras(new QComboBox(this))
+    , m_startCamera(new QPushButton(tr("Start camera"), this))
+    , m_stopCamera(new QPushButton(tr("Stop"), this))
+    , m_liveRefresh(new QTimer(this))
     , m_sourceLabel(new QLabel(tr("No recording"), this))
     , m_frame(new QLabel(this))
     , m_plot(new QCustomPlot(this))
@@ -46,6 +53,7 @@ MorsePanel::MorsePanel(QWidget *parent)
 {
     setObjectName(QStringLiteral("MorsePanel"));
     m_frame->setObjectName(QStringLiteral("morseFrame"));
+    m_sourceLabel->setObjectName(QStringLiteral("morseSource"));
     m_frame->setMinimumSize(kFrameWidth * 3 / 4, 135);
     m_frame->setAlignment(Qt::AlignCenter);
     m_frame->setText(tr("LED frame"));
@@ -102,6 +110,9 @@ MorsePanel::MorsePanel(QWidget *parent)
 
     auto *top = new QHBoxLayout;
     top->addWidget(m_open);
+    top->addWidget(m_cameras);
+    top->addWidget(m_startCamera);
+    top->addWidget(m_stopCamera);
     top->addWidget(m_sourceLabel, 1);
     auto *side = new QVBoxLayout;
     side->addWidget(m_frame);
@@ -125,6 +136,22 @@ MorsePanel::MorsePanel(QWidget *parent)
     connect(m_open, &QPushButton::clicked, this, &MorsePanel::chooseFile);
     m_timer->setInterval(1000 / kReplotHz);
     connect(m_timer, &QTimer::timeout, this, &MorsePanel::step);
+    m_cameras->setObjectName(QStringLiteral("morseCameras"));
+    m_cameras->setMinimumContentsLength(18);
+    m_cameras->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_startCamera->setObjectName(QStringLiteral("morseStartCamera"));
+    m_stopCamera->setObjectName(QStringLiteral("morseStopCamera"));
+    connect(m_startCamera, &QPushButton::clicked, this,
+            [this] { startLive(m_cameras->currentIndex()); });
+    connect(m_stopCamera, &QPushButton::clicked, this, &MorsePanel::stopLive);
+    m_liveRefresh->setSingleShot(true);
+    m_liveRefresh->setInterval(1000 / kReplotHz);
+    connect(m_liveRefresh, &QTimer::timeout, this, [this] {
+        if (isVisible())
+            refresh();
+    });
+    m_frame->installEventFilter(this);
+    rebuildCameraList();
     refresh();
 }
 
@@ -156,6 +183,9 @@ bool MorsePanel::openFile(const QString &path)
 
 void MorsePanel::setSource(MorseSource source)
 {
+    if (m_live)
+        stopLive();
+    m_error.clear();
     m_timer->stop();
     m_source = std::move(source);
     m_decoder = std::make_unique<morse::Decoder>();
@@ -270,15 +300,20 @@ void MorsePanel::refresh()
         m_ip->setText(tr("IP: –"));
     m_connect->setEnabled(ip.complete());
     QString status;
-    if (m_source.samples.empty())
+    if (!m_error.isEmpty())
+        status = m_error;
+    else if (m_source.samples.empty() && m_live)
+        status = tr("Waiting for the blinking LED…");
+    else if (m_source.samples.empty())
         status = tr("Open a video of the green STATUS LED (at least two message repetitions) or a "
-                    "CSV of samples.");
+                    "CSV of samples, or start a camera.");
     else if (d.confident())
         status = tr("Confident: %1 agreeing messages, unit %2 ms.")
                      .arg(ip.messages)
                      .arg(d.unitFit().unit * 1000.0, 0, 'f', 0);
     else
-        status = (playing() ? tr("Decoding… ") : QString()) + morse::reasonText(d.reason());
+        status =
+            (playing() || m_live ? tr("Decoding… ") : QString()) + morse::reasonText(d.reason());
     m_status->setText(status);
 }
 

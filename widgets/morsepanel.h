@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+class QComboBox;
 class QCustomPlot;
 class QCPGraph;
 class QLabel;
@@ -20,6 +21,8 @@ class QTimer;
 class QToolButton;
 
 namespace db::widgets {
+
+class MorseLiveSource;
 
 // What the panel plays: brightness samples, and for a video the LED region and a frame.
 struct MorseSource
@@ -38,6 +41,11 @@ struct MorseSource
 // Files are read through a loader that app/ injects (widgets know no video library). A loaded
 // recording is played into a morse::Decoder at kPlaybackSpeed times real time on a timer (the
 // plot replots at most kReplotHz); finishPlayback() decodes the rest at once.
+//
+// Live (morsepanel_live.cpp): a MorseLiveSource (a camera, injected by app/) feeds its samples
+// straight into the decoder as they come; the plot shows the last 20 s, the frame view the
+// camera's preview with the LED region (drag a rectangle on it to give the region, double-click
+// to find it automatically again). Stopping keeps the result.
 class MorsePanel : public QWidget
 {
     Q_OBJECT
@@ -50,6 +58,12 @@ public:
     ~MorsePanel() override;
 
     void setLoader(Loader loader) { m_loader = std::move(loader); }
+    // The camera input (not owned; nullptr: none in this build). Lists its devices at once.
+    void setLiveSource(MorseLiveSource *source);
+    // Starts camera `index` of the live source with a new decoder; false with the reason shown.
+    bool startLive(int index);
+    void stopLive();
+    bool live() const { return m_live; }
     // Loads `path` through the loader and starts playback; false with the reason shown.
     bool openFile(const QString &path);
     void setSource(MorseSource source);
@@ -65,14 +79,31 @@ Q_SIGNALS:
     // "Connect" (refgo://IP) or its menu (canopen+slcan://IP?node=50).
     void connectRequested(const QString &uri);
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
+    static constexpr double kLiveKeep = 60.0; // s of brightness kept in the live plot
+
     void chooseFile();
+    void rebuildCameraList();
+    void updateCameraControls();
+    void liveSamples(const std::vector<morse::Sample> &samples);
+    void livePreview(const QImage &image, const QRect &region);
+    void liveStatus(const QString &text);
+    void liveError(const QString &message);
+    QPoint framePixel(const QPoint &labelPos) const;
     void step();
     void feedUntil(std::size_t end);
     void refresh();
     void updateFrame();
 
     Loader m_loader;
+    MorseLiveSource *m_liveSource = nullptr;
+    bool m_live = false;
+    QString m_cameraName;
+    QString m_error; // shown in the status line until the next start or open
+    QPoint m_dragFrom { -1, -1 }; // frame pixels; x < 0: no drag
     MorseSource m_source;
     std::unique_ptr<morse::Decoder> m_decoder;
     std::size_t m_fed = 0;
@@ -83,6 +114,10 @@ private:
 
     QTimer *m_timer;
     QPushButton *m_open;
+    QComboBox *m_cameras;
+    QPushButton *m_startCamera;
+    QPushButton *m_stopCamera;
+    QTimer *m_liveRefresh; // coalesces live refreshes to kReplotHz
     QLabel *m_sourceLabel;
     QLabel *m_frame;
     QCustomPlot *m_plot;

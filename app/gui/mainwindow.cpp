@@ -1,5 +1,6 @@
 #include "mainwindow.h"
 
+#include "cameralivesource.h"
 #include "canopen/canopenconnection.h"
 #include "morse/morseinput.h"
 #include "widgets/canmonitor.h"
@@ -152,6 +153,7 @@ void MainWindow::createDocks()
     // Morse IP decoder (issue 7): files read by app/morse, "Connect" prefills the dialog.
     auto *morse = new widgets::MorsePanel(this);
     morse->setLoader(loadMorseSource);
+    morse->setLiveSource(new CameraLiveSource(morse)); // live camera input (Qt Multimedia)
     connect(morse, &widgets::MorsePanel::connectRequested, this, &MainWindow::showConnectDialogFor);
     // In a scroll area: the bottom docks stay low on a laptop screen.
     auto *morseScroll = new QScrollArea(this);

@@ -188,6 +188,69 @@ QRect findLedRegion(const GreyFrames &g)
         & QRect(0, 0, g.width, g.height);
 }
 
+QSize analysisSize(QSize frame)
+{
+    if (frame.width() <= 0 || frame.height() <= 0)
+        return {};
+    const int sw = std::min(frame.width(), kAnalysisWidth);
+    return QSize(sw, std::max(1, frame.height() * sw / frame.width()));
+}
+
+std::vector<unsigned char> scaleGrey(const unsigned char *grey, QSize size, int stride, QSize to)
+{
+    if (!grey || size.isEmpty() || to.isEmpty() || stride < size.width())
+        return {};
+    thread_local Sws sws; // cached per thread: the camera scales every frame at the same size
+    sws.p =
+        sws_getCachedContext(sws.p, size.width(), size.height(), AV_PIX_FMT_GRAY8, to.width(),
+                             to.height(), AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
+    if (!sws.p)
+        return {};
+    std::vector<unsigned char> out(std::size_t(to.width() * to.height()));
+    const uint8_t *src[1] = { grey };
+    const int srcStride[1] = { stride };
+    uint8_t *dst[1] = { out.data() };
+    const int dstStride[1] = { to.width() };
+    sws_scale(sws.p, src, srcStride, 0, size.height(), dst, dstStride);
+    return out;
+}
+
+double regionMean(const std::vector<unsigned char> &frame, int width, const QRect &region)
+{
+    double s = 0.0;
+    for (int y = region.top(); y <= region.bottom(); ++y) {
+        for (int x = region.left(); x <= region.right(); ++x)
+            s += frame[std::size_t(y * width + x)];
+    }
+    return s / double(std::max(1, region.width() * region.height()));
+}
+
+QRect toAnalysisRegion(const QRect &frameRegion, QSize frame, QSize analysis)
+{
+    const int w = frame.width();
+    const int h = frame.height();
+    const int sw = analysis.width();
+    const int sh = analysis.height();
+    const QRect fr = QRect(QPoint(0, 0), frame) & frameRegion;
+    if (fr.isEmpty() || analysis.isEmpty())
+        return {};
+    return QRect(QPoint(fr.left() * sw / w, fr.top() * sh / h),
+                 QPoint(std::max(fr.left() * sw / w, (fr.right() * sw) / w),
+                        std::max(fr.top() * sh / h, (fr.bottom() * sh) / h)));
+}
+
+QRect toFrameRegion(const QRect &r, QSize frame, QSize analysis)
+{
+    if (r.isEmpty() || analysis.isEmpty())
+        return {};
+    const int w = frame.width();
+    const int h = frame.height();
+    const int sw = analysis.width();
+    const int sh = analysis.height();
+    return QRect(QPoint(r.left() * w / sw, r.top() * h / sh),
+                 QPoint(((r.right() + 1) * w) / sw - 1, ((r.bottom() + 1) * h) / sh - 1));
+}
+
 Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion)
 {
     if (!QFileInfo::exists(path))
@@ -212,8 +275,9 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     const int h = dec.p->height;
     if (w <= 0 || h <= 0)
         return ioError(QStringLiteral("%1: video without a frame size").arg(path));
-    const int sw = std::min(w, kAnalysisWidth);
-    const int sh = std::max(1, h * sw / w);
+    const QSize analysis = analysisSize(QSize(w, h));
+    const int sw = analysis.width();
+    const int sh = analysis.height();
     const int pw = std::min(w, kPreviewWidth);
     const int ph = std::max(1, h * pw / w);
 
@@ -272,31 +336,18 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     // Region in analysis pixels.
     QRect r;
     if (userRegion) {
-        const QRect fr = QRect(0, 0, w, h) & *userRegion;
-        if (fr.isEmpty())
+        r = toAnalysisRegion(*userRegion, rec.frameSize, analysis);
+        if (r.isEmpty())
             return Error(Error::Kind::InvalidArgument,
                          QStringLiteral("region outside the %1x%2 frame").arg(w).arg(h));
-        r = QRect(QPoint(fr.left() * sw / w, fr.top() * sh / h),
-                  QPoint(std::max(fr.left() * sw / w, (fr.right() * sw) / w),
-                         std::max(fr.top() * sh / h, (fr.bottom() * sh) / h)));
     } else {
         r = findLedRegion(grey);
     }
-    if (r.isEmpty()) {
-        rec.region = {};
-    } else {
-        rec.region = QRect(QPoint(r.left() * w / sw, r.top() * h / sh),
-                           QPoint(((r.right() + 1) * w) / sw - 1, ((r.bottom() + 1) * h) / sh - 1));
-    }
+    rec.region = toFrameRegion(r, rec.frameSize, analysis);
     const QRect use = r.isEmpty() ? QRect(0, 0, sw, sh) : r;
     double brightest = -1.0;
     for (std::size_t f = 0; f < grey.frames.size(); ++f) {
-        double s = 0.0;
-        for (int y = use.top(); y <= use.bottom(); ++y) {
-            for (int x = use.left(); x <= use.right(); ++x)
-                s += grey.frames[f][std::size_t(y * sw + x)];
-        }
-        const double v = s / double(use.width() * use.height());
+        const double v = regionMean(grey.frames[f], sw, use);
         rec.samples.push_back({ times[f], v });
         if (f % 8 == 0 && v > brightest) {
             brightest = v;

@@ -61,4 +61,16 @@ struct GreyFrames
 // pixel, grown by one pixel. Empty when no pixel is modulated above the noise.
 QRect findLedRegion(const GreyFrames &frames);
 
+// The analysis frame size for frames of `frame` size: at most kAnalysisWidth wide, same aspect.
+QSize analysisSize(QSize frame);
+// Scales a grey (luma) plane, `stride` bytes per row, to `to` with the area filter readVideo
+// uses for video frames (libswscale). Empty when a size is not positive.
+std::vector<unsigned char> scaleGrey(const unsigned char *grey, QSize size, int stride, QSize to);
+// Mean grey level inside `region` (analysis pixels, inside the frame) of one analysis frame.
+double regionMean(const std::vector<unsigned char> &frame, int width, const QRect &region);
+// A region in frame pixels to analysis pixels (clipped to the frame; empty when outside it),
+// and back (the frame pixels an analysis region covers).
+QRect toAnalysisRegion(const QRect &frameRegion, QSize frame, QSize analysis);
+QRect toFrameRegion(const QRect &analysisRegion, QSize frame, QSize analysis);
+
 } // namespace db::morseio

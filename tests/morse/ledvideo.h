@@ -11,9 +11,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace morsetest {
+
+// The signal the LED tests blink: `text` at `rate` samples (frames) per second, a 100 ms dit
+// with 10 % jitter, three repetitions starting `startOffset` into the message.
+inline db::morse::SignalOptions ledSignal(const QString &text, double rate, unsigned seed,
+                                          double startOffset = 0.6)
+{
+    db::morse::SignalOptions o;
+    o.text = text;
+    o.sampleRate = rate;
+    o.unit = 0.1;
+    o.startOffset = startOffset;
+    o.jitter = 0.1;
+    o.repetitions = 3;
+    o.seed = seed;
+    return o;
+}
 
 struct LedScene
 {
@@ -27,44 +44,74 @@ struct LedScene
     bool ledVisible = true;
 };
 
+// The scene's frames one at a time (for videos and for frames pushed into a live source):
+// frame f of the generated signal as width * height grey bytes. Draw frames in order: the
+// pixel noise is one deterministic sequence.
+class LedRenderer
+{
+public:
+    LedRenderer(db::morse::SignalOptions signal, const LedScene &scene = {})
+        : m_scene(scene)
+    {
+        signal.amplitude = 1.0;
+        signal.ambient = 0.0;
+        signal.drift = 0.0;
+        signal.gainDrift = 0.0;
+        signal.snrDb = std::numeric_limits<double>::infinity(); // noise comes from the pixels
+        m_signal = db::morse::generateSignal(signal);
+        m_fps = static_cast<int>(std::lround(signal.sampleRate));
+        m_state = signal.seed * 2654435761u + 1u;
+        // Background texture and LED coverage per pixel, computed once.
+        m_base.resize(std::size_t(scene.width * scene.height));
+        m_cover.resize(m_base.size());
+        for (int y = 0; y < scene.height; ++y) {
+            for (int x = 0; x < scene.width; ++x) {
+                const double dx = x - scene.led.x();
+                const double dy = y - scene.led.y();
+                const double r = std::sqrt(dx * dx + dy * dy);
+                const auto i = std::size_t(y * scene.width + x);
+                m_base[i] = scene.background + 25.0 * std::sin(x * 0.09) * std::cos(y * 0.07);
+                m_cover[i] = std::clamp(scene.radius + 1.0 - r, 0.0, 1.0) * scene.ledOn;
+            }
+        }
+    }
+
+    const db::morse::Signal &signal() const { return m_signal; }
+    int fps() const { return m_fps; }
+    int frames() const { return static_cast<int>(m_signal.samples.size()); }
+
+    void draw(int f, unsigned char *grey)
+    {
+        const double on =
+            m_scene.ledVisible ? std::clamp(m_signal.samples[std::size_t(f)].value, 0.0, 1.0) : 0.0;
+        for (std::size_t i = 0; i < m_base.size(); ++i) {
+            const double v = m_base[i] + m_cover[i] * on + m_scene.noise * gauss();
+            grey[i] = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0));
+        }
+    }
+
+private:
+    double gauss() // uniform, sigma 1 (cheap; the decoder only sees region means)
+    {
+        m_state = m_state * 1664525u + 1013904223u;
+        return (double(m_state >> 8) / double(1u << 24) - 0.5) * std::sqrt(12.0);
+    }
+
+    LedScene m_scene;
+    db::morse::Signal m_signal;
+    int m_fps = 0;
+    unsigned m_state = 0;
+    std::vector<double> m_base;
+    std::vector<double> m_cover;
+};
+
 inline db::Result<void> renderLedVideo(const QString &path, db::morse::SignalOptions signal,
                                        const LedScene &scene = {})
 {
-    signal.amplitude = 1.0;
-    signal.ambient = 0.0;
-    signal.drift = 0.0;
-    signal.gainDrift = 0.0;
-    signal.snrDb = std::numeric_limits<double>::infinity(); // noise comes from the pixels
-    const db::morse::Signal sig = db::morse::generateSignal(signal);
-    const int fps = static_cast<int>(std::lround(signal.sampleRate));
-    unsigned state = signal.seed * 2654435761u + 1u;
-    auto gauss = [&state] { // uniform, sigma 1 (cheap; the decoder only sees region means)
-        state = state * 1664525u + 1013904223u;
-        return (double(state >> 8) / double(1u << 24) - 0.5) * std::sqrt(12.0);
-    };
-    // Background texture and LED coverage per pixel, computed once.
-    std::vector<double> base(std::size_t(scene.width * scene.height));
-    std::vector<double> cover(base.size());
-    for (int y = 0; y < scene.height; ++y) {
-        for (int x = 0; x < scene.width; ++x) {
-            const double dx = x - scene.led.x();
-            const double dy = y - scene.led.y();
-            const double r = std::sqrt(dx * dx + dy * dy);
-            const auto i = std::size_t(y * scene.width + x);
-            base[i] = scene.background + 25.0 * std::sin(x * 0.09) * std::cos(y * 0.07);
-            cover[i] = std::clamp(scene.radius + 1.0 - r, 0.0, 1.0) * scene.ledOn;
-        }
-    }
-    return db::morseio::writeGreyVideo(
-        path, scene.width, scene.height, fps, static_cast<int>(sig.samples.size()),
-        [&](int f, unsigned char *grey) {
-            const double on =
-                scene.ledVisible ? std::clamp(sig.samples[std::size_t(f)].value, 0.0, 1.0) : 0.0;
-            for (std::size_t i = 0; i < base.size(); ++i) {
-                const double v = base[i] + cover[i] * on + scene.noise * gauss();
-                grey[i] = static_cast<unsigned char>(std::clamp(v, 0.0, 255.0));
-            }
-        });
+    LedRenderer renderer(std::move(signal), scene);
+    return db::morseio::writeGreyVideo(path, scene.width, scene.height, renderer.fps(),
+                                       renderer.frames(),
+                                       [&](int f, unsigned char *grey) { renderer.draw(f, grey); });
 }
 
 } // namespace morsetest

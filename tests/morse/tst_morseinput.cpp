@@ -18,15 +18,9 @@ namespace {
 
 SignalOptions ledSignal(double fps, double unit, const QString &text)
 {
-    SignalOptions o;
-    o.text = text;
-    o.sampleRate = fps;
+    SignalOptions o = morsetest::ledSignal(text, fps, 11, 0.3);
     o.unit = unit;
     o.exposure = 0.5;
-    o.startOffset = 0.3;
-    o.repetitions = 3;
-    o.jitter = 0.1;
-    o.seed = 11;
     return o;
 }
 

@@ -33,14 +33,7 @@ Result<MorseSource> load(const QString &path)
 
 morse::SignalOptions signal(const QString &text)
 {
-    morse::SignalOptions o;
-    o.text = text;
-    o.sampleRate = 25.0;
-    o.unit = 0.1;
-    o.startOffset = 0.6;
-    o.jitter = 0.1;
-    o.seed = 5;
-    return o;
+    return morsetest::ledSignal(text, 25.0, 5);
 }
 
 } // namespace
