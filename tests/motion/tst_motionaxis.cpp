@@ -1,8 +1,6 @@
 // Level 2/3: the command model over Cia402Axis against the simulated MovingCap (in-process, over
 // RefGo and over CANopen SDO): sequences of stoeber_motion.md Sec. 10 and the safety stops.
-#include "motion/cia402axis.h"
-#include "motion/motionaxis.h"
-#include "rig.h"
+#include "motionaxisrig.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -15,41 +13,14 @@ using Status = MotionCommand::Status;
 namespace {
 constexpr double kTolerance = 2.0; // units; the drive reports integer positions
 
-struct Axis
+std::unique_ptr<MotionRig> makeAxis(const QString &kind)
 {
-    std::unique_ptr<Rig> rig;
-    std::unique_ptr<Cia402Axis> cia;
-    std::unique_ptr<MotionAxis> axis;
-};
-
-std::unique_ptr<Axis> makeAxis(const QString &kind)
-{
-    auto a = std::make_unique<Axis>();
-    a->rig = makeRig(kind);
-    if (!a->rig)
-        return nullptr;
-    a->cia = std::make_unique<Cia402Axis>(a->rig->connection.get());
-    a->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
-    if (!awaitReply(a->cia->initialize()).ok())
-        return nullptr;
-    a->axis = std::make_unique<MotionAxis>(a->cia.get());
-    AxisConfig c;
-    c.maxVelocity = 50000;
-    c.maxAcceleration = 200000; // 6083h <= 20000 raw = 200000 units/s^2 here
-    c.positionWindow = 1.0;
-    c.velocityWindow = 10.0;
-    a->axis->setConfig(c);
-    return a;
+    return makeMotionRig(kind, 50000);
 }
 
 MoveParams params(double position, double velocity = 20000, double acceleration = 100000)
 {
-    MoveParams p;
-    p.position = position;
-    p.velocity = velocity;
-    p.acceleration = p.deceleration = acceleration;
-    p.jerk = 1e6;
-    return p;
+    return moveParams(position, velocity, acceleration);
 }
 
 void pulse(MotionCommand &c)

@@ -3,9 +3,7 @@
 // Done, it continues when the override rises), S-27 (MC_Stop during override 0: the axis stays
 // stopped until a new command), the override clamped at I10 with I193 (D-15), and the
 // position window time I87 before Done (S-03, S-04).
-#include "motion/cia402axis.h"
-#include "motion/motionaxis.h"
-#include "rig.h"
+#include "motionaxisrig.h"
 
 #include <QTest>
 
@@ -17,30 +15,12 @@ using Status = MotionCommand::Status;
 namespace {
 constexpr double kTolerance = 2.0;
 
-struct Axis
+// The simulated MovingCap in-process, limited to 3000 units/s, powered.
+std::unique_ptr<MotionRig> makeAxis()
 {
-    std::unique_ptr<Rig> rig;
-    std::unique_ptr<Cia402Axis> cia;
-    std::unique_ptr<MotionAxis> axis;
-};
-
-std::unique_ptr<Axis> makeAxis()
-{
-    auto a = std::make_unique<Axis>();
-    a->rig = makeRig(QStringLiteral("sim"));
-    if (!a->rig)
+    auto a = makeMotionRig(QStringLiteral("sim"), 3000);
+    if (!a)
         return nullptr;
-    a->cia = std::make_unique<Cia402Axis>(a->rig->connection.get());
-    a->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
-    if (!awaitReply(a->cia->initialize()).ok())
-        return nullptr;
-    a->axis = std::make_unique<MotionAxis>(a->cia.get());
-    AxisConfig c;
-    c.maxVelocity = 3000;
-    c.maxAcceleration = 200000;
-    c.positionWindow = 1.0;
-    c.velocityWindow = 10.0;
-    a->axis->setConfig(c);
     MotionCommand power(a->axis.get(), CommandKind::Power);
     power.setExecute(true);
     if (!QTest::qWaitFor([&] { return power.isFinished(); }, 5000)
@@ -51,12 +31,7 @@ std::unique_ptr<Axis> makeAxis()
 
 MoveParams params(double position, double velocity)
 {
-    MoveParams p;
-    p.position = position;
-    p.velocity = velocity;
-    p.acceleration = p.deceleration = 20000;
-    p.jerk = 1e6;
-    return p;
+    return moveParams(position, velocity, 20000);
 }
 
 // Lets the status poll run `rounds` times (no fixed sleep: counts statusChanged).
