@@ -60,6 +60,7 @@ public:
     void setLoader(Loader loader) { m_loader = std::move(loader); }
     // The camera input (not owned; nullptr: none in this build). Lists its devices at once.
     void setLiveSource(MorseLiveSource *source);
+    MorseLiveSource *liveSource() const { return m_liveSource; }
     // Starts camera `index` of the live source with a new decoder; false with the reason shown.
     bool startLive(int index);
     void stopLive();

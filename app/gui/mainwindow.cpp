@@ -153,16 +153,21 @@ void MainWindow::createDocks()
     // Morse IP decoder (issue 7): files read by app/morse, "Connect" prefills the dialog.
     auto *morse = new widgets::MorsePanel(this);
     morse->setLoader(loadMorseSource);
-    morse->setLiveSource(new CameraLiveSource(morse)); // live camera input (Qt Multimedia)
     connect(morse, &widgets::MorsePanel::connectRequested, this, &MainWindow::showConnectDialogFor);
     // In a scroll area: the bottom docks stay low on a laptop screen.
     auto *morseScroll = new QScrollArea(this);
     morseScroll->setWidget(morse);
     morseScroll->setWidgetResizable(true);
     morseScroll->setFrameShape(QFrame::NoFrame);
-    tabifyDockWidget(log,
-                     addDock(morseScroll, tr("Morse IP"), QStringLiteral("morseDock"),
-                             Qt::BottomDockWidgetArea));
+    QDockWidget *morseDock =
+        addDock(morseScroll, tr("Morse IP"), QStringLiteral("morseDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(log, morseDock);
+    // Live camera input (Qt Multimedia): listing cameras loads the media backend, so it is
+    // attached when the tab is first shown, not at start-up.
+    connect(morseDock, &QDockWidget::visibilityChanged, morse, [morse](bool visible) {
+        if (visible && !morse->liveSource())
+            morse->setLiveSource(new CameraLiveSource(morse));
+    });
     log->raise();
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
     m_objectAccess->setMinimumWidth(320);

@@ -4,6 +4,7 @@
 #include "widgets/devicelist.h"
 #include "widgets/drivestatuspanel.h"
 #include "widgets/logconsole.h"
+#include "widgets/morsepanel.h"
 #include "widgets/objectaccessbox.h"
 
 #include <QDockWidget>
@@ -95,6 +96,19 @@ private Q_SLOTS:
         MainWindow again(m_registry);
         QCOMPARE(again.recentConnections(),
                  (QStringList { QStringLiteral("fake://b"), QStringLiteral("fake://a") }));
+    }
+
+    // The camera (Qt Multimedia) is attached when the Morse tab is first shown, not at start-up.
+    void cameraIsAttachedWhenTheMorseTabIsShown()
+    {
+        MainWindow window(m_registry);
+        window.show();
+        auto *panel = window.findChild<widgets::MorsePanel *>();
+        auto *dock = window.findChild<QDockWidget *>(QStringLiteral("morseDock"));
+        QVERIFY(panel && dock);
+        QVERIFY(!panel->liveSource());
+        dock->raise();
+        QTRY_VERIFY(panel->liveSource());
     }
 
     void fitsALaptopScreen()
