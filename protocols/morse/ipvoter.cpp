@@ -121,42 +121,31 @@ IpEstimate IpVoter::estimate() const
         }
         std::vector<std::pair<double, int>> ranked;
         for (auto &[value, sum] : total) {
-            for (const Reading &r : m_readings) {
-                const auto it = r.cost[i].find(value);
-                sum += r.cap[i] <= 0.0 ? 0.0 : (it == r.cost[i].end() ? r.cap[i] : it->second);
-            }
+            for (const Reading &r : m_readings)
+                sum += r.costOf(i, value);
             ranked.emplace_back(sum, value);
         }
         std::sort(ranked.begin(), ranked.end());
+        auto add = [&list = candidates[i]](int value) {
+            if (std::find(list.begin(), list.end(), value) == list.end())
+                list.push_back(value);
+        };
         // Every value a reading read whole, then the cheapest others.
         for (const Reading &r : m_readings) {
-            if (r.value[i] >= 0
-                && std::find(candidates[i].begin(), candidates[i].end(), r.value[i])
-                    == candidates[i].end())
-                candidates[i].push_back(r.value[i]);
+            if (r.value[i] >= 0)
+                add(r.value[i]);
         }
         const std::size_t read = candidates[i].size();
-        for (std::size_t k = 0; k < ranked.size() && candidates[i].size() < read + kCandidates;
-             ++k) {
-            if (std::find(candidates[i].begin(), candidates[i].end(), ranked[k].second)
-                == candidates[i].end())
-                candidates[i].push_back(ranked[k].second);
-        }
+        for (std::size_t k = 0; k < ranked.size() && candidates[i].size() < read + kCandidates; ++k)
+            add(ranked[k].second);
         candidates[i].push_back(kOther);
     }
     // cost[r][i][c]: reading r's cost for candidate c of octet i (0 where r did not read i).
     std::vector<std::array<std::vector<double>, 4>> cost(m_readings.size());
     for (std::size_t r = 0; r < m_readings.size(); ++r) {
         for (std::size_t i = 0; i < 4; ++i) {
-            const Reading &reading = m_readings[r];
-            for (int value : candidates[i]) {
-                const auto it = reading.cost[i].find(value);
-                cost[r][i].push_back(reading.cap[i] <= 0.0
-                                         ? 0.0
-                                         : (it == reading.cost[i].end()
-                                                ? reading.cap[i]
-                                                : std::min(it->second, reading.cap[i])));
-            }
+            for (int value : candidates[i])
+                cost[r][i].push_back(m_readings[r].costOf(i, value));
         }
     }
     // Every combination of candidates; per octet and candidate the cheapest address using it.

@@ -79,6 +79,14 @@ private:
         std::array<std::map<int, double>, 4> cost; // by value; values not listed cost `cap`
         std::array<double, 4> cap {}; // 0: octet not read
         std::array<int, 4> value { -1, -1, -1, -1 }; // the value read
+        // Nats this reading charges `v` for octet i: 0 where it did not read octet i.
+        double costOf(std::size_t i, int v) const
+        {
+            if (cap[i] <= 0.0)
+                return 0.0;
+            const auto it = cost[i].find(v);
+            return it == cost[i].end() ? cap[i] : it->second;
+        }
     };
     std::vector<Reading> m_readings;
     std::vector<std::array<int, 4>> m_complete;
