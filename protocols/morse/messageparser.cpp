@@ -22,6 +22,12 @@ constexpr double kMinWeight = 0.05;
 constexpr double kSkipCost = 3.0;
 // Soft octet costs beyond this (nats) are not kept: the voter caps each reading lower.
 constexpr double kSoftRange = 2.0 * IpVoter::kMaxWeight * IpVoter::kNatsPerWeight;
+// Beam: a partial parse costlier by this much (nats) than the best one over the same marks is
+// not followed. It lies above kSoftRange, the most the voter uses. With strong timing jitter the
+// element model is wide and, without the beam, ~1300 octet states survived every mark (500 ms
+// per corpus case instead of 110). It also drops contrived parses that become cheapest only at
+// the end: a noisy "5+179+10+170" read as "089+110+100+070" (bench j30+6dB<3spu, seed 7).
+constexpr double kBeam = 15.0;
 
 // Grammar states: P(j) expects prefix character j of "MC+IP"; O(k, n, v) is inside octet k
 // after n digits of value v; U(k) is inside octet k whose first digits were before the
@@ -233,6 +239,14 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
+        // Beam: states far costlier than the best one on the same marks are dropped. Start
+        // states (salvage, cut start) stay, so that a reading may still begin there.
+        double least = kInf;
+        for (const auto &entry : layer[i])
+            least = std::min(least, entry.second.cost);
+        std::erase_if(layer[i], [least](const auto &entry) {
+            return entry.second.ch >= 0 && entry.second.cost > least + kBeam;
+        });
         for (const auto &[st, cell] : layer[i]) {
             for (const auto &[ch, edit, cc] : options[i]) {
                 const bool unanchored = st >= kStates;
