@@ -11,6 +11,16 @@ constexpr double kWindow = 4.0; // s of history for acquisition
 constexpr double kCheckEvery = 0.25; // s between acquisition checks
 constexpr double kMinContrast = 2.5; // noise sigmas between the two levels
 constexpr double kLevelTau = 0.8; // s; level tracking time constant
+// Drift tracking (alpha-beta on both levels): the assumed drift acceleration, in contrasts per
+// s^2 (a 30 % auto-exposure swing over 23 s on an ambient of five contrasts is ~0.1); the
+// fastest level time constant; the fastest slope, in contrasts per second; and the least
+// contrast, in noise sigmas, at which the slope is tracked at all. In stronger noise the slope
+// estimate costs more than it mends (bench: noise 6 dB, 120 cases, seed 5: confident within
+// two repetitions 99.2 % without the slope, 97.5 % with it).
+constexpr double kDriftAccel = 0.1;
+constexpr double kFastTau = 0.4;
+constexpr double kMaxSlope = 1.0;
+constexpr double kSlopeContrast = 8.0;
 constexpr double kHysteresis = 0.1; // of high - low, either side of the threshold
 constexpr double kMinFrames = 1.0; // shorter intervals are noise: merged at once
 constexpr double kQuiet = 8.0; // s without an edge before the levels are checked again
@@ -134,6 +144,7 @@ void LevelSlicer::process(const Point &p)
         if (bimodal(&lo, &hi)) {
             m_low = lo;
             m_high = hi;
+            m_slope = 0.0;
             const bool on = p.x >= (lo + hi) / 2.0;
             if (!m_tracking) {
                 m_on = on;
@@ -149,6 +160,11 @@ void LevelSlicer::process(const Point &p)
         }
     }
     if (m_tracking) {
+        // Both levels move with the common drift estimated so far (ambient light ramps, slow
+        // auto exposure), so that they do not lag behind a steady ramp.
+        const double dt = p.t - m_prevT;
+        m_low += m_slope * dt;
+        m_high += m_slope * dt;
         const double thr = (m_low + m_high) / 2.0;
         const double h = kHysteresis * (m_high - m_low);
         if ((m_prevX < thr) != (p.x < thr) && p.x != m_prevX)
@@ -159,14 +175,32 @@ void LevelSlicer::process(const Point &p)
             edge(m_cross > m_openStart ? m_cross : p.t);
         // The off level follows the clearly-off samples; the contrast follows the clearly-on
         // samples relative to it. During a long dark gap `high` moves with `low` (additive
-        // drift, the common case), instead of freezing at a stale value.
-        const double a = std::min(1.0, (p.t - m_prevT) / kLevelTau);
+        // drift, the common case), instead of freezing at a stale value. The residuals of
+        // either level also update the common slope (an alpha-beta tracker: no lag on a ramp).
         const double contrast = m_high - m_low;
-        if (m_on && p.x > thr + h)
-            m_high = m_low + contrast + a * (p.x - m_low - contrast);
-        else if (!m_on && p.x < thr - h) {
-            m_low += a * (p.x - m_low);
+        double a = std::min(1.0, dt / kLevelTau);
+        double b = 0.0;
+        if (dt > 0.0 && contrast > kSlopeContrast * m_noise) {
+            // Steady-state alpha-beta gains (Kalata) for drift of kDriftAccel * contrast per s^2
+            // seen through the measured noise: quick on a clean signal, calm in noise.
+            const double noise = std::max(m_noise, 1e-3 * contrast);
+            const double lambda = kDriftAccel * contrast * dt * dt / noise;
+            const double r = (4.0 + lambda - std::sqrt(8.0 * lambda + lambda * lambda)) / 4.0;
+            a = std::min(1.0 - r * r, dt / kFastTau);
+            b = std::max(0.0, 2.0 * (2.0 - a) - 4.0 * std::sqrt(1.0 - a));
+        }
+        double residual = 0.0;
+        if (m_on && p.x > thr + h) {
+            residual = p.x - m_high;
+            m_high = m_low + contrast + a * residual;
+        } else if (!m_on && p.x < thr - h) {
+            residual = p.x - m_low;
+            m_low += a * residual;
             m_high = m_low + contrast;
+        }
+        if (dt > 0.0) {
+            const double limit = kMaxSlope * std::max(0.0, m_high - m_low);
+            m_slope = std::clamp(m_slope + b * residual / dt, -limit, limit);
         }
     }
     m_prevT = p.t;

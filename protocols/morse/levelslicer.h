@@ -18,7 +18,9 @@ namespace db::morse {
 // 3. Tracking: decision-directed levels. `low` follows the mean of samples that are clearly
 //    off, the contrast `high - low` that of clearly-on samples minus `low` (time constant
 //    kLevelTau), so ambient light, drift and auto exposure move the threshold
-//    (low + high) / 2 with them, also through long dark gaps. A hysteresis of kHysteresis * (high -
+//    (low + high) / 2 with them, also through long dark gaps. Where the contrast is at least
+//    8 noise sigmas, both levels also follow a common slope (alpha-beta tracker), so that a
+//    ramp of ambient light does not leave them behind. A hysteresis of kHysteresis * (high -
 //    low) decides the state; the edge time is the linear interpolation of the threshold crossing
 //    between two samples. An interval shorter than one sample period is noise and merged into the
 //    one before.
@@ -73,6 +75,7 @@ private:
     double m_lastCheck = -1e300;
     double m_low = 0.0;
     double m_high = 0.0;
+    double m_slope = 0.0; // common drift of both levels, per second
     double m_noise = 0.0;
     double m_prevT = 0.0;
     double m_prevX = 0.0;

@@ -11,7 +11,8 @@
 // first two messages can last longer than two nominal periods). Where the decoder does not reach a
 // target yet, the check is marked QEXPECT_FAIL with the measured figure, so the gap stays visible
 // (XFAIL) and turns into a failure (XPASS) once it is closed. Other conditions (drift, duty error)
-// have no target in the issue: they assert only that no case is ever confident in a wrong address.
+// have no target in the issue: they assert that no case is ever confident in a wrong address, and
+// drift a floor that guards the level tracking.
 //
 // Decodability (CorpusCondition::minSamplesPerUnit): a dit shorter than a frame cannot be told
 // from its gaps (at 15 fps a 60 ms dit is 0.9 frames), so the corpus draws dits of at least
@@ -56,8 +57,10 @@ private slots:
         row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
         row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
             "confident within two repetitions: 96 % measured (seed 20240601)");
-        row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, kNone,
-            kNone);
+        // No target in the issue; a guard for the slicer's drift tracking (30/30 and 30/30
+        // measured; 29/30 and 26/30 before the levels tracked the slope).
+        row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, 0.95,
+            0.9);
         row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, kNone, kNone);
     }
     void corpus()

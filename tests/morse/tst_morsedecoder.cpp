@@ -1,6 +1,7 @@
 // The decoder on generated signals: the spec example (movingcap.md 2.2), streaming partial
 // results and events, and the reasons given when nothing can be decoded.
 #include "morse/decoder.h"
+#include "morse/levelslicer.h"
 #include "morse/messageparser.h"
 #include "morse/morsecode.h"
 #include "morse/signalgenerator.h"
@@ -120,6 +121,32 @@ private slots:
         QVERIFY(std::count(kinds.begin(), kinds.end(), DecoderEvent::Kind::UnitFound) == 1);
         QVERIFY(std::count(kinds.begin(), kinds.end(), DecoderEvent::Kind::IpConfident) == 1);
         QVERIFY(std::abs(decoder.unitFit().unit - 0.1) < 0.005);
+    }
+
+    // Ambient light rising by 0.3 contrasts per second (a lamp warming up, the sun on a
+    // window): the levels follow the ramp without lagging behind it, so the threshold stays in
+    // the middle of the two levels, and the message decodes.
+    void levelsFollowARamp()
+    {
+        SignalOptions o = specSignal(25.0, 0.3);
+        o.snrDb = 30.0;
+        o.drift = 0.3;
+        const Signal sig = generateSignal(o);
+        LevelSlicer slicer;
+        double worst = 0.0;
+        for (const Sample &s : sig.samples) {
+            slicer.feed(s);
+            const double trueLow = o.amplitude * (o.ambient + o.drift * s.t);
+            if (s.t > 10.0) // after the levels have settled
+                worst = std::max(worst, std::abs(slicer.low() - trueLow) / o.amplitude);
+        }
+        // Without the slope the off level lags by up to 0.3 contrasts (tau 0.8 s, frozen for
+        // a dah); the threshold would then sit 0.15 contrasts off the middle.
+        QVERIFY2(worst < 0.12, qPrintable(QStringLiteral("off level off by %1").arg(worst)));
+        const auto r = decodeRecording(sig.samples);
+        QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().message()));
+        QCOMPARE(r->ip.octets, kSpecIp);
+        QVERIFY(r->ip.confidence >= IpVoter::kConfident);
     }
 
     void invalidInput()
