@@ -77,13 +77,23 @@ int next(int s, int c)
 // this cost in nats, which settles readings such as "020" against "120" or "20".
 constexpr double kLeadingZeroCost = 3.0;
 
-// Prior cost of character c in state s (anchored form), beyond how well it fits the marks.
+// Prior cost of character c in state s (either copy), beyond how well it fits the marks.
 double prior(int s, int c)
 {
+    s %= kStates;
     if (s < kOctetBase || s >= kUnknownBase || c < kDigit0 || c >= kDigit0 + 10)
         return 0.0;
     const int rel = s - kOctetBase;
     return (rel / 256) % 4 >= 1 && rel % 256 == 0 ? kLeadingZeroCost : 0.0;
+}
+
+// next() for a state of either copy: from kStates up, the states reached from a cut start
+// without an anchor; their successors stay unanchored until ':' anchors them.
+int step(int st, int c)
+{
+    const bool unanchored = st >= kStates;
+    const int t = next(unanchored ? st - kStates : st, c);
+    return t < 0 || !unanchored || t == kEnd ? t : t + kStates;
 }
 
 struct Cell
@@ -132,16 +142,14 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
             }
             for (std::size_t o = 0; i < n && o < options[i].size(); ++o) {
                 const Option &op = options[i][o];
-                const bool unanchored = st >= kStates;
-                int t = next(unanchored ? st - kStates : st, op.ch);
+                const int t = step(st, op.ch);
                 if (t < 0)
                     continue;
-                t += unanchored && t != kEnd ? kStates : 0;
                 const std::size_t j = i + consumed(op.ch, op.edit);
                 const auto it = back[j].find(t);
                 if (it == back[j].end())
                     continue;
-                const double cc = op.cost + prior(unanchored ? st - kStates : st, op.ch);
+                const double cc = op.cost + prior(st, op.ch);
                 b = std::min(b, cc + it->second);
                 be = std::min(be, cc + backEnd[j].at(t));
             }
@@ -159,10 +167,9 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
             const int k = (s - kOctetBase) / 1024;
             const int v = (s - kOctetBase) % 256;
             for (const Option &op : options[i]) {
-                int t = next(s, op.ch);
-                if (t < 0 || (op.ch != kPlus && op.ch != kColon))
+                const int t = op.ch == kPlus || op.ch == kColon ? step(st, op.ch) : -1;
+                if (t < 0)
                     continue;
-                t += unanchored && t != kEnd ? kStates : 0;
                 const std::size_t j = i + consumed(op.ch, op.edit);
                 const auto &table = unanchored ? backEnd : back;
                 const auto it = table[j].find(t);
@@ -249,15 +256,13 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         });
         for (const auto &[st, cell] : layer[i]) {
             for (const auto &[ch, edit, cc] : options[i]) {
-                const bool unanchored = st >= kStates;
-                int t = next(unanchored ? st - kStates : st, ch);
+                const int t = step(st, ch);
                 if (t < 0)
                     continue;
-                t += unanchored && t != kEnd ? kStates : 0;
                 auto [it, fresh] = layer[i + consumed(ch, edit)].try_emplace(t);
-                const double step = cc + prior(unanchored ? st - kStates : st, ch);
-                if (fresh || cell.cost + step < it->second.cost)
-                    it->second = { cell.cost + step, st, ch, edit };
+                const double cost = cc + prior(st, ch);
+                if (fresh || cell.cost + cost < it->second.cost)
+                    it->second = { cell.cost + cost, st, ch, edit };
             }
         }
     }
@@ -291,12 +296,12 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     std::size_t i = end;
     int s = best;
     while (true) {
-        const Cell step = layer[i].at(s);
-        if (step.ch < 0)
+        const Cell back = layer[i].at(s);
+        if (back.ch < 0)
             break;
-        i -= consumed(step.ch, step.edit);
-        path.push_back({ i, step.prevState, step.ch, step.edit });
-        s = step.prevState;
+        i -= consumed(back.ch, back.edit);
+        path.push_back({ i, back.prevState, back.ch, back.edit });
+        s = back.prevState;
     }
     std::reverse(path.begin(), path.end());
     if (path.empty())

@@ -92,7 +92,6 @@ Signal generateSignal(const SignalOptions &o)
     out.messagePeriod = messageUnits(o.text, o.repeatGap) * o.unit;
     const double offset = std::clamp(o.startOffset, 0.0, 0.999);
     const double t0 = offset * (messageStarts[1] - messageStarts[0]);
-    out.firstMessageStart = offset > 0.0 ? messageStarts[1] - t0 : 0.0;
     messageStarts.push_back(t);
     for (std::size_t r = offset > 0.0 ? 1 : 0; r < messageStarts.size(); ++r)
         out.messageStarts.push_back(messageStarts[r] - t0);

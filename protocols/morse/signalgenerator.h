@@ -43,9 +43,8 @@ struct Signal
 {
     std::vector<Sample> samples;
     double messagePeriod = 0.0; // seconds, nominal (message + repeat gap)
-    double firstMessageStart = 0.0; // recording time at which the first complete message starts
     // Recording times at which the messages from the first complete one on actually start (with
-    // jitter), one more than fit in the recording; messageStarts[0] == firstMessageStart.
+    // jitter), one more than fit in the recording; messageStarts[0]: the first complete message.
     std::vector<double> messageStarts;
     double noiseSigma = 0.0;
 };
