@@ -140,14 +140,10 @@ void MorsePanel::liveStatus(const QString &text)
 void MorsePanel::liveError(const QString &message)
 {
     m_error = message;
-    if (m_live) {
-        m_live = false;
-        m_liveRefresh->stop();
-        m_decoder->finish();
-        m_sourceLabel->setText(tr("Camera \"%1\" (stopped)").arg(m_cameraName));
-        updateCameraControls();
-    }
-    refresh();
+    if (m_live)
+        stopLive(); // the source has stopped already; stop() again does nothing
+    else
+        refresh();
 }
 
 QPoint MorsePanel::framePixel(const QPoint &labelPos) const

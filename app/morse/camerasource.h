@@ -57,7 +57,6 @@ public:
     // Stops the camera (idempotent). The tracker keeps its state until the next start().
     void stop();
     bool isActive() const;
-    QCameraDevice device() const { return m_device; }
 
     // The sink the capture session renders into; frames set on it are consumed.
     QVideoSink *videoSink() const { return m_sink; }

@@ -8,7 +8,6 @@
 
 namespace db::morseio {
 namespace {
-constexpr double kNever = -std::numeric_limits<double>::infinity();
 constexpr double kMinSpreadSigmas = 8.0;
 constexpr double kMinSigma = 0.25; // grey levels: 8-bit quantisation of a region mean
 
@@ -44,9 +43,7 @@ void LiveLedTracker::reset()
     m_lastT = kNever;
     m_lastSampleT = kNever;
     m_lastSearch = kNever;
-    m_step = 0.0;
-    if (m_user)
-        setUserRegion(m_user);
+    m_step = 0.0; // the user region (m_user) is applied again once push() knows the frame size
 }
 
 void LiveLedTracker::setUserRegion(std::optional<QRect> region)

@@ -6,6 +6,7 @@
 #include <QSize>
 
 #include <deque>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -50,7 +51,6 @@ public:
 
     State state() const { return m_state; }
     QRect region() const { return m_region; } // analysis pixels; empty while searching
-    QSize frameSize() const { return m_size; }
     bool userRegion() const { return m_user.has_value(); }
 
 private:
@@ -68,9 +68,10 @@ private:
     QRect m_region;
     QSize m_size;
     State m_state = State::Searching;
-    double m_lastT = -1e300;
-    double m_lastSampleT = -1e300;
-    double m_lastSearch = -1e300;
+    static constexpr double kNever = -std::numeric_limits<double>::infinity();
+    double m_lastT = kNever;
+    double m_lastSampleT = kNever;
+    double m_lastSearch = kNever;
     double m_step = 0.0; // on/off step of the region when found (grey levels)
 };
 
