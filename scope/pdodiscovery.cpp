@@ -3,9 +3,12 @@
 #include "canopen/canopenconnection.h"
 #include "canopen/pdoclient.h"
 #include "canopen/sdoclient.h"
+#include "core/valuecodec.h"
 
 #include <QCoreApplication>
 #include <QPointer>
+
+#include <algorithm>
 
 namespace db::scope {
 
@@ -20,6 +23,7 @@ constexpr quint8 kTypeSyncMax = 240; // 1..240: every n-th SYNC (CiA 301 7.5.2.3
 constexpr quint8 kTypeEventManufacturer = 0xFE;
 constexpr quint8 kTypeEventProfile = 0xFF;
 constexpr ObjectAddress kSyncPeriod { 0x1006, 0 }; // communication cycle period, us
+constexpr int kFirstPdoMs = 1500; // see firstPdoTimeoutMs()
 
 // The type a channel decodes `bits` with: the dictionary's when it has that size, else an
 // unsigned integer of that size; nullopt when no numeric type fits.
@@ -134,7 +138,7 @@ Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
     const canopen::NodeId node = connection->node();
     const ObjectDictionary dictionary = connection->dictionary();
     QPointer<canopen::SdoClient> sdo = connection->sdo();
-    Reply *all = client->readAll(node, dictionary);
+    Reply *all = client->readAll(node, dictionary, canopen::PdoDirection::Transmit);
     all->setParent(outer);
     QObject::connect(all, &Reply::finished, outer, [=] {
         all->deleteLater();
@@ -156,8 +160,8 @@ Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
             int syncMs = 0;
             const QByteArray bytes = period->value().toByteArray();
             if (period->ok() && bytes.size() >= 4) {
-                const quint32 us = quint32(quint8(bytes[0])) | quint32(quint8(bytes[1])) << 8
-                    | quint32(quint8(bytes[2])) << 16 | quint32(quint8(bytes[3])) << 24;
+                const quint32 us =
+                    codec::decode(DataType::Unsigned32, bytes.left(4)).valueOr(0u).toUInt();
                 syncMs = int((us + 500) / 1000);
             }
             outer->finish(
@@ -165,6 +169,14 @@ Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
         });
     });
     return outer;
+}
+
+int firstPdoTimeoutMs(const QList<PdoChannelPlanEntry> &entries)
+{
+    int ms = kFirstPdoMs;
+    for (const PdoChannelPlanEntry &e : entries)
+        ms = std::max(ms, 3 * e.mapping.expectedPeriodMs);
+    return ms;
 }
 
 QString silentPdoCause(const PdoChannelPlan &plan, canopen::NmtState heard)

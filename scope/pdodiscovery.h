@@ -58,6 +58,10 @@ PdoChannelPlan planPdoChannels(const QList<canopen::PdoConfig> &configs,
 Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
                            const QList<ObjectAddress> &objects);
 
+// How long to wait after Start for the first PDO of `entries` before calling them silent:
+// 1.5 s, or three expected periods of the slowest one when that is longer. Pure.
+int firstPdoTimeoutMs(const QList<PdoChannelPlanEntry> &entries);
+
 // Why the plan's TPDOs stayed silent, from what is known: `heard` is the node's NMT state from
 // its heartbeat (NmtState::Unknown when none was heard). Not operational (heard or presumed):
 // "... not operational: NMT start it" (PDOs are only sent in Operational); operational: the

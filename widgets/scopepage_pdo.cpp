@@ -25,8 +25,6 @@ namespace db::widgets {
 namespace {
 
 constexpr int kDefaultEventMs = 10; // "Map to TPDO…" when the rate box says "max rate"
-// After Start, PDO channels without a frame after this time get the probable cause shown.
-constexpr int kFirstPdoMs = 1500;
 
 // The channel table: the page's ScopeChannelModel, with the PDO of PDO channels in the rate
 // column (not editable there: the device decides when a PDO is sent).
@@ -287,7 +285,9 @@ void ScopePage::watchPdoArrival()
     const int run = ++m_pdoWatch;
     if (m_pdoMappings.isEmpty() || !m_recorder->isRunning())
         return;
-    QTimer::singleShot(kFirstPdoMs, this, [this, run] {
+    // PDO channels without a frame after this time get the probable cause shown.
+    const int firstPdoMs = scope::firstPdoTimeoutMs(m_pdoMappings.values());
+    QTimer::singleShot(firstPdoMs, this, [this, run, firstPdoMs] {
         auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
         if (run != m_pdoWatch || !m_recorder->isRunning() || !conn)
             return;
@@ -307,7 +307,7 @@ void ScopePage::watchPdoArrival()
         if (silent.found.isEmpty())
             return;
         showMessage(tr("No PDO within %1 s for %2: %3 (the scope never changes the NMT state).")
-                        .arg(kFirstPdoMs / 1000.0)
+                        .arg(firstPdoMs / 1000.0)
                         .arg(ids.join(QStringLiteral(", ")),
                              scope::silentPdoCause(silent, conn->monitor()->state(conn->node()))),
                     true);

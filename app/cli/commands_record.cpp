@@ -20,9 +20,6 @@ constexpr double kDefaultWaitS = 30;
 constexpr double kDefaultPostS = 1;
 constexpr int kDefaultRateMs = 10;
 constexpr int kDefaultEventMs = 10; // --configure-tpdo without --event-ms (and --rate-ms)
-// With --pdo, the first PDO must arrive within this time (or 3 expected periods when longer);
-// otherwise the recording ends with the probable cause (node not operational).
-constexpr int kFirstPdoMs = 1500;
 
 Error usage(const QString &text)
 {
@@ -270,10 +267,9 @@ int record(Context &c)
         });
         deadline.start(timerMs(s.waitS));
     }
-    // --pdo: a bounded wait for the first frame, so that a silent node fails with its cause.
-    int firstPdoMs = kFirstPdoMs;
-    for (const scope::PdoChannelPlanEntry &e : std::as_const(plan.found))
-        firstPdoMs = std::max(firstPdoMs, 3 * e.mapping.expectedPeriodMs);
+    // --pdo: a bounded wait for the first frame, so that a silent node fails with its cause
+    // (node not operational, ...).
+    const int firstPdoMs = scope::firstPdoTimeoutMs(plan.found);
     QTimer firstPdo;
     firstPdo.setSingleShot(true);
     QObject::connect(&firstPdo, &QTimer::timeout, &recorder, [&] {

@@ -123,7 +123,8 @@ void PdoClient::readMapping(NodeId node, Reply *outer, PdoConfig config, int cou
          });
 }
 
-Reply *PdoClient::readAll(NodeId node, const ObjectDictionary &dictionary)
+Reply *PdoClient::readAll(NodeId node, const ObjectDictionary &dictionary,
+                          std::optional<PdoDirection> only)
 {
     auto *outer = new Reply(ObjectAddress(0, 0));
     QList<PdoConfig> todo;
@@ -144,6 +145,8 @@ Reply *PdoClient::readAll(NodeId node, const ObjectDictionary &dictionary)
         tx.direction = PdoDirection::Transmit;
         todo = { rx, tx };
     }
+    if (only)
+        todo.removeIf([&](const PdoConfig &c) { return c.direction != *only; });
     std::sort(todo.begin(), todo.end(), [](const PdoConfig &a, const PdoConfig &b) {
         return a.communicationIndex() < b.communicationIndex();
     });

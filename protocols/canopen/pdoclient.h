@@ -17,6 +17,7 @@
 #include "pdomapping.h"
 
 #include <functional>
+#include <optional>
 
 namespace db::canopen {
 
@@ -38,10 +39,11 @@ public:
     // Reply value: QVariant::fromValue(PdoConfig). A PDO the device does not have fails with the
     // device's abort (DeviceError, 06020000h "object does not exist").
     Reply *read(NodeId node, PdoDirection direction, int number);
-    // Reply value: QVariant::fromValue(QList<PdoConfig>), RPDOs then TPDOs. The numbers read are
-    // those `dictionary` describes; without any, each direction is read from 1 on up to the
-    // first missing communication object.
-    Reply *readAll(NodeId node, const ObjectDictionary &dictionary = {});
+    // Reply value: QVariant::fromValue(QList<PdoConfig>), RPDOs then TPDOs (only those of
+    // direction `only` when given). The numbers read are those `dictionary` describes; without
+    // any, each direction is read from 1 on up to the first missing communication object.
+    Reply *readAll(NodeId node, const ObjectDictionary &dictionary = {},
+                   std::optional<PdoDirection> only = std::nullopt);
     // Writes `config` (comm + mapping) in the safe order above. Reply without value.
     Reply *configure(NodeId node, const PdoConfig &config);
 

@@ -119,6 +119,14 @@ void TestPdo::readAllProbesWithoutDictionary()
     const auto byDict = Reply::wait(client.readAll(5, testDictionary()));
     QVERIFY(byDict);
     QCOMPARE(byDict->value<QList<PdoConfig>>(), list);
+    // One direction only (the scope's PDO discovery needs only the TPDOs).
+    const auto tpdos = Reply::wait(client.readAll(5, {}, PdoDirection::Transmit));
+    QVERIFY(tpdos);
+    QCOMPARE(tpdos->value<QList<PdoConfig>>(), list.mid(2));
+    const auto tpdosByDict =
+        Reply::wait(client.readAll(5, testDictionary(), PdoDirection::Transmit));
+    QVERIFY(tpdosByDict);
+    QCOMPARE(tpdosByDict->value<QList<PdoConfig>>(), list.mid(2));
 }
 
 void TestPdo::configureWritesInTheSafeOrder()
