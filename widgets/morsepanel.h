@@ -65,6 +65,7 @@ public:
     bool startLive(int index);
     void stopLive();
     bool live() const { return m_live; }
+    static constexpr double kLiveKeep = 60.0; // s of brightness kept while live
     // Loads `path` through the loader and starts playback; false with the reason shown.
     bool openFile(const QString &path);
     void setSource(MorseSource source);
@@ -72,6 +73,8 @@ public:
     bool playing() const;
 
     const morse::Decoder &decoder() const { return *m_decoder; }
+    // What is shown: a loaded file, or while live the last kLiveKeep s of camera samples.
+    const MorseSource &source() const { return m_source; }
     QString ipText() const; // "192.168.2.150" once complete, else empty
     QString statusText() const;
     QCustomPlot *plot() const { return m_plot; }
@@ -84,8 +87,6 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
-    static constexpr double kLiveKeep = 60.0; // s of brightness kept in the live plot
-
     void chooseFile();
     void rebuildCameraList();
     void updateCameraControls();

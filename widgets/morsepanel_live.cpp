@@ -110,8 +110,13 @@ void MorsePanel::liveSamples(const std::vector<morse::Sample> &samples)
         return;
     m_source.samples.insert(m_source.samples.end(), samples.begin(), samples.end());
     feedUntil(m_source.samples.size());
-    // Bounded plot: the decoder keeps its own history, the plot only the last kLiveKeep s.
+    // Bounded: the decoder keeps its own history; the panel's samples and the plot only the
+    // last kLiveKeep s (a camera left running for hours must not grow the panel).
     const double cutoff = samples.back().t - kLiveKeep;
+    const auto old = std::lower_bound(m_source.samples.begin(), m_source.samples.end(), cutoff,
+                                      [](const morse::Sample &s, double t) { return s.t < t; });
+    m_fed -= static_cast<std::size_t>(std::distance(m_source.samples.begin(), old));
+    m_source.samples.erase(m_source.samples.begin(), old);
     m_brightness->data()->removeBefore(cutoff);
     const auto keep = std::lower_bound(m_thresholdT.begin(), m_thresholdT.end(), cutoff);
     const auto drop = std::distance(m_thresholdT.begin(), keep);

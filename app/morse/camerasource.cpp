@@ -150,18 +150,24 @@ void CameraSource::applyUserRegion()
     if (m_frameSize.isEmpty())
         return; // at the first frame
     const QRect r = toAnalysisRegion(*m_userRegion, m_frameSize, analysisSize(m_frameSize));
-    if (r.isEmpty()) {
-        Q_EMIT errorOccurred(tr("Region %1,%2 %3x%4 lies outside the %5x%6 camera frame; "
-                                "finding the LED automatically")
-                                 .arg(m_userRegion->x())
-                                 .arg(m_userRegion->y())
-                                 .arg(m_userRegion->width())
-                                 .arg(m_userRegion->height())
-                                 .arg(m_frameSize.width())
-                                 .arg(m_frameSize.height()));
-        m_userRegion.reset();
+    if (!r.isEmpty()) {
+        m_tracker.setUserRegion(r);
+        return;
     }
-    m_tracker.setUserRegion(m_userRegion ? std::optional<QRect>(r) : std::nullopt);
+    // Not an error: the camera keeps running and the LED is searched for. The reason stays in
+    // the status until the search reports something new.
+    const QString reason = tr("Region %1,%2 %3x%4 lies outside the %5x%6 camera frame; "
+                              "searching for the blinking LED automatically")
+                               .arg(m_userRegion->x())
+                               .arg(m_userRegion->y())
+                               .arg(m_userRegion->width())
+                               .arg(m_userRegion->height())
+                               .arg(m_frameSize.width())
+                               .arg(m_frameSize.height());
+    m_userRegion.reset();
+    m_tracker.setUserRegion(std::nullopt);
+    m_reported = m_tracker.state();
+    Q_EMIT statusChanged(reason);
 }
 
 void CameraSource::fail(const QString &message)

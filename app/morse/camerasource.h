@@ -61,7 +61,9 @@ public:
     // The sink the capture session renders into; frames set on it are consumed.
     QVideoSink *videoSink() const { return m_sink; }
 
-    // The LED region in frame pixels (nullopt: found automatically). Applies to the next frame.
+    // The LED region in frame pixels (nullopt: found automatically). Applies to the next frame;
+    // a region outside the frame is refused, with the reason in statusChanged(), and the LED is
+    // searched for instead.
     void setRegion(std::optional<QRect> frameRegion);
     QRect region() const; // frame pixels; empty while searching
     QSize frameSize() const { return m_frameSize; }

@@ -16,6 +16,7 @@
 
 #include <qcustomplot.h>
 
+#include <cmath>
 #include <cstring>
 
 using namespace db;
@@ -175,6 +176,45 @@ private slots:
                           QPoint(8, connectButton->height() / 2));
         QCOMPARE(spy.size(), 1);
         QCOMPARE(spy.at(0).at(0).toString(), QStringLiteral("refgo://10.20.30.40"));
+    }
+
+    void liveHistoryIsBounded()
+    {
+        // A camera left running: the panel keeps only the last kLiveKeep s of samples (the
+        // decoder keeps its own history), and decoding goes on.
+        FakeLiveSource fake;
+        fake.names = QStringList { QStringLiteral("USB camera") };
+        MorsePanel panel;
+        panel.setLiveSource(&fake);
+        QVERIFY(panel.startLive(0));
+        morsetest::LedRenderer renderer(signal(), scene());
+        const auto &samples = renderer.signal().samples;
+        const double length = samples.back().t + 1.0 / 30.0;
+        const int loops = int(std::ceil(2.5 * MorsePanel::kLiveKeep / length));
+        std::size_t sent = 0;
+        double last = 0.0;
+        for (int loop = 0; loop < loops; ++loop) {
+            for (std::size_t i = 0; i < samples.size(); i += 10) {
+                std::vector<morse::Sample> chunk;
+                for (std::size_t k = i; k < std::min(samples.size(), i + 10); ++k) {
+                    const double on = std::clamp(samples[k].value, 0.0, 1.0);
+                    chunk.push_back({ samples[k].t + loop * length, 20.0 + 150.0 * on });
+                }
+                last = chunk.back().t;
+                sent += chunk.size();
+                Q_EMIT fake.samples(chunk);
+            }
+        }
+        QVERIFY(last > 2.0 * MorsePanel::kLiveKeep);
+        const auto &kept = panel.source().samples;
+        QVERIFY(!kept.empty());
+        QCOMPARE(kept.back().t, last);
+        QVERIFY2(kept.front().t >= last - MorsePanel::kLiveKeep,
+                 qPrintable(QString::number(kept.front().t)));
+        QVERIFY(kept.size() < sent / 2);
+        QVERIFY(kept.front().t - 1.0 / 30.0 < last - MorsePanel::kLiveKeep); // not more trimmed
+        QCOMPARE(panel.ipText(), QStringLiteral("10.20.30.40"));
+        QVERIFY(panel.decoder().confident());
     }
 
     void noCameraDisablesControls()
