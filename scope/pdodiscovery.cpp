@@ -19,9 +19,6 @@ QString tr(const char *text)
     return QCoreApplication::translate("db::scope::PdoDiscovery", text);
 }
 
-constexpr quint8 kTypeSyncMax = 240; // 1..240: every n-th SYNC (CiA 301 7.5.2.35)
-constexpr quint8 kTypeEventManufacturer = 0xFE;
-constexpr quint8 kTypeEventProfile = 0xFF;
 constexpr ObjectAddress kSyncPeriod { 0x1006, 0 }; // communication cycle period, us
 constexpr int kFirstPdoMs = 1500; // see firstPdoTimeoutMs()
 
@@ -49,8 +46,7 @@ bool needsSyncPeriod(const PdoChannelPlan &plan)
 {
     for (const PdoChannelPlanEntry &e : plan.found) {
         for (const canopen::PdoConfig &c : plan.tpdos) {
-            if (c.number == e.tpdoNumber && c.transmissionType >= 1
-                && c.transmissionType <= kTypeSyncMax)
+            if (c.number == e.tpdoNumber && c.isCyclicSync())
                 return true;
         }
     }
@@ -74,11 +70,10 @@ QString PdoChannelPlan::missingText(const ObjectDictionary &dictionary) const
 
 int expectedPeriodMs(const canopen::PdoConfig &config, int syncPeriodMs)
 {
-    const quint8 type = config.transmissionType;
-    if (type == kTypeEventManufacturer || type == kTypeEventProfile)
+    if (config.isEventDriven())
         return config.eventTimer.value_or(0);
-    if (type >= 1 && type <= kTypeSyncMax && syncPeriodMs > 0)
-        return int(type) * syncPeriodMs;
+    if (config.isCyclicSync() && syncPeriodMs > 0)
+        return int(config.transmissionType) * syncPeriodMs;
     return 0;
 }
 
@@ -192,11 +187,10 @@ QString silentPdoCause(const PdoChannelPlan &plan, canopen::NmtState heard)
             if (c.number != e.tpdoNumber)
                 continue;
             const quint8 type = c.transmissionType;
-            if ((type == kTypeEventManufacturer || type == kTypeEventProfile)
-                && c.eventTimer.value_or(0) == 0)
+            if (c.isEventDriven() && c.eventTimer.value_or(0) == 0)
                 own.append(
                     tr("%1 has no event timer and is sent only on device events").arg(c.name()));
-            else if (type >= 1 && type <= kTypeSyncMax)
+            else if (c.isCyclicSync())
                 own.append(tr("%1 is sent on SYNC (transmission type %2) and no SYNC was "
                               "produced")
                                .arg(c.name())

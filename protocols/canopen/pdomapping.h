@@ -38,6 +38,19 @@ struct PdoConfig
     static constexpr quint32 kExtendedBit = 0x20000000u;
     static constexpr int kMaxPerDirection = 512;
     static constexpr int kMaxEntries = 64;
+    // Transmission types (CiA 301 7.5.2.35): 1..kTypeSyncMax after every n-th SYNC; 0xFE
+    // (manufacturer) and 0xFF (profile) event driven, with the event timer as the cycle.
+    static constexpr quint8 kTypeSyncMax = 240;
+    static constexpr quint8 kTypeEventManufacturer = 0xFE;
+    static constexpr quint8 kTypeEventProfile = 0xFF;
+    static constexpr bool isCyclicSyncType(quint32 type)
+    {
+        return type >= 1 && type <= kTypeSyncMax;
+    }
+    static constexpr bool isEventDrivenType(quint32 type)
+    {
+        return type == kTypeEventManufacturer || type == kTypeEventProfile;
+    }
 
     PdoDirection direction = PdoDirection::Transmit;
     int number = 0; // 0-based: TPDO1 = 0 (1800h/1A00h)
@@ -48,6 +61,8 @@ struct PdoConfig
     QList<PdoMappingEntry> entries;
 
     bool isEnabled() const { return !(cobId & kInvalidBit); }
+    bool isCyclicSync() const { return isCyclicSyncType(transmissionType); }
+    bool isEventDriven() const { return isEventDrivenType(transmissionType); }
     quint32 canId() const { return cobId & (cobId & kExtendedBit ? 0x1FFFFFFFu : 0x7FFu); }
     quint16 communicationIndex() const;
     quint16 mappingIndex() const;

@@ -1,5 +1,6 @@
 #include "simulatednode.h"
 
+#include "pdomapping.h"
 #include "sdoabort.h"
 #include "transport/canbus.h"
 
@@ -11,9 +12,6 @@ namespace {
 
 constexpr int kPdoCount = 8; // TPDO/RPDO 1..8 (1800h-1807h, 1400h-1407h) when described
 constexpr quint32 kCobInvalid = 0x80000000u; // bit 31 of a COB-ID entry: not valid
-constexpr quint8 kSyncMaxType = 240; // 1..240: every n-th SYNC
-constexpr quint8 kTypeEventManufacturer = 0xFE;
-constexpr quint8 kTypeEventProfile = 0xFF;
 // An invalid SDO response (scs 7 does not exist) for the garbage failure mode.
 const QByteArray kGarbage = QByteArray::fromHex("E7DEADBEEF5A5A5A");
 
@@ -277,8 +275,7 @@ void SimulatedNode::configureTimers()
         const quint32 type = u32({ comm, 2 });
         const quint32 eventMs = u32({ comm, 5 });
         const bool run = m_state == NmtState::Operational && has({ comm, 1 })
-            && !(cobId & kCobInvalid) && eventMs > 0
-            && (type == kTypeEventManufacturer || type == kTypeEventProfile);
+            && !(cobId & kCobInvalid) && eventMs > 0 && PdoConfig::isEventDrivenType(type);
         QTimer *timer = m_eventTimers.at(n);
         if (!run)
             timer->stop();
@@ -292,7 +289,7 @@ void SimulatedNode::handleSync()
     for (int n = 0; n < kPdoCount; ++n) {
         const quint16 comm = quint16(0x1800 + n);
         const quint32 type = u32({ comm, 2 });
-        if (!has({ comm, 1 }) || type < 1 || type > kSyncMaxType)
+        if (!has({ comm, 1 }) || !PdoConfig::isCyclicSyncType(type))
             continue;
         if (++m_syncCounters[n] >= int(type)) {
             m_syncCounters[n] = 0;
