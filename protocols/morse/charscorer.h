@@ -16,6 +16,9 @@ namespace db::morse::detail {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kHuber = 2.0; // sigmas
 constexpr double kEditCost = 6.0; // nats: a lost element is rarer than a 3-sigma deviation
+// Readings of a character (Scorer::character): as sent, one element lost, one added, its first
+// mark lost.
+constexpr int kEdits = 4;
 
 // The characters of the grammar: the prefix, the digits, the separator and the end mark.
 constexpr std::array kChars { 'M', 'C', '+', 'I', 'P', '0', '1', '2',
@@ -167,6 +170,29 @@ struct Scorer
         }
         return best + kEditCost;
     }
+    // Cost of character c on marks from i without its first mark: noise swallowed it, and the
+    // letter gap before the character (gaps[i - 1], charged as 3 units by the character before)
+    // grew by that mark and the gap after it. The difference for that gap is charged here.
+    double firstLost(std::size_t i, int c, double *worstZ) const
+    {
+        const Pattern &p = patterns()[static_cast<std::size_t>(c)][0].front();
+        if (i == 0 || p.marks.size() < 2)
+            return kInf;
+        const std::vector<double> marks(p.marks.begin() + 1, p.marks.end());
+        const std::vector<double> gaps(p.gaps.begin() + 1, p.gaps.end());
+        double z = 0.0;
+        const double rest = pattern(i, marks, gaps, &z);
+        if (rest == kInf)
+            return kInf;
+        double unused = 0.0;
+        const double before = element(in.gaps[i - 1], 3.0, &unused);
+        const double after = element(in.gaps[i - 1], 3.0 + p.marks[0] + p.gaps[0], &z);
+        if (z > m.maxZ)
+            return kInf;
+        if (worstZ)
+            *worstZ = z;
+        return rest + after - before + kEditCost;
+    }
     // Cost of character c on marks from i. edit 0: as sent. 1: the best reading with one
     // element lost (one mark less): a mark swallowed by noise (its gaps merge) or a gap filled
     // by noise (its marks merge). 2: one element added (inserted()). Edits cost kEditCost more.
@@ -174,6 +200,8 @@ struct Scorer
     {
         if (edit == 2)
             return inserted(i, c, worstZ);
+        if (edit == 3)
+            return firstLost(i, c, worstZ);
         const bool edited = edit == 1;
         double best = kInf;
         for (const Pattern &p : patterns()[static_cast<std::size_t>(c)][edited]) {

@@ -107,7 +107,7 @@ struct Cell
 // Measured marks that character c takes with the given edit.
 std::size_t consumed(int c, int edit)
 {
-    return codeLength(c) + (edit == 2 ? 1 : 0) - (edit == 1 ? 1 : 0);
+    return codeLength(c) + (edit == 2 ? 1 : 0) - (edit == 1 || edit == 3 ? 1 : 0);
 }
 
 struct Option
@@ -198,12 +198,12 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
 
     // Character costs per start mark, as sent and with one element lost.
     using Costs = std::vector<std::array<double, kChars.size()>>;
-    std::array<Costs, 3> charCost { Costs(n), Costs(n), Costs(n) };
+    std::array<Costs, kEdits> charCost { Costs(n), Costs(n), Costs(n), Costs(n) };
     // The readings that fit at all, per start mark: the DP visits only these.
     std::vector<std::vector<Option>> options(n);
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < int(kChars.size()); ++c) {
-            for (int e = 0; e < 3; ++e) {
+            for (int e = 0; e < kEdits; ++e) {
                 const double cost = scorer.character(i, c, e, nullptr);
                 charCost[std::size_t(e)][i][std::size_t(c)] = cost;
                 if (cost < kInf)
@@ -256,6 +256,8 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         });
         for (const auto &[st, cell] : layer[i]) {
             for (const auto &[ch, edit, cc] : options[i]) {
+                if (edit == 3 && cell.ch < 0)
+                    continue; // a start: no letter gap before it was charged
                 const int t = step(st, ch);
                 if (t < 0)
                     continue;

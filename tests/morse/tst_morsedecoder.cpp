@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <map>
 
 using namespace db::morse;
 
@@ -298,6 +299,30 @@ private slots:
         QVERIFY(p.ok);
         QCOMPARE(p.observation.octets, kSpecIp);
         QVERIFY(p.observation.weight[0] <= 0.5);
+    }
+
+    // Noise swallows the first dit of the '5' in 150: the letter gap before it grows by that dit
+    // and the gap after it (3 + 1 + 1 units), and "...." is left. Read as '5' with its first
+    // mark lost, every length fits its nominal, so 150 leads clearly; without that reading '5'
+    // needed a 5-unit letter gap and a 1-unit gap read as 3, and 140 came within 3 nats.
+    void lostFirstMarkIsRepaired()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+150:");
+        StretchInput s = nominalStretch(text);
+        const std::size_t at = markOf(text, 16);
+        QCOMPARE(s.gaps[at - 1], 3.0);
+        s.gaps[at - 1] = 5.0;
+        s.marks.erase(s.marks.begin() + std::ptrdiff_t(at));
+        s.gaps.erase(s.gaps.begin() + std::ptrdiff_t(at));
+        const StretchParse p = parseStretch(s, ElementModel());
+        QVERIFY(p.ok);
+        QCOMPARE(p.text, text);
+        QCOMPARE(p.observation.octets, kSpecIp);
+        const std::map<int, double> &cost = p.observation.cost[3];
+        QCOMPARE(cost.at(150), 0.0);
+        QVERIFY2(!cost.contains(140) || cost.at(140) > 5.0,
+                 qPrintable(QString::number(cost.at(140))));
+        QVERIFY(p.observation.weight[3] <= 0.5); // a repaired digit: half a vote
     }
 
     // Cut at both ends ("4+34+" of some message): which octet "34" is, is unknown.
