@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace db::morse::detail {
@@ -120,7 +121,7 @@ struct Scorer
     }
     // Cost of the nominal lengths `marks` (and gaps between them, then a letter gap) on the
     // measured marks from i; inf when they do not fit or exceed maxZ.
-    double pattern(std::size_t i, const std::vector<double> &marks, const std::vector<double> &gaps,
+    double pattern(std::size_t i, std::span<const double> marks, std::span<const double> gaps,
                    double *worstZ) const
     {
         const std::size_t len = marks.size();
@@ -178,10 +179,9 @@ struct Scorer
         const Pattern &p = patterns()[static_cast<std::size_t>(c)][0].front();
         if (i == 0 || p.marks.size() < 2)
             return kInf;
-        const std::vector<double> marks(p.marks.begin() + 1, p.marks.end());
-        const std::vector<double> gaps(p.gaps.begin() + 1, p.gaps.end());
         double z = 0.0;
-        const double rest = pattern(i, marks, gaps, &z);
+        const double rest =
+            pattern(i, std::span(p.marks).subspan(1), std::span(p.gaps).subspan(1), &z);
         if (rest == kInf)
             return kInf;
         double unused = 0.0;
