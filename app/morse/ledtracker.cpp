@@ -35,7 +35,8 @@ bool switches(std::vector<double> v)
 
 void LiveLedTracker::reset()
 {
-    m_frames.clear();
+    m_window = {};
+    m_times.clear();
     m_recent.clear();
     m_region = {};
     m_size = {};
@@ -70,17 +71,22 @@ std::vector<morse::Sample> LiveLedTracker::push(double t, std::vector<unsigned c
     if (size != m_size) {
         reset();
         m_size = size;
+        m_window.width = size.width();
+        m_window.height = size.height();
         if (m_user)
             setUserRegion(m_user);
     }
     if (t <= m_lastT)
         return out;
     m_lastT = t;
-    m_frames.push_back({ t, std::move(frame) });
-    while (m_frames.size() > kMaxFrames || t - m_frames.front().t > kWindow)
-        m_frames.pop_front();
+    m_window.frames.push_back(std::move(frame));
+    m_times.push_back(t);
+    while (m_times.size() > kMaxFrames || t - m_times.front() > kWindow) {
+        m_times.pop_front();
+        m_window.frames.erase(m_window.frames.begin()); // moves the frames' handles only
+    }
     if (m_state == State::Tracking) {
-        const morse::Sample s { t, regionMean(m_frames.back().grey, m_size.width(), m_region) };
+        const morse::Sample s { t, regionMean(m_window.frames.back(), m_size.width(), m_region) };
         out.push_back(s);
         m_lastSampleT = t;
         if (!m_user)
@@ -93,25 +99,21 @@ std::vector<morse::Sample> LiveLedTracker::push(double t, std::vector<unsigned c
 
 void LiveLedTracker::search(double now, std::vector<morse::Sample> &out)
 {
-    const std::size_t n = m_frames.size();
+    const std::size_t n = m_times.size();
     if (n < 8 || now - m_lastSearch < kRetry)
         return;
     // Full window: the buffered frames plus one frame period span kWindow.
-    const double span = m_frames.back().t - m_frames.front().t;
+    const double span = m_times.back() - m_times.front();
     if (n < kMaxFrames && span + span / double(n - 1) < kWindow)
         return;
     m_lastSearch = now;
-    GreyFrames grey { m_size.width(), m_size.height(), {} };
-    grey.frames.reserve(n);
-    for (const Frame &f : m_frames)
-        grey.frames.push_back(f.grey);
-    const QRect r = findLedRegion(grey);
+    const QRect r = findLedRegion(m_window);
     if (r.isEmpty())
         return;
     std::vector<double> values;
     values.reserve(n);
-    for (const Frame &f : m_frames)
-        values.push_back(regionMean(f.grey, m_size.width(), r));
+    for (const std::vector<unsigned char> &f : m_window.frames)
+        values.push_back(regionMean(f, m_size.width(), r));
     if (!switches(values))
         return;
     m_region = r;
@@ -120,12 +122,12 @@ void LiveLedTracker::search(double now, std::vector<morse::Sample> &out)
     const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
     m_step = *hi - *lo;
     for (std::size_t i = 0; i < n; ++i) {
-        if (m_frames[i].t > m_lastSampleT) { // after a loss: never repeat a time already sent
-            out.push_back({ m_frames[i].t, values[i] });
+        if (m_times[i] > m_lastSampleT) { // after a loss: never repeat a time already sent
+            out.push_back({ m_times[i], values[i] });
             m_recent.push_back(out.back());
         }
     }
-    m_lastSampleT = m_frames.back().t;
+    m_lastSampleT = m_times.back();
 }
 
 void LiveLedTracker::watch(const morse::Sample &s)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "morse/morsetypes.h"
+#include "morseinput.h"
 
 #include <QRect>
 #include <QSize>
@@ -54,15 +55,13 @@ public:
     bool userRegion() const { return m_user.has_value(); }
 
 private:
-    struct Frame
-    {
-        double t;
-        std::vector<unsigned char> grey;
-    };
     void search(double now, std::vector<morse::Sample> &out);
     void watch(const morse::Sample &s);
 
-    std::deque<Frame> m_frames; // the last kWindow seconds
+    // The last kWindow seconds of frames, as findLedRegion() takes them (no copy per search),
+    // and their times.
+    GreyFrames m_window;
+    std::deque<double> m_times;
     std::deque<morse::Sample> m_recent; // tracking: the last kDeadAfter seconds of samples
     std::optional<QRect> m_user;
     QRect m_region;
