@@ -206,6 +206,7 @@ std::vector<unsigned char> CameraSource::analysisFrame(const QVideoFrame &in, QI
     const QSize size = f.size();
     if (size.isEmpty())
         return {};
+    std::optional<LumaLayout> layout;
     switch (f.pixelFormat()) {
     case QVideoFrameFormat::Format_Y8:
     case QVideoFrameFormat::Format_YUV420P:
@@ -216,43 +217,33 @@ std::vector<unsigned char> CameraSource::analysisFrame(const QVideoFrame &in, QI
     case QVideoFrameFormat::Format_IMC1:
     case QVideoFrameFormat::Format_IMC2:
     case QVideoFrameFormat::Format_IMC3:
-    case QVideoFrameFormat::Format_IMC4: { // plane 0 is 8-bit luma: no colour conversion
-        if (!f.map(QVideoFrame::ReadOnly))
-            return {};
-        const int stride = f.bytesPerLine(0);
-        std::vector<unsigned char> out;
-        if (f.bits(0) && qint64(stride) * size.height() <= f.mappedBytes(0))
-            out = scaleGrey(f.bits(0), size, stride, analysisSize(size));
-        f.unmap();
-        return out;
-    }
+    case QVideoFrameFormat::Format_IMC4: // plane 0 is 8-bit luma: no colour conversion
+        layout = LumaLayout::Planar;
+        break;
     case QVideoFrameFormat::Format_YUYV:
-    case QVideoFrameFormat::Format_UYVY: { // packed 4:2:2, luma in every other byte
-        if (!f.map(QVideoFrame::ReadOnly))
-            return {};
-        const int stride = f.bytesPerLine(0);
-        const int offset = f.pixelFormat() == QVideoFrameFormat::Format_UYVY ? 1 : 0;
-        std::vector<unsigned char> luma;
-        if (f.bits(0) && stride >= 2 * size.width()
-            && qint64(stride) * size.height() <= f.mappedBytes(0)) {
-            luma.resize(std::size_t(size.width() * size.height()));
-            for (int y = 0; y < size.height(); ++y) {
-                const uchar *row = f.bits(0) + qint64(y) * stride + offset;
-                for (int x = 0; x < size.width(); ++x)
-                    luma[std::size_t(y * size.width() + x)] = row[2 * x];
-            }
-        }
-        f.unmap();
-        return luma.empty() ? luma : scaleGrey(luma.data(), size, size.width(), analysisSize(size));
+        layout = LumaLayout::Yuyv;
+        break;
+    case QVideoFrameFormat::Format_UYVY:
+        layout = LumaLayout::Uyvy;
+        break;
+    default:
+        break;
     }
-    default: { // RGB, JPEG, 16-bit: Qt converts
+    if (!layout) { // RGB, JPEG, 16-bit: Qt converts
         *image = f.toImage();
         if (image->isNull())
             return {};
         const QImage g = image->convertToFormat(QImage::Format_Grayscale8);
         return scaleGrey(g.constBits(), g.size(), int(g.bytesPerLine()), analysisSize(g.size()));
     }
-    }
+    if (!f.map(QVideoFrame::ReadOnly))
+        return {};
+    const int stride = f.bytesPerLine(0);
+    std::vector<unsigned char> out;
+    if (f.bits(0) && qint64(stride) * size.height() <= f.mappedBytes(0))
+        out = scaleGrey(f.bits(0), size, stride, analysisSize(size), *layout);
+    f.unmap();
+    return out;
 }
 
 void CameraSource::consumeFrame(const QVideoFrame &frame)

@@ -196,23 +196,40 @@ QSize analysisSize(QSize frame)
     return QSize(sw, std::max(1, frame.height() * sw / frame.width()));
 }
 
-std::vector<unsigned char> scaleGrey(const unsigned char *grey, QSize size, int stride, QSize to)
+namespace {
+
+// One picture of `format` (planes and their strides) scaled to a grey frame of `to` with the
+// area filter; `sws` caches the context for frames of the same size and format.
+std::vector<unsigned char> toGrey(Sws &sws, AVPixelFormat format, const uint8_t *const planes[],
+                                  const int strides[], QSize size, QSize to)
 {
-    if (!grey || size.isEmpty() || to.isEmpty() || stride < size.width())
-        return {};
-    thread_local Sws sws; // cached per thread: the camera scales every frame at the same size
     sws.p =
-        sws_getCachedContext(sws.p, size.width(), size.height(), AV_PIX_FMT_GRAY8, to.width(),
-                             to.height(), AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
+        sws_getCachedContext(sws.p, size.width(), size.height(), format, to.width(), to.height(),
+                             AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
     if (!sws.p)
         return {};
     std::vector<unsigned char> out(std::size_t(to.width() * to.height()));
-    const uint8_t *src[1] = { grey };
-    const int srcStride[1] = { stride };
     uint8_t *dst[1] = { out.data() };
     const int dstStride[1] = { to.width() };
-    sws_scale(sws.p, src, srcStride, 0, size.height(), dst, dstStride);
+    sws_scale(sws.p, planes, strides, 0, size.height(), dst, dstStride);
     return out;
+}
+
+} // namespace
+
+std::vector<unsigned char> scaleGrey(const unsigned char *data, QSize size, int stride, QSize to,
+                                     LumaLayout layout)
+{
+    const bool packed = layout != LumaLayout::Planar;
+    if (!data || size.isEmpty() || to.isEmpty() || stride < (packed ? 2 : 1) * size.width())
+        return {};
+    const AVPixelFormat format = layout == LumaLayout::Yuyv ? AV_PIX_FMT_YUYV422
+        : layout == LumaLayout::Uyvy                        ? AV_PIX_FMT_UYVY422
+                                                            : AV_PIX_FMT_GRAY8;
+    thread_local Sws sws; // cached per thread: the camera scales every frame at the same size
+    const uint8_t *planes[1] = { data };
+    const int strides[1] = { stride };
+    return toGrey(sws, format, planes, strides, size, to);
 }
 
 double regionMean(const std::vector<unsigned char> &frame, int width, const QRect &region)
@@ -290,12 +307,8 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     Sws preview;
     const double tb = av_q2d(stream->time_base);
     auto take = [&](AVFrame *f) {
-        small.p = sws_getCachedContext(small.p, f->width, f->height, AVPixelFormat(f->format), sw,
-                                       sh, AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
-        std::vector<unsigned char> g(std::size_t(sw * sh));
-        uint8_t *dst[1] = { g.data() };
-        const int dstStride[1] = { sw };
-        sws_scale(small.p, f->data, f->linesize, 0, f->height, dst, dstStride);
+        std::vector<unsigned char> g = toGrey(small, AVPixelFormat(f->format), f->data, f->linesize,
+                                              QSize(f->width, f->height), analysis);
         const int64_t pts = f->best_effort_timestamp;
         double t = pts != AV_NOPTS_VALUE ? double(pts) * tb : 0.0;
         if (pts == AV_NOPTS_VALUE || (!times.empty() && t <= times.back()))

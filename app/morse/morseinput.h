@@ -63,9 +63,14 @@ QRect findLedRegion(const GreyFrames &frames);
 
 // The analysis frame size for frames of `frame` size: at most kAnalysisWidth wide, same aspect.
 QSize analysisSize(QSize frame);
-// Scales a grey (luma) plane, `stride` bytes per row, to `to` with the area filter readVideo
-// uses for video frames (libswscale). Empty when a size is not positive.
-std::vector<unsigned char> scaleGrey(const unsigned char *grey, QSize size, int stride, QSize to);
+// How the luma of a camera frame lies in its first plane: 8-bit grey (also plane 0 of planar
+// YUV), or packed 4:2:2 with luma in every other byte (Y U Y V, or U Y V Y).
+enum class LumaLayout { Planar, Yuyv, Uyvy };
+// Scales the luma of one frame (`stride` bytes per row) to a grey frame of `to` with the area
+// filter readVideo uses for video frames (libswscale). Empty when a size is not positive or the
+// stride too short.
+std::vector<unsigned char> scaleGrey(const unsigned char *data, QSize size, int stride, QSize to,
+                                     LumaLayout layout = LumaLayout::Planar);
 // Mean grey level inside `region` (analysis pixels, inside the frame) of one analysis frame.
 double regionMean(const std::vector<unsigned char> &frame, int width, const QRect &region);
 // A region in frame pixels to analysis pixels (clipped to the frame; empty when outside it),

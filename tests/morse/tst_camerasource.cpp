@@ -35,8 +35,8 @@ morsetest::LedScene scene(QPoint led)
     return s;
 }
 
-// One synthetic frame in `format` (Y8: the grey bytes; XRGB8888: grey in all channels) with
-// its start time in microseconds.
+// One synthetic frame in `format` (Y8: the grey bytes; YUYV/UYVY: grey luma, neutral chroma;
+// XRGB8888: grey in all channels) with its start time in microseconds.
 QVideoFrame makeFrame(morsetest::LedRenderer &renderer, const morsetest::LedScene &s, int f,
                       QVideoFrameFormat::PixelFormat format)
 {
@@ -51,6 +51,13 @@ QVideoFrame makeFrame(morsetest::LedRenderer &renderer, const morsetest::LedScen
         const unsigned char *src = grey.data() + std::size_t(y * s.width);
         if (format == QVideoFrameFormat::Format_Y8) {
             std::memcpy(row, src, std::size_t(s.width));
+        } else if (format == QVideoFrameFormat::Format_YUYV
+                   || format == QVideoFrameFormat::Format_UYVY) {
+            const int luma = format == QVideoFrameFormat::Format_UYVY ? 1 : 0;
+            for (int x = 0; x < s.width; ++x) {
+                row[2 * x + luma] = src[x];
+                row[2 * x + 1 - luma] = 128; // no colour
+            }
         } else {
             for (int x = 0; x < s.width; ++x)
                 std::memset(row + 4 * x, src[x], 4);
@@ -104,6 +111,8 @@ private slots:
         QTest::addColumn<int>("format");
         QTest::newRow("Y8") << int(QVideoFrameFormat::Format_Y8);
         QTest::newRow("XRGB8888") << int(QVideoFrameFormat::Format_XRGB8888);
+        QTest::newRow("YUYV") << int(QVideoFrameFormat::Format_YUYV);
+        QTest::newRow("UYVY") << int(QVideoFrameFormat::Format_UYVY);
     }
 
     void decodesBlinkingLed()
