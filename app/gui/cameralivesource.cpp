@@ -1,6 +1,7 @@
 #include "cameralivesource.h"
 
 #include "morse/camerasource.h"
+#include "morse/morseinput.h"
 
 #include <QMediaDevices>
 
@@ -32,6 +33,7 @@ CameraLiveSource::~CameraLiveSource() = default;
 void CameraLiveSource::refreshDevices()
 {
     m_devices = morseio::CameraSource::devices();
+    m_camera->checkDevices(m_devices); // a running camera unplugged: its error first
     Q_EMIT devicesChanged();
 }
 
@@ -66,11 +68,8 @@ void CameraLiveSource::setRegion(const QRect &previewRegion)
         m_camera->setRegion(std::nullopt);
         return;
     }
-    // Preview pixels to frame pixels: the preview is the frame scaled down, aspect kept.
-    const double s = double(frame.width()) / double(m_previewSize.width());
-    const QRectF r(previewRegion.x() * s, previewRegion.y() * s, previewRegion.width() * s,
-                   previewRegion.height() * s);
-    m_camera->setRegion(r.toAlignedRect());
+    // The preview is the frame scaled down, aspect kept, as the analysis frames are.
+    m_camera->setRegion(morseio::toFrameRegion(previewRegion, frame, m_previewSize));
 }
 
 } // namespace db::gui

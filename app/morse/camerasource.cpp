@@ -73,9 +73,6 @@ bool CameraSource::start(const QCameraDevice &device)
     if (!m_session) {
         m_session = new QMediaCaptureSession(this);
         m_session->setVideoSink(m_sink);
-        m_mediaDevices = new QMediaDevices(this);
-        connect(m_mediaDevices, &QMediaDevices::videoInputsChanged, this,
-                &CameraSource::checkDevices);
     }
     m_device = device;
     auto *camera = new QCamera(device, this);
@@ -176,12 +173,9 @@ void CameraSource::fail(const QString &message)
     Q_EMIT errorOccurred(message);
 }
 
-void CameraSource::checkDevices()
+void CameraSource::checkDevices(const QList<QCameraDevice> &now)
 {
-    if (!m_camera)
-        return;
-    const QList<QCameraDevice> now = QMediaDevices::videoInputs();
-    if (!now.contains(m_device))
+    if (m_camera && !now.contains(m_device))
         fail(tr("Camera \"%1\" was disconnected").arg(m_device.description()));
 }
 

@@ -18,7 +18,6 @@
 
 class QCamera;
 class QMediaCaptureSession;
-class QMediaDevices;
 class QTimer;
 class QVideoSink;
 
@@ -72,6 +71,9 @@ public:
     void reset();
 
 public Q_SLOTS:
+    // The cameras the system has now (QMediaDevices::videoInputs() after videoInputsChanged,
+    // watched by the owner): a running camera that is not among them fails as disconnected.
+    void checkDevices(const QList<QCameraDevice> &now);
     // Reads one frame. Invalid frames (the sink sends one when the camera stops) are ignored;
     // unmappable or malformed frames are skipped and reported after kBadFramesForError in a row.
     void consumeFrame(const QVideoFrame &frame);
@@ -92,12 +94,10 @@ private:
     std::vector<unsigned char> analysisFrame(const QVideoFrame &frame, QImage *image);
     void applyUserRegion();
     void fail(const QString &message);
-    void checkDevices();
 
     QVideoSink *m_sink;
     QMediaCaptureSession *m_session = nullptr; // created at the first start()
     QPointer<QCamera> m_camera;
-    QMediaDevices *m_mediaDevices = nullptr;
     QCameraDevice m_device;
     QTimer *m_firstFrame;
     LiveLedTracker m_tracker;
