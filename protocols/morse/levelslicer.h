@@ -23,7 +23,8 @@ namespace db::morse {
 //    ramp of ambient light does not leave them behind. A hysteresis of kHysteresis * (high -
 //    low) decides the state; the edge time is the linear interpolation of the threshold crossing
 //    between two samples. An interval shorter than one sample period is noise and merged into the
-//    one before.
+//    one before, unless one of its samples lies more than kKeepSigmas noise sigmas beyond the
+//    threshold (a real element cut short by the frame grid, e.g. a dit of 1.3 frame periods).
 // 4. Watchdog: with no edge for kQuiet seconds the window is checked again; if it is bimodal
 //    the levels were lost (exposure jump) and are set anew, otherwise the LED is idle.
 //
@@ -65,6 +66,10 @@ private:
     std::deque<Point> m_window;
 
     std::vector<Interval> m_intervals;
+    // Per closed interval (and the open one): how far its farthest sample lay beyond the
+    // threshold, in the interval's direction.
+    std::vector<double> m_peaks;
+    double m_openPeak = 0.0;
     bool m_found = false;
     bool m_tracking = false;
     bool m_idle = false;

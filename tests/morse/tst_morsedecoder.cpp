@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 
 using namespace db::morse;
 
@@ -148,6 +149,54 @@ private slots:
         QVERIFY2(r.ok(), qPrintable(r.ok() ? QString() : r.error().message()));
         QCOMPARE(r->ip.octets, kSpecIp);
         QVERIFY(r->ip.confidence >= IpVoter::kConfident);
+    }
+
+    // A frame period shorter than an element: at 15 fps a dit of 1.3 frame periods can leave one
+    // frame, whose threshold crossings are less than a period apart. On a clean signal that
+    // interval is real and kept; in noise, a frame just beyond the threshold is a noise spike
+    // and merged, one far beyond it (more than 3 noise sigmas) is kept.
+    void subFramePieceKeptWhenClear_data()
+    {
+        QTest::addColumn<double>("sigma"); // noise, in contrasts
+        QTest::addColumn<double>("spike"); // the single frame, in contrasts above the off level
+        QTest::addColumn<bool>("kept");
+        QTest::newRow("clean") << 0.0 << 0.9 << true;
+        QTest::newRow("noise, 1.5 sigmas beyond") << 0.1 << 0.65 << false;
+        QTest::newRow("noise, 4.5 sigmas beyond") << 0.1 << 0.95 << true;
+    }
+    void subFramePieceKeptWhenClear()
+    {
+        QFETCH(double, sigma);
+        QFETCH(double, spike);
+        QFETCH(bool, kept);
+        const double period = 1.0 / 15.0;
+        std::mt19937 rng(3);
+        std::normal_distribution<double> noise(0.0, sigma > 0.0 ? sigma : 1.0);
+        LevelSlicer slicer;
+        double spikeAt = 0.0;
+        for (int k = 0; k < 150; ++k) {
+            // 4 s of 4 frames on, 4 off (acquisition), then 8 frames off with one spike, then
+            // the square wave again.
+            double v = 0.0;
+            if (k < 60 || k >= 72)
+                v = (k / 4) % 2 == 0 ? 1.0 : 0.0;
+            if (k == 66) {
+                v = spike;
+                spikeAt = k * period;
+            }
+            slicer.feed({ k * period, v + (sigma > 0.0 && k != 66 ? noise(rng) : 0.0) });
+        }
+        QVERIFY(slicer.found());
+        QVERIFY2(std::abs(slicer.noise() - sigma) < 0.3 * sigma + 1e-6,
+                 qPrintable(QString::number(slicer.noise())));
+        bool found = false;
+        for (const Interval &iv : slicer.intervals()) {
+            if (iv.on && iv.start > spikeAt - period && iv.start < spikeAt) {
+                found = true;
+                QVERIFY2(iv.duration < period, qPrintable(QString::number(iv.duration / period)));
+            }
+        }
+        QCOMPARE(found, kept);
     }
 
     void invalidInput()
