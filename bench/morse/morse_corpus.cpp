@@ -34,6 +34,7 @@ std::vector<CorpusCondition> conditions()
         { QStringLiteral("jitter30+snr6"), 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 },
         { QStringLiteral("jitter30+snr6@60,1k"), 0.30, 6.0, 0.0, 0.0, 0.0, 3.0, { 60.0, 1000.0 } },
         { QStringLiteral("drift+autoexp"), 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 },
+        { QStringLiteral("drift+autoexp+6dB"), 0.0, 6.0, 0.01, 0.3, 0.0, 3.0 },
         { QStringLiteral("duty+-0.3"), 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 },
         { QStringLiteral("all(j30,6dB,drift,duty.2)"), 0.30, 6.0, 0.01, 0.3, 0.2, 3.0 },
         { QStringLiteral("clean<2spu(1.2)"), 0.0, inf, 0.0, 0.0, 0.0, 1.2 },

@@ -20,11 +20,15 @@ namespace db::morse {
 //    kLevelTau), so ambient light, drift and auto exposure move the threshold
 //    (low + high) / 2 with them, also through long dark gaps. Where the contrast is at least
 //    8 noise sigmas, both levels also follow a common slope (alpha-beta tracker), so that a
-//    ramp of ambient light does not leave them behind. A hysteresis of kHysteresis * (high -
-//    low) decides the state; the edge time is the linear interpolation of the threshold crossing
-//    between two samples. An interval shorter than one sample period is noise and merged into the
-//    one before, unless one of its samples lies more than kKeepSigmas noise sigmas beyond the
-//    threshold (a real element cut short by the frame grid, e.g. a dit of 1.3 frame periods).
+//    ramp of ambient light does not leave them behind. Every 50 ms, two parallel lines are also
+//    fitted to the clearly-off and clearly-on samples of the last kWindow seconds; where their
+//    common slope is significant (4 standard errors), they give the levels instead, so that a
+//    ramp or an auto-exposure swing is followed without lag in noise too. A hysteresis of
+//    kHysteresis * (high - low) decides the state; the edge time is the linear interpolation of the
+//    threshold crossing between two samples. An interval shorter than one sample period is noise
+//    and merged into the one before, unless one of its samples lies more than kKeepSigmas noise
+//    sigmas beyond the threshold (a real element cut short by the frame grid, e.g. a dit of 1.3
+//    frame periods).
 // 4. Watchdog: with no edge for kQuiet seconds the window is checked again; if it is bimodal
 //    the levels were lost (exposure jump) and are set anew, otherwise the LED is idle.
 //
@@ -59,6 +63,9 @@ private:
     void process(const Point &p);
     bool bimodal(double *low, double *high);
     void edge(double t);
+    // Two parallel lines through the clearly-off and clearly-on samples of the window; sets the
+    // levels and the slope from them and returns true where the slope is significant.
+    bool fitLines(double now);
 
     std::deque<Sample> m_smooth;
     double m_smoothSum = 0.0;
@@ -70,6 +77,8 @@ private:
     // threshold, in the interval's direction.
     std::vector<double> m_peaks;
     double m_openPeak = 0.0;
+    double m_lastFit = -1e300;
+    bool m_fitted = false; // the levels come from fitLines() until the next fit
     bool m_found = false;
     bool m_tracking = false;
     bool m_idle = false;

@@ -53,7 +53,7 @@ private slots:
         constexpr double kNone = -1.0;
         row("clean", { {}, 0.0, kInf, 0.0, 0.0, 0.0, 2.0 }, 60, 1.0, 0.99);
         row("jitter 30% + noise 6 dB", { {}, 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 }, 100, 0.99, 0.99,
-            "confident within two repetitions: 97 % measured (seed 20240601)");
+            "confident within two repetitions: 96 % measured (seed 20240601)");
         row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
         row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
             "confident within two repetitions: 96 % measured (seed 20240601)");
@@ -62,6 +62,9 @@ private slots:
         row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, 0.95,
             0.9);
         row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, kNone, kNone);
+        // No target either; a guard for the line fit of the levels (LevelSlicer::fitLines):
+        // 23/30 exact and 16/30 within two measured, 20/30 and 10/30 without the fit.
+        row("drift and auto exposure, 6 dB", { {}, 0.0, 6.0, 0.01, 0.3, 0.0, 3.0 }, 30, 0.7, 0.45);
     }
     void corpus()
     {
