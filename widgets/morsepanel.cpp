@@ -312,8 +312,7 @@ void MorsePanel::refresh()
                      .arg(ip.messages)
                      .arg(d.unitFit().unit * 1000.0, 0, 'f', 0);
     else
-        status =
-            (playing() || m_live ? tr("Decoding… ") : QString()) + morse::reasonText(d.reason());
+        status = (playing() || m_live ? tr("Decoding… ") : QString()) + d.reasonMessage();
     m_status->setText(status);
 }
 

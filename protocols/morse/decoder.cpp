@@ -248,12 +248,24 @@ Reason Decoder::reason() const
     return Reason::TooShort;
 }
 
+QString Decoder::reasonMessage() const
+{
+    const Reason r = reason();
+    QString message = reasonText(r);
+    // Octets voted so far tell the user that the drive was read in part (noise or a poor view
+    // damaged every message), not that it sends something else.
+    if (r == Reason::NoValidIp
+        && std::any_of(m_ip.octets.begin(), m_ip.octets.end(), [](int v) { return v >= 0; }))
+        message += QStringLiteral("; octets read so far: %1").arg(m_ip.toString());
+    return message;
+}
+
 Error Decoder::diagnosis() const
 {
     const Reason r = reason();
     if (r == Reason::None)
         return {};
-    QString message = reasonText(r);
+    QString message = reasonMessage();
     if (r == Reason::NoValidIp || r == Reason::LowConfidence)
         message += QStringLiteral(" (text: \"%1\")").arg(m_text.right(80));
     return Error(r == Reason::InvalidInput ? Error::Kind::InvalidArgument : Error::Kind::Malformed,

@@ -92,6 +92,9 @@ public:
 
     // Why there is no confident IP (Reason::None when there is one).
     Reason reason() const;
+    // reasonText(reason()), with the octets voted so far when no valid message was read
+    // ("...; octets read so far: ?.?.7.42").
+    QString reasonMessage() const;
     // The reason as an Error (deviceCode = int(Reason)); Kind::None when confident.
     Error diagnosis() const;
     DecodeResult result() const;

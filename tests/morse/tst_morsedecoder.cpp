@@ -287,21 +287,34 @@ private slots:
         QCOMPARE(reasonOf(sig.samples), Reason::TooShort);
     }
 
+    // The reason names the octets voted so far, if any: "?.1.2.3" when the first octet is out
+    // of range, "?.?.7.42" when only the end of the message could be read (its start is text
+    // the grammar does not know).
     void messageWithoutValidIp_data()
     {
         QTest::addColumn<QString>("text");
-        QTest::newRow("octet 300") << "MC+IP300+1+2+3:";
-        QTest::newRow("three octets") << "MC+IP10+1+2:";
-        QTest::newRow("status only") << "ST+OK:";
+        QTest::addColumn<QString>("partial"); // expected in the message; empty: no octets
+        QTest::newRow("octet 300") << "MC+IP300+1+2+3:"
+                                   << "octets read so far: ?.1.2.3";
+        QTest::newRow("three octets") << "MC+IP10+1+2:" << QString();
+        QTest::newRow("status only") << "ST+OK:" << QString();
+        QTest::newRow("last octets only") << "ST+7+42:"
+                                          << "octets read so far: ?.?.7.42";
     }
     void messageWithoutValidIp()
     {
         QFETCH(QString, text);
+        QFETCH(QString, partial);
         SignalOptions o = specSignal(60.0, 0.08);
         o.text = text;
         o.repetitions = 4;
         const Signal sig = generateSignal(o);
         QCOMPARE(reasonOf(sig.samples), Reason::NoValidIp);
+        const QString message = decodeRecording(sig.samples).error().message();
+        if (partial.isEmpty())
+            QVERIFY2(!message.contains(QLatin1String("octets read")), qPrintable(message));
+        else
+            QVERIFY2(message.contains(partial), qPrintable(message));
     }
 
     // Noise that corrupts a character beyond one edit: Strict rejects the stretch, Salvage

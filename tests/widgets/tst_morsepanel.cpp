@@ -96,6 +96,14 @@ private slots:
         QVERIFY(!panel.findChild<QToolButton *>(QStringLiteral("morseConnect"))->isEnabled());
         QVERIFY2(panel.statusText().contains(QLatin1String("without a valid")),
                  qPrintable(panel.statusText()));
+
+        // Only the end of the message readable: the status names the octets read so far.
+        o.text = QStringLiteral("ST+7+42:");
+        panel.setSource({ morse::generateSignal(o).samples, {}, {}, 0, QStringLiteral("test") });
+        panel.finishPlayback();
+        QVERIFY(!panel.findChild<QToolButton *>(QStringLiteral("morseConnect"))->isEnabled());
+        QVERIFY2(panel.statusText().contains(QLatin1String("octets read so far: ?.?.7.42")),
+                 qPrintable(panel.statusText()));
     }
 };
 
