@@ -26,6 +26,7 @@ namespace {
 
 constexpr int kFrameWidth = 320; // px, the frame preview
 constexpr double kTimelineBand = 0.12; // the dit/dah band: lowest 12 % of the plot
+constexpr double kThresholdStep = 0.25; // s of samples per decoder feed and threshold point
 
 QString confidenceText(const morse::IpEstimate &ip)
 {
@@ -236,15 +237,23 @@ void MorsePanel::feedUntil(std::size_t end)
 {
     if (end <= m_fed)
         return;
-    const std::span<const morse::Sample> chunk(m_source.samples.data() + m_fed, end - m_fed);
-    m_decoder->feed(chunk);
-    for (const morse::Sample &s : chunk)
-        m_brightness->addData(s.t, s.value);
-    if (m_decoder->slicer().found()) {
-        m_thresholdT.push_back(chunk.back().t);
-        m_thresholdV.push_back((m_decoder->slicer().low() + m_decoder->slicer().high()) / 2.0);
+    // In pieces of at most kThresholdStep seconds, so that the threshold curve has a point per
+    // piece also when the rest of a file is decoded at once (finishPlayback()).
+    while (m_fed < end) {
+        std::size_t to = m_fed + 1;
+        const double until = m_source.samples[m_fed].t + kThresholdStep;
+        while (to < end && m_source.samples[to].t < until)
+            ++to;
+        const std::span<const morse::Sample> chunk(m_source.samples.data() + m_fed, to - m_fed);
+        m_decoder->feed(chunk);
+        for (const morse::Sample &s : chunk)
+            m_brightness->addData(s.t, s.value);
+        if (m_decoder->slicer().found()) {
+            m_thresholdT.push_back(chunk.back().t);
+            m_thresholdV.push_back((m_decoder->slicer().low() + m_decoder->slicer().high()) / 2.0);
+        }
+        m_fed = to;
     }
-    m_fed = end;
 }
 
 QString MorsePanel::ipText() const
@@ -296,6 +305,8 @@ void MorsePanel::refresh()
     const morse::IpEstimate &ip = d.ip();
     if (ip.complete() || ip.confidence > 0.0)
         m_ip->setText(tr("IP: %1  (%2)").arg(ip.toString(), confidenceText(ip)));
+    else if (std::any_of(ip.octets.begin(), ip.octets.end(), [](int v) { return v >= 0; }))
+        m_ip->setText(tr("IP: %1  (partly read)").arg(ip.toString()));
     else
         m_ip->setText(tr("IP: –"));
     m_connect->setEnabled(ip.complete());

@@ -97,13 +97,22 @@ private slots:
         QVERIFY2(panel.statusText().contains(QLatin1String("without a valid")),
                  qPrintable(panel.statusText()));
 
-        // Only the end of the message readable: the status names the octets read so far.
+        // Only the end of the message readable: the label and the status name the octets read
+        // so far.
         o.text = QStringLiteral("ST+7+42:");
         panel.setSource({ morse::generateSignal(o).samples, {}, {}, 0, QStringLiteral("test") });
         panel.finishPlayback();
         QVERIFY(!panel.findChild<QToolButton *>(QStringLiteral("morseConnect"))->isEnabled());
         QVERIFY2(panel.statusText().contains(QLatin1String("octets read so far: ?.?.7.42")),
                  qPrintable(panel.statusText()));
+        const QString label = panel.findChild<QLabel *>(QStringLiteral("morseIp"))->text();
+        QVERIFY2(label.contains(QLatin1String("?.?.7.42"))
+                     && label.contains(QLatin1String("partly")),
+                 qPrintable(label));
+        QVERIFY(panel.ipText().isEmpty()); // nothing to connect to
+        // Decoded at once, the threshold still is a curve (a point per 0.25 s), not one point.
+        QVERIFY2(panel.plot()->graph(1)->dataCount() > 20,
+                 qPrintable(QString::number(panel.plot()->graph(1)->dataCount())));
     }
 };
 
