@@ -305,7 +305,7 @@ void MorsePanel::refresh()
     const morse::IpEstimate &ip = d.ip();
     if (ip.complete() || ip.confidence > 0.0)
         m_ip->setText(tr("IP: %1  (%2)").arg(ip.toString(), confidenceText(ip)));
-    else if (std::any_of(ip.octets.begin(), ip.octets.end(), [](int v) { return v >= 0; }))
+    else if (ip.anyOctet())
         m_ip->setText(tr("IP: %1  (partly read)").arg(ip.toString()));
     else
         m_ip->setText(tr("IP: –"));

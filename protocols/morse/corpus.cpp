@@ -82,7 +82,8 @@ CaseOutcome runCase(const CorpusCase &c, double chunkSeconds)
                 out.wrongConfident = true;
             if (out.repetitionsToConfident < 0.0) {
                 const double t = decoder.slicer().lastTime();
-                out.nominalRepetitionsToConfident = (t - sig.messageStarts.front()) / sig.messagePeriod;
+                out.nominalRepetitionsToConfident =
+                    (t - sig.messageStarts.front()) / sig.messagePeriod;
                 out.repetitionsToConfident = periodsSent(sig.messageStarts, t);
             }
         }

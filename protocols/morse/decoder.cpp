@@ -254,8 +254,7 @@ QString Decoder::reasonMessage() const
     QString message = reasonText(r);
     // Octets voted so far tell the user that the drive was read in part (noise or a poor view
     // damaged every message), not that it sends something else.
-    if (r == Reason::NoValidIp
-        && std::any_of(m_ip.octets.begin(), m_ip.octets.end(), [](int v) { return v >= 0; }))
+    if (r == Reason::NoValidIp && m_ip.anyOctet())
         message += QStringLiteral("; octets read so far: %1").arg(m_ip.toString());
     return message;
 }

@@ -140,8 +140,7 @@ void LevelSlicer::edge(double t)
         && m_openPeak <= kKeepSigmas * m_noise) {
         const Interval previous = m_intervals.back();
         m_intervals.pop_back();
-        m_openPeak = m_peaks.back();
-        m_peaks.pop_back();
+        m_openPeak = m_lastPeak; // a merged interval is never short again: no older peak needed
         m_on = previous.on;
         m_openStart = previous.start;
         m_firstOpen = previous.truncated;
@@ -149,7 +148,7 @@ void LevelSlicer::edge(double t)
         return;
     }
     m_intervals.push_back({ m_on, m_openStart, t - m_openStart, m_firstOpen });
-    m_peaks.push_back(m_openPeak);
+    m_lastPeak = m_openPeak;
     m_openPeak = 0.0;
     m_firstOpen = false;
     m_on = !m_on;
@@ -260,42 +259,43 @@ void LevelSlicer::process(const Point &p)
         else if (m_on && p.x < thr - h)
             edge(m_cross > m_openStart ? m_cross : p.t);
         m_openPeak = std::max(m_openPeak, m_on ? p.x - thr : thr - p.x);
-        // The off level follows the clearly-off samples; the contrast follows the clearly-on
-        // samples relative to it. During a long dark gap `high` moves with `low` (additive
-        // drift, the common case), instead of freezing at a stale value. The residuals of
-        // either level also update the common slope (an alpha-beta tracker: no lag on a ramp).
         const double contrast = m_high - m_low;
-        double a = std::min(1.0, dt / kLevelTau);
-        double b = 0.0;
-        if (dt > 0.0 && contrast > kSlopeContrast * m_noise) {
-            // Steady-state alpha-beta gains (Kalata) for drift of kDriftAccel * contrast per s^2
-            // seen through the measured noise: quick on a clean signal, calm in noise.
-            const double noise = std::max(m_noise, 1e-3 * contrast);
-            const double lambda = kDriftAccel * contrast * dt * dt / noise;
-            const double r = (4.0 + lambda - std::sqrt(8.0 * lambda + lambda * lambda)) / 4.0;
-            a = std::min(1.0 - r * r, dt / kFastTau);
-            b = std::max(0.0, 2.0 * (2.0 - a) - 4.0 * std::sqrt(1.0 - a));
-        }
         if (p.t - m_lastFit >= kRefit) {
             m_lastFit = p.t;
             m_fitted = fitLines(p.t);
             if (!m_fitted && contrast <= kSlopeContrast * m_noise)
                 m_slope = 0.0; // a slope from an earlier fit, no longer significant
         }
-        double residual = 0.0;
-        if (m_fitted) {
-            // The fitted lines give the levels until the next fit.
-        } else if (m_on && p.x > thr + h) {
-            residual = p.x - m_high;
-            m_high = m_low + contrast + a * residual;
-        } else if (!m_on && p.x < thr - h) {
-            residual = p.x - m_low;
-            m_low += a * residual;
-            m_high = m_low + contrast;
-        }
-        if (dt > 0.0 && !m_fitted) {
-            const double limit = kMaxSlope * std::max(0.0, m_high - m_low);
-            m_slope = std::clamp(m_slope + b * residual / dt, -limit, limit);
+        // Without a fit (which gives the levels until the next one), the off level follows the
+        // clearly-off samples and the contrast the clearly-on samples relative to it. During a
+        // long dark gap `high` moves with `low` (additive drift, the common case), instead of
+        // freezing at a stale value. The residuals of either level also update the common slope
+        // (an alpha-beta tracker: no lag on a ramp).
+        if (!m_fitted) {
+            double a = std::min(1.0, dt / kLevelTau);
+            double b = 0.0;
+            if (dt > 0.0 && contrast > kSlopeContrast * m_noise) {
+                // Steady-state alpha-beta gains (Kalata) for drift of kDriftAccel * contrast per
+                // s^2 seen through the measured noise: quick on a clean signal, calm in noise.
+                const double noise = std::max(m_noise, 1e-3 * contrast);
+                const double lambda = kDriftAccel * contrast * dt * dt / noise;
+                const double r = (4.0 + lambda - std::sqrt(8.0 * lambda + lambda * lambda)) / 4.0;
+                a = std::min(1.0 - r * r, dt / kFastTau);
+                b = std::max(0.0, 2.0 * (2.0 - a) - 4.0 * std::sqrt(1.0 - a));
+            }
+            double residual = 0.0;
+            if (m_on && p.x > thr + h) {
+                residual = p.x - m_high;
+                m_high = m_low + contrast + a * residual;
+            } else if (!m_on && p.x < thr - h) {
+                residual = p.x - m_low;
+                m_low += a * residual;
+                m_high = m_low + contrast;
+            }
+            if (dt > 0.0) {
+                const double limit = kMaxSlope * std::max(0.0, m_high - m_low);
+                m_slope = std::clamp(m_slope + b * residual / dt, -limit, limit);
+            }
         }
     }
     m_prevT = p.t;

@@ -73,9 +73,9 @@ private:
     std::deque<Point> m_window;
 
     std::vector<Interval> m_intervals;
-    // Per closed interval (and the open one): how far its farthest sample lay beyond the
-    // threshold, in the interval's direction.
-    std::vector<double> m_peaks;
+    // How far the farthest sample of the last closed interval (and of the open one) lay beyond
+    // the threshold, in the interval's direction.
+    double m_lastPeak = 0.0;
     double m_openPeak = 0.0;
     double m_lastFit = -1e300;
     bool m_fitted = false; // the levels come from fitLines() until the next fit

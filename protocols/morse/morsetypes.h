@@ -75,6 +75,10 @@ struct IpEstimate
     {
         return octets[0] >= 0 && octets[1] >= 0 && octets[2] >= 0 && octets[3] >= 0;
     }
+    bool anyOctet() const
+    {
+        return octets[0] >= 0 || octets[1] >= 0 || octets[2] >= 0 || octets[3] >= 0;
+    }
     QString toString() const; // "192.168.2.150", '?' for unknown octets
 };
 
