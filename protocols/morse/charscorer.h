@@ -95,29 +95,61 @@ struct Scorer
         : in(input)
         , m(model)
     {
-        for (std::size_t k = 0; k < kSigmas; ++k) {
-            const double kk = static_cast<double>(k);
-            m_sigma[k] = std::sqrt(m.relJitter * m.relJitter * kk * kk + m.absSigma * m.absSigma);
+        for (std::size_t n = 0; n < kNominals; ++n) {
+            const double k = nominalAt(n);
+            m_base2[n] = m.relJitter * m.relJitter * k * k + m.absSigma * m.absSigma;
         }
-        for (std::size_t k = 0; k < kSigmas; ++k)
-            m_logRatio[k] = std::log(m_sigma[k] / m_sigma[1]);
+        m_base = spreadFor(0.0);
+        m_marks.reserve(in.marks.size());
+        for (std::size_t i = 0; i < in.marks.size(); ++i)
+            m_marks.push_back(spreadFor(in.markSigmaAt(i)));
+        m_gaps.reserve(in.gaps.size());
+        for (std::size_t i = 0; i < in.gaps.size(); ++i)
+            m_gaps.push_back(spreadFor(in.gapSigmaAt(i)));
     }
-    // Nominal lengths are whole units (1 + 3 + 3 at most after a merge).
-    static constexpr std::size_t kSigmas = 12;
-    std::array<double, kSigmas> m_sigma {};
-    std::array<double, kSigmas> m_logRatio {};
-    // Negative log-likelihood of a length x (units) with nominal k, offset so that it is never
-    // negative (ln s relative to the dit's); *z grows to |x - k| / s.
-    double element(double x, double k, double *z) const
+    // Nominal lengths are odd whole units: 1 and 3, and 5 and 7 after a merge (3 + 1 + 3 at
+    // most). Index n stands for 2n + 1 units.
+    static constexpr std::size_t kNominals = 4;
+    static constexpr double nominalAt(std::size_t n) { return 2.0 * static_cast<double>(n) + 1.0; }
+    static std::size_t indexOf(double k)
     {
-        const auto ki = std::min(kSigmas - 1, static_cast<std::size_t>(k));
-        const double s = m_sigma[ki];
-        const double e = std::abs(x - k) / s;
+        return std::min(kNominals - 1, static_cast<std::size_t>(std::max(0.0, (k - 1.0) / 2.0)));
+    }
+    // Per nominal length: the spread of one measured length and ln of it relative to a dit's
+    // spread without edge noise (so that costs are never negative).
+    struct Spread
+    {
+        std::array<double, kNominals> sigma {};
+        std::array<double, kNominals> logRatio {};
+    };
+    std::array<double, kNominals> m_base2 {}; // the model's variance per nominal length
+    Spread m_base; // without edge noise
+    std::vector<Spread> m_marks; // per measured mark, with its edge noise
+    std::vector<Spread> m_gaps;
+
+    Spread spreadFor(double edge) const
+    {
+        if (edge <= 0.0 && m_base.sigma[0] > 0.0)
+            return m_base;
+        Spread sp;
+        for (std::size_t n = 0; n < kNominals; ++n) {
+            const double var = m_base2[n] + edge * edge;
+            sp.sigma[n] = std::sqrt(var);
+            sp.logRatio[n] = 0.5 * std::log(var / m_base2[0]);
+        }
+        return sp;
+    }
+    // Negative log-likelihood of a length x (units) with nominal k and spread sp, offset so
+    // that it is never negative; *z grows to |x - k| / s.
+    double element(double x, double k, const Spread &sp, double *z) const
+    {
+        const std::size_t n = indexOf(k);
+        const double e = std::abs(x - k) / sp.sigma[n];
         *z = std::max(*z, e);
         // Huber: quadratic near the nominal, linear in the tails, so that one element disturbed
         // by noise beyond the estimated spread does not outweigh the rest of the message.
         const double h = e < kHuber ? 0.5 * e * e : kHuber * (e - 0.5 * kHuber);
-        return h + m_logRatio[ki];
+        return h + sp.logRatio[n];
     }
     // Cost of the nominal lengths `marks` (and gaps between them, then a letter gap) on the
     // measured marks from i; inf when they do not fit or exceed maxZ.
@@ -130,9 +162,9 @@ struct Scorer
         double z = 0.0;
         double cost = 0.0;
         for (std::size_t j = 0; j < len && z <= m.maxZ; ++j) {
-            cost += element(in.marks[i + j], marks[j], &z);
+            cost += element(in.marks[i + j], marks[j], m_marks[i + j], &z);
             if (i + j < in.gaps.size())
-                cost += element(in.gaps[i + j], gaps[j], &z);
+                cost += element(in.gaps[i + j], gaps[j], m_gaps[i + j], &z);
         }
         if (worstZ)
             *worstZ = z;
@@ -152,6 +184,9 @@ struct Scorer
         auto raw = [&](std::size_t e) {
             return e % 2 == 0 ? in.marks[i + e / 2] : in.gaps[i + e / 2];
         };
+        auto spread = [&](std::size_t e) -> const Spread & {
+            return e % 2 == 0 ? m_marks[i + e / 2] : m_gaps[i + e / 2];
+        };
         double best = kInf;
         for (std::size_t q = 0; q < 2 * len && q + 2 < avail; ++q) {
             double z = 0.0;
@@ -161,7 +196,11 @@ struct Scorer
                 if (r >= avail)
                     break; // the letter gap after the stretch's last mark is not measured
                 const double x = e == q ? raw(q) + raw(q + 1) + raw(q + 2) : raw(r);
-                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2], &z);
+                // The merged length keeps the outer edges of the three: the more uncertain one.
+                const Spread &sp = e != q                          ? spread(r)
+                    : spread(q).sigma[0] >= spread(q + 2).sigma[0] ? spread(q)
+                                                                   : spread(q + 2);
+                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2], sp, &z);
             }
             if (z <= m.maxZ && cost < best) {
                 best = cost;
@@ -185,8 +224,9 @@ struct Scorer
         if (rest == kInf)
             return kInf;
         double unused = 0.0;
-        const double before = element(in.gaps[i - 1], 3.0, &unused);
-        const double after = element(in.gaps[i - 1], 3.0 + p.marks[0] + p.gaps[0], &z);
+        const Spread &sp = m_gaps[i - 1];
+        const double before = element(in.gaps[i - 1], 3.0, sp, &unused);
+        const double after = element(in.gaps[i - 1], 3.0 + p.marks[0] + p.gaps[0], sp, &z);
         if (z > m.maxZ)
             return kInf;
         if (worstZ)

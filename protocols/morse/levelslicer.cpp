@@ -94,7 +94,7 @@ void LevelSlicer::feed(const Sample &s)
 
 Interval LevelSlicer::openInterval() const
 {
-    return { m_on, m_openStart, std::max(0.0, m_lastT - m_openStart), m_firstOpen };
+    return { m_on, m_openStart, std::max(0.0, m_lastT - m_openStart), m_firstOpen, m_openSigma };
 }
 
 bool LevelSlicer::bimodal(double *low, double *high)
@@ -130,7 +130,7 @@ bool LevelSlicer::bimodal(double *low, double *high)
     return *high - *low > kMinContrast * m_noise && *high > *low;
 }
 
-void LevelSlicer::edge(double t)
+void LevelSlicer::edge(double t, double sigma)
 {
     t = std::clamp(t, m_openStart, m_lastT);
     // An interval shorter than a sample period is a noise spike or dip unless a sample in it
@@ -143,16 +143,18 @@ void LevelSlicer::edge(double t)
         m_openPeak = m_lastPeak; // a merged interval is never short again: no older peak needed
         m_on = previous.on;
         m_openStart = previous.start;
+        m_openSigma = previous.startSigma;
         m_firstOpen = previous.truncated;
         m_idle = false;
         return;
     }
-    m_intervals.push_back({ m_on, m_openStart, t - m_openStart, m_firstOpen });
+    m_intervals.push_back({ m_on, m_openStart, t - m_openStart, m_firstOpen, m_openSigma });
     m_lastPeak = m_openPeak;
     m_openPeak = 0.0;
     m_firstOpen = false;
     m_on = !m_on;
     m_openStart = t;
+    m_openSigma = sigma;
     m_lastEdge = t;
     m_idle = false;
 }
@@ -215,6 +217,19 @@ bool LevelSlicer::fitLines(double now)
     return fitted;
 }
 
+double LevelSlicer::crossingSigma(double before, double after, double dt) const
+{
+    // The crossing is interpolated linearly between the two samples; noise of sigma on them
+    // moves it by about sigma / (step per second). A steep, clean step (both samples far from
+    // the threshold) places the edge to a fraction of a period; two samples near the threshold
+    // (a noisy frame, or a frame that saw part of the edge) leave it uncertain by up to a
+    // whole period.
+    const double step = std::abs(after - before);
+    if (m_noise <= 0.0)
+        return 0.0;
+    return step > m_noise ? m_noise * dt / step : dt;
+}
+
 void LevelSlicer::process(const Point &p)
 {
     m_window.push_back(p);
@@ -238,7 +253,7 @@ void LevelSlicer::process(const Point &p)
                 m_found = true;
                 m_tracking = true;
             } else if (on != m_on) {
-                edge(p.t);
+                edge(p.t, m_period);
             }
         } else if (quiet) {
             m_idle = true;
@@ -252,12 +267,16 @@ void LevelSlicer::process(const Point &p)
         m_high += m_slope * dt;
         const double thr = (m_low + m_high) / 2.0;
         const double h = kHysteresis * (m_high - m_low);
-        if ((m_prevX < thr) != (p.x < thr) && p.x != m_prevX)
+        if ((m_prevX < thr) != (p.x < thr) && p.x != m_prevX) {
             m_cross = m_prevT + (thr - m_prevX) / (p.x - m_prevX) * (p.t - m_prevT);
-        if (!m_on && p.x > thr + h)
-            edge(m_cross > m_openStart ? m_cross : p.t);
-        else if (m_on && p.x < thr - h)
-            edge(m_cross > m_openStart ? m_cross : p.t);
+            m_crossSigma = crossingSigma(m_prevX, p.x, p.t - m_prevT);
+        }
+        if ((!m_on && p.x > thr + h) || (m_on && p.x < thr - h)) {
+            if (m_cross > m_openStart)
+                edge(m_cross, m_crossSigma);
+            else
+                edge(p.t, p.t - m_prevT);
+        }
         m_openPeak = std::max(m_openPeak, m_on ? p.x - thr : thr - p.x);
         const double contrast = m_high - m_low;
         if (p.t - m_lastFit >= kRefit) {

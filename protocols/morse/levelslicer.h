@@ -25,7 +25,10 @@ namespace db::morse {
 //    common slope is significant (4 standard errors), they give the levels instead, so that a
 //    ramp or an auto-exposure swing is followed without lag in noise too. A hysteresis of
 //    kHysteresis * (high - low) decides the state; the edge time is the linear interpolation of the
-//    threshold crossing between two samples. An interval shorter than one sample period is noise
+//    threshold crossing between two samples, and its standard deviation from noise
+//    (Interval::startSigma) is the noise sigma over the step between them per second, at most a
+//    sample period: the parser trusts a steep edge more than one between two noisy samples near
+//    the threshold. An interval shorter than one sample period is noise
 //    and merged into the one before, unless one of its samples lies more than kKeepSigmas noise
 //    sigmas beyond the threshold (a real element cut short by the frame grid, e.g. a dit of 1.3
 //    frame periods).
@@ -62,10 +65,13 @@ private:
     };
     void process(const Point &p);
     bool bimodal(double *low, double *high);
-    void edge(double t);
+    void edge(double t, double sigma);
     // Two parallel lines through the clearly-off and clearly-on samples of the window; sets the
     // levels and the slope from them and returns true where the slope is significant.
     bool fitLines(double now);
+    // Standard deviation (s) from noise of a threshold crossing interpolated between two
+    // samples `dt` apart.
+    double crossingSigma(double before, double after, double dt) const;
 
     std::deque<Sample> m_smooth;
     double m_smoothSum = 0.0;
@@ -85,6 +91,7 @@ private:
     bool m_on = false;
     bool m_firstOpen = true;
     double m_openStart = 0.0;
+    double m_openSigma = 0.0; // startSigma of the open interval
     double m_lastEdge = 0.0;
     double m_lastCheck = -1e300;
     double m_low = 0.0;
@@ -94,6 +101,7 @@ private:
     double m_prevT = 0.0;
     double m_prevX = 0.0;
     double m_cross = -1e300; // time of the last threshold crossing
+    double m_crossSigma = 0.0; // its standard deviation from noise, s
     double m_lastT = -1e300;
     double m_rawPrev = 0.0;
     double m_period = 0.0; // mean sample period

@@ -23,9 +23,10 @@ namespace db::morse {
 // character or octet.
 //
 // Cost model: a measured length x (units, duty-corrected) of nominal k costs
-// rho((x - k) / s_k) + ln s_k with s_k^2 = (relJitter k)^2 + absSigma^2 (jitter is proportional
-// to the length, frame quantisation and edge noise are not) and rho the Huber function
-// (quadratic up to 2 sigma, linear beyond: noise makes heavier tails than the estimate).
+// rho((x - k) / s_k) + ln s_k with s_k^2 = (relJitter k)^2 + absSigma^2 + e^2 (jitter is
+// proportional to the length, frame quantisation is not; e is the length's own uncertainty from
+// noise at its two edges, Element::edgeSigma) and rho the Huber function (quadratic up to 2
+// sigma, linear beyond: noise makes heavier tails than the estimate).
 struct ElementModel
 {
     double relJitter = 0.15; // relative sigma of every length
@@ -38,10 +39,17 @@ struct StretchInput
     double start = 0.0; // s, start of the first mark (identifies the stretch while streaming)
     std::vector<double> marks; // units
     std::vector<double> gaps; // units; gaps[i] follows marks[i]; size() == marks.size() - 1
+    // Uncertainty (units) of each length from noise at its edges (Element::edgeSigma); empty or
+    // shorter than marks / gaps: 0.
+    std::vector<double> markSigma;
+    std::vector<double> gapSigma;
     bool openStart = false; // the recording began inside this stretch
     bool openEnd = false; // the stretch is still arriving
     bool firstComplete = false; // with openStart: the first mark begins a character
     double gapAfter = 0.0; // units of the word gap that closed the stretch; 0: none (long mark)
+    double gapAfterSigma = 0.0;
+    double markSigmaAt(std::size_t i) const { return i < markSigma.size() ? markSigma[i] : 0.0; }
+    double gapSigmaAt(std::size_t i) const { return i < gapSigma.size() ? gapSigma[i] : 0.0; }
 };
 
 // How much of a stretch the grammar must explain.

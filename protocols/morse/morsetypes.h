@@ -22,6 +22,9 @@ struct Interval
     double start = 0.0; // seconds
     double duration = 0.0; // seconds
     bool truncated = false; // began before the decoder saw the LED: true length unknown
+    // Standard deviation of the start time from noise on the samples around the threshold
+    // crossing (seconds; 0 on a clean signal and for a truncated start).
+    double startSigma = 0.0;
 };
 
 enum class ElementKind {
@@ -40,6 +43,7 @@ struct Element
     double start = 0.0; // seconds
     double duration = 0.0; // seconds
     double units = 0.0; // duration in units, corrected for the duty offset
+    double edgeSigma = 0.0; // units: uncertainty of the length from noise at its two edges
 };
 
 // One decoded character; ch is '?' when the code is unknown or the character began before

@@ -20,6 +20,8 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
                 --g;
             cur.marks.resize(g);
             cur.gaps.resize(g > 0 ? g - 1 : 0);
+            cur.markSigma.resize(cur.marks.size());
+            cur.gapSigma.resize(cur.gaps.size());
         }
         cur.openEnd = open;
         if (!cur.marks.empty())
@@ -38,13 +40,17 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
         case ElementKind::Dah:
             if (cur.marks.empty())
                 cur.start = e.start;
-            if (cur.marks.size() > cur.gaps.size())
+            if (cur.marks.size() > cur.gaps.size()) {
                 cur.gaps.push_back(1.0); // cannot happen after symbolize(); keeps sizes paired
+                cur.gapSigma.push_back(0.0);
+            }
             cur.marks.push_back(e.units);
+            cur.markSigma.push_back(e.edgeSigma);
             endsInLetterGap = false;
             break;
         case ElementKind::WordGap:
             cur.gapAfter = e.units;
+            cur.gapAfterSigma = e.edgeSigma;
             close(false);
             break;
         case ElementKind::IntraGap:
@@ -57,8 +63,10 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
                 endsInLetterGap = e.kind == ElementKind::LetterGap;
                 break;
             }
-            if (!cur.marks.empty())
+            if (!cur.marks.empty()) {
                 cur.gaps.push_back(e.units);
+                cur.gapSigma.push_back(e.edgeSigma);
+            }
             break;
         }
     }
@@ -72,8 +80,16 @@ StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
     out.gaps.push_back(a.gapAfter);
     out.marks.insert(out.marks.end(), b.marks.begin(), b.marks.end());
     out.gaps.insert(out.gaps.end(), b.gaps.begin(), b.gaps.end());
+    out.markSigma.resize(a.marks.size());
+    out.gapSigma.resize(a.gaps.size());
+    out.gapSigma.push_back(a.gapAfterSigma);
+    for (std::size_t i = 0; i < b.marks.size(); ++i)
+        out.markSigma.push_back(b.markSigmaAt(i));
+    for (std::size_t i = 0; i < b.gaps.size(); ++i)
+        out.gapSigma.push_back(b.gapSigmaAt(i));
     out.openEnd = b.openEnd;
     out.gapAfter = b.gapAfter;
+    out.gapAfterSigma = b.gapAfterSigma;
     return out;
 }
 

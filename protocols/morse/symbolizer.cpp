@@ -2,6 +2,7 @@
 
 #include "morsecode.h"
 
+#include <cmath>
 #include <queue>
 
 namespace db::morse {
@@ -103,8 +104,11 @@ Symbols symbolize(const std::vector<Interval> &closed, const Interval &open, con
         const bool inProgress = i + 1 == all.size() && !final;
         const double units = unitsOf(iv, fit);
         const ElementKind kind = classify(iv.on, units, t);
+        const double endSigma = i + 1 < all.size() ? all[i + 1].startSigma : 0.0;
+        const double edgeSigma =
+            std::sqrt(iv.startSigma * iv.startSigma + endSigma * endSigma) / fit.unit;
         if (!inProgress || !iv.on)
-            out.elements.push_back({ kind, iv.start, iv.duration, units });
+            out.elements.push_back({ kind, iv.start, iv.duration, units, edgeSigma });
         if (iv.on) {
             if (inProgress)
                 break;

@@ -56,15 +56,17 @@ private slots:
             "confident within two repetitions: 96 % measured (seed 20240601)");
         row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
         row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99,
-            "confident within two repetitions: 96 % measured (seed 20240601)");
+            "confident within two repetitions: 98 % measured (seed 20240601)");
         // No target in the issue; a guard for the slicer's drift tracking (30/30 and 30/30
         // measured; 29/30 and 26/30 before the levels tracked the slope).
         row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, 0.95,
             0.9);
         row("duty error 0.3 units, 20 dB", { {}, 0.0, 20.0, 0.0, 0.0, 0.3, 3.0 }, 30, kNone, kNone);
-        // No target either; a guard for the line fit of the levels (LevelSlicer::fitLines):
-        // 23/30 exact and 16/30 within two measured, 20/30 and 10/30 without the fit.
-        row("drift and auto exposure, 6 dB", { {}, 0.0, 6.0, 0.01, 0.3, 0.0, 3.0 }, 30, 0.7, 0.45);
+        // No target either; a guard for the line fit of the levels (LevelSlicer::fitLines) and
+        // the edge uncertainty (Interval::startSigma): 26/30 exact and 20/30 within two
+        // measured; 23/30 and 16/30 without the edge uncertainty; 20/30 and 10/30 without
+        // the fit either.
+        row("drift and auto exposure, 6 dB", { {}, 0.0, 6.0, 0.01, 0.3, 0.0, 3.0 }, 30, 0.8, 0.6);
     }
     void corpus()
     {

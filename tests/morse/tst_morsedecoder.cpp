@@ -11,6 +11,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
 
 using namespace db::morse;
@@ -233,6 +234,75 @@ private slots:
             }
         }
         QCOMPARE(found, kept);
+    }
+
+    // Every edge carries the uncertainty of its crossing: none on a clean signal; in noise a
+    // steep step between two frames far from the threshold is placed more precisely than a step
+    // that a frame half on (exposure across the edge) splits in two.
+    void edgeSigmaFollowsTheStep()
+    {
+        const double period = 1.0 / 25.0;
+        for (const double sigma : { 0.0, 0.08 }) {
+            std::mt19937 rng(5);
+            std::normal_distribution<double> noise(0.0, 1.0);
+            LevelSlicer slicer;
+            for (int k = 0; k < 400; ++k) {
+                // 5 frames on, 5 off; every second rising edge has a frame half on before it.
+                const int phase = k % 20;
+                double v = phase < 5 || (phase >= 10 && phase < 15) ? 1.0 : 0.0;
+                if (phase == 9)
+                    v = 0.5;
+                slicer.feed({ k * period, v + sigma * noise(rng) });
+            }
+            std::vector<double> steep;
+            std::vector<double> split;
+            for (const Interval &iv : slicer.intervals()) {
+                if (iv.truncated || iv.start < 4.0)
+                    continue;
+                if (!iv.on)
+                    steep.push_back(iv.startSigma / period);
+                else
+                    (std::abs(std::fmod(iv.start / period, 20.0) - 10.0) < 5.0 ? split : steep)
+                        .push_back(iv.startSigma / period);
+            }
+            QVERIFY(steep.size() > 20 && split.size() > 5);
+            const double steepMean =
+                std::accumulate(steep.begin(), steep.end(), 0.0) / steep.size();
+            const double splitMean =
+                std::accumulate(split.begin(), split.end(), 0.0) / split.size();
+            if (sigma == 0.0) {
+                QCOMPARE(steepMean, 0.0);
+                QCOMPARE(splitMean, 0.0);
+                continue;
+            }
+            // sigma / step: about 0.08 of a period for a full step, twice that for half a step.
+            QVERIFY2(steepMean > 0.04 && steepMean < 0.15, qPrintable(QString::number(steepMean)));
+            QVERIFY2(splitMean > 1.5 * steepMean, qPrintable(QString::number(splitMean)));
+        }
+    }
+
+    // A mark measured at 1.9 units is a dah by the model alone ("-...." is '6'), but when its
+    // edges are uncertain by a whole unit, dit and dah explain it about equally: the rival '5'
+    // comes within half a nat instead of several.
+    void uncertainEdgeMakesTheReadingSoft()
+    {
+        const QString text = QStringLiteral("MC+IP192+168+2+160:");
+        StretchInput s = nominalStretch(text);
+        const std::size_t at = markOf(text, 16); // the '6'
+        s.marks[at] = 1.9;
+        const StretchParse sharp = parseStretch(s, ElementModel());
+        QVERIFY(sharp.ok);
+        QCOMPARE(sharp.observation.octets[3], 160);
+        QVERIFY2(sharp.observation.cost[3].at(150) > 2.0,
+                 qPrintable(QString::number(sharp.observation.cost[3].at(150))));
+        s.markSigma.assign(s.marks.size(), 0.0);
+        s.markSigma[at] = 1.0;
+        const StretchParse soft = parseStretch(s, ElementModel());
+        QVERIFY(soft.ok);
+        const auto &cost = soft.observation.cost[3];
+        const int other = soft.observation.octets[3] == 160 ? 150 : 160;
+        QVERIFY(soft.observation.octets[3] == 160 || soft.observation.octets[3] == 150);
+        QVERIFY2(cost.at(other) < 0.5, qPrintable(QString::number(cost.at(other))));
     }
 
     void invalidInput()
