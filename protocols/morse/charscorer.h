@@ -163,8 +163,14 @@ struct Scorer
         double cost = 0.0;
         for (std::size_t j = 0; j < len && z <= m.maxZ; ++j) {
             cost += element(in.marks[i + j], marks[j], m_marks[i + j], &z);
-            if (i + j < in.gaps.size())
-                cost += element(in.gaps[i + j], gaps[j], m_gaps[i + j], &z);
+            if (i + j >= in.gaps.size())
+                continue;
+            // A letter gap longer than its nominal may hold the first mark of the next
+            // character, lost to noise (firstLost() refunds this charge), so it costs but
+            // never rejects the reading.
+            double unlimited = 0.0;
+            const bool trailing = j + 1 == len && in.gaps[i + j] > gaps[j];
+            cost += element(in.gaps[i + j], gaps[j], m_gaps[i + j], trailing ? &unlimited : &z);
         }
         if (worstZ)
             *worstZ = z;

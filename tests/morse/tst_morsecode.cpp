@@ -61,6 +61,10 @@ private slots:
         QTest::newRow("dah") << true << 3.0 << ElementKind::Dah;
         QTest::newRow("dah -30%") << true << 2.1 << ElementKind::Dah;
         QTest::newRow("dah +30%") << true << 3.9 << ElementKind::Dah;
+        // Two dahs whose gap noise filled (3 + 1 + 3 units, 9.1 with +30 % jitter): still a
+        // mark for the sequence decoder, which reads it with one edit.
+        QTest::newRow("two dahs merged") << true << 7.0 << ElementKind::Dah;
+        QTest::newRow("two dahs merged +30%") << true << 9.1 << ElementKind::Dah;
         QTest::newRow("steady on") << true << 12.0 << ElementKind::LongMark;
         QTest::newRow("intra") << false << 1.0 << ElementKind::IntraGap;
         QTest::newRow("intra -30%") << false << 0.7 << ElementKind::IntraGap;
