@@ -3,6 +3,7 @@
 // the decoder must return the IP; CSV files; and a clear reason for each undecodable input.
 // The CLI `drivebench-cli morse` is run on the same files.
 #include "ledvideo.h"
+#include "morse/corpus.h"
 #include "morse/decoder.h"
 #include "morse/morseinput.h"
 
@@ -31,7 +32,7 @@ void writeCsv(const QString &path, const std::vector<Sample> &samples, bool head
     if (header)
         f.write("time_s,brightness\n");
     for (const Sample &s : samples)
-        f.write(QByteArray::number(s.t, 'f', 4) + ',' + QByteArray::number(s.value, 'f', 3) + '\n');
+        f.write(QByteArray::number(s.t, 'f', 6) + ',' + QByteArray::number(s.value, 'g', 9) + '\n');
 }
 
 struct Cli
@@ -138,6 +139,43 @@ private slots:
         const Cli cli = runCli({ path });
         QCOMPARE(cli.code, 0);
         QVERIFY(cli.out.contains(QLatin1String("ip: 172.16.0.9")));
+    }
+
+    // The CLI on the generated corpus (tst_morsecorpus streams the same cases through the
+    // library): every file of a clean and of a jittered, noisy condition gives its exact IP.
+    void cliDecodesTheCorpus_data()
+    {
+        QTest::addColumn<double>("jitter");
+        QTest::addColumn<double>("snrDb");
+        QTest::addColumn<int>("cases");
+        QTest::newRow("clean") << 0.0 << std::numeric_limits<double>::infinity() << 10;
+        QTest::newRow("jitter 30% + noise 6 dB") << 0.3 << 6.0 << 20;
+    }
+    void cliDecodesTheCorpus()
+    {
+        QFETCH(double, jitter);
+        QFETCH(double, snrDb);
+        QFETCH(int, cases);
+        CorpusCondition condition;
+        condition.jitter = jitter;
+        condition.snrDb = snrDb;
+        condition.minSamplesPerUnit = jitter > 0.0 ? 3.0 : 2.0;
+        const std::vector<CorpusCase> corpus = makeCorpus(condition, cases, 20240601u);
+        int exact = 0;
+        for (std::size_t k = 0; k < corpus.size(); ++k) {
+            const QString path = m_dir.filePath(QStringLiteral("corpus%1.csv").arg(k));
+            writeCsv(path, generateSignal(corpus[k].signal).samples, k % 2 == 0);
+            const Cli cli = runCli({ path });
+            const QString ip = ipText(corpus[k].ip, QLatin1Char('.'));
+            const bool ok =
+                cli.code == 0 && cli.out.contains(QStringLiteral("ip: %1 (confidence").arg(ip));
+            if (!ok)
+                qWarning("case %zu (%g fps, %.0f ms): %s: %s%s", k, corpus[k].signal.sampleRate,
+                         corpus[k].signal.unit * 1000.0, qPrintable(ip), qPrintable(cli.out),
+                         qPrintable(cli.err));
+            exact += ok ? 1 : 0;
+        }
+        QCOMPARE(exact, cases);
     }
 
     // Undecodable input: each gets its reason, from the library and from the CLI.
