@@ -99,13 +99,17 @@ struct Scorer
             const double k = nominalAt(n);
             m_base2[n] = m.relJitter * m.relJitter * k * k + m.absSigma * m.absSigma;
         }
-        m_base = spreadFor(0.0);
+        const Spread base = spreadFor(0.0);
+        // Most lengths of a clean signal have no edge noise: they share the model's spread.
+        auto with = [&](double edge) {
+            return edge > 0.0 ? spreadFor(edge) : base;
+        };
         m_marks.reserve(in.marks.size());
         for (std::size_t i = 0; i < in.marks.size(); ++i)
-            m_marks.push_back(spreadFor(in.markSigmaAt(i)));
+            m_marks.push_back(with(in.markSigmaAt(i)));
         m_gaps.reserve(in.gaps.size());
         for (std::size_t i = 0; i < in.gaps.size(); ++i)
-            m_gaps.push_back(spreadFor(in.gapSigmaAt(i)));
+            m_gaps.push_back(with(in.gapSigmaAt(i)));
     }
     // Nominal lengths are odd whole units: 1 and 3, and 5 and 7 after a merge (3 + 1 + 3 at
     // most). Index n stands for 2n + 1 units.
@@ -123,14 +127,11 @@ struct Scorer
         std::array<double, kNominals> logRatio {};
     };
     std::array<double, kNominals> m_base2 {}; // the model's variance per nominal length
-    Spread m_base; // without edge noise
     std::vector<Spread> m_marks; // per measured mark, with its edge noise
     std::vector<Spread> m_gaps;
 
     Spread spreadFor(double edge) const
     {
-        if (edge <= 0.0 && m_base.sigma[0] > 0.0)
-            return m_base;
         Spread sp;
         for (std::size_t n = 0; n < kNominals; ++n) {
             const double var = m_base2[n] + edge * edge;
@@ -195,6 +196,9 @@ struct Scorer
         };
         double best = kInf;
         for (std::size_t q = 0; q < 2 * len && q + 2 < avail; ++q) {
+            // The merged length keeps the outer edges of the three: the more uncertain one.
+            const Spread &merged =
+                spread(q).sigma[0] >= spread(q + 2).sigma[0] ? spread(q) : spread(q + 2);
             double z = 0.0;
             double cost = 0.0;
             for (std::size_t e = 0; e < 2 * len && z <= m.maxZ; ++e) {
@@ -202,11 +206,8 @@ struct Scorer
                 if (r >= avail)
                     break; // the letter gap after the stretch's last mark is not measured
                 const double x = e == q ? raw(q) + raw(q + 1) + raw(q + 2) : raw(r);
-                // The merged length keeps the outer edges of the three: the more uncertain one.
-                const Spread &sp = e != q                          ? spread(r)
-                    : spread(q).sigma[0] >= spread(q + 2).sigma[0] ? spread(q)
-                                                                   : spread(q + 2);
-                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2], sp, &z);
+                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2],
+                                e == q ? merged : spread(r), &z);
             }
             if (z <= m.maxZ && cost < best) {
                 best = cost;

@@ -80,13 +80,14 @@ StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
     out.gaps.push_back(a.gapAfter);
     out.marks.insert(out.marks.end(), b.marks.begin(), b.marks.end());
     out.gaps.insert(out.gaps.end(), b.gaps.begin(), b.gaps.end());
+    // Sigmas missing in either part (StretchInput allows that) are 0.
     out.markSigma.resize(a.marks.size());
+    out.markSigma.insert(out.markSigma.end(), b.markSigma.begin(), b.markSigma.end());
+    out.markSigma.resize(out.marks.size());
     out.gapSigma.resize(a.gaps.size());
     out.gapSigma.push_back(a.gapAfterSigma);
-    for (std::size_t i = 0; i < b.marks.size(); ++i)
-        out.markSigma.push_back(b.markSigmaAt(i));
-    for (std::size_t i = 0; i < b.gaps.size(); ++i)
-        out.gapSigma.push_back(b.gapSigmaAt(i));
+    out.gapSigma.insert(out.gapSigma.end(), b.gapSigma.begin(), b.gapSigma.end());
+    out.gapSigma.resize(out.gaps.size());
     out.openEnd = b.openEnd;
     out.gapAfter = b.gapAfter;
     out.gapAfterSigma = b.gapAfterSigma;
