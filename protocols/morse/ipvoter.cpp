@@ -171,7 +171,7 @@ IpEstimate IpVoter::estimate() const
         // The voted value is one that some reading read whole (a prefix alone names none).
         auto support = [&](int value) {
             return std::count_if(m_readings.begin(), m_readings.end(),
-                                 [&](const Reading &r) { return r.value[i] == value; });
+                                 [&](const Reading &r) { return r.reads(i, value); });
         };
         std::size_t at = candidates[i].size();
         for (std::size_t k = 0; k < candidates[i].size(); ++k) {

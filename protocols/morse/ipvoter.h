@@ -54,7 +54,9 @@ std::vector<IpObservation> parseIpObservations(const QString &text);
 // (searched over the few cheapest values of each octet). An octet's lead is how much more the
 // best address with another value there costs; its confidence is lead / (kLead *
 // kNatsPerWeight), clamped to [0, 1], once two readings read its value, and min(kSingle, lead /
-// (2 * kNatsPerWeight)) while only one did (the others garbled or cut off). With plain text
+// (2 * kNatsPerWeight)) while only one did (the others garbled or cut off). A reading whose soft
+// cost for a value is within kTie of its own reading reads both: it cannot tell them apart, and
+// which of the two its best parse names is chance. With plain text
 // readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. The IP confidence is
 // the lowest octet confidence; kConfident (0.75) is the manual's "two identical texts in a row"
 // made per octet and weighted.
@@ -64,6 +66,7 @@ public:
     static constexpr double kConfident = 0.75;
     static constexpr double kLead = 1.5;
     static constexpr double kSingle = 0.5;
+    static constexpr double kTie = 0.5;
     static constexpr double kMaxWeight = 1.5;
     static constexpr double kNatsPerWeight = 4.0;
     static constexpr double kMessageCap = 2.0 * kMaxWeight * kNatsPerWeight;
@@ -86,6 +89,15 @@ private:
                 return 0.0;
             const auto it = cost[i].find(v);
             return it == cost[i].end() ? cap[i] : it->second;
+        }
+        // Whether this reading read octet i whole as `v`, or as a value it cannot tell from v
+        // (within kTie nats: "2" and "8" each with two dits merged by noise are the same marks).
+        bool reads(std::size_t i, int v) const
+        {
+            if (value[i] < 0)
+                return false;
+            const auto it = cost[i].find(v);
+            return it != cost[i].end() && it->second <= kTie;
         }
     };
     std::vector<Reading> m_readings;
