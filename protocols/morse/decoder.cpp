@@ -20,6 +20,9 @@ constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
 constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
 constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one message
+// Units: a gap this long inside a stretch may be the pause between two messages, shortened
+// below Thresholds::wordGap by jitter (7 units - 30 % = 4.9) and read as a letter gap.
+constexpr double kShortPause = 4.0;
 
 // Character-by-character reading of a stretch the grammar rejected (other text, status).
 QString hardText(const StretchInput &s)
@@ -143,20 +146,39 @@ void Decoder::update(bool final)
     IpVoter voter;
     int complete = 0;
     QString corrected;
-    const std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
+    std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
     for (std::size_t i = 0; i < stretches.size(); ++i) {
         StretchInput stretch = stretches[i];
         StretchParse parse = cachedParse(stretch, ParseMode::Strict);
+        // A stretch the grammar rejects may hold two messages whose pause read as a letter gap:
+        // it is cut at the first long gap where a whole message ends, and the rest is read next.
+        for (std::size_t g = 0; !parse.ok && g < stretch.gaps.size(); ++g) {
+            if (stretch.gaps[g] < kShortPause)
+                continue;
+            auto [first, rest] = splitStretch(stretch, g, m_modelUnit);
+            const StretchParse p = cachedParse(first, ParseMode::Strict);
+            if (p.ok) {
+                stretches.insert(stretches.begin() + std::ptrdiff_t(i) + 1, std::move(rest));
+                stretch = std::move(first);
+                parse = p;
+            }
+        }
         // A closed stretch the grammar rejects: first the word gap after it may be noise inside
         // the message (re-read joined with what follows), then its damaged characters are
-        // skipped at the ends (ParseMode::Salvage).
+        // skipped at the ends (ParseMode::Salvage). The joined reading must explain the lengths
+        // better than the stretch skipped and the ones after it read on their own: a noise
+        // spike between two messages is a stretch of one mark that the grammar rejects, and
+        // joined to the next message it makes a contrived reading of that message.
         StretchInput joined = stretch;
+        double separate = kSkipCost * double(stretch.marks.size());
         for (std::size_t j = i + 1; !parse.ok && !joined.openEnd && joined.gapAfter > 0.0
              && j < stretches.size() && j <= i + kMaxJoins;
              ++j) {
             joined = joinStretches(joined, stretches[j]);
+            const StretchParse alone = cachedParse(stretches[j], ParseMode::Strict);
+            separate += alone.ok ? alone.cost : kSkipCost * double(stretches[j].marks.size());
             const StretchParse p = cachedParse(joined, ParseMode::Strict);
-            if (p.ok) {
+            if (p.ok && p.cost < separate) {
                 stretch = joined;
                 parse = p;
                 i = j;

@@ -17,9 +17,6 @@ using namespace detail;
 // A digit whose best rival reading costs this much more (nats) gets the full vote weight.
 constexpr double kClearMargin = 4.0;
 constexpr double kMinWeight = 0.05;
-// Salvage: nats per skipped mark, about what a mark and its gap 2.5 sigma off their nominal
-// cost, so that a character is skipped only when no reading of the grammar explains it.
-constexpr double kSkipCost = 3.0;
 // Soft octet costs beyond this (nats) are not kept: the voter caps each reading lower.
 constexpr double kSoftRange = 2.0 * IpVoter::kMaxWeight * IpVoter::kNatsPerWeight;
 // Beam: a partial parse costlier by this much (nats) than the best one over the same marks is
@@ -30,17 +27,25 @@ constexpr double kSoftRange = 2.0 * IpVoter::kMaxWeight * IpVoter::kNatsPerWeigh
 constexpr double kBeam = 15.0;
 
 // Grammar states: P(j) expects prefix character j of "MC+IP"; O(k, n, v) is inside octet k
-// after n digits of value v; U(k) is inside octet k whose first digits were before the
-// recording (value unknown, never reported); End follows ':'.
+// after n digits of value v; U(k, n, v) is inside octet k read from a cut start: the n < 3
+// digits v seen since the first complete character may be the octet's tail, so its value is
+// unknown, unless a third digit shows that they were all of it (then O(k, 3, v)); U(k, 3) is
+// inside an octet cut in the middle of a character (any digits, never a value); End follows ':'.
 constexpr int kPrefix = 5;
 constexpr int kOctetBase = kPrefix;
 constexpr int kUnknownBase = kOctetBase + 4 * 4 * 256;
-constexpr int kEnd = kUnknownBase + 4;
+constexpr int kEnd = kUnknownBase + 4 * 4 * 256;
 constexpr int kStates = kEnd + 1;
+constexpr int kCutDigits = 3; // U(k, kCutDigits): digits after a cut inside a character
 
 constexpr int octetState(int k, int n, int v)
 {
     return kOctetBase + (k * 4 + n) * 256 + v;
+}
+
+constexpr int unknownState(int k, int n, int v)
+{
+    return kUnknownBase + (k * 4 + n) * 256 + v;
 }
 
 // The state after character c from state s, or -1.
@@ -50,9 +55,17 @@ int next(int s, int c)
         return c == s ? (s + 1 < kPrefix ? s + 1 : octetState(0, 0, 0)) : -1;
     const bool digit = c >= kDigit0 && c < kDigit0 + 10;
     if (s >= kUnknownBase && s < kEnd) {
-        const int k = s - kUnknownBase;
-        if (digit)
+        const int rel = s - kUnknownBase;
+        const int k = rel / 1024;
+        const int n = (rel / 256) % 4;
+        if (digit && n == kCutDigits)
             return s;
+        if (digit) {
+            const int w = (rel % 256) * 10 + (c - kDigit0);
+            if (n < 2)
+                return unknownState(k, n + 1, w);
+            return w <= 255 ? octetState(k, 3, w) : -1; // three digits: a whole octet
+        }
         if (c == kPlus && k < 3)
             return octetState(k + 1, 0, 0);
         return c == kColon && k == 3 ? kEnd : -1;
@@ -81,8 +94,13 @@ constexpr double kLeadingZeroCost = 3.0;
 double prior(int s, int c)
 {
     s %= kStates;
-    if (s < kOctetBase || s >= kUnknownBase || c < kDigit0 || c >= kDigit0 + 10)
+    if (s < kOctetBase || s >= kEnd || c < kDigit0 || c >= kDigit0 + 10)
         return 0.0;
+    if (s >= kUnknownBase) {
+        // After a cut, "05" may be the tail of 105; only a third digit shows the zero leading.
+        const int rel = s - kUnknownBase;
+        return (rel / 256) % 4 == 2 && rel % 256 < 10 ? kLeadingZeroCost : 0.0;
+    }
     const int rel = s - kOctetBase;
     return (rel / 256) % 4 >= 1 && rel % 256 == 0 ? kLeadingZeroCost : 0.0;
 }
@@ -158,14 +176,21 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
         }
     }
     std::array<std::map<int, double>, 4> out;
+    // Octets read from a cut start: per octet the cheapest parse that closes it after digits
+    // cut in a character (consistent with every value), and per tail (digits, value) the
+    // cheapest that closes it after those digits.
+    std::array<double, 4> anyValue { kInf, kInf, kInf, kInf };
+    std::array<std::map<std::pair<int, int>, double>, 4> tails;
     for (std::size_t i = 0; i < n; ++i) {
         for (const auto &[st, cell] : layer[i]) {
             const bool unanchored = st >= kStates;
             const int s = unanchored ? st - kStates : st;
-            if (s < kOctetBase || s >= kUnknownBase || (s - kOctetBase) / 256 % 4 == 0)
+            const bool cut = s >= kUnknownBase && s < kEnd;
+            const int rel = s - (cut ? kUnknownBase : kOctetBase);
+            if (s < kOctetBase || s >= kEnd || rel / 256 % 4 == 0)
                 continue; // not inside an octet with at least one digit
-            const int k = (s - kOctetBase) / 1024;
-            const int v = (s - kOctetBase) % 256;
+            const int k = rel / 1024;
+            const int v = rel % 256;
             for (const Option &op : options[i]) {
                 const int t = op.ch == kPlus || op.ch == kColon ? step(st, op.ch) : -1;
                 if (t < 0)
@@ -176,10 +201,33 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
                 if (it == table[j].end() || it->second == kInf)
                     continue;
                 const double delta = cell.cost + op.cost + it->second - bestCost;
-                auto &slot = out[std::size_t(k)];
-                const auto [pos, fresh] = slot.try_emplace(v, delta);
+                const auto ku = std::size_t(k);
+                if (cut && rel / 256 % 4 == kCutDigits) {
+                    anyValue[ku] = std::min(anyValue[ku], delta);
+                    continue;
+                }
+                double &slot = cut ? tails[ku].try_emplace({ rel / 256 % 4, v }, kInf).first->second
+                                   : out[ku].try_emplace(v, kInf).first->second;
+                slot = std::min(slot, delta);
+            }
+        }
+    }
+    // An octet's tail of d digits t fits the values that end in t and have at least d digits
+    // ("05" fits 105 and 205, "93" fits 93 and 193).
+    for (std::size_t k = 0; k < 4; ++k) {
+        if (tails[k].empty())
+            continue;
+        for (int w = 0; w <= 255; ++w) {
+            double cost = anyValue[k];
+            for (const auto &[tail, delta] : tails[k]) {
+                const int scale = tail.first == 1 ? 10 : 100;
+                if (w % scale == tail.second && (w >= scale / 10 || tail.first == 1))
+                    cost = std::min(cost, delta);
+            }
+            if (cost < kInf) {
+                const auto [pos, fresh] = out[k].try_emplace(w, cost);
                 if (!fresh)
-                    pos->second = std::min(pos->second, delta);
+                    pos->second = std::min(pos->second, cost);
             }
         }
     }
@@ -228,21 +276,23 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             for (int st = 0; st < kPrefix; ++st)
                 layer[at][st] = skip;
             for (int k = 0; k < 4; ++k)
-                layer[at][kUnknownBase + k + kStates] = skip;
+                layer[at][unknownState(k, kCutDigits, 0) + kStates] = skip;
         }
     } else {
         // The first character may be cut: it is read inside an unknown octet or as a prefix
         // character, or skipped up to the first letter gap. Either way the position inside an
-        // octet is unknown, so the first octet read is never reported.
+        // octet is unknown, and so is the first octet's value: the digits read may be its tail.
+        // Only three digits from the first complete character are certainly all of it.
         std::size_t skipped = 0;
         while (!in.firstComplete && skipped < in.gaps.size() && in.gaps[skipped] < 2.0)
             ++skipped;
         skipped += in.firstComplete ? 0 : 1;
         for (std::size_t at : { std::size_t(0), skipped }) {
+            const int digits = at == skipped ? 0 : kCutDigits;
             for (int st = 0; at < n && st < kPrefix; ++st)
                 layer[at][st] = {};
             for (int k = 0; at < n && k < 4; ++k)
-                layer[at][kUnknownBase + k + kStates] = {};
+                layer[at][unknownState(k, digits, 0) + kStates] = {};
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -309,9 +359,11 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     if (path.empty())
         return out;
 
+    out.cost = bestCost;
     if (i > 0)
         out.text += QLatin1Char('?');
     double margin = kInf;
+    int tailOctet = -1; // the octet closed after a cut start with only its last digits read
     for (const Taken &t : path) {
         double z = 0.0;
         scorer.character(t.at, t.ch, t.edit, &z);
@@ -322,7 +374,10 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         const int from = t.from % kStates;
         const bool known =
             from >= kOctetBase && from < kUnknownBase && (t.from < kStates || best == kEnd);
-        if (digit && known) {
+        // Digits after a cut count towards the margin: a third one makes them an octet.
+        const bool tail = from >= kUnknownBase && from < kEnd
+            && (from - kUnknownBase) / 256 % 4 < kCutDigits && best == kEnd;
+        if (digit && (known || tail)) {
             // Margin against the cheapest other reading of the same marks.
             const Costs &costs = charCost[std::size_t(t.edit)];
             const double own = costs[t.at][static_cast<std::size_t>(t.ch)];
@@ -335,6 +390,8 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
                 ownMargin = std::min(ownMargin, kClearMargin / 2.0);
             margin = std::min(margin, ownMargin);
         }
+        if ((t.ch == kPlus || t.ch == kColon) && tail && (from - kUnknownBase) / 256 % 4 > 0)
+            tailOctet = (from - kUnknownBase) / 1024;
         if ((t.ch == kPlus || t.ch == kColon) && known) {
             const int rel = from - kOctetBase;
             const auto k = static_cast<std::size_t>(rel / 1024);
@@ -342,7 +399,7 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             out.observation.weight[k] =
                 std::clamp(margin / kClearMargin, kMinWeight, IpVoter::kMaxWeight);
         }
-        if (t.ch == kPlus || t.ch == kColon || !known)
+        if (t.ch == kPlus || t.ch == kColon || !(known || tail))
             margin = kInf;
     }
     if (end < n)
@@ -380,19 +437,22 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             }
         }
     }
-    const bool anyOctet = open >= 0
+    const bool anyOctet = open >= 0 || tailOctet >= 0
         || std::any_of(out.observation.octets.begin(), out.observation.octets.end(),
                        [](int v) { return v >= 0; });
     const auto soft = anyOctet ? octetCosts(layer, options, in.openEnd, salvage, bestCost)
                                : std::array<std::map<int, double>, 4> {};
     for (std::size_t k = 0; k < 4; ++k) {
         const bool isOpen = int(k) == open;
-        if (out.observation.octets[k] < 0 && !isOpen)
+        const bool isTail = int(k) == tailOctet;
+        if (out.observation.octets[k] < 0 && !isOpen && !isTail)
             continue;
         for (const auto &[value, nats] : soft[k]) {
             if (nats < kSoftRange)
                 out.observation.cost[k][value] = std::max(0.0, nats);
         }
+        if (isTail)
+            continue; // costs only: the values that end in the digits read cost least
         if (!isOpen) {
             out.observation.cost[k][out.observation.octets[k]] = 0.0;
             continue;

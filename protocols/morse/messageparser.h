@@ -5,6 +5,7 @@
 
 #include <QString>
 
+#include <utility>
 #include <vector>
 
 namespace db::morse {
@@ -70,7 +71,12 @@ struct StretchParse
     QString text; // decoded characters; '?' for a truncated first character
     IpObservation observation; // octets read completely in this stretch (weights: margins)
     double worstZ = 0.0;
+    double cost = 0.0; // nats: how well the reading explains the lengths (less is better)
 };
+
+// Salvage: nats per skipped mark, about what a mark and its gap 2.5 sigma off their nominal
+// cost, so that a character is skipped only when no reading of the grammar explains it.
+constexpr double kSkipCost = 3.0;
 
 // Splits a classified timeline (symbolize()) into stretches at word gaps and long marks. The
 // first stretch is open at the start unless the recording began in a word gap; the last one is
@@ -96,5 +102,10 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model,
 // between two gaps, which then merge), so a closed stretch the grammar rejects is re-read
 // joined with the next one. Requires a.gapAfter > 0.
 StretchInput joinStretches(const StretchInput &a, const StretchInput &b);
+
+// The reverse: `s` cut at gaps[g], read as a word gap (a.gapAfter); b starts with marks[g + 1]
+// and gets its start time from the lengths before it. Requires g < s.gaps.size().
+std::pair<StretchInput, StretchInput> splitStretch(const StretchInput &s, std::size_t g,
+                                                   double secondsPerUnit);
 
 } // namespace db::morse

@@ -1,10 +1,39 @@
 // Timeline -> stretches between word gaps, and the element model, for messageparser.
 #include "messageparser.h"
+#include "symbolizer.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace db::morse {
+namespace {
+
+// A mark shorter than this (units) between two gaps of at least a letter gap that make a word
+// gap with it is a noise spike in the pause between two messages, not a character: the
+// message grammar has no character of one dit, and a dit 30 % short is 0.7 units.
+constexpr double kSpike = 0.6;
+
+bool isGap(const Element &e)
+{
+    return e.kind == ElementKind::IntraGap || e.kind == ElementKind::LetterGap
+        || e.kind == ElementKind::WordGap;
+}
+
+// Whether timeline[i] is such a spike; the gap after it is closed (not the one in progress).
+bool isSpike(const std::vector<Element> &timeline, std::size_t i)
+{
+    const Thresholds t;
+    if (i == 0 || i + 2 >= timeline.size() || timeline[i].kind != ElementKind::Dit
+        || timeline[i].units >= kSpike)
+        return false;
+    const Element &before = timeline[i - 1];
+    const Element &after = timeline[i + 1];
+    return isGap(before) && isGap(after) && before.units >= t.letterGap
+        && after.units >= t.letterGap
+        && before.units + timeline[i].units + after.units >= t.wordGap;
+}
+
+} // namespace
 
 std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
 {
@@ -32,6 +61,26 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
     for (std::size_t i = 0; i < timeline.size(); ++i) {
         const Element &e = timeline[i];
         const bool last = i + 1 == timeline.size();
+        if (isSpike(timeline, i)) {
+            // The pause between two messages: the stretch ends at the gap before the spike,
+            // and the spike and the gap after it are skipped.
+            const Element &after = timeline[i + 1];
+            const double pause = timeline[i - 1].units + e.units + after.units;
+            if (!cur.marks.empty()) {
+                if (cur.gaps.size() == cur.marks.size()) { // the gap before, as a letter gap
+                    cur.gaps.pop_back();
+                    cur.gapSigma.pop_back();
+                }
+                cur.gapAfter = pause;
+                cur.gapAfterSigma = after.edgeSigma;
+                close(false);
+            } else if (!out.empty() && timeline[i - 1].kind == ElementKind::WordGap) {
+                out.back().gapAfter = pause;
+                out.back().gapAfterSigma = after.edgeSigma;
+            }
+            ++i;
+            continue;
+        }
         switch (e.kind) {
         case ElementKind::LongMark:
             close(false);
@@ -92,6 +141,34 @@ StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
     out.gapAfter = b.gapAfter;
     out.gapAfterSigma = b.gapAfterSigma;
     return out;
+}
+
+std::pair<StretchInput, StretchInput> splitStretch(const StretchInput &s, std::size_t g,
+                                                   double secondsPerUnit)
+{
+    StretchInput a = s;
+    a.marks.resize(g + 1);
+    a.gaps.resize(g);
+    a.markSigma.resize(std::min(a.markSigma.size(), a.marks.size()));
+    a.gapSigma.resize(std::min(a.gapSigma.size(), a.gaps.size()));
+    a.openEnd = false;
+    a.gapAfter = s.gaps[g];
+    a.gapAfterSigma = s.gapSigmaAt(g);
+    StretchInput b;
+    double offset = 0.0;
+    for (std::size_t i = 0; i <= g; ++i)
+        offset += s.marks[i] + s.gaps[i];
+    b.start = s.start + offset * secondsPerUnit;
+    b.marks.assign(s.marks.begin() + std::ptrdiff_t(g + 1), s.marks.end());
+    b.gaps.assign(s.gaps.begin() + std::ptrdiff_t(g + 1), s.gaps.end());
+    for (std::size_t i = g + 1; i < s.marks.size(); ++i)
+        b.markSigma.push_back(s.markSigmaAt(i));
+    for (std::size_t i = g + 1; i < s.gaps.size(); ++i)
+        b.gapSigma.push_back(s.gapSigmaAt(i));
+    b.openEnd = s.openEnd;
+    b.gapAfter = s.gapAfter;
+    b.gapAfterSigma = s.gapAfterSigma;
+    return { a, b };
 }
 
 ElementModel estimateModel(const std::vector<Element> &timeline, double samplePeriodUnits)
