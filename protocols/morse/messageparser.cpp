@@ -48,20 +48,39 @@ constexpr int unknownState(int k, int n, int v)
     return kUnknownBase + (k * 4 + n) * 256 + v;
 }
 
+// The parts of O(k, n, v) or U(k, n, v) (one layout from either base; s of the anchored copy).
+// Other states have k == -1.
+struct OctetParts
+{
+    bool cut = false; // U
+    int k = -1;
+    int n = 0;
+    int v = 0;
+};
+
+constexpr OctetParts partsOf(int s)
+{
+    if (s < kOctetBase || s >= kEnd)
+        return {};
+    const bool cut = s >= kUnknownBase;
+    const int rel = s - (cut ? kUnknownBase : kOctetBase);
+    return { cut, rel / 1024, rel / 256 % 4, rel % 256 };
+}
+
 // The state after character c from state s, or -1.
 int next(int s, int c)
 {
     if (s < kPrefix)
         return c == s ? (s + 1 < kPrefix ? s + 1 : octetState(0, 0, 0)) : -1;
     const bool digit = c >= kDigit0 && c < kDigit0 + 10;
-    if (s >= kUnknownBase && s < kEnd) {
-        const int rel = s - kUnknownBase;
-        const int k = rel / 1024;
-        const int n = (rel / 256) % 4;
+    if (s == kEnd)
+        return -1;
+    const auto [cut, k, n, v] = partsOf(s);
+    if (cut) {
         if (digit && n == kCutDigits)
             return s;
         if (digit) {
-            const int w = (rel % 256) * 10 + (c - kDigit0);
+            const int w = v * 10 + (c - kDigit0);
             if (n < 2)
                 return unknownState(k, n + 1, w);
             return w <= 255 ? octetState(k, 3, w) : -1; // three digits: a whole octet
@@ -70,12 +89,6 @@ int next(int s, int c)
             return octetState(k + 1, 0, 0);
         return c == kColon && k == 3 ? kEnd : -1;
     }
-    if (s == kEnd)
-        return -1;
-    const int rel = s - kOctetBase;
-    const int k = rel / 1024;
-    const int n = (rel / 256) % 4;
-    const int v = rel % 256;
     if (digit) {
         const int w = v * 10 + (c - kDigit0);
         return n < 3 && w <= 255 ? octetState(k, n + 1, w) : -1;
@@ -93,16 +106,12 @@ constexpr double kLeadingZeroCost = 3.0;
 // Prior cost of character c in state s (either copy), beyond how well it fits the marks.
 double prior(int s, int c)
 {
-    s %= kStates;
-    if (s < kOctetBase || s >= kEnd || c < kDigit0 || c >= kDigit0 + 10)
+    const OctetParts o = partsOf(s % kStates);
+    if (o.k < 0 || c < kDigit0 || c >= kDigit0 + 10)
         return 0.0;
-    if (s >= kUnknownBase) {
-        // After a cut, "05" may be the tail of 105; only a third digit shows the zero leading.
-        const int rel = s - kUnknownBase;
-        return (rel / 256) % 4 == 2 && rel % 256 < 10 ? kLeadingZeroCost : 0.0;
-    }
-    const int rel = s - kOctetBase;
-    return (rel / 256) % 4 >= 1 && rel % 256 == 0 ? kLeadingZeroCost : 0.0;
+    if (o.cut) // after a cut, "05" may be the tail of 105; only a third digit shows the zero
+        return o.n == 2 && o.v < 10 ? kLeadingZeroCost : 0.0;
+    return o.n >= 1 && o.v == 0 ? kLeadingZeroCost : 0.0;
 }
 
 // next() for a state of either copy: from kStates up, the states reached from a cut start
@@ -184,13 +193,9 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
     for (std::size_t i = 0; i < n; ++i) {
         for (const auto &[st, cell] : layer[i]) {
             const bool unanchored = st >= kStates;
-            const int s = unanchored ? st - kStates : st;
-            const bool cut = s >= kUnknownBase && s < kEnd;
-            const int rel = s - (cut ? kUnknownBase : kOctetBase);
-            if (s < kOctetBase || s >= kEnd || rel / 256 % 4 == 0)
+            const auto [cut, k, digits, v] = partsOf(unanchored ? st - kStates : st);
+            if (k < 0 || digits == 0)
                 continue; // not inside an octet with at least one digit
-            const int k = rel / 1024;
-            const int v = rel % 256;
             for (const Option &op : options[i]) {
                 const int t = op.ch == kPlus || op.ch == kColon ? step(st, op.ch) : -1;
                 if (t < 0)
@@ -202,11 +207,11 @@ std::array<std::map<int, double>, 4> octetCosts(const Layers &layer,
                     continue;
                 const double delta = cell.cost + op.cost + it->second - bestCost;
                 const auto ku = std::size_t(k);
-                if (cut && rel / 256 % 4 == kCutDigits) {
+                if (cut && digits == kCutDigits) {
                     anyValue[ku] = std::min(anyValue[ku], delta);
                     continue;
                 }
-                double &slot = cut ? tails[ku].try_emplace({ rel / 256 % 4, v }, kInf).first->second
+                double &slot = cut ? tails[ku].try_emplace({ digits, v }, kInf).first->second
                                    : out[ku].try_emplace(v, kInf).first->second;
                 slot = std::min(slot, delta);
             }
@@ -371,12 +376,10 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         out.text += QLatin1Char(kChars[static_cast<std::size_t>(t.ch)]);
         const bool digit = t.ch >= kDigit0 && t.ch < kColon;
         // Octet states whose k is anchored: by a prefix character, or back from ':'.
-        const int from = t.from % kStates;
-        const bool known =
-            from >= kOctetBase && from < kUnknownBase && (t.from < kStates || best == kEnd);
+        const OctetParts from = partsOf(t.from % kStates);
+        const bool known = from.k >= 0 && !from.cut && (t.from < kStates || best == kEnd);
         // Digits after a cut count towards the margin: a third one makes them an octet.
-        const bool tail = from >= kUnknownBase && from < kEnd
-            && (from - kUnknownBase) / 256 % 4 < kCutDigits && best == kEnd;
+        const bool tail = from.cut && from.n < kCutDigits && best == kEnd;
         if (digit && (known || tail)) {
             // Margin against the cheapest other reading of the same marks.
             const Costs &costs = charCost[std::size_t(t.edit)];
@@ -390,12 +393,11 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
                 ownMargin = std::min(ownMargin, kClearMargin / 2.0);
             margin = std::min(margin, ownMargin);
         }
-        if ((t.ch == kPlus || t.ch == kColon) && tail && (from - kUnknownBase) / 256 % 4 > 0)
-            tailOctet = (from - kUnknownBase) / 1024;
+        if ((t.ch == kPlus || t.ch == kColon) && tail && from.n > 0)
+            tailOctet = from.k;
         if ((t.ch == kPlus || t.ch == kColon) && known) {
-            const int rel = from - kOctetBase;
-            const auto k = static_cast<std::size_t>(rel / 1024);
-            out.observation.octets[k] = rel % 256;
+            const auto k = static_cast<std::size_t>(from.k);
+            out.observation.octets[k] = from.v;
             out.observation.weight[k] =
                 std::clamp(margin / kClearMargin, kMinWeight, IpVoter::kMaxWeight);
         }
@@ -415,15 +417,13 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     // its value ("20" fits 20 and 200-209). Each end state inside that octet gives a prefix.
     std::map<int, double> prefix;
     int open = -1;
-    if (in.openEnd && !salvage && best >= kOctetBase && best < kUnknownBase
-        && (best - kOctetBase) / 256 % 4 >= 1) {
-        open = (best - kOctetBase) / 1024;
+    const OctetParts last = partsOf(best); // k < 0 for the unanchored copy
+    if (in.openEnd && !salvage && last.k >= 0 && !last.cut && last.n >= 1) {
+        open = last.k;
         for (const auto &[st, cell] : layer[end]) {
-            const int rel = st - kOctetBase;
-            if (st < kOctetBase || st >= kUnknownBase || rel / 1024 != open || rel / 256 % 4 == 0)
+            const auto [cut, k, digits, value] = partsOf(st);
+            if (k != open || cut || digits == 0)
                 continue;
-            const int digits = rel / 256 % 4;
-            const int value = rel % 256;
             if (digits > 1 && value < (digits == 2 ? 10 : 100))
                 continue; // a leading zero: no plain decimal value starts so
             for (int w = 0; w <= 255; ++w) {
