@@ -52,6 +52,12 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
             cur.markSigma.resize(cur.marks.size());
             cur.gapSigma.resize(cur.gaps.size());
         }
+        // A stretch closed by a long mark ends in the gap before it: no gap follows its last
+        // mark (before, such a stretch failed parseStretch()'s size check and was never read).
+        if (!cur.marks.empty() && cur.gaps.size() >= cur.marks.size()) {
+            cur.gaps.resize(cur.marks.size() - 1);
+            cur.gapSigma.resize(std::min(cur.gapSigma.size(), cur.gaps.size()));
+        }
         cur.openEnd = open;
         if (!cur.marks.empty())
             out.push_back(cur);

@@ -639,6 +639,38 @@ private slots:
             QVERIFY2(!cost.contains(v) || cost.at(v) > 2.0, qPrintable(QString::number(v)));
     }
 
+    // A long mark (the LED steady on, or a slicer glitch) closes the stretch before it. The gap
+    // between its last character and the long mark is not part of the stretch: with it, the
+    // stretch failed parseStretch()'s size check and its message was never read.
+    void stretchClosedByALongMark()
+    {
+        const QString text = QStringLiteral("MC+IP10+0+7+42:");
+        const StretchInput nominal = nominalStretch(text);
+        std::vector<Element> timeline;
+        double t = 0.0;
+        auto add = [&](ElementKind kind, double units) {
+            timeline.push_back({ kind, t, units * 0.1, units, 0.0 });
+            t += units * 0.1;
+        };
+        add(ElementKind::WordGap, 10.0);
+        for (std::size_t i = 0; i < nominal.marks.size(); ++i) {
+            add(nominal.marks[i] > 2.0 ? ElementKind::Dah : ElementKind::Dit, nominal.marks[i]);
+            if (i < nominal.gaps.size())
+                add(nominal.gaps[i] > 2.0 ? ElementKind::LetterGap : ElementKind::IntraGap,
+                    nominal.gaps[i]);
+        }
+        add(ElementKind::LetterGap, 3.0);
+        add(ElementKind::LongMark, 12.0);
+        add(ElementKind::WordGap, 10.0);
+        const std::vector<StretchInput> stretches = splitStretches(timeline);
+        QCOMPARE(stretches.size(), std::size_t(1));
+        QCOMPARE(stretches[0].marks.size(), nominal.marks.size());
+        QCOMPARE(stretches[0].gaps.size(), nominal.gaps.size());
+        const StretchParse p = parseStretch(stretches[0], ElementModel());
+        QVERIFY(p.ok);
+        QCOMPARE(p.observation.octets, (std::array<int, 4> { 10, 0, 7, 42 }));
+    }
+
     void otherTextIsTolerated()
     {
         SignalOptions o = specSignal(30.0, 0.1);
