@@ -154,8 +154,10 @@ struct Scorer
     }
     // Cost of the nominal lengths `marks` (and gaps between them, then a letter gap) on the
     // measured marks from i; inf when they do not fit or exceed maxZ.
+    // With pauseAfter (the character is ':'), the letter gap after it is the pause before the
+    // next message, which may be longer than a letter gap at no cost.
     double pattern(std::size_t i, std::span<const double> marks, std::span<const double> gaps,
-                   double *worstZ) const
+                   double *worstZ, bool pauseAfter = false) const
     {
         const std::size_t len = marks.size();
         if (len == 0 || i + len > in.marks.size())
@@ -171,7 +173,8 @@ struct Scorer
             // never rejects the reading.
             double unlimited = 0.0;
             const bool trailing = j + 1 == len && in.gaps[i + j] > gaps[j];
-            cost += element(in.gaps[i + j], gaps[j], m_gaps[i + j], trailing ? &unlimited : &z);
+            const double x = trailing && pauseAfter ? gaps[j] : in.gaps[i + j];
+            cost += element(x, gaps[j], m_gaps[i + j], trailing ? &unlimited : &z);
         }
         if (worstZ)
             *worstZ = z;
@@ -205,9 +208,11 @@ struct Scorer
                 const std::size_t r = e < q ? e : e + 2;
                 if (r >= avail)
                     break; // the letter gap after the stretch's last mark is not measured
-                const double x = e == q ? raw(q) + raw(q + 1) + raw(q + 2) : raw(r);
-                cost += element(x, e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2],
-                                e == q ? merged : spread(r), &z);
+                const double k = e % 2 == 0 ? p.marks[e / 2] : p.gaps[e / 2];
+                double x = e == q ? raw(q) + raw(q + 1) + raw(q + 2) : raw(r);
+                if (c == kColon && e + 1 == 2 * len)
+                    x = std::min(x, k); // the pause after the message (pattern())
+                cost += element(x, k, e == q ? merged : spread(r), &z);
             }
             if (z <= m.maxZ && cost < best) {
                 best = cost;
@@ -220,20 +225,25 @@ struct Scorer
     // Cost of character c on marks from i without its first mark: noise swallowed it, and the
     // letter gap before the character (gaps[i - 1], charged as 3 units by the character before)
     // grew by that mark and the gap after it. The difference for that gap is charged here.
+    // Inside a stretch 'M' follows ':' only: the gap before it is a pause, charged up to a letter
+    // gap (pattern()), and so the grown gap costs only when it is shorter than the lost part.
     double firstLost(std::size_t i, int c, double *worstZ) const
     {
         const Pattern &p = patterns()[static_cast<std::size_t>(c)][0].front();
         if (i == 0 || p.marks.size() < 2)
             return kInf;
         double z = 0.0;
-        const double rest =
-            pattern(i, std::span(p.marks).subspan(1), std::span(p.gaps).subspan(1), &z);
+        const double rest = pattern(i, std::span(p.marks).subspan(1), std::span(p.gaps).subspan(1),
+                                    &z, c == kColon);
         if (rest == kInf)
             return kInf;
         double unused = 0.0;
         const Spread &sp = m_gaps[i - 1];
-        const double before = element(in.gaps[i - 1], 3.0, sp, &unused);
-        const double after = element(in.gaps[i - 1], 3.0 + p.marks[0] + p.gaps[0], sp, &z);
+        const double grown = 3.0 + p.marks[0] + p.gaps[0];
+        const double x = in.gaps[i - 1];
+        const bool pause = kChars[static_cast<std::size_t>(c)] == 'M';
+        const double before = element(pause ? std::min(x, 3.0) : x, 3.0, sp, &unused);
+        const double after = element(pause ? std::min(x, grown) : x, grown, sp, &z);
         if (z > m.maxZ)
             return kInf;
         if (worstZ)
@@ -253,7 +263,7 @@ struct Scorer
         double best = kInf;
         for (const Pattern &p : patterns()[static_cast<std::size_t>(c)][edited]) {
             double z = 0.0;
-            const double cost = pattern(i, p.marks, p.gaps, &z);
+            const double cost = pattern(i, p.marks, p.gaps, &z, c == kColon);
             if (cost < best) {
                 best = cost;
                 if (worstZ)

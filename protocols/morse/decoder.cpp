@@ -20,9 +20,6 @@ constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
 constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
 constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one message
-// Units: a gap this long inside a stretch may be the pause between two messages, shortened
-// below Thresholds::wordGap by jitter (7 units - 30 % = 4.9) and read as a letter gap.
-constexpr double kShortPause = 4.0;
 
 // Character-by-character reading of a stretch the grammar rejected (other text, status).
 QString hardText(const StretchInput &s)
@@ -146,26 +143,13 @@ void Decoder::update(bool final)
     IpVoter voter;
     int complete = 0;
     QString corrected;
-    std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
+    const std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
     for (std::size_t i = 0; i < stretches.size(); ++i) {
         StretchInput stretch = stretches[i];
         StretchParse parse = cachedParse(stretch, ParseMode::Strict);
-        // A stretch the grammar rejects may hold two messages whose pause read as a letter gap:
-        // it is cut at the first long gap where a whole message ends, and the rest is read next.
-        for (std::size_t g = 0; !parse.ok && g < stretch.gaps.size(); ++g) {
-            if (stretch.gaps[g] < kShortPause)
-                continue;
-            auto [first, rest] = splitStretch(stretch, g, m_modelUnit);
-            const StretchParse p = cachedParse(first, ParseMode::Strict);
-            if (p.ok) {
-                stretches.insert(stretches.begin() + std::ptrdiff_t(i) + 1, std::move(rest));
-                stretch = std::move(first);
-                parse = p;
-            }
-        }
-        // A closed stretch the grammar rejects: first the word gap after it may be noise inside
+        // A stretch the grammar rejects: first the word gap after it may be noise inside
         // the message (re-read joined with what follows), then its damaged characters are
-        // skipped at the ends (ParseMode::Salvage). The joined reading must explain the lengths
+        // skipped (ParseMode::Salvage). The joined reading must explain the lengths
         // better than the stretch skipped and the ones after it read on their own: a noise
         // spike between two messages is a stretch of one mark that the grammar rejects, and
         // joined to the next message it makes a contrived reading of that message.
@@ -184,29 +168,24 @@ void Decoder::update(bool final)
                 i = j;
             }
         }
-        if (!parse.ok && !stretch.openEnd)
+        if (!parse.ok)
             parse = cachedParse(stretch, ParseMode::Salvage);
         qCDebug(lcMorse) << "stretch" << stretch.start << stretch.marks.size() << "ok" << parse.ok
-                         << parse.text
-                         << QList<int>(parse.observation.octets.begin(),
-                                       parse.observation.octets.end())
-                         << QList<double>(parse.observation.weight.begin(),
-                                          parse.observation.weight.end());
+                         << parse.text;
         if (!corrected.isEmpty())
             corrected += QLatin1Char(' ');
         corrected += parse.ok ? parse.text : hardText(stretch);
-        if (!parse.ok)
-            continue;
-        const IpObservation &obs = parse.observation;
-        if (std::none_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; })
-            && std::all_of(obs.cost.begin(), obs.cost.end(),
-                           [](const auto &c) { return c.empty(); }))
-            continue;
-        voter.add(obs);
-        if (obs.complete && ++complete > m_completeSeen) {
-            IpEstimate one;
-            one.octets = obs.octets;
-            event(DecoderEvent::Kind::MessageDecoded, one.toString());
+        for (const IpObservation &obs : parse.observations) {
+            if (std::none_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; })
+                && std::all_of(obs.cost.begin(), obs.cost.end(),
+                               [](const auto &c) { return c.empty(); }))
+                continue;
+            voter.add(obs);
+            if (obs.complete && ++complete > m_completeSeen) {
+                IpEstimate one;
+                one.octets = obs.octets;
+                event(DecoderEvent::Kind::MessageDecoded, one.toString());
+            }
         }
     }
     m_completeSeen = std::max(m_completeSeen, complete);

@@ -60,9 +60,10 @@ struct DecodeResult
 };
 
 // Streaming LED Morse decoder: samples -> LevelSlicer -> intervals -> fitUnit -> symbolize ->
-// parseIpObservations -> IpVoter. feed() may be called with chunks of any size; after each
-// call the text, timeline and IP reflect everything seen so far (the unit is re-estimated as
-// data grows, so earlier characters can still change). Pure and synchronous; no Qt event loop.
+// splitStretches -> parseStretch (one observation per message) -> IpVoter. feed() may be
+// called with chunks of any size; after each call the text, timeline and IP reflect
+// everything seen so far (the unit is re-estimated as data grows, so earlier characters can
+// still change). Pure and synchronous; no Qt event loop.
 class Decoder
 {
 public:

@@ -15,6 +15,10 @@ namespace db::morse {
 //
 //     "MC+IP" octet "+" octet "+" octet "+" octet ":"     octet = 1-3 digits, value 0..255
 //
+// repeated: the manual gives no pause between repetitions, so the next message may follow ':'
+// after a letter gap in the same stretch. The gap after ':' costs as a letter gap when it is
+// longer (a pause of any length), as a too-short letter gap when it is shorter.
+//
 // Instead of deciding every mark (dit/dah) and every gap (element/letter gap) on its own and
 // then looking the codes up, a dynamic programme over the marks finds the character sequence of
 // the grammar whose nominal timing (ITU, section 2.4) explains all measured lengths best. Two
@@ -58,18 +62,22 @@ enum class ParseMode {
     // Every mark, from "MC+IP" (or, with openStart, from the cut) to ':' (or, with openEnd,
     // to the last complete character).
     Strict,
-    // Salvage for a closed stretch that Strict rejects (noise corrupted a character beyond
-    // one lost element): the parse may skip whole characters at the start and at the end, at
-    // kSkipCost per mark. Octets are still reported only where their position in the message
-    // is anchored: counted from a prefix character ("IP" read) or back from ':'.
+    // Salvage for a stretch that Strict rejects (noise corrupted a character beyond one lost
+    // element, or other text follows a message): the parse may skip whole characters at the
+    // start and at the end at kSkipCost per mark, and leave a message unfinished to start
+    // reading again at any later mark (kSkipCost more). Octets are still reported only where
+    // their position in the message is anchored: counted from a prefix character ("IP" read)
+    // or back from ':'.
     Salvage,
 };
 
 struct StretchParse
 {
     bool ok = false; // the grammar explains the stretch within ElementModel::maxZ
-    QString text; // decoded characters; '?' for a truncated first character
-    IpObservation observation; // octets read completely in this stretch (weights: margins)
+    QString text; // decoded characters; '?' for a truncated first character or skipped marks
+    // One per message read in this stretch, in order: its octets read completely (weights:
+    // margins) and their soft costs. Never empty when ok.
+    std::vector<IpObservation> observations;
     double worstZ = 0.0;
     double cost = 0.0; // nats: how well the reading explains the lengths (less is better)
 };
@@ -88,8 +96,8 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline);
 // marks and gaps around their nominal lengths, and the sample period in units.
 ElementModel estimateModel(const std::vector<Element> &timeline, double samplePeriodUnits);
 
-// Parses one stretch. Octets whose digits were all seen get a weight margin / 4 nats, in
-// [0.05, IpVoter::kMaxWeight], where margin is the least cost difference between a digit and its
+// Parses one stretch. Per message, octets whose digits were all seen get a weight margin / 4 nats,
+// in [0.05, IpVoter::kMaxWeight], where margin is the least cost difference between a digit and its
 // nearest rival reading (another digit or '+') on the same marks: small when an element was
 // close to the dit/dah boundary. A digit repaired by a lost-element edit counts half. An octet
 // whose position in the message is not anchored (read after a cut start, in a stretch that does
@@ -102,10 +110,5 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model,
 // between two gaps, which then merge), so a closed stretch the grammar rejects is re-read
 // joined with the next one. Requires a.gapAfter > 0.
 StretchInput joinStretches(const StretchInput &a, const StretchInput &b);
-
-// The reverse: `s` cut at gaps[g], read as a word gap (a.gapAfter); b starts with marks[g + 1]
-// and gets its start time from the lengths before it. Requires g < s.gaps.size().
-std::pair<StretchInput, StretchInput> splitStretch(const StretchInput &s, std::size_t g,
-                                                   double secondsPerUnit);
 
 } // namespace db::morse

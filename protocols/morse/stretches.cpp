@@ -149,34 +149,6 @@ StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
     return out;
 }
 
-std::pair<StretchInput, StretchInput> splitStretch(const StretchInput &s, std::size_t g,
-                                                   double secondsPerUnit)
-{
-    StretchInput a = s;
-    a.marks.resize(g + 1);
-    a.gaps.resize(g);
-    a.markSigma.resize(std::min(a.markSigma.size(), a.marks.size()));
-    a.gapSigma.resize(std::min(a.gapSigma.size(), a.gaps.size()));
-    a.openEnd = false;
-    a.gapAfter = s.gaps[g];
-    a.gapAfterSigma = s.gapSigmaAt(g);
-    StretchInput b;
-    double offset = 0.0;
-    for (std::size_t i = 0; i <= g; ++i)
-        offset += s.marks[i] + s.gaps[i];
-    b.start = s.start + offset * secondsPerUnit;
-    b.marks.assign(s.marks.begin() + std::ptrdiff_t(g + 1), s.marks.end());
-    b.gaps.assign(s.gaps.begin() + std::ptrdiff_t(g + 1), s.gaps.end());
-    for (std::size_t i = g + 1; i < s.marks.size(); ++i)
-        b.markSigma.push_back(s.markSigmaAt(i));
-    for (std::size_t i = g + 1; i < s.gaps.size(); ++i)
-        b.gapSigma.push_back(s.gapSigmaAt(i));
-    b.openEnd = s.openEnd;
-    b.gapAfter = s.gapAfter;
-    b.gapAfterSigma = s.gapAfterSigma;
-    return { a, b };
-}
-
 ElementModel estimateModel(const std::vector<Element> &timeline, double samplePeriodUnits)
 {
     std::vector<double> r;
