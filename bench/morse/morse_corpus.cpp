@@ -25,6 +25,7 @@ namespace {
 std::vector<CorpusCondition> conditions()
 {
     const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<double> rates = CorpusCondition().rates;
     return {
         { QStringLiteral("clean"), 0.0, inf, 0.0, 0.0, 0.0, 2.0 },
         { QStringLiteral("jitter15"), 0.15, inf, 0.0, 0.0, 0.0, 2.0 },
@@ -41,6 +42,9 @@ std::vector<CorpusCondition> conditions()
         { QStringLiteral("j30+6dB<3spu(2)"), 0.30, 6.0, 0.0, 0.0, 0.0, 2.0 },
         // 6 dB under the amplitude definition 20 log10(A / sigma) is sigma = A / 2: 0 dB here.
         { QStringLiteral("j30+0dB(sigma=A/2)"), 0.30, 0.0, 0.0, 0.0, 0.0, 3.0 },
+        // Messages back to back: a letter gap after ':' instead of a pause.
+        { QStringLiteral("back-to-back"), 0.0, inf, 0.0, 0.0, 0.0, 2.0, rates, 3.0, 0.02 },
+        { QStringLiteral("back-to-back+j30+6dB"), 0.30, 6.0, 0.0, 0.0, 0.0, 3.0, rates, 3.0, 0.02 },
     };
 }
 
@@ -89,7 +93,7 @@ int main(int argc, char **argv)
             const CorpusCase &c = corpus[k];
             if (onlyCase >= 0 && int(k) != onlyCase)
                 continue;
-            const CaseOutcome o = runCase(c);
+            const CaseOutcome o = runCase(c, cond.chunkSeconds);
             if (verbose
                 && (!o.exact || o.repetitionsToConfident < 0.0 || o.repetitionsToConfident > 2.0))
                 out << "  #" << k << " " << cond.name << " " << c.signal.sampleRate << " fps, unit "

@@ -42,7 +42,8 @@ std::vector<CorpusCase> makeCorpus(const CorpusCondition &cond, int count, unsig
         s.dutyError = cond.dutyError * (uni(rng) < 0.5 ? -1.0 : 1.0);
         s.startOffset = uni(rng);
         s.repetitions = 3;
-        s.repeatGap = 7.0 + 7.0 * uni(rng);
+        const double drawn = 7.0 + 7.0 * uni(rng); // drawn always: the same cases either way
+        s.repeatGap = cond.repeatGap > 0.0 ? cond.repeatGap : drawn;
         s.seed = static_cast<unsigned>(rng());
         out.push_back(c);
     }

@@ -24,6 +24,13 @@ struct CorpusCondition
     // two frames per dit a camera cannot separate dits from the gaps between them.
     double minSamplesPerUnit = 2.0;
     std::vector<double> rates { 15.0, 25.0, 30.0, 60.0, 1000.0 }; // used in turn
+    // Pause between two messages, units (the manual gives none). 0: 7-14 units, drawn per case;
+    // 3: back to back (only a letter gap after ':').
+    double repeatGap = 0.0;
+    // runCase() streams in chunks of this length. Back to back, the second message's ':' is
+    // complete (its letter gap past 2 units) 1 unit before the third message begins: chunks
+    // longer than that would report the time of confidence too late.
+    double chunkSeconds = 0.25;
 };
 
 struct CorpusCase

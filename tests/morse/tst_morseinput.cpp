@@ -142,23 +142,29 @@ private slots:
     }
 
     // The CLI on the generated corpus (tst_morsecorpus streams the same cases through the
-    // library): every file of a clean and of a jittered, noisy condition gives its exact IP.
+    // library): every file of a clean and of a jittered, noisy condition, and of messages sent
+    // back to back, gives its exact IP.
     void cliDecodesTheCorpus_data()
     {
         QTest::addColumn<double>("jitter");
         QTest::addColumn<double>("snrDb");
         QTest::addColumn<int>("cases");
-        QTest::newRow("clean") << 0.0 << std::numeric_limits<double>::infinity() << 10;
-        QTest::newRow("jitter 30% + noise 6 dB") << 0.3 << 6.0 << 20;
+        QTest::addColumn<double>("pause"); // CorpusCondition::repeatGap
+        const double inf = std::numeric_limits<double>::infinity();
+        QTest::newRow("clean") << 0.0 << inf << 10 << 0.0;
+        QTest::newRow("jitter 30% + noise 6 dB") << 0.3 << 6.0 << 20 << 0.0;
+        QTest::newRow("back to back") << 0.0 << inf << 5 << 3.0;
     }
     void cliDecodesTheCorpus()
     {
         QFETCH(double, jitter);
         QFETCH(double, snrDb);
         QFETCH(int, cases);
+        QFETCH(double, pause);
         CorpusCondition condition;
         condition.jitter = jitter;
         condition.snrDb = snrDb;
+        condition.repeatGap = pause;
         condition.minSamplesPerUnit = jitter > 0.0 ? 3.0 : 2.0;
         const std::vector<CorpusCase> corpus = makeCorpus(condition, cases, 20240601u);
         int exact = 0;
