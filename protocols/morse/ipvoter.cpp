@@ -1,82 +1,9 @@
 #include "ipvoter.h"
 
-#include <QList>
-
 #include <algorithm>
 #include <limits>
 
 namespace db::morse {
-namespace {
-
-// 1-3 decimal digits, 0..255; -1 otherwise.
-int octetValue(QStringView field)
-{
-    if (field.isEmpty() || field.size() > 3)
-        return -1;
-    int v = 0;
-    for (QChar c : field) {
-        if (!c.isDigit())
-            return -1;
-        v = v * 10 + c.digitValue();
-    }
-    return v <= 255 ? v : -1;
-}
-
-IpObservation parseStretch(QStringView s, bool closed)
-{
-    IpObservation out;
-    int count = 0;
-    const auto ip = s.lastIndexOf(QLatin1String("IP"));
-    if (ip >= 0) {
-        const QList<QStringView> fields = s.mid(ip + 2).split(QLatin1Char('+'));
-        // A closed message must have exactly four fields; otherwise a '+' was lost or added
-        // and the positions of the octets are unknown.
-        if (closed && fields.size() != 4)
-            return {};
-        for (int i = 0; i < 4 && i < fields.size(); ++i) {
-            const bool terminated = i < fields.size() - 1 || closed;
-            const int v = octetValue(fields[i]);
-            if (!terminated || (v < 0 && !closed))
-                break;
-            out.octets[static_cast<std::size_t>(i)] = v;
-            count += v >= 0 ? 1 : 0;
-        }
-        out.complete = count == 4;
-        return out;
-    }
-    if (!closed)
-        return {};
-    // No "IP": the start was lost. Read backward from ':' while fields are opened by '+'.
-    const QList<QStringView> fields = s.split(QLatin1Char('+'));
-    for (int j = 0; j < 3 && j + 1 < fields.size(); ++j) {
-        const int v = octetValue(fields[fields.size() - 1 - j]);
-        if (v < 0)
-            break;
-        out.octets[static_cast<std::size_t>(3 - j)] = v;
-        ++count;
-    }
-    return count >= 2 ? out : IpObservation {};
-}
-
-} // namespace
-
-std::vector<IpObservation> parseIpObservations(const QString &text)
-{
-    std::vector<IpObservation> out;
-    qsizetype begin = 0;
-    for (qsizetype i = 0; i <= text.size(); ++i) {
-        const bool end = i == text.size();
-        if (!end && text[i] != QLatin1Char(':') && text[i] != QLatin1Char(' '))
-            continue;
-        const bool closed = !end && text[i] == QLatin1Char(':');
-        IpObservation obs = parseStretch(QStringView(text).mid(begin, i - begin), closed);
-        obs.endIndex = static_cast<int>(std::min(i + 1, text.size()));
-        if (std::any_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; }))
-            out.push_back(obs);
-        begin = i + 1;
-    }
-    return out;
-}
 
 void IpVoter::add(const IpObservation &obs)
 {

@@ -10,41 +10,27 @@
 
 namespace db::morse {
 
-// What one stretch of decoded text says about the IP address (movingcap.md section 2.2:
-// "MC+IP192+168+2+150:", '+' instead of '.', ':' ends the message).
+// What one message read by the sequence decoder (messageparser.h) says about the IP address
+// (movingcap.md section 2.2: "MC+IP192+168+2+150:", '+' instead of '.', ':' ends the message).
 struct IpObservation
 {
-    std::array<int, 4> octets { -1, -1, -1, -1 }; // -1: not in this stretch
+    std::array<int, 4> octets { -1, -1, -1, -1 }; // -1: not read in this message
     bool complete = false; // all four from one "IP...:" message
-    int endIndex = 0; // index in the text just past the stretch
     // Vote weight of each octet, (0, IpVoter::kMaxWeight]: 1 for a plain reading, less when an
     // element of it was close to the dit/dah boundary (see messageparser.h).
     std::array<double, 4> weight { 1.0, 1.0, 1.0, 1.0 };
     // Soft evidence from the sequence decoder (messageparser.h), per octet read: for each value
     // the parse could also have given that octet, how much worse (nats) the best such parse
-    // explains the measured lengths than the best parse overall (0 for the value read). Empty
-    // for readings from text: those say only "this value, with this weight". An octet still
+    // explains the measured lengths than the best parse overall (0 for the value read). Empty:
+    // the reading says only "this value, with this weight". An octet still
     // arriving when the stretch ends (octets[k] == -1) may have costs too: its digits so far
     // fit several values ("20": 20 and 200-209 cost nothing, the others more).
     std::array<std::map<int, double>, 4> cost;
 };
 
-// Parses decoded text into observations. The text is split into stretches at ':' (end of a
-// message) and ' ' (word gap: never inside a message). In each stretch:
-//  - with "IP": the fields after the last "IP", split at '+'. A stretch closed by ':' must have
-//    exactly four fields (a lost or extra '+' shifts every octet: dropped); each field that is
-//    1-3 digits and 0..255 is an octet, an unreadable one ('?') is skipped. An open stretch
-//    (message still arriving) gives the octets already closed by '+';
-//  - without "IP" but closed by ':': the start was lost (recording began inside the message,
-//    or "IP" was unreadable). Octets are read backward from ':' while each field is valid and
-//    opened by '+'. At least two are needed, so that status text such as "ERR+5:" does not
-//    vote.
-// Other text is ignored.
-std::vector<IpObservation> parseIpObservations(const QString &text);
-
 // Combines the readings into the most likely address. Every reading gives every value v of
 // an octet it read a cost in nats: its soft cost for v (IpObservation::cost) capped at
-// kMaxWeight * kNatsPerWeight, or, for a reading from text, 0 for the value read and
+// kMaxWeight * kNatsPerWeight, or, for a reading without soft costs, 0 for the value read and
 // weight * kNatsPerWeight for any other. That is a log-likelihood ratio when the readings are
 // independent: two readings that agree but are each unsure against a different rival (another
 // digit, another split into characters) confirm each other; two unsure against the same rival
@@ -56,10 +42,10 @@ std::vector<IpObservation> parseIpObservations(const QString &text);
 // kNatsPerWeight), clamped to [0, 1], once two readings read its value, and min(kSingle, lead /
 // (2 * kNatsPerWeight)) while only one did (the others garbled or cut off). A reading whose soft
 // cost for a value is within kTie of its own reading reads both: it cannot tell them apart, and
-// which of the two its best parse names is chance. With plain text
-// readings (weight 1): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. The IP confidence is
-// the lowest octet confidence; kConfident (0.75) is the manual's "two identical texts in a row"
-// made per octet and weighted.
+// which of the two its best parse names is chance. With plain readings (weight 1, no soft
+// costs): one reading 0.5, two agreeing 1.0, 2:1 0.67, 3:1 1.0. The IP confidence is the lowest
+// octet confidence; kConfident (0.75) is the manual's "two identical texts in a row" made per
+// octet and weighted.
 class IpVoter
 {
 public:

@@ -85,53 +85,6 @@ private slots:
         QCOMPARE(db::morse::classify(on, units), kind);
     }
 
-    void parse_data()
-    {
-        QTest::addColumn<QString>("text");
-        QTest::addColumn<QString>("octets"); // observations joined by '|', '?' = not seen
-        QTest::addColumn<int>("complete");
-        QTest::newRow("spec example") << "MC+IP192+168+2+150:"
-                                      << "192.168.2.150" << 1;
-        QTest::newRow("two repetitions") << "MC+IP192+168+2+150: MC+IP192+168+2+150:"
-                                         << "192.168.2.150|192.168.2.150" << 2;
-        QTest::newRow("started inside") << "?68+2+150: MC+IP192+168+2+150:"
-                                        << "?.?.2.150|192.168.2.150" << 1;
-        QTest::newRow("tail of one octet only") << "?50: MC+IP10+0+0+1:"
-                                                << "10.0.0.1" << 1;
-        QTest::newRow("IP unreadable") << "MC+?P192+168+2+150:"
-                                       << "?.168.2.150" << 0;
-        QTest::newRow("unreadable char") << "MC+IP19?+168+2+150:"
-                                         << "?.168.2.150" << 0;
-        QTest::newRow("not finished") << "MC+IP192+168+2+15"
-                                      << "192.168.2.?" << 0;
-        QTest::newRow("octet > 255") << "MC+IP300+1+2+3:"
-                                     << "?.1.2.3" << 0; // never complete
-        QTest::newRow("lost separator") << "MC+IP192+1682+150:"
-                                        << "" << 0;
-        QTest::newRow("extra separator") << "MC+IP192+1+68+2+150:"
-                                         << "" << 0;
-        QTest::newRow("status text") << "ST+OK: ERR+5: MC"
-                                     << "" << 0;
-        QTest::newRow("status then ip") << "ERR+5: MC+IP10+1+2+3: ST+OK:"
-                                        << "10.1.2.3" << 1;
-    }
-    void parse()
-    {
-        QFETCH(QString, text);
-        QFETCH(QString, octets);
-        QFETCH(int, complete);
-        QStringList seen;
-        int completeSeen = 0;
-        for (const IpObservation &o : parseIpObservations(text)) {
-            IpEstimate e;
-            e.octets = o.octets;
-            seen << e.toString();
-            completeSeen += o.complete ? 1 : 0;
-        }
-        QCOMPARE(seen.join(QLatin1Char('|')), octets);
-        QCOMPARE(completeSeen, complete);
-    }
-
     void voting()
     {
         IpVoter voter;
