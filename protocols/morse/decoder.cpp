@@ -20,6 +20,11 @@ constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
 constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
 constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one message
+// Seconds: stretches that began longer ago keep their parse when the element model changes, so
+// that a camera running for hours does not re-read its whole history at every refit (30 min of
+// messages: 190 ms for such an update). Longer than a recording of three messages at the
+// slowest unit (about 4 minutes), whose first messages are read again until the unit is known.
+constexpr double kReparseSeconds = 600.0;
 
 // Character-by-character reading of a stretch the grammar rejected (other text, status).
 QString hardText(const StretchInput &s)
@@ -138,7 +143,9 @@ void Decoder::update(bool final)
         m_model = estimateModel(m_symbols.elements, m_slicer.samplePeriod() / m_fit.unit);
         m_modelUnit = m_fit.unit;
         m_modelDuty = m_fit.duty;
-        m_cache.clear();
+        const double keep = m_slicer.lastTime() - kReparseSeconds;
+        std::erase_if(m_cache,
+                      [keep](const auto &entry) { return std::get<0>(entry.first) >= keep; });
     }
     IpVoter voter;
     int complete = 0;
@@ -203,11 +210,20 @@ void Decoder::update(bool final)
 
 StretchParse Decoder::cachedParse(const StretchInput &stretch, ParseMode mode)
 {
-    // Closed stretches do not change until the model does (then the cache is cleared).
+    // Closed stretches do not change until the model does (then the recent ones are parsed
+    // again).
     const auto key = std::make_tuple(stretch.start, stretch.marks.size(), stretch.openEnd, mode);
     const auto it = m_cache.find(key);
     if (it != m_cache.end())
         return it->second;
+    if (stretch.openEnd) {
+        // A stretch still arriving (alone or joined) has grown: its shorter parses are never
+        // asked for again.
+        std::erase_if(m_cache, [&stretch](const auto &entry) {
+            const auto &[start, marks, open, mode] = entry.first;
+            return open && start == stretch.start && marks < stretch.marks.size();
+        });
+    }
     return m_cache[key] = parseStretch(stretch, m_model, mode);
 }
 

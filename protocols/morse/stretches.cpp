@@ -1,5 +1,6 @@
 // Timeline -> stretches between word gaps, and the element model, for messageparser.
 #include "messageparser.h"
+#include "morsecode.h"
 #include "symbolizer.h"
 
 #include <algorithm>
@@ -31,6 +32,24 @@ bool isSpike(const std::vector<Element> &timeline, std::size_t i)
     return isGap(before) && isGap(after) && before.units >= t.letterGap
         && after.units >= t.letterGap
         && before.units + timeline[i].units + after.units >= t.wordGap;
+}
+
+// Marks after which a stretch is closed at the next message boundary: messages sent back to back
+// run together into one stretch, up to the whole recording, and every update parses the open
+// stretch anew. About four messages (60-110 marks each).
+constexpr std::size_t kLongStretch = 400;
+
+// Whether the last character of `s` (its marks after the last letter gap) reads ':' hard.
+bool endsInColon(const StretchInput &s)
+{
+    const Thresholds t;
+    QString code;
+    for (std::size_t i = s.marks.size(); i-- > 0;) {
+        code.prepend(s.marks[i] >= t.dah ? QLatin1Char('-') : QLatin1Char('.'));
+        if (i == 0 || s.gaps[i - 1] >= t.letterGap)
+            break;
+    }
+    return code == codeFor(QLatin1Char(':'));
 }
 
 } // namespace
@@ -116,6 +135,14 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
             }
             if (last) {
                 endsInLetterGap = e.kind == ElementKind::LetterGap;
+                break;
+            }
+            if (e.kind == ElementKind::LetterGap && cur.marks.size() >= kLongStretch
+                && cur.gaps.size() + 1 == cur.marks.size() && endsInColon(cur)) {
+                // A long stretch ends after a message: the letter gap read as its pause.
+                cur.gapAfter = e.units;
+                cur.gapAfterSigma = e.edgeSigma;
+                close(false);
                 break;
             }
             if (!cur.marks.empty()) {

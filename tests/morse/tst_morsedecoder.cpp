@@ -71,6 +71,26 @@ QString specDecodeProblem(const std::vector<Sample> &samples, int times)
     return {};
 }
 
+void addElement(std::vector<Element> &timeline, ElementKind kind, double units)
+{
+    const double t = timeline.empty() ? 0.0 : timeline.back().start + timeline.back().duration;
+    timeline.push_back({ kind, t, units * 0.1, units, 0.0 });
+}
+
+// A classified timeline (symbolize()) with the lengths of `s`, 0.1 s per unit, after a word gap.
+std::vector<Element> timelineOf(const StretchInput &s)
+{
+    std::vector<Element> timeline;
+    addElement(timeline, ElementKind::WordGap, 10.0);
+    for (std::size_t i = 0; i < s.marks.size(); ++i) {
+        addElement(timeline, s.marks[i] > 2.0 ? ElementKind::Dah : ElementKind::Dit, s.marks[i]);
+        if (i < s.gaps.size())
+            addElement(timeline, s.gaps[i] > 2.0 ? ElementKind::LetterGap : ElementKind::IntraGap,
+                       s.gaps[i]);
+    }
+    return timeline;
+}
+
 Reason reasonOf(const std::vector<Sample> &samples)
 {
     const auto r = decodeRecording(samples);
@@ -654,24 +674,11 @@ private slots:
     // stretch failed parseStretch()'s size check and its message was never read.
     void stretchClosedByALongMark()
     {
-        const QString text = QStringLiteral("MC+IP10+0+7+42:");
-        const StretchInput nominal = nominalStretch(text);
-        std::vector<Element> timeline;
-        double t = 0.0;
-        auto add = [&](ElementKind kind, double units) {
-            timeline.push_back({ kind, t, units * 0.1, units, 0.0 });
-            t += units * 0.1;
-        };
-        add(ElementKind::WordGap, 10.0);
-        for (std::size_t i = 0; i < nominal.marks.size(); ++i) {
-            add(nominal.marks[i] > 2.0 ? ElementKind::Dah : ElementKind::Dit, nominal.marks[i]);
-            if (i < nominal.gaps.size())
-                add(nominal.gaps[i] > 2.0 ? ElementKind::LetterGap : ElementKind::IntraGap,
-                    nominal.gaps[i]);
-        }
-        add(ElementKind::LetterGap, 3.0);
-        add(ElementKind::LongMark, 12.0);
-        add(ElementKind::WordGap, 10.0);
+        const StretchInput nominal = nominalStretch(QStringLiteral("MC+IP10+0+7+42:"));
+        std::vector<Element> timeline = timelineOf(nominal);
+        addElement(timeline, ElementKind::LetterGap, 3.0);
+        addElement(timeline, ElementKind::LongMark, 12.0);
+        addElement(timeline, ElementKind::WordGap, 10.0);
         const std::vector<StretchInput> stretches = splitStretches(timeline);
         QCOMPARE(stretches.size(), std::size_t(1));
         QCOMPARE(stretches[0].marks.size(), nominal.marks.size());
@@ -679,6 +686,30 @@ private slots:
         const StretchParse p = parseStretch(stretches[0], ElementModel());
         QVERIFY(p.ok);
         QCOMPARE(p.observations.at(0).octets, (std::array<int, 4> { 10, 0, 7, 42 }));
+    }
+
+    // Messages back to back run together into one stretch, up to the whole recording, which
+    // every update would parse anew. After 400 marks the stretch ends at the next ':' (read
+    // hard), the letter gap after it read as the pause; every message is still read.
+    void longStretchEndsAfterAMessage()
+    {
+        const QString message = QStringLiteral("MC+IP192+168+2+150:");
+        QString text;
+        for (int m = 0; m < 10; ++m)
+            text += message;
+        std::vector<Element> timeline = timelineOf(nominalStretch(text));
+        addElement(timeline, ElementKind::WordGap, 10.0);
+        const std::vector<StretchInput> stretches = splitStretches(timeline);
+        QVERIFY(stretches.size() >= 2);
+        int complete = 0;
+        for (const StretchInput &s : stretches) {
+            QVERIFY(s.marks.size() < 400 + 2 * nominalStretch(message).marks.size());
+            const StretchParse p = parseStretch(s, ElementModel());
+            QVERIFY2(p.ok && p.text.startsWith(QLatin1String("MC+IP")), qPrintable(p.text));
+            for (const IpObservation &obs : p.observations)
+                complete += obs.octets == kSpecIp && obs.complete ? 1 : 0;
+        }
+        QCOMPARE(complete, 10);
     }
 
     // Back to back (pauseBetweenMessages) with noise: one damaged message must not stop the reading
