@@ -17,7 +17,7 @@ namespace {
 constexpr std::size_t kFitWindow = 400; // intervals used for the unit estimate
 constexpr std::size_t kMinIntervals = 12; // before that, no unit estimate is tried
 constexpr std::size_t kRefitEvery = 24; // new intervals between estimates
-constexpr double kReparse = 0.01; // relative unit change that makes every stretch parse anew
+constexpr double kReparse = 0.01; // relative unit change that makes recent stretches parse anew
 constexpr int kLongTextChars = 40; // this much text without ':' is not "too short"
 constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one message
 // Seconds: stretches that began longer ago keep their parse when the element model changes, so
@@ -220,7 +220,7 @@ StretchParse Decoder::cachedParse(const StretchInput &stretch, ParseMode mode)
         // A stretch still arriving (alone or joined) has grown: its shorter parses are never
         // asked for again.
         std::erase_if(m_cache, [&stretch](const auto &entry) {
-            const auto &[start, marks, open, mode] = entry.first;
+            const auto &[start, marks, open, parsedAs] = entry.first;
             return open && start == stretch.start && marks < stretch.marks.size();
         });
     }
