@@ -300,8 +300,12 @@ void MorsePanel::refresh()
     }
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 
-    if (m_text->toPlainText() != d.text())
-        m_text->setPlainText(d.text());
+    // Messages sent back to back are one run of text without spaces: a zero-width space after
+    // each ':' lets the lines break between messages rather than anywhere.
+    QString text = d.text();
+    text.replace(QLatin1Char(':'), QStringLiteral(":\u200B"));
+    if (m_text->toPlainText() != text)
+        m_text->setPlainText(text);
     const morse::IpEstimate &ip = d.ip();
     if (ip.complete() || ip.confidence > 0.0)
         m_ip->setText(tr("IP: %1  (%2)").arg(ip.toString(), confidenceText(ip)));

@@ -81,6 +81,36 @@ private slots:
         QCOMPARE(spy.at(1).at(0).toString(), QStringLiteral("canopen+slcan://10.20.30.40?node=50"));
     }
 
+    // A drive that loops its message without a pause (only a letter gap after ':'): the video
+    // decodes in the panel as with a pause. With DRIVEBENCH_SCREENSHOT_DIR set, the panel is
+    // saved there as morse-back-to-back.png.
+    void decodesMessagesSentBackToBack()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("led.mp4"));
+        morse::SignalOptions o = signal(QStringLiteral("MC+IP192+168+100+200:"));
+        o.repeatGap = 3.0;
+        o.repetitions = 4;
+        QVERIFY(morsetest::renderLedVideo(path, o).ok());
+        MorsePanel panel;
+        panel.setLoader(load);
+        panel.resize(1000, 420);
+        panel.show();
+        QVERIFY(panel.openFile(path));
+        panel.finishPlayback();
+        QCOMPARE(panel.ipText(), QStringLiteral("192.168.100.200"));
+        QVERIFY(panel.decoder().confident());
+        const QString text =
+            panel.findChild<QPlainTextEdit *>(QStringLiteral("morseText"))->toPlainText();
+        // Shown with a break opportunity (zero-width space) after every ':'.
+        QVERIFY2(text.contains(QStringLiteral(":\u200BMC+IP192+168+100+200:\u200BMC+IP")),
+                 qPrintable(text));
+        QCoreApplication::processEvents(); // the plot's queued replot
+        if (const QByteArray shots = qgetenv("DRIVEBENCH_SCREENSHOT_DIR"); !shots.isEmpty())
+            QVERIFY(panel.grab().save(QString::fromLocal8Bit(shots)
+                                      + QStringLiteral("/morse-back-to-back.png")));
+    }
+
     void undecodableShowsReason()
     {
         MorsePanel panel;
