@@ -594,11 +594,9 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
 
     // Per message: its octets with their weights, where each was closed, and the octet whose
     // tail only was read after a cut start (its value is not known, only which values fit).
-    std::vector<IpObservation> observations;
-    Closings closings;
-    std::vector<int> tailOctets;
+    std::vector<MessageReading> readings;
     for (const Message &msg : messages) {
-        const MessageReading r = readMessage(path, msg, charCost);
+        MessageReading r = readMessage(path, msg, charCost);
         const IpObservation &obs = r.observation;
         // A salvaged reading counts only with at least two octets, so that status text such as
         // "ERR+5:" (movingcap.md 2.2: the LED sends other text too) is never read as an
@@ -607,11 +605,9 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
             std::count_if(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; });
         if (salvage && read < 2)
             continue;
-        observations.push_back(obs);
-        closings.push_back(r.closed);
-        tailOctets.push_back(r.tailOctet);
+        readings.push_back(std::move(r));
     }
-    if (observations.empty()) // a salvaged stretch keeps its character-by-character text
+    if (readings.empty()) // a salvaged stretch keeps its character-by-character text
         return {};
     // The octet still arriving at the end of an open stretch, in the last message.
     int open = -1;
@@ -619,23 +615,24 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
     const bool lastIsOpen = messages.back().end == path.size() && !messages.back().colon;
     if (in.openEnd && !salvage && lastIsOpen && last.k >= 0 && !last.cut && last.n >= 1) {
         open = last.k;
-        closings.back()[std::size_t(open)] = long(end);
+        readings.back().closed[std::size_t(open)] = long(end);
     }
-    bool anyOctet = open >= 0;
-    for (std::size_t m = 0; m < observations.size(); ++m) {
-        anyOctet = anyOctet || tailOctets[m] >= 0
-            || std::any_of(observations[m].octets.begin(), observations[m].octets.end(),
-                           [](int v) { return v >= 0; });
+    Closings closings;
+    bool anyOctet = false; // read, a tail read, or still arriving: each has its closing
+    for (const MessageReading &r : readings) {
+        closings.push_back(r.closed);
+        anyOctet = anyOctet
+            || std::any_of(r.closed.begin(), r.closed.end(), [](long at) { return at >= 0; });
     }
     const auto soft = anyOctet ? octetCosts(layer, options, in.openEnd, salvage, bestCost, closings)
-                               : std::vector<OctetCosts>(observations.size());
+                               : std::vector<OctetCosts>(readings.size());
     const std::map<int, double> prefix =
         open >= 0 ? openOctetCosts(layer[end], open, bestCost) : std::map<int, double> {};
-    for (std::size_t m = 0; m < observations.size(); ++m) {
-        IpObservation &obs = observations[m];
+    for (std::size_t m = 0; m < readings.size(); ++m) {
+        IpObservation &obs = readings[m].observation;
         for (std::size_t k = 0; k < 4; ++k) {
-            const bool isOpen = m + 1 == observations.size() && int(k) == open;
-            const bool isTail = int(k) == tailOctets[m];
+            const bool isOpen = m + 1 == readings.size() && int(k) == open;
+            const bool isTail = int(k) == readings[m].tailOctet;
             if (obs.octets[k] < 0 && !isOpen && !isTail)
                 continue;
             for (const auto &[value, nats] : soft[m][k]) {
@@ -655,8 +652,8 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         }
         obs.complete =
             std::all_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; });
+        out.observations.push_back(std::move(obs));
     }
-    out.observations = std::move(observations);
     out.ok = true;
     return out;
 }
