@@ -64,10 +64,10 @@ double periodsSent(const std::vector<double> &starts, double t)
 
 } // namespace
 
-CaseOutcome runCase(const CorpusCase &c, double chunkSeconds)
+CaseOutcome runCase(const CorpusCase &c, double chunkSeconds, DecoderOptions options)
 {
     const Signal sig = generateSignal(c.signal);
-    Decoder decoder;
+    Decoder decoder(options);
     CaseOutcome out;
     const QString truth = ipText(c.ip, QLatin1Char('.'));
     std::size_t begin = 0;

@@ -60,7 +60,7 @@ struct CaseOutcome
 };
 
 // Streams the case through a Decoder in chunks of `chunkSeconds` and checks the result.
-CaseOutcome runCase(const CorpusCase &c, double chunkSeconds = 0.25);
+CaseOutcome runCase(const CorpusCase &c, double chunkSeconds = 0.25, DecoderOptions options = {});
 
 QString ipText(const std::array<int, 4> &ip, QChar separator);
 

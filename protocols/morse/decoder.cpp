@@ -1,5 +1,6 @@
 #include "decoder.h"
 
+#include "framecheck.h"
 #include "messageparser.h"
 #include "morsecode.h"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 Q_LOGGING_CATEGORY(lcMorse, "drivebench.morse", QtInfoMsg)
 
@@ -25,6 +27,12 @@ constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one me
 // messages: 190 ms for such an update). Longer than a recording of three messages at the
 // slowest unit (about 4 minutes), whose first messages are read again until the unit is known.
 constexpr double kReparseSeconds = 600.0;
+// Samples kept for checkFrames(): those of every stretch that may still be parsed.
+constexpr double kKeepSamples = kReparseSeconds + 120.0;
+// checkFrames(): the value read and up to kRivals others whose soft cost is below kCheckRange
+// nats (the voter uses up to IpVoter::kMaxWeight * kNatsPerWeight = 6).
+constexpr std::size_t kRivals = 3;
+constexpr double kCheckRange = 8.0;
 
 // Character-by-character reading of a stretch the grammar rejected (other text, status).
 QString hardText(const StretchInput &s)
@@ -40,6 +48,25 @@ QString hardText(const StretchInput &s)
         }
     }
     return text;
+}
+
+// A reading for the debug log: per octet the value, its weight and the soft costs below 6 nats.
+QString readingText(const IpObservation &obs)
+{
+    QStringList octets;
+    for (std::size_t k = 0; k < 4; ++k) {
+        QStringList costs;
+        for (const auto &[value, nats] : obs.cost[k]) {
+            if (nats < 6.0)
+                costs << QStringLiteral("%1:%2").arg(value).arg(nats, 0, 'f', 1);
+        }
+        octets << QStringLiteral("%1 w%2 {%3}")
+                      .arg(obs.octets[k])
+                      .arg(obs.weight[k], 0, 'f', 2)
+                      .arg(costs.join(QLatin1Char(' ')));
+    }
+    return (obs.complete ? QStringLiteral("complete: ") : QStringLiteral("partial: "))
+        + octets.join(QStringLiteral(" | "));
 }
 
 } // namespace
@@ -80,8 +107,20 @@ Decoder::Decoder(DecoderOptions options)
 
 void Decoder::feed(std::span<const Sample> samples)
 {
-    for (const Sample &s : samples)
+    for (const Sample &s : samples) {
         m_slicer.feed(s);
+        if (std::isfinite(s.t) && std::isfinite(s.value)
+            && (m_samples.empty() || s.t > m_samples.back().t))
+            m_samples.push_back(s);
+    }
+    // Drop the old samples in blocks (amortised): at most twice the window is kept.
+    if (!m_samples.empty()) {
+        const std::size_t old =
+            samplesBetween(m_samples, m_samples.back().t - kKeepSamples, m_samples.back().t).data()
+            - m_samples.data();
+        if (old > m_samples.size() - old)
+            m_samples.erase(m_samples.begin(), m_samples.begin() + std::ptrdiff_t(old));
+    }
     update(false);
 }
 
@@ -146,6 +185,7 @@ void Decoder::update(bool final)
         const double keep = m_slicer.lastTime() - kReparseSeconds;
         std::erase_if(m_cache,
                       [keep](const auto &entry) { return std::get<0>(entry.first) >= keep; });
+        m_frameCache.clear();
     }
     IpVoter voter;
     int complete = 0;
@@ -187,6 +227,7 @@ void Decoder::update(bool final)
                 && std::all_of(obs.cost.begin(), obs.cost.end(),
                                [](const auto &c) { return c.empty(); }))
                 continue;
+            qCDebug(lcMorse).noquote() << "  reading" << readingText(obs);
             voter.add(obs);
             if (obs.complete && ++complete > m_completeSeen) {
                 IpEstimate one;
@@ -197,6 +238,7 @@ void Decoder::update(bool final)
     }
     m_completeSeen = std::max(m_completeSeen, complete);
     m_ip = voter.observations() > 0 ? voter.estimate() : IpEstimate {};
+    qCDebug(lcMorse) << "ip" << m_slicer.lastTime() << m_ip.toString() << m_ip.confidence;
     m_text = corrected;
 
     const qsizetype colon = m_text.indexOf(QLatin1Char(':'));
@@ -224,7 +266,90 @@ StretchParse Decoder::cachedParse(const StretchInput &stretch, ParseMode mode)
             return open && start == stretch.start && marks < stretch.marks.size();
         });
     }
-    return m_cache[key] = parseStretch(stretch, m_model, mode);
+    StretchParse parse = parseStretch(stretch, m_model, mode);
+    if (m_options.checkFrames)
+        checkFrames(parse, stretch);
+    return m_cache[key] = parse;
+}
+
+void Decoder::checkFrames(StretchParse &parse, const StretchInput &in) const
+{
+    if (m_modelUnit <= 0.0 || in.markTimes.size() != in.marks.size() || m_samples.size() < 2
+        || parse.spans.size() != parse.observations.size())
+        return;
+    // The unit of the element model: it changes only when the parses are renewed, so that the
+    // regions (and m_frameCache) stay the same while a stretch grows.
+    const double unit = m_modelUnit;
+    const double duty = m_modelDuty;
+    auto gapMiddle = [&](long i) {
+        const auto g = static_cast<std::size_t>(i);
+        return in.markTimes[g] + in.marks[g] * unit + duty + (in.gaps[g] * unit - duty) / 2.0;
+    };
+    for (std::size_t m = 0; m < parse.observations.size(); ++m) {
+        IpObservation &obs = parse.observations[m];
+        for (std::size_t k = 0; k < 4; ++k) {
+            const OctetSpan &span = parse.spans[m][k];
+            if (obs.octets[k] < 0 || span.firstMark < 1 || span.separatorMark < 1
+                || span.separatorMark > long(in.gaps.size()))
+                continue;
+            RegionModel region;
+            region.from = gapMiddle(span.firstMark - 1);
+            region.to = gapMiddle(span.separatorMark - 1);
+            region.unit = unit;
+            region.duty = duty;
+            region.relJitter = m_model.relJitter;
+            const std::span<const Sample> samples =
+                samplesBetween(m_samples, region.from - unit, region.to + unit);
+            if (region.to <= region.from || !estimateLevels(samples, &region))
+                continue;
+            // The value read and its cheapest rivals.
+            std::vector<std::pair<double, int>> rivals;
+            for (const auto &[value, nats] : obs.cost[k]) {
+                if (value != obs.octets[k] && nats < kCheckRange)
+                    rivals.emplace_back(nats, value);
+            }
+            if (rivals.empty())
+                continue; // the lengths leave no doubt
+            std::sort(rivals.begin(), rivals.end());
+            rivals.resize(std::min(rivals.size(), kRivals));
+            std::vector<int> values { obs.octets[k] };
+            for (const auto &r : rivals)
+                values.push_back(r.second);
+            // Each value with as many digits as were read, leading zeros too ("076"), where it
+            // has no more.
+            std::vector<double> ll;
+            for (int v : values) {
+                QString t = QString::number(v);
+                while (t.size() < span.digits)
+                    t.prepend(QLatin1Char('0'));
+                const auto key = std::make_tuple(std::llround(region.from * 1e6),
+                                                 std::llround(region.to * 1e6), t);
+                auto it = m_frameCache.find(key);
+                if (it == m_frameCache.end())
+                    it = m_frameCache.emplace(key, regionLogLikelihood(samples, region, t)).first;
+                ll.push_back(it->second);
+            }
+            const auto best = std::size_t(std::max_element(ll.begin(), ll.end()) - ll.begin());
+            if (!std::isfinite(ll[best]))
+                continue;
+            // Where the samples confirm the value read, they add to the lengths' evidence (the
+            // more decisive of the two counts). Where they prefer another value, the reading
+            // reads both: it no longer vouches for either, and the other messages decide. The
+            // samples never overrule the lengths outright: where drift, auto exposure or a duty
+            // error bend the model, their margins can be large and wrong.
+            if (best == 0) {
+                for (std::size_t c = 1; c < values.size(); ++c) {
+                    double &cost = obs.cost[k][values[c]];
+                    cost = std::max(cost, ll[0] - ll[c]);
+                }
+            } else {
+                qCDebug(lcMorse) << "frames prefer octet" << k << "=" << values[best] << "to"
+                                 << values[0] << "by" << (ll[best] - ll[0]) << "nats, region"
+                                 << region.from << region.to;
+                obs.cost[k][values[best]] = 0.0;
+            }
+        }
+    }
 }
 
 DecoderState Decoder::state() const

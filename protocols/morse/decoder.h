@@ -22,6 +22,9 @@ struct DecoderOptions
     UnitRange unitRange; // plausible dit lengths, seconds
     double minFitQuality = 0.6; // below: the blinking is not Morse
     double confident = IpVoter::kConfident;
+    // Re-read each octet on the samples (framecheck.h). Off: the readings of the lengths alone
+    // (for comparison in tests and benchmarks).
+    bool checkFrames = true;
 };
 
 enum class DecoderState {
@@ -60,7 +63,8 @@ struct DecodeResult
 };
 
 // Streaming LED Morse decoder: samples -> LevelSlicer -> intervals -> fitUnit -> symbolize ->
-// splitStretches -> parseStretch (one observation per message) -> IpVoter. feed() may be
+// splitStretches -> parseStretch (one observation per message) -> checkFrames (the octets a
+// reading is unsure of, on the samples: framecheck.h) -> IpVoter. feed() may be
 // called with chunks of any size; after each call the text, timeline and IP reflect
 // everything seen so far (the unit is re-estimated as data grows, so earlier characters can
 // still change). Pure and synchronous; no Qt event loop.
@@ -104,9 +108,16 @@ private:
     void update(bool final);
     void event(DecoderEvent::Kind kind, QString detail = {});
     StretchParse cachedParse(const StretchInput &stretch, ParseMode mode);
+    // Re-reads each octet of the parse on the samples (framecheck.h): the value read and its
+    // closest rivals, scored against every sample of the octet's region.
+    void checkFrames(StretchParse &parse, const StretchInput &stretch) const;
 
     DecoderOptions m_options;
     LevelSlicer m_slicer;
+    std::vector<Sample> m_samples; // the valid samples of the last kKeepSamples seconds
+    // checkFrames(): log-likelihoods by region (from, to in microseconds) and text. An octet of
+    // a stretch still arriving is checked once, not at every update; cleared with the model.
+    mutable std::map<std::tuple<long long, long long, QString>, double> m_frameCache;
     UnitFit m_fit;
     Symbols m_symbols;
     QString m_text;

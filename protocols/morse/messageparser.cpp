@@ -373,6 +373,7 @@ struct MessageReading
     IpObservation observation; // octets read completely, weights from their margins
     std::array<long, 4> closed { -1, -1, -1, -1 }; // Closings
     int tailOctet = -1; // closed after a cut start with only its last digits read
+    OctetSpans spans;
 };
 
 using CharCosts = std::array<std::vector<std::array<double, kChars.size()>>, kEdits>;
@@ -382,10 +383,15 @@ MessageReading readMessage(const std::vector<Taken> &path, const Message &msg,
 {
     MessageReading r;
     double margin = kInf;
+    long firstDigit = -1; // path index of the octet's first digit
     for (std::size_t p = msg.begin; p < msg.end; ++p) {
         const Taken &t = path[p];
         const bool digit = t.ch >= kDigit0 && t.ch < kColon;
         const bool closes = t.ch == kPlus || t.ch == kColon;
+        if (digit && firstDigit < 0)
+            firstDigit = long(p);
+        if (!digit && !closes)
+            firstDigit = -1;
         // Octet states whose k is anchored: by a prefix character, or back from ':'.
         const OctetParts from = partsOf(t.from % kStates);
         const bool known = from.k >= 0 && !from.cut && (t.from < kStates || msg.colon);
@@ -414,7 +420,12 @@ MessageReading readMessage(const std::vector<Taken> &path, const Message &msg,
             r.observation.weight[k] =
                 std::clamp(margin / kClearMargin, kMinWeight, IpVoter::kMaxWeight);
             r.closed[k] = long(t.at);
+            if (firstDigit >= 0)
+                r.spans[k] = { long(path[std::size_t(firstDigit)].at), long(t.at),
+                               int(long(p) - firstDigit) };
         }
+        if (closes)
+            firstDigit = -1;
         if (closes || !(known || tail))
             margin = kInf;
     }
@@ -653,6 +664,7 @@ StretchParse parseStretch(const StretchInput &in, const ElementModel &model, Par
         obs.complete =
             std::all_of(obs.octets.begin(), obs.octets.end(), [](int v) { return v >= 0; });
         out.observations.push_back(std::move(obs));
+        out.spans.push_back(readings[m].spans);
     }
     out.ok = true;
     return out;

@@ -5,6 +5,8 @@
 
 #include <QString>
 
+#include <array>
+
 #include <utility>
 #include <vector>
 
@@ -51,6 +53,7 @@ struct StretchInput
     bool openStart = false; // the recording began inside this stretch
     bool openEnd = false; // the stretch is still arriving
     bool firstComplete = false; // with openStart: the first mark begins a character
+    std::vector<double> markTimes; // s, start of each mark (framecheck.h); may be empty
     double gapAfter = 0.0; // units of the word gap that closed the stretch; 0: none (long mark)
     double gapAfterSigma = 0.0;
     double markSigmaAt(std::size_t i) const { return i < markSigma.size() ? markSigma[i] : 0.0; }
@@ -71,6 +74,16 @@ enum class ParseMode {
     Salvage,
 };
 
+// Where an octet of a message was read: its `digits` digits are marks [firstMark,
+// separatorMark), the separator ('+' or ':') begins at separatorMark. -1: not read whole.
+struct OctetSpan
+{
+    long firstMark = -1;
+    long separatorMark = -1;
+    int digits = 0;
+};
+using OctetSpans = std::array<OctetSpan, 4>;
+
 struct StretchParse
 {
     bool ok = false; // the grammar explains the stretch within ElementModel::maxZ
@@ -78,6 +91,7 @@ struct StretchParse
     // One per message read in this stretch, in order: its octets read completely (weights:
     // margins) and their soft costs. Never empty when ok.
     std::vector<IpObservation> observations;
+    std::vector<OctetSpans> spans; // per observation
     double worstZ = 0.0;
     double cost = 0.0; // nats: how well the reading explains the lengths (less is better)
 };

@@ -70,6 +70,7 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
             cur.gaps.resize(g > 0 ? g - 1 : 0);
             cur.markSigma.resize(cur.marks.size());
             cur.gapSigma.resize(cur.gaps.size());
+            cur.markTimes.resize(cur.marks.size());
         }
         // A stretch closed by a long mark ends in the gap before it: no gap follows its last
         // mark (before, such a stretch failed parseStretch()'s size check and was never read).
@@ -120,6 +121,7 @@ std::vector<StretchInput> splitStretches(const std::vector<Element> &timeline)
             }
             cur.marks.push_back(e.units);
             cur.markSigma.push_back(e.edgeSigma);
+            cur.markTimes.push_back(e.start);
             endsInLetterGap = false;
             break;
         case ElementKind::WordGap:
@@ -170,6 +172,10 @@ StretchInput joinStretches(const StretchInput &a, const StretchInput &b)
     out.gapSigma.push_back(a.gapAfterSigma);
     out.gapSigma.insert(out.gapSigma.end(), b.gapSigma.begin(), b.gapSigma.end());
     out.gapSigma.resize(out.gaps.size());
+    if (a.markTimes.size() == a.marks.size() && b.markTimes.size() == b.marks.size())
+        out.markTimes.insert(out.markTimes.end(), b.markTimes.begin(), b.markTimes.end());
+    else
+        out.markTimes.clear();
     out.openEnd = b.openEnd;
     out.gapAfter = b.gapAfter;
     out.gapAfterSigma = b.gapAfterSigma;
