@@ -26,9 +26,9 @@ void IpVoter::add(const IpObservation &obs)
         r.cost[i][obs.octets[i]] = 0.0;
         r.value[i] = obs.octets[i];
     }
-    m_readings.push_back(std::move(r));
     if (obs.complete)
-        m_complete.push_back(obs.octets);
+        m_complete.push_back(m_readings.size());
+    m_readings.push_back(std::move(r));
     ++m_count;
 }
 
@@ -123,7 +123,14 @@ IpEstimate IpVoter::estimate() const
         confidence = std::min(confidence, conf);
     }
     e.confidence = confidence;
-    e.messages = static_cast<int>(std::count(m_complete.begin(), m_complete.end(), e.octets));
+    e.messages =
+        static_cast<int>(std::count_if(m_complete.begin(), m_complete.end(), [&](std::size_t r) {
+            for (std::size_t i = 0; i < 4; ++i) {
+                if (!m_readings[r].reads(i, e.octets[i]))
+                    return false;
+            }
+            return true;
+        }));
     return e;
 }
 

@@ -87,7 +87,7 @@ private:
         }
     };
     std::vector<Reading> m_readings;
-    std::vector<std::array<int, 4>> m_complete;
+    std::vector<std::size_t> m_complete; // the readings of complete messages
     int m_count = 0;
 };
 

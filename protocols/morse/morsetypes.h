@@ -74,7 +74,7 @@ struct IpEstimate
 {
     std::array<int, 4> octets { -1, -1, -1, -1 }; // -1: octet not seen yet
     double confidence = 0.0; // 0..1, see IpVoter
-    int messages = 0; // complete "IPa+b+c+d:" observations that agree with octets
+    int messages = 0; // complete "IPa+b+c+d:" readings that read octets (IpVoter::kTie)
     bool complete() const
     {
         return octets[0] >= 0 && octets[1] >= 0 && octets[2] >= 0 && octets[3] >= 0;

@@ -145,8 +145,9 @@ private slots:
     // Noise merges the two dits of a '2' (..---) in one message: "----" is also an '8' with its
     // last two dits merged, at the same cost, and the reading names whichever its parse found
     // first. It reads both: with a clear second reading of 181 that is two readings for 181 and
-    // a confident address; had the tie gone the other way, 181 would have been read twice
-    // anyway. A reading that merely prefers 121 (by a nat) does not read 181.
+    // a confident address (and two messages reporting it); had the tie gone the other way, 181
+    // would have been read twice anyway. A reading that merely prefers 121 (by a nat) does not
+    // read 181.
     void tiedReadingReadsBoth()
     {
         IpVoter voter;
@@ -155,11 +156,13 @@ private slots:
         QCOMPARE(voter.estimate().toString(), QStringLiteral("10.181.0.1"));
         QVERIFY2(voter.estimate().confidence >= IpVoter::kConfident,
                  qPrintable(QString::number(voter.estimate().confidence)));
+        QCOMPARE(voter.estimate().messages, 2); // both read 10.181.0.1
 
         IpVoter unsure;
         unsure.add(soft({ 10, 121, 0, 1 }, 1, 181, 1.0));
         unsure.add(soft({ 10, 181, 0, 1 }));
         QVERIFY(unsure.estimate().confidence < IpVoter::kConfident);
+        QCOMPARE(unsure.estimate().messages, 1);
     }
 
     // A message garbled by noise disagrees in several octets. It costs every address at most
