@@ -37,22 +37,17 @@ struct Part
     double units = -1.0; // nominal; < 0: dark of any length (the region's ends)
 };
 
+// Dark of any length, the nominal elements of `text`, dark of any length; empty when a character
+// has no code.
 std::vector<Part> elementsOf(const QString &text)
 {
+    if (text.isEmpty()
+        || std::any_of(text.begin(), text.end(), [](QChar c) { return codeFor(c).isEmpty(); }))
+        return {};
     std::vector<Part> out { { false, -1.0 } };
-    for (QChar c : text) {
-        const QString code = codeFor(c);
-        if (code.isEmpty())
-            return {};
-        if (out.size() > 1)
-            out.push_back({ false, 3.0 });
-        for (qsizetype i = 0; i < code.size(); ++i) {
-            if (i > 0)
-                out.push_back({ false, 1.0 });
-            out.push_back({ true, code[i] == QLatin1Char('-') ? 3.0 : 1.0 });
-        }
-    }
-    out.push_back({ false, -1.0 });
+    const std::vector<double> units = messageElements(text, -1.0); // the last gap: free dark
+    for (std::size_t i = 0; i < units.size(); ++i)
+        out.push_back({ i % 2 == 0, units[i] });
     return out;
 }
 

@@ -80,4 +80,26 @@ QChar nearestChar(const std::vector<double> &markUnits, double maxExtraCost)
     return best;
 }
 
+std::vector<double> messageElements(const QString &text, double lastGap)
+{
+    std::vector<double> units;
+    for (QChar c : text) {
+        if (c == QLatin1Char(' ')) {
+            if (!units.empty())
+                units.back() = 7.0;
+            continue;
+        }
+        const QString code = codeFor(c);
+        for (QChar e : code) {
+            units.push_back(e == QLatin1Char('-') ? 3.0 : 1.0);
+            units.push_back(1.0);
+        }
+        if (!code.isEmpty())
+            units.back() = 3.0;
+    }
+    if (!units.empty())
+        units.back() = lastGap;
+    return units;
+}
+
 } // namespace db::morse

@@ -18,6 +18,11 @@ QString codeFor(QChar c);
 // The character of a code, or a null QChar when the code is not in the table.
 QChar charFor(QStringView code);
 
+// Nominal element lengths of `text` in units (ITU timing): alternating mark, gap, mark, gap, ...
+// starting with a mark and ending with `lastGap` after the last mark; ' ' makes a word gap (7).
+// Characters without a code are skipped.
+std::vector<double> messageElements(const QString &text, double lastGap);
+
 // Soft decision for a code that is not in the table: the character whose code has as many
 // elements as `markUnits` (mark lengths in units) and the least sum of ln(length / nominal)^2,
 // provided that sum exceeds the hard decision's by at most `maxExtraCost`. Null otherwise.

@@ -18,30 +18,6 @@ struct OnSpan
     double end;
 };
 
-// Nominal element durations of one message, in units: alternating mark, gap, mark, gap, ...
-// starting with a mark and ending with the repeat gap.
-std::vector<double> messageElements(const QString &text, double repeatGap)
-{
-    std::vector<double> units;
-    for (QChar c : text) {
-        if (c == QLatin1Char(' ')) {
-            if (!units.empty())
-                units.back() = 7.0;
-            continue;
-        }
-        const QString code = codeFor(c);
-        for (QChar e : code) {
-            units.push_back(e == QLatin1Char('-') ? 3.0 : 1.0);
-            units.push_back(1.0);
-        }
-        if (!code.isEmpty())
-            units.back() = 3.0;
-    }
-    if (!units.empty())
-        units.back() = repeatGap;
-    return units;
-}
-
 double onFraction(const std::vector<OnSpan> &spans, double a, double b)
 {
     auto it = std::upper_bound(spans.begin(), spans.end(), a,

@@ -31,17 +31,9 @@ Rendered render(const QString &text, const std::map<std::size_t, double> &length
                 double depth, double sigma, unsigned seed)
 {
     std::vector<std::pair<bool, double>> parts { { false, 1.5 } };
-    for (QChar c : text) {
-        if (parts.size() > 1)
-            parts.push_back({ false, 3.0 });
-        const QString code = codeFor(c);
-        for (qsizetype i = 0; i < code.size(); ++i) {
-            if (i > 0)
-                parts.push_back({ false, 1.0 });
-            parts.push_back({ true, code[i] == QLatin1Char('-') ? 3.0 : 1.0 });
-        }
-    }
-    parts.push_back({ false, 1.5 });
+    const std::vector<double> units = messageElements(text, 1.5);
+    for (std::size_t i = 0; i < units.size(); ++i)
+        parts.push_back({ i % 2 == 0, units[i] });
     for (const auto &[at, units] : lengths)
         parts[at].second = units;
     std::vector<std::tuple<double, double, bool>> spans; // start, end, lit
