@@ -48,6 +48,8 @@ public:
     void setTimeoutMs(int ms) { m_timeoutMs = ms; }
     // Requests queued or in flight.
     int pendingCount() const;
+    // Bytes of a partial answer held by the framer (bounded by Framer::kMaxAnswerBytes).
+    qsizetype bufferedBytes() const { return m_framer.bufferedBytes(); }
 
     // Pass-through for the terminal: value is the result lines (QStringList). A command with
     // CR or LF in it, or an empty one, fails with InvalidArgument.

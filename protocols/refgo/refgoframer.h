@@ -41,6 +41,8 @@ public:
     void reset();
     // True when no partial answer is buffered.
     bool isIdle() const { return !m_haveEcho && m_line.isEmpty() && !m_discarding; }
+    // Bytes of the partial answer held (at most kMaxAnswerBytes).
+    qsizetype bufferedBytes() const { return m_size; }
 
 private:
     void endLine();

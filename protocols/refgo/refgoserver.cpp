@@ -21,13 +21,22 @@ public:
         , handler(deviceHandler)
     { }
 
+    struct Client
+    {
+        QByteArray buffer; // received bytes not handled yet
+        ClientThrottle *throttle = nullptr; // child of the socket
+    };
+
     Server *q;
     DeviceHandler *handler;
     QTcpServer server;
-    QHash<QTcpSocket *, QByteArray> buffers; // bytes after the last CR, per client
+    QHash<QTcpSocket *, Client> clients;
+    ClientThrottle::Limits limits;
+    qint64 peakQueued = 0;
 
     void accept();
     void read(QTcpSocket *socket);
+    void drop(QTcpSocket *socket, qint64 queued, int pausedMs);
     QByteArray answer(const QString &line);
 };
 
@@ -69,8 +78,8 @@ quint16 Server::port() const
 void Server::close()
 {
     d->server.close();
-    const auto sockets = d->buffers.keys();
-    d->buffers.clear();
+    const auto sockets = d->clients.keys();
+    d->clients.clear();
     for (QTcpSocket *socket : sockets) {
         socket->disconnect(this);
         socket->abort();
@@ -80,7 +89,17 @@ void Server::close()
 
 int Server::clientCount() const
 {
-    return int(d->buffers.size());
+    return int(d->clients.size());
+}
+
+void Server::setClientLimits(const ClientThrottle::Limits &limits)
+{
+    d->limits = limits;
+}
+
+qint64 Server::peakQueuedBytes() const
+{
+    return d->peakQueued;
 }
 
 void Server::Private::accept()
@@ -88,39 +107,67 @@ void Server::Private::accept()
     while (QTcpSocket *socket = server.nextPendingConnection()) {
         socket->setParent(q);
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        buffers.insert(socket, {});
+        auto *throttle = new ClientThrottle(socket, limits);
+        clients.insert(socket, Client { {}, throttle });
         qCDebug(lcRefgo) << "RefGo client connected from" << socket->peerPort();
         QObject::connect(socket, &QTcpSocket::readyRead, q, [this, socket] { read(socket); });
+        QObject::connect(throttle, &ClientThrottle::resumed, q, [this, socket] { read(socket); });
+        QObject::connect(throttle, &ClientThrottle::stalled, q,
+                         [this, socket](qint64 queued, int ms) { drop(socket, queued, ms); });
         QObject::connect(socket, &QTcpSocket::disconnected, q, [this, socket] {
-            buffers.remove(socket);
+            clients.remove(socket);
             socket->deleteLater();
         });
     }
 }
 
+// Handles the client's complete requests while its answers are read; a paused client's
+// requests wait in its buffer (at most one read slice plus one line) and in the kernel.
 void Server::Private::read(QTcpSocket *socket)
 {
-    auto it = buffers.find(socket);
-    if (it == buffers.end())
+    auto it = clients.find(socket);
+    if (it == clients.end())
         return;
-    QByteArray &buffer = it.value();
-    buffer += socket->readAll();
-    buffer.replace('\n', QByteArray()); // requests end with CR only (spec 3.1); LF is ignored
+    Client &client = it.value();
+    if (!client.throttle->mayRead())
+        return;
+    client.buffer += socket->read(ClientThrottle::kReadSliceBytes);
+    client.buffer.replace('\n',
+                          QByteArray()); // requests end with CR only (spec 3.1); LF is ignored
+    qsizetype start = 0;
     qsizetype cr;
-    while ((cr = buffer.indexOf('\r')) >= 0) {
-        const QString line = QString::fromLatin1(buffer.left(cr));
-        buffer.remove(0, cr + 1);
+    while (client.throttle->mayRead() && (cr = client.buffer.indexOf('\r', start)) >= 0) {
+        const QString line = QString::fromLatin1(client.buffer.mid(start, cr - start));
+        start = cr + 1;
         if (line.isEmpty())
             continue; // an empty line gets no answer
         const QByteArray bytes = answer(line);
         qCDebug(lcRefgoRaw) << "server ->" << bytes;
         socket->write(bytes);
+        peakQueued = qMax(peakQueued, client.throttle->queued());
     }
-    if (buffer.size() > kMaxRequestBytes) {
-        qCWarning(lcRefgo) << "RefGo server: dropping" << buffer.size()
+    client.buffer.remove(0, start);
+    if (client.buffer.size() > kMaxRequestBytes && client.buffer.indexOf('\r') < 0) {
+        qCWarning(lcRefgo) << "RefGo server: dropping" << client.buffer.size()
                            << "bytes without CR from a client";
-        buffer.clear();
+        client.buffer.clear();
     }
+}
+
+void Server::Private::drop(QTcpSocket *socket, qint64 queued, int pausedMs)
+{
+    if (!clients.remove(socket))
+        return;
+    qCWarning(lcRefgo).noquote() << QStringLiteral(
+                                        "RefGo server: dropping client %1:%2: it has not read "
+                                        "its answers for %3 ms (%4 bytes queued)")
+                                        .arg(socket->peerAddress().toString())
+                                        .arg(socket->peerPort())
+                                        .arg(pausedMs)
+                                        .arg(queued);
+    socket->disconnect(q);
+    socket->abort();
+    socket->deleteLater();
 }
 
 // "<request>\r\n" + "<line>\r\n"... + ">" (spec 3.1, 3.8); a refused request gets one

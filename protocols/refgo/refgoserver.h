@@ -2,9 +2,11 @@
 
 // Device side of RefGo (used by the simulators): a TCP server on loopback that frames requests
 // (one line per CR) and answers "<echo>\r\n<result lines>\r\n...>" exactly as movingcap.md 3.1
-// and 3.8 show.
+// and 3.8 show. Every client is throttled (ClientThrottle): one that does not read its answers
+// is paused and finally dropped, and cannot starve the others.
 
 #include "refgocodec.h"
+#include "transport/clientthrottle.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -37,6 +39,10 @@ public:
     quint16 port() const;
     void close();
     int clientCount() const;
+    // Applies to clients that connect afterwards.
+    void setClientLimits(const ClientThrottle::Limits &limits);
+    // The longest output queue (unread answers) any client had so far, in bytes.
+    qint64 peakQueuedBytes() const;
 
 Q_SIGNALS:
     void requestHandled(const QString &request, const QStringList &result);

@@ -1,5 +1,6 @@
 #include "canbus.h"
 
+#include <QDeadlineTimer>
 #include <QEventLoop>
 #include <QTimer>
 
@@ -57,6 +58,39 @@ void CanBus::reportSent(const QCanBusFrame &frame)
 {
     Q_EMIT traffic(frame, true);
     Q_EMIT frameSent(frame);
+}
+
+void CanBus::reportDropped(qint64 frames)
+{
+    if (frames <= 0)
+        return;
+    m_dropped += frames;
+    m_droppedUnreported += frames;
+    if (m_reportScheduled)
+        return;
+    const qint64 now = QDeadlineTimer::current().deadline();
+    const qint64 wait = m_lastReportMs < 0 ? 0 : m_lastReportMs + kOverflowReportMs - now;
+    if (wait <= 0) {
+        flushDropReport();
+        return;
+    }
+    m_reportScheduled = true;
+    QTimer::singleShot(int(wait), this, [this] {
+        m_reportScheduled = false;
+        flushDropReport();
+    });
+}
+
+void CanBus::flushDropReport()
+{
+    if (m_droppedUnreported == 0)
+        return;
+    m_lastReportMs = QDeadlineTimer::current().deadline();
+    const qint64 frames = std::exchange(m_droppedUnreported, 0);
+    Q_EMIT warning(QStringLiteral("%1: receive queue overflow: %2 frames dropped (%3 in all)")
+                       .arg(name())
+                       .arg(frames)
+                       .arg(m_dropped));
 }
 
 Result<void> CanBus::openAndWait(int timeoutMs)

@@ -14,12 +14,22 @@ namespace db {
 //
 // The base class owns the open/close state machine; subclasses implement doOpen()/doClose()/
 // doSend() and report with setOpened()/setClosed()/deliver(). Signals come from the event loop.
+//
+// Receive path under load: a subclass hands over at most kReceiveSliceFrames frames per
+// event-loop pass (so timers of the protocols above fire on time during a flood) and keeps at
+// most about kMaxReceiveQueueFrames waiting; what does not fit is dropped and reported with
+// reportDropped().
 class CanBus : public QObject
 {
     Q_OBJECT
 public:
     enum class State { Closed, Opening, Open, Closing };
     Q_ENUM(State)
+
+    static constexpr int kReceiveSliceFrames = 256;
+    static constexpr int kMaxReceiveQueueFrames = 4096;
+    // Overflow warnings are coalesced to one per this interval during a flood.
+    static constexpr int kOverflowReportMs = 1000;
 
     using QObject::QObject;
 
@@ -35,6 +45,8 @@ public:
     void close();
     // Queues one frame; false (and no effect) unless open. frameSent() follows once it is out.
     bool send(const QCanBusFrame &frame);
+    // Received frames dropped because the receive queue was full, since the bus was created.
+    qint64 droppedFrames() const { return m_dropped; }
 
 Q_SIGNALS:
     void opened();
@@ -60,9 +72,18 @@ protected:
     void deliver(const QCanBusFrame &frame);
     // Subclasses call this once a frame is out: emits traffic() and frameSent().
     void reportSent(const QCanBusFrame &frame);
+    // Counts dropped received frames and reports them through warning() as "receive queue
+    // overflow: N frames dropped": at once, then at most every kOverflowReportMs.
+    void reportDropped(qint64 frames);
 
 private:
+    void flushDropReport();
+
     State m_state = State::Closed;
+    qint64 m_dropped = 0;
+    qint64 m_droppedUnreported = 0;
+    qint64 m_lastReportMs = -1; // steady clock of the last overflow warning
+    bool m_reportScheduled = false;
 };
 
 } // namespace db

@@ -181,8 +181,14 @@ void QtCanBus::onFramesReceived()
 {
     if (!m_device)
         return;
-    const QList<QCanBusFrame> frames = m_device->readAllFrames();
-    for (const QCanBusFrame &frame : frames) {
+    qint64 dropped = 0;
+    while (m_device->framesAvailable() > kMaxReceiveQueueFrames) {
+        m_device->readFrame();
+        ++dropped;
+    }
+    reportDropped(dropped);
+    for (int i = 0; i < kReceiveSliceFrames && m_device && m_device->framesAvailable() > 0; ++i) {
+        const QCanBusFrame frame = m_device->readFrame();
         if (frame.frameType() == QCanBusFrame::ErrorFrame) {
             Q_EMIT warning(QStringLiteral("%1: error frame: %2")
                                .arg(name(), m_device->interpretErrorFrame(frame)));
@@ -190,9 +196,23 @@ void QtCanBus::onFramesReceived()
         }
         qCDebug(lcQtCanRaw).noquote() << name() << "rx" << frame.toString();
         deliver(frame);
-        if (!m_device)
-            return; // a receiver closed the bus
     }
+    if (m_device && m_device->framesAvailable() > 0)
+        scheduleReceive(); // the rest after timers and sockets had their turn
+}
+
+void QtCanBus::scheduleReceive()
+{
+    if (m_receiveScheduled)
+        return;
+    m_receiveScheduled = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_receiveScheduled = false;
+            onFramesReceived();
+        },
+        Qt::QueuedConnection);
 }
 
 void QtCanBus::releaseDevice()

@@ -14,6 +14,10 @@ namespace db {
 // available. Error frames and non-fatal device errors become warning(); a device that drops
 // while open closes the bus with Error::Kind::Disconnected. Failures are reported from the
 // event loop, never from inside open().
+//
+// Received frames are taken from the plugin's queue CanBus::kReceiveSliceFrames per event-loop
+// pass; when more than CanBus::kMaxReceiveQueueFrames wait there, the oldest are dropped and
+// reported (the plugin's queue itself is unbounded).
 class QtCanBus : public CanBus
 {
     Q_OBJECT
@@ -45,11 +49,13 @@ private:
     void onError(QCanBusDevice::CanBusError error);
     void onFramesReceived();
     void releaseDevice();
+    void scheduleReceive();
 
     QString m_plugin;
     QString m_interface;
     int m_bitrate;
     QPointer<QCanBusDevice> m_device;
+    bool m_receiveScheduled = false;
 };
 
 } // namespace db

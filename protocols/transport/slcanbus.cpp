@@ -1,11 +1,32 @@
 #include "slcanbus.h"
 
 #include <QLoggingCategory>
+#include <QTimer>
 
 namespace db {
 
 Q_LOGGING_CATEGORY(lcSlcan, "drivebench.transport.slcan")
 Q_LOGGING_CATEGORY(lcSlcanRaw, "drivebench.transport.slcan.raw", QtWarningMsg)
+
+namespace {
+bool isTerminator(char c)
+{
+    return c == slcan::kCr || c == '\n';
+}
+
+// Frame lines (t/T/r/R at a line start) in bytes that start at a line start.
+qint64 countFrameLines(QByteArrayView bytes)
+{
+    qint64 frames = 0;
+    bool lineStart = true;
+    for (const char c : bytes) {
+        if (lineStart && (c == 't' || c == 'T' || c == 'r' || c == 'R'))
+            ++frames;
+        lineStart = isTerminator(c);
+    }
+    return frames;
+}
+} // namespace
 
 SlcanBus::SlcanBus(ByteStream *stream, int bitrate, QObject *parent)
     : CanBus(parent)
@@ -32,6 +53,8 @@ QString SlcanBus::name() const
 void SlcanBus::doOpen()
 {
     m_decoder.reset();
+    m_backlog.clear();
+    m_skipping = false;
     if (m_stream->isOpen())
         onStreamOpened();
     else
@@ -90,24 +113,85 @@ void SlcanBus::onStreamClosed(const Error &error)
 void SlcanBus::onReceived(const QByteArray &bytes)
 {
     qCDebug(lcSlcanRaw) << name() << "<-" << bytes;
-    for (const slcan::Message &m : m_decoder.feed(bytes)) {
-        switch (m.kind) {
-        case slcan::Message::Kind::Frame:
-            deliver(m.frame);
-            break;
-        case slcan::Message::Kind::Bell:
-            Q_EMIT warning(QStringLiteral("%1: the adapter answered BEL (command or frame refused)")
-                               .arg(name()));
-            break;
-        case slcan::Message::Kind::Unknown:
-            Q_EMIT warning(QStringLiteral("%1: skipped a line that is not slcan: '%2'")
-                               .arg(name(), QString::fromLatin1(m.line.toPercentEncoding(" "))));
-            break;
-        case slcan::Message::Kind::Ack:
-        case slcan::Message::Kind::TransmitAck:
-        case slcan::Message::Kind::Command:
-            break; // spec 4.2: replies are ignored
-        }
+    enqueue(bytes);
+    drain();
+}
+
+// Appends whole lines while the backlog has room and drops the rest of the chunk, so the
+// decoder never sees the front of one line glued to the end of another. The line that
+// completes the backlog's last one is always kept (at most kMaxLineLength bytes over).
+void SlcanBus::enqueue(const QByteArray &bytes)
+{
+    QByteArrayView rest(bytes);
+    if (m_skipping) {
+        qsizetype end = 0;
+        while (end < rest.size() && !isTerminator(rest[end]))
+            ++end;
+        if (end == rest.size())
+            return;
+        m_skipping = false;
+        rest = rest.sliced(end + 1);
+    }
+    const qsizetype room = kMaxBacklogBytes - m_backlog.size();
+    qsizetype keep = rest.size();
+    if (keep > room) {
+        keep = qMin(rest.size(), qMax<qsizetype>(room, 0) + slcan::kMaxLineLength + 1);
+        while (keep > 0 && !isTerminator(rest[keep - 1]))
+            --keep;
+        const QByteArrayView dropped = rest.sliced(keep);
+        m_skipping = !isTerminator(dropped.back());
+        reportDropped(countFrameLines(dropped));
+    }
+    m_backlog.append(rest.first(keep));
+    m_peakBacklog = qMax(m_peakBacklog, m_backlog.size());
+}
+
+// Decodes one slice; the rest waits for the next event-loop pass so that timers and other
+// sockets are served during a flood.
+void SlcanBus::drain()
+{
+    if (m_draining)
+        return; // a receiver's slot fed the stream again: the running drain goes on
+    m_draining = true;
+    const QByteArray slice = m_backlog.first(qMin(kSliceBytes, m_backlog.size()));
+    m_backlog.remove(0, slice.size());
+    for (const slcan::Message &m : m_decoder.feed(slice)) {
+        handle(m);
+        if (state() != State::Open)
+            break; // a receiver closed the bus
+    }
+    m_draining = false;
+    if (state() != State::Open) {
+        m_backlog.clear();
+        return;
+    }
+    if (!m_backlog.isEmpty() && !m_drainScheduled) {
+        m_drainScheduled = true;
+        QTimer::singleShot(0, this, [this] {
+            m_drainScheduled = false;
+            drain();
+        });
+    }
+}
+
+void SlcanBus::handle(const slcan::Message &m)
+{
+    switch (m.kind) {
+    case slcan::Message::Kind::Frame:
+        deliver(m.frame);
+        break;
+    case slcan::Message::Kind::Bell:
+        Q_EMIT warning(
+            QStringLiteral("%1: the adapter answered BEL (command or frame refused)").arg(name()));
+        break;
+    case slcan::Message::Kind::Unknown:
+        Q_EMIT warning(QStringLiteral("%1: skipped a line that is not slcan: '%2'")
+                           .arg(name(), QString::fromLatin1(m.line.toPercentEncoding(" "))));
+        break;
+    case slcan::Message::Kind::Ack:
+    case slcan::Message::Kind::TransmitAck:
+    case slcan::Message::Kind::Command:
+        break; // spec 4.2: replies are ignored
     }
 }
 

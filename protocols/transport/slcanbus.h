@@ -18,6 +18,10 @@ namespace db {
 // unparsable lines are reported through warning() and skipped; only t/T/r/R lines become
 // frameReceived(). Close sends "C\r" and closes the stream; a stream that fails closes the bus
 // with the stream's error.
+//
+// Receive queue: received bytes wait in a backlog of at most kMaxBacklogBytes (whole lines;
+// about CanBus::kMaxReceiveQueueFrames frames) and are decoded kSliceBytes per event-loop pass.
+// Lines that arrive while the backlog is full are dropped and reported (reportDropped()).
 class SlcanBus : public CanBus
 {
     Q_OBJECT
@@ -32,6 +36,12 @@ public:
     ByteStream *stream() const { return m_stream; }
     int bitrate() const { return m_bitrate; }
 
+    static constexpr qsizetype kSliceBytes = CanBus::kReceiveSliceFrames * 16;
+    static constexpr qsizetype kMaxBacklogBytes = CanBus::kMaxReceiveQueueFrames * 16;
+    // Received bytes not decoded yet, and the most there ever were.
+    qsizetype backlogBytes() const { return m_backlog.size(); }
+    qsizetype peakBacklogBytes() const { return m_peakBacklog; }
+
 protected:
     void doOpen() override;
     void doClose() override;
@@ -41,10 +51,18 @@ private:
     void onStreamOpened();
     void onStreamClosed(const Error &error);
     void onReceived(const QByteArray &bytes);
+    void enqueue(const QByteArray &bytes);
+    void drain();
+    void handle(const slcan::Message &m);
 
     ByteStream *m_stream;
     int m_bitrate;
     slcan::Decoder m_decoder;
+    QByteArray m_backlog; // received, not decoded yet
+    qsizetype m_peakBacklog = 0;
+    bool m_skipping = false; // dropping the rest of a line that did not fit
+    bool m_drainScheduled = false;
+    bool m_draining = false;
 };
 
 } // namespace db

@@ -28,6 +28,7 @@ struct SlcanServer::Private
         slcan::Decoder decoder;
         bool channelOpen = false;
         bool timestamps = false;
+        ClientThrottle *throttle = nullptr; // child of the socket
     };
 
     SlcanServer *q = nullptr;
@@ -36,9 +37,13 @@ struct SlcanServer::Private
     TransmitAck ack = TransmitAck::Lawicel;
     bool requireOpen = false;
     QElapsedTimer clock;
+    ClientThrottle::Limits limits;
+    qint64 peakQueued = 0;
+    qint64 dropped = 0;
 
     void accept();
     void read(QTcpSocket *socket);
+    void drop(QTcpSocket *socket, qint64 queued, int pausedMs);
     QByteArray answer(Client &client, const slcan::Message &m);
     bool receives(const Client &client) const { return !requireOpen || client.channelOpen; }
 };
@@ -101,6 +106,21 @@ int SlcanServer::clientCount() const
     return int(d->clients.size());
 }
 
+void SlcanServer::setClientLimits(const ClientThrottle::Limits &limits)
+{
+    d->limits = limits;
+}
+
+qint64 SlcanServer::peakQueuedBytes() const
+{
+    return d->peakQueued;
+}
+
+qint64 SlcanServer::droppedFrames() const
+{
+    return d->dropped;
+}
+
 void SlcanServer::setTransmitAck(TransmitAck ack)
 {
     d->ack = ack;
@@ -126,9 +146,14 @@ int SlcanServer::send(const QCanBusFrame &frame)
     for (auto it = d->clients.begin(); it != d->clients.end(); ++it) {
         if (!d->receives(it.value()))
             continue;
+        if (!it->throttle->mayRead()) {
+            ++d->dropped; // a client that does not read must not grow the server
+            continue;
+        }
         const QByteArray line = it->timestamps ? slcan::encodeFrame(frame, stamp) : plain;
         qCDebug(lcSlcanServerRaw) << "server ->" << line;
         it.key()->write(line);
+        d->peakQueued = qMax(d->peakQueued, it->throttle->queued());
         ++count;
     }
     return count;
@@ -145,9 +170,15 @@ void SlcanServer::Private::accept()
     while (QTcpSocket *socket = server.nextPendingConnection()) {
         socket->setParent(q);
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        clients.insert(socket, {});
+        Client client;
+        client.throttle = new ClientThrottle(socket, limits);
+        clients.insert(socket, client);
         qCDebug(lcSlcanServer) << "slcan client connected from port" << socket->peerPort();
         QObject::connect(socket, &QTcpSocket::readyRead, q, [this, socket] { read(socket); });
+        QObject::connect(client.throttle, &ClientThrottle::resumed, q,
+                         [this, socket] { read(socket); });
+        QObject::connect(client.throttle, &ClientThrottle::stalled, q,
+                         [this, socket](qint64 queued, int ms) { drop(socket, queued, ms); });
         QObject::connect(socket, &QTcpSocket::disconnected, q, [this, socket] {
             if (clients.remove(socket))
                 Q_EMIT q->clientDisconnected();
@@ -160,9 +191,9 @@ void SlcanServer::Private::accept()
 void SlcanServer::Private::read(QTcpSocket *socket)
 {
     auto it = clients.find(socket);
-    if (it == clients.end())
-        return;
-    const QByteArray bytes = socket->readAll();
+    if (it == clients.end() || !it->throttle->mayRead())
+        return; // a paused client's requests wait in its socket and the kernel
+    const QByteArray bytes = socket->read(ClientThrottle::kReadSliceBytes);
     qCDebug(lcSlcanServerRaw) << "server <-" << bytes;
     // Answers first, frames to the device afterwards: a device that answers synchronously must
     // not overtake the transmit ack of the request it answers.
@@ -173,13 +204,32 @@ void SlcanServer::Private::read(QTcpSocket *socket)
             frames.append(m.frame);
         reply += answer(it.value(), m);
     }
-    if (!reply.isEmpty())
+    if (!reply.isEmpty()) {
         socket->write(reply);
+        peakQueued = qMax(peakQueued, it->throttle->queued());
+    }
     for (const QCanBusFrame &frame : std::as_const(frames)) {
         Q_EMIT q->frameReceived(frame);
         if (!clients.contains(socket))
             break; // the device closed the server from the slot
     }
+}
+
+void SlcanServer::Private::drop(QTcpSocket *socket, qint64 queued, int pausedMs)
+{
+    if (!clients.remove(socket))
+        return;
+    qCWarning(lcSlcanServer).noquote()
+        << QStringLiteral("slcan server: dropping client %1:%2: it has not read for %3 ms (%4 "
+                          "bytes queued)")
+               .arg(socket->peerAddress().toString())
+               .arg(socket->peerPort())
+               .arg(pausedMs)
+               .arg(queued);
+    socket->disconnect(q);
+    socket->abort();
+    socket->deleteLater();
+    Q_EMIT q->clientDisconnected();
 }
 
 // Spec 4.2, simulator recommendations.

@@ -5,8 +5,11 @@
 // "\r"; V, N and F get "V1013\r", "N0001\r", "F00\r"; a t/T/r/R frame gets the transmit ack
 // ("z\r"/"Z\r" by default) and is passed to the device through frameReceived(); anything it
 // cannot parse gets BEL. Device frames from send() go to every connected client (with a
-// timestamp for clients that sent Z1). Sockets use TCP_NODELAY.
+// timestamp for clients that sent Z1). Sockets use TCP_NODELAY. Every client is throttled
+// (ClientThrottle): one that does not read is paused, gets no device frames while its output
+// queue is full (they are counted in droppedFrames()), and is finally dropped.
 
+#include "clientthrottle.h"
 #include "core/result.h"
 
 #include <QCanBusFrame>
@@ -39,6 +42,12 @@ public:
     // Stops listening and drops every client.
     void close();
     int clientCount() const;
+    // Applies to clients that connect afterwards.
+    void setClientLimits(const ClientThrottle::Limits &limits);
+    // The longest output queue any client had so far, in bytes.
+    qint64 peakQueuedBytes() const;
+    // Device frames not sent to a client because its output queue was full.
+    qint64 droppedFrames() const;
 
     void setTransmitAck(TransmitAck ack);
     TransmitAck transmitAck() const;

@@ -13,6 +13,7 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
     , m_port(port)
 {
     m_connectTimer.setSingleShot(true);
+    m_socket.setReadBufferSize(kReadBufferBytes);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
         m_socket.abort();
         setClosed(Error(Error::Kind::Timeout,

@@ -8,12 +8,15 @@
 namespace db {
 
 // TCP client stream: non-blocking, TCP_NODELAY (request/response protocols must not wait for
-// Nagle or delayed ACKs), a connect timeout, and errors that name host and port.
+// Nagle or delayed ACKs), a connect timeout, and errors that name host and port. At most
+// kReadBufferBytes are taken from the socket per event-loop pass: a peer that floods waits in
+// TCP flow control instead of in this process's memory.
 class TcpStream : public ByteStream
 {
     Q_OBJECT
 public:
     static constexpr int kDefaultConnectTimeoutMs = 3000;
+    static constexpr qint64 kReadBufferBytes = 64 * 1024;
 
     TcpStream(const QString &host, quint16 port, QObject *parent = nullptr);
 

@@ -1,13 +1,20 @@
 // Level 3: SlcanServer over real loopback TCP (movingcap.md 4.2 simulator recommendations), and
-// SlcanBus over TcpStream against it.
+// SlcanBus over TcpStream against it, and both under floods: a client that never reads, a peer
+// that sends frames as fast as it can.
+#include "canopen/sdoclient.h"
 #include "transport/slcanbus.h"
 #include "transport/slcanserver.h"
 #include "transport/tcpstream.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
+
+#include <atomic>
+#include <future>
+#include <thread>
 
 using namespace db;
 
@@ -26,6 +33,8 @@ private Q_SLOTS:
     void requireOpen();
     void noDelayOnClientSockets();
     void slcanBusRoundTrip();
+    void clientThatDoesNotReadIsPausedAndDropped();
+    void frameFloodIsBoundedAndTimeoutsFireOnTime();
 
 private:
     QByteArray exchange(const QByteArray &request, qsizetype expectedBytes);
@@ -179,6 +188,121 @@ void TestSlcanServer::slcanBusRoundTrip()
     QSignalSpy closed(&bus, &CanBus::closed);
     m_server->close();
     QVERIFY(closed.wait(2000));
+}
+
+void TestSlcanServer::clientThatDoesNotReadIsPausedAndDropped()
+{
+    constexpr qint64 kLimit = 16 * 1024;
+    delete m_client;
+    m_server->setClientLimits({ kLimit, 1500 });
+    m_client = connectClient();
+    QVERIFY(m_client);
+    QTcpSocket *greedy = connectClient();
+    QVERIFY(greedy);
+    // The greedy client takes next to nothing from the kernel, whose buffers are small on both
+    // ends: the answers pile up in the server's process soon.
+    greedy->setReadBufferSize(16);
+    greedy->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, 4096);
+    for (QTcpSocket *socket : m_server->findChildren<QTcpSocket *>())
+        socket->setSocketOption(QAbstractSocket::SendBufferSizeSocketOption, 4096);
+    QSignalSpy gone(m_server, &SlcanServer::clientDisconnected);
+    greedy->write(QByteArray("t732105\r").repeated(60000)); // 120 kB of acks, never read
+    QTRY_VERIFY(m_server->peakQueuedBytes() > kLimit);
+
+    // Meanwhile the well-behaved client is served at once; device frames skip the greedy one.
+    QCOMPARE(exchange("V\r", 6), QByteArray("V1013\r"));
+    QCOMPARE(m_server->send(QCanBusFrame(0x732, QByteArray::fromHex("05"))), 1);
+    QCOMPARE(m_server->droppedFrames(), 1);
+    QByteArray line;
+    QTRY_COMPARE(line += m_client->readAll(), QByteArray("t732105\r"));
+
+    QVERIFY(gone.wait(5000));
+    QCOMPARE(m_server->clientCount(), 1);
+    QVERIFY2(m_server->peakQueuedBytes() <= 2 * kLimit,
+             qPrintable(QString::number(m_server->peakQueuedBytes())));
+    QCOMPARE(exchange("N\r", 6), QByteArray("N0001\r"));
+    delete greedy;
+}
+
+namespace {
+// A peer on its own thread that writes PDO frames as fast as loopback takes them.
+class Flooder
+{
+public:
+    Flooder()
+    {
+        std::promise<quint16> port;
+        auto listening = port.get_future();
+        m_thread = std::thread([this, &port] { run(port); });
+        m_port = listening.get();
+    }
+    ~Flooder()
+    {
+        m_stop = true;
+        m_thread.join();
+    }
+    quint16 port() const { return m_port; }
+    qint64 framesWritten() const { return m_frames; }
+
+private:
+    void run(std::promise<quint16> &port)
+    {
+        QTcpServer server;
+        server.listen(QHostAddress::LocalHost, 0);
+        port.set_value(server.serverPort());
+        if (!server.waitForNewConnection(5000))
+            return;
+        std::unique_ptr<QTcpSocket> socket(server.nextPendingConnection());
+        constexpr int kFramesPerChunk = 1000;
+        const QByteArray chunk = QByteArray("t18180102030405060708\r").repeated(kFramesPerChunk);
+        while (!m_stop && socket->state() == QAbstractSocket::ConnectedState) {
+            if (socket->bytesToWrite() < 4 * chunk.size()) {
+                socket->write(chunk);
+                m_frames += kFramesPerChunk;
+            }
+            socket->waitForBytesWritten(20);
+        }
+    }
+
+    std::thread m_thread;
+    quint16 m_port = 0;
+    std::atomic<bool> m_stop = false;
+    std::atomic<qint64> m_frames = 0;
+};
+} // namespace
+
+void TestSlcanServer::frameFloodIsBoundedAndTimeoutsFireOnTime()
+{
+    Flooder flooder;
+    SlcanBus bus(new TcpStream(QStringLiteral("127.0.0.1"), flooder.port()));
+    QSignalSpy warnings(&bus, &CanBus::warning);
+    QVERIFY(bus.openAndWait(2000).ok());
+    canopen::SdoClient sdo(&bus);
+    constexpr int kTimeoutMs = 1000;
+    sdo.setTimeoutMs(kTimeoutMs);
+    QTRY_VERIFY(flooder.framesWritten() > 100000); // the flood is on
+
+    QElapsedTimer clock;
+    clock.start();
+    qint64 finishedAfter = -1;
+    std::unique_ptr<Reply> reply(sdo.upload(5, { 0x1000, 0 }));
+    connect(reply.get(), &Reply::finished, this, [&] { finishedAfter = clock.elapsed(); });
+    QTRY_VERIFY_WITH_TIMEOUT(finishedAfter >= 0, 10000);
+    qInfo("SDO timeout of %d ms fired after %lld ms; %lld of %lld frames dropped, peak backlog "
+          "%lld bytes",
+          kTimeoutMs, finishedAfter, bus.droppedFrames(), flooder.framesWritten(),
+          qint64(bus.peakBacklogBytes()));
+    QCOMPARE(reply->error().kind(), Error::Kind::Timeout);
+    QVERIFY2(finishedAfter < kTimeoutMs * 3 / 2, qPrintable(QString::number(finishedAfter)));
+
+    QVERIFY(bus.droppedFrames() > 0);
+    QVERIFY2(bus.peakBacklogBytes() <= SlcanBus::kMaxBacklogBytes + slcan::kMaxLineLength + 1,
+             qPrintable(QString::number(bus.peakBacklogBytes())));
+    QTRY_VERIFY(!warnings.isEmpty());
+    const QString warning = warnings.last().at(0).toString();
+    QVERIFY2(warning.contains(QLatin1String("receive queue overflow: "))
+                 && warning.contains(QLatin1String("frames dropped")),
+             qPrintable(warning));
 }
 
 QTEST_GUILESS_MAIN(TestSlcanServer)

@@ -1,14 +1,20 @@
 // Level 3: the device-side RefGo server over real loopback TCP with a fake device handler:
 // byte-exact framing (movingcap.md 3.1, 3.8), split requests, refused requests, several
-// clients, and RefgoConnection end to end against it.
+// clients, and RefgoConnection end to end against it. Floods: a client that never reads its
+// answers, and a peer whose answer never ends.
 
 #include "awaitreply.h"
+#include "refgo/refgoclient.h"
 #include "refgo/refgoconnection.h"
 #include "refgo/refgoserver.h"
+#include "transport/tcpstream.h"
 
+#include <QElapsedTimer>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QtTest>
+
+#include <memory>
 
 using namespace db;
 using namespace db::refgo;
@@ -83,6 +89,9 @@ private Q_SLOTS:
     void severalClientsAreServedSeparately();
     void connectionReadsWritesAndCommandsOverLoopback();
     void connectionToClosedPortIsRefused();
+    void clientThatDoesNotReadIsPausedAndDropped();
+    void endlessAnswerIsTooLong_data();
+    void endlessAnswerIsTooLong();
 
 private:
     FakeDevice *m_device = nullptr;
@@ -247,6 +256,83 @@ void TstRefgoServer::connectionToClosedPortIsRefused()
     QCOMPARE(connection.lastError().kind(), Error::Kind::ConnectionRefused);
     QVERIFY(connection.lastError().message().contains(QString::number(port)));
     QCOMPARE(errors.size(), 1);
+}
+
+void TstRefgoServer::clientThatDoesNotReadIsPausedAndDropped()
+{
+    constexpr qint64 kLimit = 16 * 1024;
+    m_server->setClientLimits({ kLimit, 1500 });
+    Peer greedy(m_server->port());
+    QVERIFY(greedy.waitConnected());
+    QTRY_COMPARE(m_server->clientCount(), 1);
+    // The greedy client takes next to nothing from the kernel, whose buffers are small on both
+    // ends: the answers pile up in the server's process soon.
+    QObject::disconnect(&greedy.socket, &QTcpSocket::readyRead, nullptr, nullptr);
+    greedy.socket.setReadBufferSize(16);
+    greedy.socket.setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, 4096);
+    m_server->findChild<QTcpSocket *>()->setSocketOption(
+        QAbstractSocket::SendBufferSizeSocketOption, 4096);
+    greedy.send(QByteArray("TP\r").repeated(40000)); // 520 kB of answers, never read
+    QTRY_VERIFY(m_server->peakQueuedBytes() > kLimit);
+
+    // A well-behaved client is served within the client's normal timeout meanwhile.
+    Peer polite(m_server->port());
+    QVERIFY(polite.waitConnected());
+    polite.send("TP\r");
+    QTRY_COMPARE_WITH_TIMEOUT(polite.received, QByteArray("TP\r\n-3658\r\n>"),
+                              RefgoClient::kDefaultTimeoutMs);
+
+    QCOMPARE(m_server->clientCount(), 2);
+    QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 1, 5000); // the greedy one is dropped
+    QVERIFY2(m_server->peakQueuedBytes() <= 2 * kLimit,
+             qPrintable(QString::number(m_server->peakQueuedBytes())));
+    polite.send("TP\r");
+    QTRY_COMPARE(polite.received, QByteArray("TP\r\n-3658\r\n>").repeated(2));
+}
+
+void TstRefgoServer::endlessAnswerIsTooLong_data()
+{
+    QTest::addColumn<QByteArray>("chunk");
+    QTest::addColumn<bool>("endless");
+    QTest::newRow("10 MB line") << QByteArray("TP\r\n") + QByteArray(10 << 20, 'x') + "\r\n"
+                                << false;
+    QTest::newRow("endless data without a line end") << QByteArray(64 * 1024, 'y') << true;
+}
+
+void TstRefgoServer::endlessAnswerIsTooLong()
+{
+    QFETCH(QByteArray, chunk);
+    QFETCH(bool, endless);
+    QTcpServer peer;
+    QVERIFY(peer.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), peer.serverPort());
+    RefgoClient client(&stream);
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    stream.open();
+    QVERIFY(opened.wait(kWaitMs));
+    QTRY_VERIFY(peer.hasPendingConnections());
+    QTcpSocket *socket = peer.nextPendingConnection();
+    qint64 sent = 0;
+    // Writes whenever the link has taken the last chunk: as fast as the client reads.
+    const auto refill = [&] {
+        if ((endless || sent == 0) && socket->bytesToWrite() < chunk.size()) {
+            socket->write(chunk);
+            sent += chunk.size();
+        }
+    };
+    connect(socket, &QTcpSocket::bytesWritten, this, refill);
+    QElapsedTimer clock;
+    clock.start();
+    std::unique_ptr<Reply> reply(client.tellPosition());
+    refill();
+    QTRY_VERIFY_WITH_TIMEOUT(reply->isFinished(), kWaitMs);
+    QCOMPARE(reply->error().kind(), Error::Kind::Malformed);
+    QVERIFY2(reply->error().message().contains(QLatin1String("answer too long")),
+             qPrintable(reply->error().message()));
+    QVERIFY(clock.elapsed() < RefgoClient::kDefaultTimeoutMs); // the error, not the timeout
+    QTRY_VERIFY(sent > 2 * Framer::kMaxAnswerBytes);
+    QVERIFY(client.bufferedBytes() <= Framer::kMaxAnswerBytes);
+    socket->disconnect(this);
 }
 
 QTEST_GUILESS_MAIN(TstRefgoServer)
