@@ -1,5 +1,7 @@
 #include "csv.h"
 
+#include "core/printable.h"
+
 #include <QBuffer>
 #include <QCoreApplication>
 #include <QFile>
@@ -42,7 +44,8 @@ QByteArray numberText(double v)
 }
 
 // Comment values are "key: value" pairs separated by ';': a backslash escapes what would split
-// them ("\\;", "\\n", "\\r", "\\\\"); everything else (units such as "%") stays as it is.
+// them ("\\;", "\\n", "\\r", "\\\\") and, as "\\uNNNN", the control characters that would act on
+// a terminal showing the file (db::printable()); everything else (units such as "%") stays.
 QString escape(const QString &s)
 {
     QString out;
@@ -54,6 +57,8 @@ QString escape(const QString &s)
             out += QLatin1String("\\n");
         else if (ch == QLatin1Char('\r'))
             out += QLatin1String("\\r");
+        else if (!ch.isSurrogate() && !isPrintable(QStringView(&ch, 1)))
+            out += QStringLiteral("\\u%1").arg(ch.unicode(), 4, 16, QLatin1Char('0'));
         else
             out += ch;
     }
@@ -63,7 +68,7 @@ QString escape(const QString &s)
 QByteArray quoted(const QString &cell)
 {
     QByteArray text = cell.toUtf8();
-    if (!text.contains(',') && !text.contains('"') && !text.contains('\n'))
+    if (!text.contains(',') && !text.contains('"') && !text.contains('\n') && !text.contains('\r'))
         return text;
     return '"' + text.replace("\"", "\"\"") + '"';
 }
@@ -138,7 +143,7 @@ bool writeCsv(QIODevice &device, const Recording &rec, double t0, double t1)
     out += "# range: " + timeText(nanos(first)) + " .. " + timeText(nanos(last)) + " s\n";
     out += "time_s";
     for (const RecordedChannel &c : rec.channels)
-        out += ',' + quoted(c.info.label());
+        out += ',' + quoted(printable(c.info.label())); // for people; names are in "# channel:"
     out += '\n';
 
     // k-way merge on the integer nanosecond time: one row per distinct time stamp.

@@ -26,6 +26,15 @@ QStringList splitUnescaped(const QString &text)
     QStringList parts(1);
     for (qsizetype i = 0; i < text.size(); ++i) {
         const QChar ch = text[i];
+        if (ch == QLatin1Char('\\') && i + 5 < text.size() && text[i + 1] == QLatin1Char('u')) {
+            bool ok = false;
+            const uint code = text.mid(i + 2, 4).toUInt(&ok, 16);
+            if (ok) { // "\uNNNN": a control character the writer escaped
+                parts.last() += QChar(char16_t(code));
+                i += 5;
+                continue;
+            }
+        }
         if (ch == QLatin1Char('\\') && i + 1 < text.size()) {
             const QChar next = text[++i];
             parts.last() += next == QLatin1Char('n') ? QChar(QLatin1Char('\n'))

@@ -2,6 +2,8 @@
 
 #include "widgetstyle.h"
 
+#include "core/printable.h"
+
 #include <QApplication>
 #include <QClipboard>
 #include <QContextMenuEvent>
@@ -130,9 +132,9 @@ void LogConsole::appendLine(Level level, const QString &text)
     if (!document()->isEmpty())
         cursor.insertBlock();
     cursor.insertText(QTime::currentTime().toString(QStringLiteral("HH:mm:ss.zzz ")), timeFormat);
-    QString line = text;
-    line.replace(QLatin1Char('\n'), QLatin1Char(' '));
-    cursor.insertText(line, format);
+    // One entry, one line: lines quote device answers and file contents, whose control
+    // characters (and U+2029, a paragraph break to QTextDocument) are shown as escapes.
+    cursor.insertText(printable(text), format);
 
     if (atEnd)
         bar->setValue(bar->maximum());

@@ -2,6 +2,8 @@
 
 #include "widgetstyle.h"
 
+#include "core/printable.h"
+
 namespace db::widgets {
 
 QColor compareStatusColor(CompareStatus status)
@@ -161,17 +163,18 @@ QVariant ParamCompareModel::data(const QModelIndex &index, int role) const
         return tr("Not restorable: the file has no value, or the object is read-only or unknown");
     if (role != Qt::DisplayRole)
         return {};
+    // Names and string values come from the file and the device: shown escaped, one line.
     switch (column) {
     case Address:
         return r.address.toString();
     case Name:
-        return r.name;
+        return printable(r.name);
     case DeviceValue:
-        return valueText(r, 0);
+        return printable(valueText(r, 0));
     case FileValue:
-        return valueText(r, 1);
+        return printable(valueText(r, 1));
     case DefaultValue:
-        return valueText(r, 2);
+        return printable(valueText(r, 2));
     case Status:
         return compareStatusName(r.status);
     default:

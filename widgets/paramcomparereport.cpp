@@ -2,6 +2,8 @@
 
 #include "widgetstyle.h"
 
+#include "core/printable.h"
+
 #include <QApplication>
 #include <QClipboard>
 #include <QDialogButtonBox>
@@ -68,12 +70,12 @@ ParamCompareReport::ParamCompareReport(const RestoreReport &report, QWidget *par
             QStringLiteral("<br>") + tr("Stopped: %1").arg(report.error.toString().toHtmlEscaped());
     if (report.storeRequested) {
         text += QStringLiteral("<br>")
-            + (report.stored
-                   ? tr("Stored permanently (1010h).")
-                   : tr("Not stored permanently: %1").arg(report.storeReason.toHtmlEscaped()));
+            + (report.stored ? tr("Stored permanently (1010h).")
+                             : tr("Not stored permanently: %1")
+                                   .arg(printable(report.storeReason).toHtmlEscaped()));
     }
     for (const QString &note : report.notes)
-        text += QStringLiteral("<br>") + note.toHtmlEscaped();
+        text += QStringLiteral("<br>") + printable(note).toHtmlEscaped();
     headline->setText(text);
     style::setTextColor(headline, report.succeeded() ? QColor() : style::errorColor());
 
@@ -92,11 +94,12 @@ ParamCompareReport::ParamCompareReport(const RestoreReport &report, QWidget *par
         item->setForeground(0, outcomeColor(r.outcome));
         item->setText(1, r.address.toString());
         item->setFont(1, style::monospaceFont());
-        item->setText(2, r.name);
-        item->setText(3, codec::toText(r.type, r.value));
+        // Name, value and reason quote the file and the device: escaped, one line each.
+        item->setText(2, printable(r.name));
+        item->setText(3, printable(codec::toText(r.type, r.value)));
         item->setFont(3, style::monospaceFont());
-        item->setText(4, r.reason);
-        item->setToolTip(4, r.reason);
+        item->setText(4, printable(r.reason));
+        item->setToolTip(4, printable(r.reason));
         item->setData(0, Qt::UserRole, int(r.outcome));
     }
     m_rows->header()->resizeSection(0, 90);

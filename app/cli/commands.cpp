@@ -6,6 +6,7 @@
 #include "commands_params.h"
 #include "commands_record.h"
 
+#include "core/printable.h"
 #include "core/valuecodec.h"
 #include "refgo/refgoconnection.h"
 
@@ -120,12 +121,14 @@ int read(Context &c)
         : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
         : raw.toString();
+    // Strings come from the device (e.g. 1008h): escaped, so that one value stays one line.
     if (c.options.verbose) {
         c.out << target->address.toString() << ' '
-              << (target->def ? target->def->name : QStringLiteral("(unknown object)")) << " = "
-              << (target->def ? target->def->displayText(raw, format) : text) << Qt::endl;
+              << printable(target->def ? target->def->name : QStringLiteral("(unknown object)"))
+              << " = " << printable(target->def ? target->def->displayText(raw, format) : text)
+              << Qt::endl;
     } else {
-        c.out << text << Qt::endl;
+        c.out << printable(text) << Qt::endl;
     }
     return ExitOk;
 }
@@ -171,7 +174,7 @@ int refgo(Context &c)
     if (!result)
         return fail(c, result.error());
     for (const QString &line : result.value().toStringList())
-        c.out << line << Qt::endl;
+        c.out << printable(line) << Qt::endl;
     return ExitOk;
 }
 

@@ -9,6 +9,7 @@
 #include "canopen/pdoclient.h"
 #include "canopen/sdoclient.h"
 #include "core/dcfwriter.h"
+#include "core/printable.h"
 #include "transport/canbus.h"
 
 #include <QElapsedTimer>
@@ -115,10 +116,10 @@ int scan(Context &c)
     waitUntil([&] { return !scanner.isRunning(); }, 10 * c.options.requestTimeoutMs + 10000);
     const QList<NodeInfo> nodes = scanner.nodes();
     for (const NodeInfo &node : nodes) {
-        c.out << node.toString() << Qt::endl;
+        c.out << printable(node.toString()) << Qt::endl; // holds the device's 1008h/100Ah strings
         if (c.options.verbose) {
             for (const QString &problem : node.problems)
-                c.err << "  node " << node.id << ": " << problem << Qt::endl;
+                c.err << "  node " << node.id << ": " << printable(problem) << Qt::endl;
         }
     }
     if (c.options.verbose)
@@ -307,7 +308,8 @@ int pdo(Context &c)
         for (const PdoMappingEntry &e : config.entries) {
             const ObjectDef *def = conn->dictionary().find(e.address);
             c.out << "    " << e.address.toString() << " " << e.bits << " bits"
-                  << (def ? QStringLiteral("  %1").arg(def->name) : QString()) << Qt::endl;
+                  << (def ? QStringLiteral("  %1").arg(printable(def->name)) : QString())
+                  << Qt::endl;
         }
     }
     if (configs.isEmpty())

@@ -1,6 +1,7 @@
 #include "commands_description.h"
 
 #include "core/devicedescription.h"
+#include "core/printable.h"
 
 #include <QSet>
 
@@ -54,12 +55,15 @@ int edsCheck(Context &c)
         pdo += def.pdoMappable ? 1 : 0;
     }
     QTextStream &o = c.out;
-    o << "file:         " << path << Qt::endl;
+    // Everything but the counts is quoted from the file (or is its name): one line each.
+    o << "file:         " << printable(path) << Qt::endl;
     o << "format:       " << formatName(load.format) << Qt::endl;
-    o << "vendor:       " << id.vendorName << " (" << hex32(id.vendorId) << ')' << Qt::endl;
-    o << "product:      " << id.productName << " (" << hex32(id.productCode) << ')' << Qt::endl;
-    o << "revision:     " << id.revision << Qt::endl;
-    o << "file version: " << id.descriptionVersion << Qt::endl;
+    o << "vendor:       " << printable(id.vendorName) << " (" << hex32(id.vendorId) << ')'
+      << Qt::endl;
+    o << "product:      " << printable(id.productName) << " (" << hex32(id.productCode) << ')'
+      << Qt::endl;
+    o << "revision:     " << printable(id.revision) << Qt::endl;
+    o << "file version: " << printable(id.descriptionVersion) << Qt::endl;
     o << "objects:      " << indices.size() << " (" << dict.size() << " sub-objects)" << Qt::endl;
     o << "by type:      " << countsText(byType) << Qt::endl;
     o << "by access:    " << countsText(byAccess) << Qt::endl;
@@ -80,7 +84,7 @@ int edsCheck(Context &c)
         o << "type definitions: " << load.typeDefinitions << " (not loaded as objects)" << Qt::endl;
     o << "warnings:     " << load.warnings.size() << Qt::endl;
     for (const QString &w : load.warnings)
-        o << "warning: " << w << Qt::endl;
+        o << "warning: " << printable(w) << Qt::endl;
     return ExitOk;
 }
 

@@ -1,6 +1,7 @@
 #include "commands_params.h"
 
 #include "core/parameterrunner.h"
+#include "core/printable.h"
 
 #include <QEventLoop>
 #include <QFileInfo>
@@ -50,7 +51,7 @@ Result<ParameterSet> backupFrom(Context &c, Session &session, const QString &uri
     backup.start();
     loop.exec();
     for (const QString &warning : backup.warnings())
-        c.err << "warning: " << warning << Qt::endl;
+        c.err << "warning: " << printable(warning) << Qt::endl;
     return backup.result();
 }
 
@@ -85,8 +86,8 @@ int backup(Context &c)
         return fail(c, set.error());
     if (auto saved = set->save(c.output); !saved)
         return failFile(c, saved.error());
-    c.out << "backed up " << set->size() << " objects from " << set->source << " to " << c.output
-          << Qt::endl;
+    c.out << "backed up " << set->size() << " objects from " << printable(set->source) << " to "
+          << printable(c.output) << Qt::endl;
     return ExitOk;
 }
 
@@ -180,9 +181,10 @@ int diff(Context &c)
         if (!row.differs)
             continue;
         c.out << compareStatusName(row.status).leftJustified(8) << row.address.toString() << "  "
-              << row.name << ": " << row.valueText(0, format) << " | " << row.valueText(1, format);
+              << printable(row.name) << ": " << printable(row.valueText(0, format)) << " | "
+              << printable(row.valueText(1, format));
         if (!row.unit.isEmpty())
-            c.out << ' ' << row.unit;
+            c.out << ' ' << printable(row.unit);
         c.out << Qt::endl;
     }
     c.out << comparison.rows.size() << " objects: " << comparison.countsText() << Qt::endl;
@@ -199,11 +201,13 @@ int dump(Context &c)
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     qsizetype width = 0;
     for (const ParameterEntry &e : set->entries())
-        width = qMax(width, e.name.size());
+        width = qMax(width, printable(e.name).size());
     for (const ParameterEntry &e : set->entries()) {
         const ObjectDef *def = dict.find(e.address);
-        c.out << e.address.toString().leftJustified(8) << e.name.leftJustified(width) << " = "
-              << (def ? def->displayText(e.raw, format) : codec::toText(e.type, e.raw, format))
+        c.out << e.address.toString().leftJustified(8) << printable(e.name).leftJustified(width)
+              << " = "
+              << printable(def ? def->displayText(e.raw, format)
+                               : codec::toText(e.type, e.raw, format))
               << Qt::endl;
     }
     return ExitOk;

@@ -1,6 +1,8 @@
 // drivebench-cli: headless access to drives for scripts (README "CLI").
 #include "../common/protocols.h"
 #include "commands.h"
+#include "core/printable.h"
+#include "terminaldevice.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -8,13 +10,30 @@
 
 using namespace db;
 
+namespace {
+
+QtMessageHandler g_defaultHandler = nullptr;
+
+// --verbose logs the libraries' lines, which quote raw traffic: escaped like everything else.
+void printableMessages(QtMsgType type, const QMessageLogContext &context, const QString &message)
+{
+    g_defaultHandler(type, context, printable(message));
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    // Every line a command prints goes through TerminalDevice: no control character from a
+    // device or a file reaches the terminal raw, whichever print site it takes.
+    cli::TerminalDevice outDevice(stdout);
+    cli::TerminalDevice errDevice(stderr);
+    QTextStream out(&outDevice);
+    QTextStream err(&errDevice);
+    g_defaultHandler = qInstallMessageHandler(printableMessages);
 
     QString description = QCoreApplication::translate(
         "cli", "drivebench command line: read and write drive objects from scripts.\n\nCommands:");

@@ -1,6 +1,14 @@
 #include "error.h"
 
+#include "printable.h"
+
 namespace db {
+
+Error::Error(Kind kind, QString message, quint32 deviceCode)
+    : m_kind(kind)
+    , m_message(printable(message))
+    , m_deviceCode(deviceCode)
+{ }
 
 QString Error::kindName(Kind kind)
 {
@@ -47,7 +55,7 @@ QString Error::toString() const
 Error Error::prefixed(const QString &context) const
 {
     Error copy = *this;
-    copy.m_message = context + QStringLiteral(": ") + m_message;
+    copy.m_message = printable(context) + QStringLiteral(": ") + m_message;
     return copy;
 }
 

@@ -28,11 +28,10 @@ public:
     };
 
     Error() = default;
-    Error(Kind kind, QString message, quint32 deviceCode = 0)
-        : m_kind(kind)
-        , m_message(std::move(message))
-        , m_deviceCode(deviceCode)
-    { }
+    // The message is kept with its control characters escaped (printable(), one line): it
+    // often quotes a device's answer, a file's contents or a file name, and it ends up on a
+    // terminal, in the log console or in a report.
+    Error(Kind kind, QString message, quint32 deviceCode = 0);
 
     Kind kind() const { return m_kind; }
     bool isError() const { return m_kind != Kind::None; }
@@ -44,7 +43,8 @@ public:
     QString toString() const;
     static QString kindName(Kind kind);
 
-    // A copy with context put in front of the message ("reading 6041:0: ...").
+    // A copy with context put in front of the message ("reading 6041:0: ..."), the context
+    // escaped like the message.
     Error prefixed(const QString &context) const;
 
     friend bool operator==(const Error &, const Error &) = default;

@@ -1,6 +1,7 @@
 // ParameterRestore: running the plan (write, read back, store) and the report text.
 
 #include "parameterrunner_p.h"
+#include "printable.h"
 
 #include <QTimer>
 
@@ -324,6 +325,10 @@ QString RestoreReport::summary() const
                          : storeReason);
     for (const QString &note : notes)
         lines << QObject::tr("note: %1").arg(note);
+    // Names, values and reasons come from the set's file and the device: each line stays one
+    // line, without control characters.
+    for (QString &line : lines)
+        line = printable(line);
     return lines.join(QLatin1Char('\n'));
 }
 

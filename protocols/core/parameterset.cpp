@@ -1,4 +1,5 @@
 #include "parameterset.h"
+#include "printable.h"
 
 #include <QFile>
 #include <QSaveFile>
@@ -17,7 +18,8 @@ bool lessByAddress(const ParameterEntry &e, ObjectAddress a)
 }
 
 // Strings go in double quotes with C-style escapes for the characters that would break a line
-// or the quoting; everything else (UTF-8) is written as it is.
+// or the quoting, and \xNN / \uNNNN for the other control characters, which would act on a
+// terminal showing the file; everything else (UTF-8) is written as it is.
 QString quoted(const QString &text)
 {
     QString out;
@@ -41,7 +43,12 @@ QString quoted(const QString &text)
             out += QLatin1String("\\t");
             break;
         default:
-            out += c;
+            if (c.isSurrogate() || isPrintable(QStringView(&c, 1)))
+                out += c;
+            else if (c.unicode() < 0x80)
+                out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+            else
+                out += QStringLiteral("\\u%1").arg(c.unicode(), 4, 16, QLatin1Char('0'));
         }
     }
     out += QLatin1Char('"');

@@ -40,8 +40,10 @@ struct ParameterEntry
 //   end                                 <- end marker; a file without it is truncated
 //
 // Strings are double-quoted with \" \\ \n \t \r escapes, so names with spaces, commas and quotes
-// are safe. Value text is codec::toText (decimal; strings quoted, bytes as quoted hex). Lines
-// starting with '#' after the first line and blank lines are ignored.
+// are safe; other control characters (C0, DEL, C1, bidi overrides, U+2028/9: what
+// db::printable() escapes) are written as \xNN or \uNNNN, so that the file can be shown on a
+// terminal and read back to the same text. Value text is codec::toText (decimal; strings quoted,
+// bytes as quoted hex). Lines starting with '#' after the first line and blank lines are ignored.
 class ParameterSet
 {
 public:

@@ -5,6 +5,9 @@
 
 #include <QSet>
 
+#include <algorithm>
+#include <cctype>
+
 namespace db {
 
 namespace {
@@ -17,7 +20,8 @@ struct Token
     bool quoted = false;
 };
 
-// Splits a line into bare words and "quoted strings" (with \" \\ \n \r \t escapes).
+// Splits a line into bare words and "quoted strings" (with \" \\ \n \r \t \xNN \uNNNN
+// escapes).
 Result<QList<Token>> tokenize(const QString &line)
 {
     QList<Token> tokens;
@@ -60,6 +64,23 @@ Result<QList<Token>> tokenize(const QString &line)
                 case '\\':
                     token.text += e;
                     break;
+                case 'x':
+                case 'u': {
+                    const qsizetype digits = e == QLatin1Char('x') ? 2 : 4;
+                    const QString hex = line.mid(i, digits);
+                    bool ok =
+                        hex.size() == digits && std::all_of(hex.begin(), hex.end(), [](QChar h) {
+                            return h.unicode() < 0x80 && std::isxdigit(h.unicode());
+                        });
+                    const uint code = ok ? hex.toUInt(&ok, 16) : 0;
+                    if (!ok)
+                        return Error(
+                            Error::Kind::Malformed,
+                            QStringLiteral("'\\%1' needs %2 hex digits").arg(e).arg(digits));
+                    token.text += QChar(char16_t(code));
+                    i += digits;
+                    break;
+                }
                 default:
                     return Error(Error::Kind::Malformed,
                                  QStringLiteral("unknown escape '\\%1' in a quoted string").arg(e));

@@ -1,6 +1,7 @@
 // ParameterSet: the text format (round trip, odd names, corrupt/truncated/foreign files),
 // defaults from a description, and the comparison with its counts.
 #include "core/parameterset.h"
+#include "core/printable.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -130,6 +131,9 @@ void TestParameterSet::oddNamesSurvive_data()
     QTest::newRow("hash") << QStringLiteral("# not a comment");
     QTest::newRow("unicode") << QStringLiteral("Drehmoment µ° – ok");
     QTest::newRow("empty") << QString();
+    QTest::newRow("terminal controls") << QString(u"\x1b[2J\x1b[H\a\b\0\x7f OK"_qs);
+    QTest::newRow("C1, bidi, separators") << QStringLiteral("\u009b2J \u202eKO\u2066 a\u2029b");
+    QTest::newRow("escape-like text") << QStringLiteral("\\x1b \\u202e \\0");
 }
 
 void TestParameterSet::oddNamesSurvive()
@@ -140,6 +144,8 @@ void TestParameterSet::oddNamesSurvive()
         { { 0x3000, 1 }, name, DataType::VisibleString, QVariant(QStringLiteral("x")), name });
     const QByteArray text = set.serialize();
     QCOMPARE(text.count('\n'), 10); // nothing in a name can break a line
+    // nor act on a terminal that shows the file
+    QVERIFY2(isPrintable(QString::fromUtf8(text), LineBreaks::Keep), text.constData());
     const auto back = ParameterSet::parse(text, QStringLiteral("mem"));
     QVERIFY2(back, qPrintable(back.error().toString()));
     QCOMPARE(back->entries().first().name, name);
@@ -216,6 +222,10 @@ void TestParameterSet::badFilesGiveAClearError_data()
                                     << QStringLiteral("f.dbp:3: unknown header line 'colour'");
     QTest::newRow("bad escape") << head + "source \"a\\qb\"\n"
                                 << QStringLiteral("f.dbp:3: unknown escape");
+    QTest::newRow("short hex escape") << head + "source \"a\\x1\"\n"
+                                      << QStringLiteral("f.dbp:3: '\\x' needs 2 hex digits");
+    QTest::newRow("bad hex escape") << head + "source \"\\u12g4\"\n"
+                                    << QStringLiteral("f.dbp:3: '\\u' needs 4 hex digits");
 }
 
 void TestParameterSet::badFilesGiveAClearError()

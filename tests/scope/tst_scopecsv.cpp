@@ -1,6 +1,7 @@
 // Level 1: CSV export/import of recordings: exact round trip of values, times, gaps, scaling and
 // metadata; time ranges; rows for channels sampled at different times; corrupt input with the
 // line number; atomic file writes.
+#include "core/printable.h"
 #include "scope/csv.h"
 
 #include <QTemporaryDir>
@@ -89,6 +90,27 @@ private Q_SLOTS:
                      rec.channels[c].buffer.lostAtSource());
         }
         // Writing it again gives the same bytes.
+        QCOMPARE(csv::toCsv(*back), text);
+    }
+
+    // Names and units come from device descriptions: their control characters neither break a
+    // row nor act on a terminal showing the file, and the names still read back exactly.
+    void controlCharactersInNames()
+    {
+        Recording rec = sample();
+        rec.channels[0].info.name = QString(u"Pos\x1b[2J\rOK\n,\0\u009b\u202e"_qs);
+        rec.channels[1].info.unit = QStringLiteral("m\u2029A\x07");
+        rec.mode = QStringLiteral("single\x1b[31m");
+        const QByteArray text = csv::toCsv(rec);
+        QVERIFY2(isPrintable(QString::fromUtf8(text), LineBreaks::Keep), text.constData());
+        QVERIFY2(text.contains("\ntime_s,\"6064:0 Pos\\x1b[2J\\rOK\\n,\\0\\u009b\\u202e\",\"6078:0 "),
+                 text.constData());
+        QCOMPARE(text.count('\n'), csv::toCsv(sample()).count('\n'));
+        const auto back = csv::fromCsv(text);
+        QVERIFY2(back.ok(), qPrintable(back.error().toString()));
+        QCOMPARE(back->mode, rec.mode);
+        for (int c = 0; c < 2; ++c)
+            QCOMPARE(back->channels[c].info, rec.channels[c].info);
         QCOMPARE(csv::toCsv(*back), text);
     }
 

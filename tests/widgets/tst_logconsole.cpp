@@ -33,6 +33,21 @@ private Q_SLOTS:
         QVERIFY(colourAtEnd(0) != colourAtEnd(2));
     }
 
+    // Lines quote device answers: an ESC sequence, CR, NUL, a bidi override or a paragraph
+    // separator must neither act nor start a line of its own, and stays visible as an escape.
+    void controlCharactersAreEscaped()
+    {
+        LogConsole console;
+        console.warning(QString(u"< \x1b[2J\rOK\u202eKO\0\u0085 x\u2029ERROR y\nz"_qs));
+        QCOMPARE(console.lineCount(), 1);
+        const QString text = console.toPlainText();
+        QVERIFY2(text.endsWith(u" < \\x1b[2J\\rOK\\u202eKO\\0\\u0085 x\\u2029ERROR y\\nz"_qs),
+                 qPrintable(text));
+        console.info(u"Drehzahl 3000 min⁻¹, Temperatur 40 °C, Weg 12 µm, Größe"_qs);
+        QVERIFY(console.toPlainText().endsWith(
+            u" Drehzahl 3000 min⁻¹, Temperatur 40 °C, Weg 12 µm, Größe"_qs));
+    }
+
     void oldLinesAreDropped()
     {
         LogConsole console;
