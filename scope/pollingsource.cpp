@@ -108,6 +108,9 @@ void PollingSource::start(const QElapsedTimer &timeBase)
     m_timeBase = timeBase;
     m_delivered = 0;
     m_lost = 0;
+    m_failed = 0;
+    m_lastReadError = Error();
+    m_unanswered = {};
     m_lastServed = -1;
     m_running = true;
     Q_EMIT runningChanged(true);
@@ -129,6 +132,20 @@ void PollingSource::stop()
         return;
     m_running = false;
     m_wakeup.stop();
+    const double now = nowS();
+    m_unanswered =
+        m_inFlight ? Unanswered { m_inFlightChannel, now - m_inFlightSinceS } : Unanswered {};
+    for (int i = 0; i < m_entries.size(); ++i) {
+        Entry &e = m_entries[i];
+        const double period = e.info.sourceRateMs * 1e-3;
+        if (period <= 0 || e.nextDue > now)
+            continue;
+        if (const auto missed = qint64(std::floor((now - e.nextDue) / period)); missed > 0) {
+            m_lost += missed;
+            e.nextDue += double(missed) * period;
+            Q_EMIT samplesLost(i, missed);
+        }
+    }
     if (m_inFlight) {
         // We own the reply; the engine copes with a reply deleted early and drops its answer.
         m_inFlight->disconnect(this);
@@ -181,6 +198,7 @@ void PollingSource::pump()
     }
     m_lastServed = pick;
     m_inFlightChannel = pick;
+    m_inFlightSinceS = now;
     m_inFlight = m_connection->read(e.info.address);
     connect(m_inFlight.data(), &Reply::finished, this, &PollingSource::onReply);
 }
@@ -209,6 +227,11 @@ void PollingSource::onReply()
         return;
     }
     // A failed read (device error, timeout, garbage, non-number): one lost sample, a gap.
+    ++m_failed;
+    const QString reading = tr("reading %1").arg(m_entries[channel].info.id);
+    m_lastReadError = reply->ok()
+        ? Error(Error::Kind::Malformed, tr("%1: the answer is not a number").arg(reading))
+        : reply->error().prefixed(reading);
     ++m_lost;
     Q_EMIT samplesLost(channel, 1);
     pump();

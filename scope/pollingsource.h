@@ -18,8 +18,12 @@ namespace db::scope {
 // got its sample. Rate 0 channels never lose samples that way.
 // Timestamps: the time base's elapsed time when the reply ARRIVES (the value is at most one
 // round trip old).
+// stop() counts the periods that passed completely without a read as lost too (a read that
+// has been waiting for its answer for three periods has cost two samples already), so that a
+// source whose reads never come back does not end with "zero lost".
 // Errors: a failed read (device error, timeout, malformed answer) counts one lost sample and
-// the channel's next sample starts a gap; the connection leaving Connected stops the source with
+// the channel's next sample starts a gap; failedCount() and lastReadError() keep them apart from
+// periods missed because the link is slow. The connection leaving Connected stops the source with
 // errorOccurred(Disconnected). start() on a connection that is not connected fails the same way.
 // Values that are not numbers (strings, domains) are rejected by addChannel().
 class PollingSource : public TraceSource
@@ -49,6 +53,17 @@ public:
     // Totals since start() (for benchmarks and the CLI summary).
     qint64 deliveredCount() const { return m_delivered; }
     qint64 lostCount() const { return m_lost; }
+    // Reads that failed (each also one lost sample) and the cause of the last one (no error when
+    // none failed).
+    qint64 failedCount() const { return m_failed; }
+    const Error &lastReadError() const { return m_lastReadError; }
+    struct Unanswered
+    {
+        int channel = -1; // -1: no read was in flight at stop()
+        double waitedS = 0; // how long it had waited for its answer
+    };
+    // The read that was still waiting for its answer when the source last stopped.
+    Unanswered unansweredAtStop() const { return m_unanswered; }
 
 private:
     struct Entry
@@ -68,10 +83,14 @@ private:
     QTimer m_wakeup; // fires when the next channel is due and the link is idle
     QPointer<Reply> m_inFlight;
     int m_inFlightChannel = -1;
+    double m_inFlightSinceS = 0;
     int m_lastServed = -1;
     bool m_running = false;
     qint64 m_delivered = 0;
     qint64 m_lost = 0;
+    qint64 m_failed = 0;
+    Error m_lastReadError;
+    Unanswered m_unanswered;
 };
 
 } // namespace db::scope

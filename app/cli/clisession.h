@@ -18,6 +18,7 @@ enum ExitCode {
     ExitTimeout = 4, // no answer within the time limit
     ExitMalformed = 5, // the device's answer breaks the protocol
     ExitDeviceError = 6, // the device refused the request
+    ExitSignalBase = 128, // + the signal's number: stopped by SIGINT (130) or SIGTERM (143)
 };
 
 int exitCodeFor(const Error &error);

@@ -1,16 +1,18 @@
 #include "commands_record.h"
 
 #include "commands_record_pdo.h"
-#include "scope/csv.h"
+#include "commands_record_result.h"
 #include "scope/pdodiscovery.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
+#include "stopsignals.h"
 
 #include <QEventLoop>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace db::cli {
 
@@ -149,14 +151,6 @@ int timerMs(double seconds)
     return int(std::min(std::ceil(seconds * 1000), 2.0e9));
 }
 
-qint64 totalLost(const scope::Recorder &r)
-{
-    qint64 n = 0;
-    for (int i = 0; i < r.channelCount(); ++i)
-        n += r.buffer(i).lostAtSource();
-    return n;
-}
-
 } // namespace
 
 QList<QCommandLineOption> recordOptions()
@@ -210,6 +204,7 @@ int record(Context &c)
         return fail(c, opened.error());
     std::unique_ptr<scope::TraceSource> source;
     scope::PdoSource *pdoSource = nullptr;
+    scope::PollingSource *pollingSource = nullptr;
     scope::PdoChannelPlan plan;
     if (s.pdo) {
         auto made =
@@ -224,6 +219,7 @@ int record(Context &c)
             if (auto added = polling->addChannel(address, s.rateMs); !added)
                 return fail(c, added.error());
         }
+        pollingSource = polling.get();
         source = std::move(polling);
     }
     scope::Recorder recorder;
@@ -278,6 +274,22 @@ int record(Context &c)
     });
     if (pdoSource)
         firstPdo.start(firstPdoMs);
+    // Ctrl-C and SIGTERM end the recording like --duration does: what was recorded is written.
+    int stopSignal = 0;
+    StopSignals stopSignals;
+    QObject::connect(&stopSignals, &StopSignals::stopRequested, &recorder, [&](int received) {
+        if (recorder.isRunning()) {
+            stopSignal = received;
+            recorder.stop();
+        }
+    });
+    // On stderr: stdout stays the summary that scripts read.
+    bool arriving = false;
+    QObject::connect(source.get(), &scope::TraceSource::samplesReady, &loop, [&] {
+        if (!std::exchange(arriving, true))
+            c.err << "recording: samples arriving -> " << c.output
+                  << " (Ctrl-C stops and writes what was recorded)" << Qt::endl;
+    });
     recorder.start();
     if (recorder.isRunning()) {
         if (!s.trigger.isEmpty())
@@ -285,42 +297,14 @@ int record(Context &c)
                   << Qt::endl;
         loop.exec();
     }
-    if (pdoSource && pdoSource->framesSeen() == 0 && !failure.isError())
+    const double elapsedS = recorder.now();
+    if (pdoSource && pdoSource->framesSeen() == 0 && !failure.isError() && stopSignal == 0)
         return fail(
             c,
             noPdoError(c, session.connection(), plan, std::min(firstPdoMs, deadline.interval())));
-    if (triggerTimedOut)
-        return fail(c,
-                    Error(Error::Kind::Timeout,
-                          QStringLiteral("trigger %1 did not fire within %2 s; nothing written")
-                              .arg(s.trigger)
-                              .arg(s.waitS)));
-    const scope::Recording rec = recorder.recording();
-    if (failure.isError() && rec.isEmpty())
-        return fail(c, failure);
-    if (auto saved = scope::csv::save(c.output, rec); !saved)
-        return fail(c, saved.error());
-    qint64 samples = 0;
-    for (const scope::RecordedChannel &ch : rec.channels)
-        samples += ch.buffer.size();
-    const qint64 lost = totalLost(recorder);
-    c.out << "recorded " << samples << " samples of " << rec.channels.size() << " objects over "
-          << QString::number(rec.endTime() - rec.startTime(), 'f', 3) << " s";
-    if (rec.hasTriggerTime())
-        c.out << ", triggered at " << QString::number(rec.triggerTime, 'f', 6) << " s";
-    c.out << ", " << lost << " lost -> " << c.output << Qt::endl;
-    if (failure.isError())
-        return fail(
-            c,
-            failure.prefixed(QStringLiteral("recording stopped early (%1 written)").arg(c.output)));
-    if (lost > 0) {
-        c.err << "drivebench-cli: " << lost << " samples were lost ("
-              << (pdoSource ? "PDOs missed their expected period"
-                            : "the link is slower than --rate-ms asks")
-              << "); gaps are marked in " << c.output << Qt::endl;
-        return ExitFailure;
-    }
-    return ExitOk;
+    return finishRecording(c,
+                           { recorder, pollingSource, elapsedS, failure, stopSignal,
+                             triggerTimedOut, s.trigger, s.waitS });
 }
 
 } // namespace db::cli

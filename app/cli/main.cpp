@@ -44,7 +44,8 @@ int main(int argc, char *argv[])
     description += QCoreApplication::translate(
         "cli",
         "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
-        "answer, 6 device error.");
+        "answer, 6 device error, 128 + N stopped by signal N (record: 130 Ctrl-C, 143 "
+        "SIGTERM).");
 
     QCommandLineParser parser;
     parser.setApplicationDescription(description);

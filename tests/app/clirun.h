@@ -3,10 +3,12 @@
 // Shared by the command-line tests: run a tool with a time limit, and start drivebench-sim and
 // read the ports it announces. Header-only; every wait is bounded.
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
 
 namespace db::test {
 
@@ -26,6 +28,36 @@ inline CliRun runProgram(const QString &program, const QStringList &args, int ti
     clock.start();
     p.start(program, args);
     if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
+    }
+    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
+             QString::fromUtf8(p.readAllStandardOutput()),
+             QString::fromUtf8(p.readAllStandardError()), clock.elapsed() };
+}
+
+// Like runProgram, but the caller's event loop keeps turning while the program runs, so that
+// peers living in the test process (testpeers.h) can serve it.
+inline CliRun runServing(const QString &program, const QStringList &args, int timeoutMs)
+{
+    QProcess p;
+    QEventLoop loop;
+    QTimer limit;
+    limit.setSingleShot(true);
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QObject::connect(&p, &QProcess::errorOccurred, &loop, [&](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart)
+            loop.quit();
+    });
+    QObject::connect(&limit, &QTimer::timeout, &loop, &QEventLoop::quit);
+    QElapsedTimer clock;
+    clock.start();
+    p.start(program, args);
+    limit.start(timeoutMs);
+    if (p.state() != QProcess::NotRunning)
+        loop.exec();
+    if (p.state() != QProcess::NotRunning) {
         p.kill();
         p.waitForFinished();
         return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };

@@ -8,6 +8,7 @@
 #include "simulation/movingcapdrive.h"
 
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QtTest>
 
 using namespace db;
@@ -134,6 +135,35 @@ private Q_SLOTS:
         QCOMPARE(recorder.buffer(0).lostAtSource(), 0);
         QVERIFY(lost.count() >= 9);
         QCOMPARE(lost.at(0).at(0).toInt(), 1);
+        // Failed reads are told apart from periods missed on a slow link, with their cause.
+        QCOMPARE(source.failedCount(), recorder.buffer(1).lostAtSource());
+        QCOMPARE(source.lastReadError().kind(), Error::Kind::DeviceError);
+        QVERIFY2(source.lastReadError().message().contains(QLatin1String("2FFF:0")),
+                 qPrintable(source.lastReadError().toString()));
+    }
+
+    void unansweredReadCountsItsPeriodsAtStop()
+    {
+        QTcpServer silent; // accepts, never answers: the first read waits for its time limit
+        QVERIFY(silent.listen(QHostAddress::LocalHost, 0));
+        m_connection = connectTo(QStringLiteral("refgo://127.0.0.1:%1").arg(silent.serverPort()));
+        QVERIFY(m_connection);
+        PollingSource source(m_connection.get());
+        QVERIFY(source.addChannel({ 0x6064, 0 }, 10).ok());
+        Recorder recorder;
+        recorder.addSource(&source);
+        recorder.start();
+        QElapsedTimer waiting;
+        waiting.start();
+        QTRY_VERIFY(waiting.elapsed() >= 200);
+        recorder.stop();
+        // 200 ms at 10 ms without a sample: not "zero lost".
+        QVERIFY2(source.lostCount() >= 15, qPrintable(QString::number(source.lostCount())));
+        QCOMPARE(recorder.buffer(0).lostAtSource(), source.lostCount());
+        QCOMPARE(recorder.buffer(0).size(), 0);
+        QCOMPARE(source.failedCount(), 0);
+        QCOMPARE(source.unansweredAtStop().channel, 0);
+        QVERIFY(source.unansweredAtStop().waitedS >= 0.19);
     }
 
     void rejectsWhatCannotBeSampled()
