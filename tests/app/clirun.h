@@ -3,10 +3,12 @@
 // Shared by the command-line tests: run a tool with a time limit, and start drivebench-sim and
 // read the ports it announces. Header-only; every wait is bounded.
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
 
 namespace db::test {
 
@@ -26,6 +28,32 @@ inline CliRun runProgram(const QString &program, const QStringList &args, int ti
     clock.start();
     p.start(program, args);
     if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
+    }
+    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
+             QString::fromUtf8(p.readAllStandardOutput()),
+             QString::fromUtf8(p.readAllStandardError()), clock.elapsed() };
+}
+
+// runProgram for a program that talks to a peer served by the test process itself: the event
+// loop runs while waiting, so the peer answers. At most timeoutMs.
+inline CliRun runProgramServing(const QString &program, const QStringList &args, int timeoutMs)
+{
+    QProcess p;
+    QEventLoop loop;
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QObject::connect(&p, &QProcess::errorOccurred, &loop, [&loop](QProcess::ProcessError e) {
+        if (e == QProcess::FailedToStart)
+            loop.quit();
+    });
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    QElapsedTimer clock;
+    clock.start();
+    p.start(program, args);
+    loop.exec();
+    if (p.state() != QProcess::NotRunning) {
         p.kill();
         p.waitForFinished();
         return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
