@@ -43,17 +43,21 @@ void ParamCompareView::refreshDevice()
 
 void ParamCompareView::onBackupFinished()
 {
-    const auto result = m_backup->result();
+    // A comparison may show a partly read device: the objects that could not be read show as
+    // missing on the device side, and the status names them. A run that stopped shows nothing.
+    const Error stopped = m_backup->error();
     const QStringList warnings = m_backup->warnings();
+    const ParameterSet read = m_backup->partialSet();
     setIdle();
-    if (!result) {
+    if (stopped.isError() || read.isEmpty()) {
         m_restoreOutcome.clear();
-        showStatus(tr("Reading the device failed: %1").arg(result.error().toString()),
-                   result.error().kind() == Error::Kind::Cancelled ? style::warningColor()
-                                                                   : style::errorColor());
+        const Error error = stopped.isError() ? stopped : m_backup->result().error();
+        showStatus(tr("Reading the device failed: %1").arg(error.toString()),
+                   error.kind() == Error::Kind::Cancelled ? style::warningColor()
+                                                          : style::errorColor());
         return;
     }
-    m_device = result.value();
+    m_device = read;
     compare();
     if (!m_restoreOutcome.isEmpty()) {
         showStatus(std::exchange(m_restoreOutcome, {}) + QLatin1Char(' ')

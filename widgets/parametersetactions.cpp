@@ -12,6 +12,10 @@
 
 namespace db::widgets {
 
+namespace {
+constexpr int kListedFailures = 5; // failed objects named in the message; the file has them all
+}
+
 ParameterSetActions::ParameterSetActions(QWidget *dialogParent, QObject *parent)
     : QObject(parent)
     , m_dialogParent(dialogParent)
@@ -103,14 +107,41 @@ void ParameterSetActions::backUp()
 
 void ParameterSetActions::backUpTo(const QString &path)
 {
-    runBackup(tr("Backing up parameters…"), [this, path](const ParameterSet &set) {
-        const auto saved = set.save(path);
+    runBackup(tr("Backing up parameters…"), [this, path](const ParameterBackup &backup) {
+        const auto result = backup.result();
+        if (!result) {
+            // Never replace a file with less than a complete set: what was read goes beside
+            // it, with a comment line per object that was not.
+            const QString partial = path + QStringLiteral(".partial");
+            QStringList comments { tr("partial backup: %1 of %2 objects could not be read; not "
+                                      "a complete set")
+                                       .arg(backup.failures().size())
+                                       .arg(backup.objectCount()) };
+            for (const QString &line : backup.warnings())
+                comments.append(QStringLiteral("failed ") + line);
+            const auto saved = backup.partialSet().save(partial, comments);
+            const QStringList failed = backup.warnings();
+            report(tr("Backup incomplete, %1 not written: %2\n%3\nFailed: %4%5")
+                       .arg(QDir::toNativeSeparators(path), result.error().toString(),
+                            saved ? tr("The %n parameter(s) read and the failures are in %1.",
+                                       nullptr, backup.partialSet().size())
+                                        .arg(QDir::toNativeSeparators(partial))
+                                  : saved.error().toString(),
+                            failed.mid(0, kListedFailures).join(QStringLiteral("; ")),
+                            failed.size() > kListedFailures
+                                ? tr(" and %n more", nullptr, int(failed.size() - kListedFailures))
+                                : QString()),
+                   false);
+            Q_EMIT backupFinished(false, path);
+            return;
+        }
+        const auto saved = result->save(path);
         if (!saved) {
             report(tr("Backup not saved: %1").arg(saved.error().toString()), false);
             Q_EMIT backupFinished(false, path);
             return;
         }
-        report(tr("Backed up %n parameter(s) to %1", nullptr, set.size())
+        report(tr("Backed up %n parameter(s) to %1", nullptr, result->size())
                    .arg(QDir::toNativeSeparators(path)),
                true);
         Q_EMIT backupFinished(true, path);
@@ -128,7 +159,14 @@ void ParameterSetActions::exportDcf()
 
 void ParameterSetActions::exportDcfTo(const QString &path)
 {
-    runBackup(tr("Reading parameters for the DCF…"), [this, path](const ParameterSet &set) {
+    runBackup(tr("Reading parameters for the DCF…"), [this, path](const ParameterBackup &backup) {
+        // A DCF that silently lacks values is as bad as a partial backup: none is written.
+        const auto result = backup.result();
+        if (!result) {
+            report(tr("DCF not written: %1").arg(result.error().toString()), false);
+            return;
+        }
+        const ParameterSet &set = result.value();
         DcfCommissioning commissioning;
         const ConnectionUri &uri = m_connection ? m_connection->uri() : ConnectionUri();
         if (auto node = uri.queryInt(QStringLiteral("node"), 1, 127);
@@ -145,7 +183,7 @@ void ParameterSetActions::exportDcfTo(const QString &path)
 }
 
 void ParameterSetActions::runBackup(const QString &title,
-                                    std::function<void(const ParameterSet &)> done)
+                                    std::function<void(const ParameterBackup &)> done)
 {
     if (!m_connection || !m_connection->isConnected()) {
         report(tr("Not connected"), false);
@@ -174,22 +212,12 @@ void ParameterSetActions::runBackup(const QString &title,
         if (m_progress)
             m_progress->close();
         updateActions();
-        const auto result = backup->result();
-        if (!result) {
-            report(result.error().kind() == Error::Kind::Cancelled
-                       ? tr("Backup cancelled; nothing was saved")
-                       : tr("Backup failed: %1").arg(result.error().toString()),
-                   false);
+        if (backup->error().kind() == Error::Kind::Cancelled) {
+            report(tr("Backup cancelled; nothing was saved"), false);
             Q_EMIT backupFinished(false, QString());
             return;
         }
-        if (!backup->warnings().isEmpty()) {
-            report(tr("%n object(s) could not be read and are not in the set: %1", nullptr,
-                      int(backup->warnings().size()))
-                       .arg(backup->warnings().mid(0, 3).join(QStringLiteral("; "))),
-                   false);
-        }
-        done(result.value());
+        done(*backup);
     });
     updateActions();
     m_progress->open();

@@ -48,6 +48,9 @@ public Q_SLOTS:
     void exportDcf();
 
     // Without asking (tests, and after the user confirmed): run, then report with message().
+    // Only a complete set is written to path; when any object could not be read, path stays
+    // as it was, the objects read go to path + ".partial" with a comment line per failure,
+    // and message() names the failed objects (backupFinished(false, path)).
     void backUpTo(const QString &path);
     void exportDcfTo(const QString &path);
     void storeNow();
@@ -61,9 +64,9 @@ Q_SIGNALS:
     void backupFinished(bool ok, const QString &path);
 
 private:
-    // Reads every storable object with a progress dialog, then calls done with the set
-    // (not called on error or cancel; those are reported here).
-    void runBackup(const QString &title, std::function<void(const ParameterSet &)> done);
+    // Reads every storable object with a progress dialog, then calls done with the finished
+    // runner, complete or not (not called on cancel, which is reported here).
+    void runBackup(const QString &title, std::function<void(const ParameterBackup &)> done);
     void writeSignature(Reply *reply, const QString &what);
     void report(const QString &text, bool ok);
     void updateActions();

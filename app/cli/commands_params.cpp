@@ -13,6 +13,7 @@ namespace {
 const QString kOnly = QStringLiteral("only");
 const QString kStore = QStringLiteral("store");
 const QString kNoVerify = QStringLiteral("no-verify");
+const QString kIgnoreIdentity = QStringLiteral("ignore-identity");
 
 Error usage(const QString &message)
 {
@@ -27,10 +28,21 @@ int failFile(Context &c, const Error &error)
     return exitCodeFor(error);
 }
 
+// What a backup run gave: every object read, and the error when that is not the complete set
+// (result() of the runner: any object failed, nothing read, or the run stopped).
+struct BackupRun
+{
+    ParameterSet read;
+    Error error;
+    QList<BackupFailure> failures;
+    int objects = 0; // objects asked for
+};
+
 // Opens uri in session and runs a backup to its end in a local event loop (the CLI is
 // synchronous by design). A device without a description has nothing to back up: usage error.
-Result<ParameterSet> backupFrom(Context &c, Session &session, const QString &uri,
-                                ParameterBackup::Scope scope)
+// Each object that could not be read is a "warning:" line on stderr.
+Result<BackupRun> backupFrom(Context &c, Session &session, const QString &uri,
+                             ParameterBackup::Scope scope)
 {
     if (auto opened = session.open(uri); !opened)
         return opened.error();
@@ -52,7 +64,59 @@ Result<ParameterSet> backupFrom(Context &c, Session &session, const QString &uri
     loop.exec();
     for (const QString &warning : backup.warnings())
         c.err << "warning: " << printable(warning) << Qt::endl;
-    return backup.result();
+    for (const BackupFailure &skipped : backup.skipped())
+        c.err << "skipped: " << printable(skipped.text()) << Qt::endl;
+    const auto result = backup.result();
+    return BackupRun { backup.partialSet(), result ? Error() : result.error(), backup.failures(),
+                       backup.objectCount() };
+}
+
+// The partial file of a backup that failed: what was read, and one comment line per object
+// that was not, so that it can be inspected, diffed and (deliberately) restored.
+QStringList partialComments(const BackupRun &run)
+{
+    QStringList lines {
+        QStringLiteral("partial backup: %1 of %2 objects could not be read; not a complete set")
+            .arg(run.failures.size())
+            .arg(run.objects),
+    };
+    for (const BackupFailure &f : run.failures)
+        lines.append(QStringLiteral("failed ") + f.text());
+    return lines;
+}
+
+// A set may only go to the product it was made for: names (when both are known) and the
+// product code the device reports in 1018h.2 must match. A set that does not know its product
+// code (the backup could not read it), or a device whose 1018h.2 cannot be read, cannot be
+// checked: refused, --ignore-identity overrides.
+Result<void> checkIdentity(Context &c, Session &session, const ParameterSet &set)
+{
+    const QString &file = c.args.at(1);
+    const QString &uri = c.args.at(0);
+    const DeviceIdentity &device = session.connection()->dictionary().identity;
+    if (!set.identity.productName.isEmpty() && !device.productName.isEmpty()
+        && set.identity.productName != device.productName)
+        return usage(QStringLiteral("%1 is a set for '%2', but %3 is a '%4'")
+                         .arg(file, set.identity.productName, uri, device.productName));
+    if (!set.productCodeKnown)
+        return usage(QStringLiteral("%1 does not record the product code (1018h.2 could not be "
+                                    "read when it was made), so it cannot be checked against "
+                                    "the device; give --ignore-identity to restore it anyway")
+                         .arg(file));
+    if (!session.connection()->dictionary().contains(ObjectAddress(0x1018, 2)))
+        return {};
+    const auto code = session.read({ 0x1018, 2 });
+    if (!code)
+        return code.error().prefixed(
+            QStringLiteral("cannot check the device's product code (1018h.2); "
+                           "--ignore-identity restores without the check"));
+    if (code->toULongLong() != set.identity.productCode)
+        return usage(
+            QStringLiteral("%1 is a set for product code 0x%2, but the device reports 0x%3")
+                .arg(file)
+                .arg(set.identity.productCode, 8, 16, QLatin1Char('0'))
+                .arg(code->toULongLong(), 8, 16, QLatin1Char('0')));
+    return {};
 }
 
 // A diff side is a URI when it names a scheme ("refgo://..."); anything else is a file.
@@ -73,6 +137,9 @@ QList<QCommandLineOption> paramsOptions()
                            QStringLiteral("restore: store to non-volatile memory afterwards "
                                           "(1010h sub 1 = \"save\") when every row verified.")),
         QCommandLineOption(kNoVerify, QStringLiteral("restore: do not read each object back.")),
+        QCommandLineOption(kIgnoreIdentity,
+                           QStringLiteral("restore: skip the product check (a set from another "
+                                          "product, or one whose product code is unknown).")),
     };
 }
 
@@ -81,14 +148,31 @@ int backup(Context &c)
     if (c.output.isEmpty())
         return fail(c, usage(QStringLiteral("backup needs the output file: -o FILE")));
     Session session(c.registry, c.options);
-    const auto set = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Storable);
-    if (!set)
-        return fail(c, set.error());
-    if (auto saved = set->save(c.output); !saved)
-        return failFile(c, saved.error());
-    c.out << "backed up " << set->size() << " objects from " << printable(set->source) << " to "
-          << printable(c.output) << Qt::endl;
-    return ExitOk;
+    const auto run = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Storable);
+    if (!run)
+        return fail(c, run.error());
+    if (!run->error.isError()) {
+        if (auto saved = run->read.save(c.output); !saved)
+            return failFile(c, saved.error());
+        c.out << "backed up " << run->read.size() << " objects from " << printable(run->read.source)
+              << " to " << printable(c.output) << Qt::endl;
+        return ExitOk;
+    }
+    // Never replace a file with less than a complete set: the output stays as it was, and what
+    // was read goes beside it with the failures listed.
+    QString where = QStringLiteral("nothing was written");
+    if (!run->failures.isEmpty()) {
+        const QString partial = c.output + QStringLiteral(".partial");
+        if (auto saved = run->read.save(partial, partialComments(*run)); saved)
+            where = QStringLiteral("the %1 objects read and the failures are in %2")
+                        .arg(run->read.size())
+                        .arg(partial);
+        else
+            where = saved.error().message();
+    }
+    return fail(c,
+                run->error.prefixed(
+                    QStringLiteral("backup incomplete, %1 not written (%2)").arg(c.output, where)));
 }
 
 int restore(Context &c)
@@ -97,6 +181,9 @@ int restore(Context &c)
     const auto set = ParameterSet::load(c.args.at(1));
     if (!set)
         return failFile(c, set.error());
+    if (set->isEmpty())
+        return fail(
+            c, usage(QStringLiteral("%1 holds no object: nothing to restore").arg(c.args.at(1))));
     QList<ObjectAddress> only;
     if (c.parser && c.parser->isSet(kOnly)) {
         for (const QString &part : c.parser->value(kOnly).split(u',', Qt::SkipEmptyParts)) {
@@ -115,25 +202,11 @@ int restore(Context &c)
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
-    const DeviceIdentity &device = session.connection()->dictionary().identity;
-    if (!set->identity.productName.isEmpty() && !device.productName.isEmpty()
-        && set->identity.productName != device.productName)
-        return fail(c,
-                    usage(QStringLiteral("%1 is a set for '%2', but %3 is a '%4'")
-                              .arg(c.args.at(1), set->identity.productName, c.args.at(0),
-                                   device.productName)));
-    // The product code the device reports (1018h.2) must match the set's, when both are known.
-    if (set->identity.productCode != 0
-        && session.connection()->dictionary().contains(ObjectAddress(0x1018, 2))) {
-        const auto code = session.read({ 0x1018, 2 });
-        if (code && code->toULongLong() != set->identity.productCode)
-            return fail(c,
-                        usage(QStringLiteral("%1 is a set for product code 0x%2, but the "
-                                             "device reports 0x%3")
-                                  .arg(c.args.at(1))
-                                  .arg(set->identity.productCode, 8, 16, QLatin1Char('0'))
-                                  .arg(code->toULongLong(), 8, 16, QLatin1Char('0'))));
-    }
+    if (c.parser && c.parser->isSet(kIgnoreIdentity))
+        c.err << "warning: --ignore-identity: the set's product is not checked against the device"
+              << Qt::endl;
+    else if (auto checked = checkIdentity(c, session, *set); !checked)
+        return fail(c, checked.error());
     ParameterRestore runner(session.connection());
     runner.setParameterSet(set.value());
     runner.setSelection(only);
@@ -159,6 +232,7 @@ int diff(Context &c)
 {
     QList<ParameterSet> sides;
     std::unique_ptr<ObjectDictionary> dictionary;
+    Error readError;
     for (const QString &side : c.args) {
         if (!isUri(side)) {
             auto loaded = ParameterSet::load(side);
@@ -168,12 +242,17 @@ int diff(Context &c)
             continue;
         }
         Session session(c.registry, c.options);
-        auto set = backupFrom(c, session, side, ParameterBackup::Scope::Storable);
-        if (!set)
-            return fail(c, set.error());
+        auto run = backupFrom(c, session, side, ParameterBackup::Scope::Storable);
+        if (!run)
+            return fail(c, run.error());
+        if (run->read.isEmpty())
+            return fail(c, run->error);
+        // Objects that could not be read would show as missing: compare the rest, then fail.
+        if (run->error.isError() && !readError.isError())
+            readError = run->error.prefixed(QStringLiteral("reading %1").arg(side));
         if (!dictionary)
             dictionary = std::make_unique<ObjectDictionary>(session.connection()->dictionary());
-        sides.append(set.value());
+        sides.append(run->read);
     }
     const ParameterComparison comparison = compareParameterSets(sides, c.args, dictionary.get());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
@@ -188,21 +267,23 @@ int diff(Context &c)
         c.out << Qt::endl;
     }
     c.out << comparison.rows.size() << " objects: " << comparison.countsText() << Qt::endl;
+    if (readError.isError())
+        return fail(c, readError);
     return comparison.identical() ? ExitOk : ExitFailure;
 }
 
 int dump(Context &c)
 {
     Session session(c.registry, c.options);
-    const auto set = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Readable);
-    if (!set)
-        return fail(c, set.error());
+    const auto run = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Readable);
+    if (!run)
+        return fail(c, run.error());
     const ObjectDictionary &dict = session.connection()->dictionary();
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     qsizetype width = 0;
-    for (const ParameterEntry &e : set->entries())
+    for (const ParameterEntry &e : run->read.entries())
         width = qMax(width, printable(e.name).size());
-    for (const ParameterEntry &e : set->entries()) {
+    for (const ParameterEntry &e : run->read.entries()) {
         const ObjectDef *def = dict.find(e.address);
         c.out << e.address.toString().leftJustified(8) << printable(e.name).leftJustified(width)
               << " = "
@@ -210,6 +291,9 @@ int dump(Context &c)
                                : codec::toText(e.type, e.raw, format))
               << Qt::endl;
     }
+    // What could be read is printed; the objects that could not are the warnings above.
+    if (run->error.isError())
+        return fail(c, run->error);
     return ExitOk;
 }
 

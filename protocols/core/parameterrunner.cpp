@@ -50,7 +50,36 @@ DataType typeOfValue(const QVariant &raw)
     }
 }
 
+// One line of a device's text: control characters as \xNN, at most kMaxLineChars characters.
+QString oneLine(const QString &text)
+{
+    constexpr qsizetype kMaxLineChars = 300;
+    QString out;
+    for (const QChar c : text) {
+        if (out.size() >= kMaxLineChars) {
+            out += QStringLiteral("...");
+            break;
+        }
+        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
+            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out;
+}
+
 } // namespace
+
+QString BackupFailure::text() const
+{
+    QString line = QStringLiteral("%1 %2: %3").arg(address.toString(), name, error.toString());
+    if (error.deviceCode() != 0)
+        line += QStringLiteral(" (device code 0x%1)")
+                    .arg(error.deviceCode(), 8, 16, QLatin1Char('0'))
+                    .toUpper()
+                    .replace(QLatin1String("0X"), QLatin1String("0x"));
+    return oneLine(line);
+}
 
 ParameterBackup::ParameterBackup(DeviceConnection *connection, QObject *parent)
     : QObject(parent)
@@ -78,8 +107,8 @@ void ParameterBackup::start()
     m_done = 0;
     m_set = ParameterSet();
     m_error = Error();
-    m_warnings.clear();
-    m_failed.clear();
+    m_failures.clear();
+    m_skipped.clear();
     m_timeoutsInRow = 0;
     if (!m_connection) {
         // finished() must not fire inside start().
@@ -99,14 +128,18 @@ void ParameterBackup::start()
     // The device's own vendor id and product code (1018h) name the set better than the
     // description's; read them first when the description has them and the scope does not.
     m_identityOnly.clear();
-    for (const ObjectAddress a : { kVendorId, kProductCode }) {
+    m_set.identity = dict.identity;
+    for (const ObjectAddress a : { kProductCode, kVendorId }) {
         const ObjectDef *def = dict.find(a);
         if (m_explicit.isEmpty() && def && def->readable() && !m_todo.contains(a)) {
             m_todo.prepend(a);
             m_identityOnly.insert(a);
+            // Unknown until the device has answered: the description's number is not the
+            // device's, and 0 would read as a product code.
+            (a == kVendorId ? m_set.vendorIdKnown : m_set.productCodeKnown) = false;
+            (a == kVendorId ? m_set.identity.vendorId : m_set.identity.productCode) = 0;
         }
     }
-    m_set.identity = dict.identity;
     m_set.source = m_connection->uri().toString();
     m_set.created = QDateTime::currentDateTimeUtc();
     QTimer::singleShot(0, this, [this] {
@@ -130,7 +163,45 @@ Result<ParameterSet> ParameterBackup::result() const
         return Error(Error::Kind::Busy, tr("the backup has not finished"));
     if (m_error.isError())
         return m_error;
-    return m_set;
+    if (m_failures.isEmpty() && m_set.isEmpty() && !m_skipped.isEmpty())
+        return Error(Error::Kind::NotSupported,
+                     tr("no object could be read (first: %1)").arg(m_skipped.first().text()));
+    if (m_failures.isEmpty() && m_set.isEmpty())
+        return Error(Error::Kind::NotSupported, tr("nothing to read: no readable object"));
+    if (m_failures.isEmpty())
+        return m_set;
+    // The most common cause names the class of the failure; the first on a tie.
+    QMap<Error::Kind, int> counts;
+    Error::Kind kind = m_failures.first().error.kind();
+    for (const BackupFailure &f : m_failures) {
+        const int n = ++counts[f.error.kind()];
+        if (n > counts.value(kind))
+            kind = f.error.kind();
+    }
+    const QString first = m_failures.first().text();
+    const QString message = m_set.isEmpty()
+        ? tr("no object could be read (%1 tried; first: %2)").arg(m_todo.size()).arg(first)
+        : tr("%1 of %2 objects could not be read (first: %3)")
+              .arg(m_failures.size())
+              .arg(m_todo.size())
+              .arg(first);
+    return Error(kind, message);
+}
+
+QStringList ParameterBackup::warnings() const
+{
+    QStringList out;
+    for (const BackupFailure &f : m_failures)
+        out.append(f.text());
+    return out;
+}
+
+QList<ObjectAddress> ParameterBackup::failedAddresses() const
+{
+    QList<ObjectAddress> out;
+    for (const BackupFailure &f : m_failures)
+        out.append(f.address);
+    return out;
 }
 
 void ParameterBackup::issueNext()
@@ -156,26 +227,41 @@ void ParameterBackup::onReply(Reply *reply)
         return;
     const ObjectAddress address = reply->address();
     const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
-    const Error error = reply->error();
+    // A read carries no user input: a value outside the object's type is the device's bad
+    // answer (the engines report it as OutOfRange, as for a value a user typed).
+    const Error error = reply->error().kind() == Error::Kind::OutOfRange
+        ? Error(Error::Kind::Malformed, reply->error().message(), reply->error().deviceCode())
+        : reply->error();
     if (error.isError()) {
         if (restore::isFatal(error)) {
+            fail(address, error);
             finish(error.prefixed(tr("reading %1").arg(address.toString())));
             return;
         }
         m_timeoutsInRow = error.kind() == Error::Kind::Timeout ? m_timeoutsInRow + 1 : 0;
+        if (m_scope == Scope::Readable && m_explicit.isEmpty()
+            && error.kind() == Error::Kind::NotSupported)
+            m_skipped.append({ address, def ? def->name : QString(), error });
+        else
+            fail(address, error);
         if (m_timeoutsInRow >= kMaxConsecutiveTimeouts) {
             finish(error.prefixed(
                 tr("the device stopped answering; reading %1").arg(address.toString())));
             return;
         }
-        m_failed.append(address);
-        m_warnings.append(
-            QStringLiteral("%1 %2: %3")
-                .arg(address.toString(), def ? def->name : QString(), error.toString()));
     } else if (m_identityOnly.contains(address)) {
         m_timeoutsInRow = 0;
-        (address == kVendorId ? m_set.identity.vendorId : m_set.identity.productCode) =
-            quint32(reply->value().toULongLong());
+        const bool vendor = address == kVendorId;
+        if (const auto code = codec::normalize(DataType::Unsigned32, reply->value())) {
+            (vendor ? m_set.identity.vendorId : m_set.identity.productCode) =
+                quint32(code->toULongLong());
+            (vendor ? m_set.vendorIdKnown : m_set.productCodeKnown) = true;
+        } else {
+            fail(address,
+                 Error(Error::Kind::Malformed,
+                       tr("the device answered an identity that is not a UNSIGNED32: %1")
+                           .arg(code.error().message())));
+        }
     } else {
         m_timeoutsInRow = 0;
         const DataType type = def ? def->type : typeOfValue(reply->value());
@@ -184,10 +270,11 @@ void ParameterBackup::onReply(Reply *reply)
             m_set.insert({ address, def ? def->name : QString(), type, raw.value(),
                            def ? def->unit : QString() });
         } else {
-            m_failed.append(address);
-            m_warnings.append(
-                QStringLiteral("%1 %2: %3")
-                    .arg(address.toString(), def ? def->name : QString(), raw.error().toString()));
+            // The device sent a value its own object cannot hold: a bad answer, not bad input.
+            fail(address,
+                 Error(Error::Kind::Malformed,
+                       tr("the device answered a value that is not a %1: %2")
+                           .arg(datatype::name(type), raw.error().message())));
         }
     }
     ++m_done;
@@ -195,12 +282,27 @@ void ParameterBackup::onReply(Reply *reply)
     issueNext();
 }
 
+void ParameterBackup::fail(ObjectAddress address, const Error &error)
+{
+    const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
+    m_failures.append({ address, def ? def->name : QString(), error });
+}
+
 void ParameterBackup::finish(const Error &error)
 {
     m_state = State::Finished;
     m_error = error;
-    if (error.isError())
-        m_set = ParameterSet(); // never hand out a partial set
+    if (error.kind() == Error::Kind::Cancelled) {
+        m_set = ParameterSet();
+    } else if (error.isError()) {
+        // The objects never answered are failures too, so that a partial file lists them all.
+        for (const QPointer<Reply> &reply : std::as_const(m_inFlight)) {
+            if (reply)
+                fail(reply->address(), error.prefixed(tr("not read")));
+        }
+        for (qsizetype i = m_next; i < m_todo.size(); ++i)
+            fail(m_todo.at(i), error.prefixed(tr("not read")));
+    }
     for (const QPointer<Reply> &reply : std::as_const(m_inFlight)) {
         if (reply) {
             reply->disconnect(this);

@@ -32,22 +32,38 @@ Reply *storeParameters(DeviceConnection *connection);
 Reply *restoreFactoryDefaults(DeviceConnection *connection);
 } // namespace parameters
 
+// One object a backup could not read, and why.
+struct BackupFailure
+{
+    ObjectAddress address;
+    QString name; // from the description; empty when it does not know the object
+    Error error;
+
+    // "6084:0 Profile deceleration: malformed answer: ...", one line (control characters as
+    // \xNN), for logs, stderr and the comment lines of a partial file.
+    QString text() const;
+};
+
 // Reads objects into a ParameterSet.
 //
-//   Idle --start()--> Reading --(all done)--> Finished (result ok)
-//                       |  read fails for one object -> warning, object skipped, continue
-//                       |  connection lost / not connected -> Finished (error)
+//   Idle --start()--> Reading --(all done)--> Finished
+//                       |  read fails for one object -> failure recorded, object skipped
+//                       |  connection lost / not connected / 2 timeouts in a row
+//                       |      -> Finished (error; the unread objects are failures too)
 //                       +--cancel()--> Finished (Error::Kind::Cancelled)
 //
 // finished() fires exactly once per start(): from the event loop, or inside cancel() (never
 // inside start()). A timeout skips one object like a device error; two in a row end the backup.
+// An answer that breaks the protocol or does not fit the object's type is a failure of kind
+// Malformed, whatever the layer that noticed it.
 class ParameterBackup : public QObject
 {
     Q_OBJECT
 public:
     enum class Scope {
         Storable, // every storable, readable object of the connection's dictionary (default)
-        Readable, // every readable object (the CLI's dump)
+        Readable, // every readable object (the CLI's dump); objects the connection cannot
+                  // carry (Error::Kind::NotSupported, e.g. strings over RefGo) are skipped()
     };
     Q_ENUM(Scope)
 
@@ -69,13 +85,28 @@ public:
     void cancel();
     bool isRunning() const { return m_state == State::Reading; }
 
-    // After finished(): the set, or the fatal error; never a partial set marked complete.
+    // After finished(): the complete set, or why there is none. Never a partial set: any
+    // failure (an object, the identity) makes it an error whose kind is the most common
+    // cause among the failures (the first on a tie), e.g. "3 of 203 objects could not be read
+    // (first: ...)"; so does a run that read no object at all, and a run that stopped (error()).
     // Identity: the dictionary's, with vendor id and product code as the device reports them in
     // 1018h.1/.2 (read first, when the description has them); source = the connection's URI.
     Result<ParameterSet> result() const;
-    // One line per object that could not be read ("2000:3 Foo: SDO abort 06020000 ...").
-    QStringList warnings() const { return m_warnings; }
-    QList<ObjectAddress> failedAddresses() const { return m_failed; }
+    // After finished(): every object that was read, whatever else failed (empty after a
+    // cancel). vendorIdKnown / productCodeKnown are false where 1018h could not be read.
+    ParameterSet partialSet() const { return m_set; }
+    // The error that stopped the run before its end (connection lost, Cancelled); None when
+    // every object was tried.
+    Error error() const { return m_error; }
+    // Every object that could not be read, in the order they were asked for; after a stop
+    // also those never asked for (with the stopping error).
+    QList<BackupFailure> failures() const { return m_failures; }
+    // Scope::Readable: the objects the connection cannot carry; neither read nor failed.
+    QList<BackupFailure> skipped() const { return m_skipped; }
+    int objectCount() const { return int(m_todo.size()); } // objects to read, 1018h included
+    // failures() as text lines (BackupFailure::text()).
+    QStringList warnings() const;
+    QList<ObjectAddress> failedAddresses() const;
 
 Q_SIGNALS:
     void progress(int done, int total);
@@ -86,6 +117,7 @@ private:
 
     void issueNext();
     void onReply(Reply *reply);
+    void fail(ObjectAddress address, const Error &error);
     void finish(const Error &error);
 
     QPointer<DeviceConnection> m_connection;
@@ -99,8 +131,8 @@ private:
     QList<QPointer<Reply>> m_inFlight;
     ParameterSet m_set;
     Error m_error;
-    QStringList m_warnings;
-    QList<ObjectAddress> m_failed;
+    QList<BackupFailure> m_failures;
+    QList<BackupFailure> m_skipped;
     QSet<ObjectAddress> m_identityOnly; // 1018h reads that fill the identity, not the set
     int m_timeoutsInRow = 0;
 };
@@ -138,7 +170,8 @@ struct RestoreReport
     QStringList notes; // e.g. "PDO 1400h left disabled (COB-ID bit 31 set)"
 
     int count(RestoreOutcome outcome) const;
-    // Every row Verified or Written, no fatal error, and the store done when requested.
+    // At least one row, every row Verified or Written, no fatal error, and the store done when
+    // requested.
     bool succeeded() const;
     // Multi-line text: counts, then which rows were written, failed (with reason), mismatched
     // and skipped (by address and name), then the store result and notes.
@@ -156,7 +189,9 @@ struct RestoreReport
 // write-only rows are Written without read-back. A failed row does not stop the run; a
 // connection loss or cancel() does (rows not yet written are Skipped). A PDO the runner had
 // disabled when it stopped is listed in the report's notes.
-// Store (1010h sub 1 = "save") runs only when requested and every row succeeded.
+// Store (1010h sub 1 = "save") runs only when requested and every row succeeded. A run with no
+// row (an empty set, or a selection none of whose addresses is in the set) writes nothing,
+// never stores, and ends with Error::Kind::InvalidArgument.
 //
 //   Idle --start()--> Writing <-> Verifying --> Storing --> Finished
 class ParameterRestore : public QObject

@@ -30,6 +30,14 @@ void ParameterRestore::start()
     QTimer::singleShot(0, this, [this] {
         if (m_state != State::Writing)
             return;
+        // An empty run must not look like a successful one, and must never store.
+        if (m_report.rows.isEmpty()) {
+            stopWithError(Error(Error::Kind::InvalidArgument,
+                                m_set.isEmpty()
+                                    ? tr("nothing to restore: the parameter set holds no object")
+                                    : tr("nothing to restore: no selected object is in the set")));
+            return;
+        }
         if (!m_connection || !m_connection->isConnected()) {
             stopWithError(Error(Error::Kind::Disconnected, tr("not connected")));
             return;
@@ -291,7 +299,7 @@ int RestoreReport::count(RestoreOutcome outcome) const
 
 bool RestoreReport::succeeded() const
 {
-    return !error.isError()
+    return !error.isError() && !rows.isEmpty()
         && count(RestoreOutcome::Verified) + count(RestoreOutcome::Written) == rows.size()
         && (!storeRequested || stored);
 }

@@ -61,6 +61,25 @@ QString hex32(quint32 v)
         + QString::number(v, 16).toUpper().rightJustified(8, QLatin1Char('0'));
 }
 
+// One line of text for a "# " comment: control characters (a NUL or CR a device sent) as
+// \xNN, at most kMaxCommentChars characters.
+QString commentText(const QString &text)
+{
+    constexpr qsizetype kMaxCommentChars = 400;
+    QString out;
+    for (const QChar c : text) {
+        if (out.size() >= kMaxCommentChars) {
+            out += QStringLiteral("...");
+            break;
+        }
+        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
+            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out;
+}
+
 bool isTextType(DataType type)
 {
     return datatype::isVariableLength(type);
@@ -110,7 +129,7 @@ bool ParameterSet::remove(ObjectAddress address)
     return true;
 }
 
-QByteArray ParameterSet::serialize() const
+QByteArray ParameterSet::serialize(const QStringList &comments) const
 {
     QString text;
     auto line = [&text](const QString &l) {
@@ -119,15 +138,20 @@ QByteArray ParameterSet::serialize() const
     };
     line(QString::fromLatin1(kMagic));
     line(QStringLiteral("format %1").arg(kFormatVersion));
-    line(QStringLiteral("vendor %1 %2").arg(hex32(identity.vendorId), quoted(identity.vendorName)));
+    const QString unknown = QStringLiteral("unknown");
+    line(QStringLiteral("vendor %1 %2")
+             .arg(vendorIdKnown ? hex32(identity.vendorId) : unknown, quoted(identity.vendorName)));
     line(QStringLiteral("product %1 %2")
-             .arg(hex32(identity.productCode), quoted(identity.productName)));
+             .arg(productCodeKnown ? hex32(identity.productCode) : unknown,
+                  quoted(identity.productName)));
     line(QStringLiteral("revision %1").arg(quoted(identity.revision)));
     line(QStringLiteral("description %1 %2")
              .arg(quoted(identity.descriptionFile), quoted(identity.descriptionVersion)));
     line(QStringLiteral("source %1").arg(quoted(source)));
     if (created.isValid())
         line(QStringLiteral("created %1").arg(created.toUTC().toString(Qt::ISODateWithMs)));
+    for (const QString &comment : comments)
+        line(QStringLiteral("# ") + commentText(comment));
     line(QStringLiteral("entries %1").arg(m_entries.size()));
     for (const ParameterEntry &e : m_entries) {
         const QString value = codec::toText(e.type, e.raw);
@@ -139,13 +163,13 @@ QByteArray ParameterSet::serialize() const
     return text.toUtf8();
 }
 
-Result<void> ParameterSet::save(const QString &path) const
+Result<void> ParameterSet::save(const QString &path, const QStringList &comments) const
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return Error(Error::Kind::Io,
                      QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
-    const QByteArray bytes = serialize();
+    const QByteArray bytes = serialize(comments);
     if (file.write(bytes) != bytes.size() || !file.commit())
         return Error(Error::Kind::Io,
                      QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));

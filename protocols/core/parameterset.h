@@ -29,7 +29,7 @@ struct ParameterEntry
 //   # drivebench parameter set          <- magic, first line
 //   format 1                            <- format version; newer versions are refused
 //   vendor 0x000002D6 "Fullmo"          <- identity: id + quoted name
-//   product 0x00000001 "MovingCap"
+//   product 0x00000001 "MovingCap"      <- "unknown" instead of the number: not read (below)
 //   revision "1.2"
 //   description "resources/devices/movingcap_eth.json" "1.0"   <- file + version
 //   source "refgo://127.0.0.1:10001"
@@ -51,6 +51,11 @@ public:
 
     // identity.descriptionFile / descriptionVersion name the description the set was read with.
     DeviceIdentity identity;
+    // False when a backup could not read the device's 1018h.1 / 1018h.2: identity.vendorId /
+    // productCode are then 0 and mean nothing, the file says "unknown" instead of a number, and
+    // a restore cannot check the product against the set.
+    bool vendorIdKnown = true;
+    bool productCodeKnown = true;
     QString source; // URI or file the values came from ("defaults" for defaults())
     QDateTime created; // UTC
 
@@ -70,9 +75,11 @@ public:
     bool remove(ObjectAddress address);
 
     // The text format above. Never fails for a set whose values are canonical raw values.
-    QByteArray serialize() const;
+    // comments go after the header as "# " lines (control characters escaped), which the
+    // loader skips: notes for people, e.g. the objects a partial backup could not read.
+    QByteArray serialize(const QStringList &comments = {}) const;
     // Atomic (QSaveFile): either the whole new file or the old one stays.
-    Result<void> save(const QString &path) const;
+    Result<void> save(const QString &path, const QStringList &comments = {}) const;
 
     // Errors name the origin and the line: "set.dbp:7: value 'x' is not a UNSIGNED16".
     // Kind Malformed for corrupt/truncated/foreign content, Io when the file cannot be read.

@@ -240,10 +240,16 @@ Result<void> Parser::header(const QList<Token> &t)
     if (key == QLatin1String("vendor") || key == QLatin1String("product")) {
         if (auto r = want(3); !r)
             return r;
-        const auto number = parseU32(t.at(1).text);
-        if (!number)
-            return error(number.error().message());
-        (key == QLatin1String("vendor") ? id.vendorId : id.productCode) = number.value();
+        const bool vendor = key == QLatin1String("vendor");
+        if (!t.at(1).quoted && t.at(1).text == QLatin1String("unknown")) {
+            (vendor ? m_set.vendorIdKnown : m_set.productCodeKnown) = false;
+            (vendor ? id.vendorId : id.productCode) = 0;
+        } else {
+            const auto number = parseU32(t.at(1).text);
+            if (!number)
+                return error(number.error().message());
+            (vendor ? id.vendorId : id.productCode) = number.value();
+        }
         (key == QLatin1String("vendor") ? id.vendorName : id.productName) = t.at(2).text;
     } else if (key == QLatin1String("revision")) {
         if (auto r = want(2); !r)

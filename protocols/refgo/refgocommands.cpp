@@ -23,6 +23,23 @@ Result<QString> singleLine(const QString &command, const QStringList &lines)
     return lines.first();
 }
 
+// The value field of an OR result line looks like a number but is not one: a control character
+// inside it, or digits beyond 64 bits. That is a broken answer; a missing field or a word
+// ("none") is the drive's way to give no value (spec 3.7 [R]).
+bool isBrokenNumber(const QString &line)
+{
+    const QString field = line.section(QLatin1Char(','), 2).trimmed();
+    if (field.isEmpty())
+        return false;
+    bool numeric = true;
+    for (const QChar c : field) {
+        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
+            return true;
+        numeric = numeric && QStringLiteral("0123456789abcdefABCDEF+-xXhH").contains(c);
+    }
+    return numeric;
+}
+
 Result<QVariant> decodeNone(const QStringList &)
 {
     return QVariant();
@@ -198,6 +215,8 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
             if (!line)
                 return line.error();
             const auto value = parseObjectRead(line.value());
+            if (!value && isBrokenNumber(line.value()))
+                return malformed(text, value.error().message());
             if (!value)
                 return Error(Error::Kind::DeviceError,
                              QStringLiteral("drive gave no value for '%1': %2")

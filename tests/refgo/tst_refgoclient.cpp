@@ -88,6 +88,8 @@ private Q_SLOTS:
     void objectReadWithoutValueIsDeviceError_data();
     void objectReadWithoutValueIsDeviceError();
     void objectReadAnswerForOtherObjectIsMalformed();
+    void objectReadWithBrokenNumberIsMalformed_data();
+    void objectReadWithBrokenNumberIsMalformed();
     void objectWriteOfTextIsRefused();
     void disconnectFailsPendingWithCloseError();
     void requestWhileClosedFailsAtOnce();
@@ -438,6 +440,22 @@ void TstRefgoClient::objectReadWithoutValueIsDeviceError()
     Reply *reply = m_client->objectRead({ 0x3511, 8 });
     m_stream->feed(rx);
     QCOMPARE(test::await(reply, kWaitMs).error().kind(), Error::Kind::DeviceError);
+}
+
+void TstRefgoClient::objectReadWithBrokenNumberIsMalformed_data()
+{
+    QTest::addColumn<QByteArray>("rx");
+    QTest::newRow("NUL inside") << QByteArray("OR3511,8\r\nOR3511,8,12") + '\0' + "34\r\n>";
+    QTest::newRow("beyond 64 bits")
+        << QByteArray("OR3511,8\r\nOR3511,8,99999999999999999999999\r\n>");
+}
+
+void TstRefgoClient::objectReadWithBrokenNumberIsMalformed()
+{
+    QFETCH(QByteArray, rx);
+    Reply *reply = m_client->objectRead({ 0x3511, 8 });
+    m_stream->feed(rx);
+    QCOMPARE(test::await(reply, kWaitMs).error().kind(), Error::Kind::Malformed);
 }
 
 void TstRefgoClient::objectReadAnswerForOtherObjectIsMalformed()

@@ -268,6 +268,46 @@ private Q_SLOTS:
         QTRY_VERIFY(!actions.isBusy() && actions.backUpAction()->isEnabled());
     }
 
+    // Parameters > Back Up… with objects that cannot be read: the good file stays, the objects
+    // read go to a .partial file, the message names the failed objects.
+    void backupWithFailedReadsKeepsTheFile()
+    {
+        auto f = fake();
+        QTRY_VERIFY(f->isConnected());
+        widgets::ParameterSetActions actions(nullptr);
+        actions.setConnection(f.get());
+        QSignalSpy finished(&actions, &widgets::ParameterSetActions::backupFinished);
+        const QString path = m_dir.filePath(QStringLiteral("kept.dbp"));
+        actions.backUpTo(path);
+        QVERIFY(finished.wait(10000));
+        QVERIFY(finished.first().first().toBool());
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray good = file.readAll();
+        file.close();
+
+        f->setFailure(kVelocity, Error(Error::Kind::DeviceError, QStringLiteral("abort 06020000")));
+        f->setFailure({ 0x1018, 2 }, Error(Error::Kind::Malformed, QStringLiteral("wrong echo")));
+        QSignalSpy message(&actions, &widgets::ParameterSetActions::message);
+        finished.clear();
+        actions.backUpTo(path);
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(finished.first().first().toBool(), false);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), good);
+        QCOMPARE(message.size(), 1);
+        const QString text = message.first().first().toString();
+        QVERIFY(!message.first().at(1).toBool());
+        QVERIFY2(text.contains(QLatin1String("not written")), qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("6081:0")), qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("1018:2")), qPrintable(text));
+        const auto partial = ParameterSet::load(path + QStringLiteral(".partial"));
+        QVERIFY2(partial.ok(), qPrintable(partial.error().toString()));
+        QVERIFY(!partial->contains(kVelocity));
+        QVERIFY(partial->contains(kWindow));
+        QVERIFY(!partial->productCodeKnown);
+    }
+
     void storeWritesTheSignature()
     {
         app::DemoDrive demo;
