@@ -111,4 +111,9 @@ void SlcanBus::onReceived(const QByteArray &bytes)
     }
 }
 
+void SlcanBus::setConnectTimeoutMs(int ms)
+{
+    m_stream->setConnectTimeoutMs(ms);
+}
+
 } // namespace db
