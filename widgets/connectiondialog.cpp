@@ -106,6 +106,20 @@ ConnectionDialog::ConnectionDialog(const ProtocolRegistry &registry, const QStri
     resize(560, sizeHint().height());
 }
 
+void ConnectionDialog::accept()
+{
+    if (!isValid())
+        return;
+    auto plan = m_registry.prepare(m_validUri);
+    if (!plan) {
+        m_error->setText(plan.error().message());
+        style::setTextColor(m_error, style::errorColor());
+        return;
+    }
+    m_plan = std::move(plan).value();
+    QDialog::accept();
+}
+
 QString ConnectionDialog::uri() const
 {
     return m_validUri;

@@ -15,8 +15,10 @@ namespace db::widgets {
 
 // Asks for a connection URI: either built from protocol + address + port + options, or typed
 // freely, or picked from the recent connections. The URI is checked with
-// ProtocolRegistry::parseUri() on every change; the error is shown inline and OK stays disabled
-// while it is invalid. The dialog only produces text: it never opens a connection.
+// ProtocolRegistry::parseUri() on every change (cheap: nothing is read or opened); the error is
+// shown inline and OK stays disabled while it is invalid. OK prepares the connection plan
+// (loads the description the URI names) and stays open with the cause when that fails. The
+// dialog never opens a connection.
 class ConnectionDialog : public QDialog
 {
     Q_OBJECT
@@ -33,6 +35,11 @@ public:
     // Puts a URI into the free line and the fields (e.g. from --connect or a recent entry).
     void setUri(const QString &uri);
 
+    // The prepared plan (after exec() returned Accepted).
+    const ConnectionPlan &plan() const { return m_plan; }
+    // Prepares the plan; accepts only when that works.
+    void accept() override;
+
     // The recent list with uri() in front (after exec() returned Accepted).
     QStringList recentUris() const;
     // `uri` moved to the front of `recent`, duplicates removed, at most kMaxRecent entries.
@@ -47,6 +54,7 @@ private:
     const ProtocolRegistry &m_registry;
     QStringList m_recent;
     QString m_validUri;
+    ConnectionPlan m_plan;
     bool m_updating = false;
 
     QComboBox *m_protocol;

@@ -1,5 +1,6 @@
 #include "nodelist.h"
 
+#include "canopen/cannetwork.h"
 #include "canopen/canopenconnection.h"
 #include "canopen/nmtmaster.h"
 #include "nodelistmodel.h"
@@ -98,22 +99,22 @@ NodeList::~NodeList() = default;
 void NodeList::setConnection(canopen::CanopenConnection *connection)
 {
     if (!connection) {
-        setServices(nullptr, nullptr, nullptr);
+        setNetwork(nullptr);
         return;
     }
     const DeviceIdentity &id = connection->dictionary().identity;
-    setServices(connection->bus(), connection->monitor(), connection->nmt(), connection->node(),
-                id.productName.isEmpty() ? id.vendorName : id.productName);
+    setNetwork(connection->network(), connection->node(),
+               id.productName.isEmpty() ? id.vendorName : id.productName);
 }
 
-void NodeList::setServices(CanBus *bus, canopen::NodeMonitor *monitor, canopen::NmtMaster *nmt,
-                           canopen::NodeId ownNode, const QString &ownName)
+void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,
+                          const QString &ownName)
 {
-    m_nmt = nmt;
+    m_nmt = network ? network->nmt() : nullptr;
     m_model->setOwnNode(0);
     m_model->setSources(nullptr, nullptr); // forgets the previous bus's nodes
     m_model->setOwnNode(ownNode, ownName);
-    m_model->setSources(bus, monitor);
+    m_model->setSources(network ? network->bus() : nullptr, network ? network->monitor() : nullptr);
     if (m_model->rowCount() > 0)
         m_view->selectRow(0);
     updateActions();

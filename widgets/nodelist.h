@@ -1,9 +1,9 @@
 #pragma once
 
-// The node list dock (issue 3 item 7): the CANopen nodes on the bus of a connection with their
-// NMT state, heartbeat age and name, and the NMT commands (start, stop, pre-operational, reset,
-// reset communication) for the selected node or, with "All nodes", as a broadcast (node 0).
-// It receives the services (NodeMonitor, NmtMaster) and never creates a transport.
+// The node list dock: the CANopen nodes on the network of a connection with their NMT state,
+// heartbeat age and name, and the NMT commands (start, stop, pre-operational, reset, reset
+// communication) for the selected node or, with "All nodes", as a broadcast (node 0).
+// It receives the network and never creates a transport.
 
 #include "canopen/canopenids.h"
 
@@ -14,13 +14,10 @@ class QCheckBox;
 class QTableView;
 class QToolButton;
 
-namespace db {
-class CanBus;
-}
 namespace db::canopen {
+class CanNetwork;
 class CanopenConnection;
 class NmtMaster;
-class NodeMonitor;
 } // namespace db::canopen
 
 namespace db::widgets {
@@ -37,9 +34,10 @@ public:
     // Nodes on the connection's bus, its own node first in mind (named after its
     // description). nullptr detaches. Not owned.
     void setConnection(canopen::CanopenConnection *connection);
-    // The same from separate services (tests, other owners). Not owned; nullptrs detach.
-    void setServices(CanBus *bus, canopen::NodeMonitor *monitor, canopen::NmtMaster *nmt,
-                     canopen::NodeId ownNode = 0, const QString &ownName = {});
+    // The nodes of a network, ownNode (if any) listed before it is heard. Not owned; nullptr
+    // detaches.
+    void setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode = 0,
+                    const QString &ownName = {});
 
     NodeListModel *model() const { return m_model; }
     QTableView *view() const { return m_view; }

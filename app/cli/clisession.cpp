@@ -55,11 +55,13 @@ Session::~Session()
 
 Result<void> Session::open(const QString &uriText)
 {
-    auto created = m_registry.create(uriText);
+    auto plan = m_registry.prepare(uriText, m_options.connectTimeoutMs, m_options.requestTimeoutMs);
+    if (!plan)
+        return plan.error();
+    auto created = m_registry.create(plan.value());
     if (!created)
         return created.error();
     m_connection = created.value();
-    m_connection->setRequestTimeoutMs(m_options.requestTimeoutMs);
     if (!m_options.sdoMode.isEmpty()) {
         auto *canopen = qobject_cast<canopen::CanopenConnection *>(m_connection.get());
         const auto mode = canopen::CanopenConnection::sdoModeFromText(m_options.sdoMode);

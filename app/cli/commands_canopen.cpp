@@ -1,6 +1,7 @@
 #include "commands_canopen.h"
 
 #include "canopen/canbusfactory.h"
+#include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
 #include "canopen/lssmaster.h"
 #include "canopen/nmtmaster.h"
@@ -26,32 +27,24 @@ namespace {
 
 using namespace db::canopen;
 
-// Runs the event loop until `done` says so or ms pass; true when done.
-bool waitUntil(const std::function<bool()> &done, int ms)
-{
-    QEventLoop loop;
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
-        if (done())
-            loop.quit();
-    });
-    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
-    poll.start(1);
-    if (!done())
-        loop.exec();
-    return done();
-}
-
-// The CAN bus of a CANopen URI, for the commands that work on the bus (no ?node= needed).
-class BusSession
+// The CANopen network of a URI's bus, for the commands that work on the bus (no ?node= needed).
+// Closing waits for the bus to close, so that queued frames leave before the process ends.
+class NetworkSession
 {
 public:
-    ~BusSession()
+    ~NetworkSession()
     {
-        if (m_bus && m_bus->state() != CanBus::State::Closed) {
-            m_bus->close();
-            waitUntil([this] { return m_bus->state() == CanBus::State::Closed; }, 1000);
-        }
+        if (!m_network)
+            return;
+        CanBus *bus = m_network->bus();
+        if (bus->state() == CanBus::State::Closed)
+            return;
+        QEventLoop loop;
+        QObject::connect(bus, &CanBus::closed, &loop, &QEventLoop::quit);
+        QTimer::singleShot(1000, &loop, &QEventLoop::quit);
+        m_network->release();
+        if (bus->state() != CanBus::State::Closed)
+            loop.exec();
     }
 
     Result<void> open(const QString &text, int timeoutMs)
@@ -59,27 +52,35 @@ public:
         const auto uri = ConnectionUri::parse(text);
         if (!uri)
             return uri.error();
-        auto bus = CanBusFactory::makeBus(*uri);
-        if (!bus)
-            return bus.error();
-        m_uri = *uri;
-        m_bus.reset(bus.value());
-        QObject::connect(m_bus.get(), &CanBus::frameSent, m_bus.get(), [this] { ++m_sent; });
-        return m_bus->openAndWait(timeoutMs);
+        auto network = m_pool.networkFor(*uri);
+        if (!network)
+            return network.error();
+        m_network = network.value();
+        QObject::connect(m_network->bus(), &CanBus::frameSent, m_network.get(),
+                         [this] { ++m_sent; });
+        return m_network->acquireAndWait(timeoutMs);
     }
-    CanBus *bus() const { return m_bus.get(); }
-    const ConnectionUri &uri() const { return m_uri; }
+    CanNetwork *network() const { return m_network.get(); }
+    CanBus *bus() const { return m_network->bus(); }
 
     // Waits until `frames` frames in all have gone out since open (frameSent), at most ms.
     void flush(int frames, int ms)
     {
-        waitUntil([&] { return m_sent >= frames; }, ms);
+        if (m_sent >= frames)
+            return;
+        QEventLoop loop;
+        QObject::connect(m_network->bus(), &CanBus::frameSent, &loop, [&] {
+            if (m_sent >= frames)
+                loop.quit();
+        });
+        QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+        loop.exec();
     }
 
 private:
-    ConnectionUri m_uri;
+    CanNetworkPool m_pool;
+    std::shared_ptr<CanNetwork> m_network;
     int m_sent = 0;
-    std::unique_ptr<CanBus> m_bus;
 };
 
 Error usage(const QString &text)
@@ -102,18 +103,21 @@ Result<quint32> number(const QString &text)
 
 int scan(Context &c)
 {
-    BusSession session;
+    NetworkSession session;
     if (auto opened = session.open(c.args.at(0), c.options.connectTimeoutMs); !opened)
         return fail(c, opened.error());
-    SdoClient sdo(session.bus());
-    sdo.setTimeoutMs(c.options.requestTimeoutMs);
-    NodeMonitor monitor(session.bus());
-    NodeScanner scanner(&sdo, &monitor);
+    SdoClient *sdo = session.network()->sdo();
+    sdo->setTimeoutMs(c.options.requestTimeoutMs);
+    NodeScanner scanner(sdo, session.network()->monitor());
     QElapsedTimer clock;
     clock.start();
-    scanner.start();
+    QEventLoop loop;
+    QObject::connect(&scanner, &NodeScanner::finished, &loop, &QEventLoop::quit);
     // Each request has its own timeout; the safety limit only guards against a defect.
-    waitUntil([&] { return !scanner.isRunning(); }, 10 * c.options.requestTimeoutMs + 10000);
+    QTimer::singleShot(10 * c.options.requestTimeoutMs + 10000, &loop, &QEventLoop::quit);
+    scanner.start();
+    if (scanner.isRunning())
+        loop.exec();
     const QList<NodeInfo> nodes = scanner.nodes();
     for (const NodeInfo &node : nodes) {
         c.out << printable(node.toString()) << Qt::endl; // holds the device's 1008h/100Ah strings
@@ -157,11 +161,11 @@ int nmt(Context &c)
             return fail(c, id.error().prefixed(QStringLiteral("nmt (or give --all)")));
         node = *id;
     }
-    BusSession session;
+    NetworkSession session;
     if (auto opened = session.open(c.args.at(0), c.options.connectTimeoutMs); !opened)
         return fail(c, opened.error());
-    NodeMonitor monitor(session.bus());
-    NmtMaster master(session.bus());
+    NodeMonitor &monitor = *session.network()->monitor();
+    NmtMaster &master = *session.network()->nmt();
     // NMT is unconfirmed: report the state the node's heartbeat or boot-up shows afterwards.
     const bool reset =
         command == NmtCommand::ResetNode || command == NmtCommand::ResetCommunication;
@@ -169,11 +173,18 @@ int nmt(Context &c)
         : command == NmtCommand::Stop                      ? NmtState::Stopped
                                                            : NmtState::PreOperational;
     bool confirmed = false;
-    QObject::connect(&monitor, &NodeMonitor::bootUp, &monitor,
-                     [&](NodeId id) { confirmed = confirmed || (reset && id == node); });
-    QObject::connect(&monitor, &NodeMonitor::stateChanged, &monitor, [&](NodeId id, NmtState s) {
-        confirmed = confirmed || (!reset && id == node && s == expected);
+    QEventLoop confirmation;
+    QObject::connect(&monitor, &NodeMonitor::bootUp, &confirmation, [&](NodeId id) {
+        confirmed = confirmed || (reset && id == node);
+        if (confirmed)
+            confirmation.quit();
     });
+    QObject::connect(&monitor, &NodeMonitor::stateChanged, &confirmation,
+                     [&](NodeId id, NmtState s) {
+                         confirmed = confirmed || (!reset && id == node && s == expected);
+                         if (confirmed)
+                             confirmation.quit();
+                     });
     if (!master.send(command, node))
         return fail(c, Error(Error::Kind::Disconnected, QStringLiteral("cannot send NMT")));
     if (node == NmtMaster::kAllNodes) {
@@ -181,7 +192,9 @@ int nmt(Context &c)
         c.out << "sent " << NmtMaster::commandName(command) << " to all nodes" << Qt::endl;
         return ExitOk;
     }
-    waitUntil([&] { return confirmed; }, c.options.requestTimeoutMs);
+    QTimer::singleShot(c.options.requestTimeoutMs, &confirmation, &QEventLoop::quit);
+    if (!confirmed)
+        confirmation.exec();
     if (confirmed)
         c.out << "node " << node << ": "
               << (reset ? QStringLiteral("boot-up") : nmtStateName(expected)) << Qt::endl;
@@ -235,10 +248,10 @@ int lss(Context &c)
                         usage(QStringLiteral("set-bitrate takes a CiA bit rate: 1000k, 800k, "
                                              "500k, 250k, 125k, 100k, 50k, 20k or 10k")));
     }
-    BusSession session;
+    NetworkSession session;
     if (auto opened = session.open(c.args.at(0), c.options.connectTimeoutMs); !opened)
         return fail(c, opened.error());
-    LssMaster master(session.bus());
+    LssMaster &master = *session.network()->lss();
     master.setTimeoutMs(c.options.requestTimeoutMs);
     const auto done = [&](Reply *reply, const QString &what) -> int {
         const auto result = Reply::wait(reply);

@@ -1,6 +1,7 @@
 #include "protocols.h"
 
 #include "canopen/canbusfactory.h"
+#include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
 #include "core/devicedescription.h"
 #include "refgo/refgoconnection.h"
@@ -40,6 +41,7 @@ Result<ObjectDictionary> canopenDictionary(const ConnectionUri &uri)
     return ObjectDictionary();
 }
 
+// Cheap: no file is read, nothing is opened (the connection dialog checks as the user types).
 Result<void> checkCanopen(const ConnectionUri &uri)
 {
     if (auto node = canopen::CanopenConnection::nodeFromUri(uri); !node)
@@ -47,23 +49,41 @@ Result<void> checkCanopen(const ConnectionUri &uri)
     if (uri.host().isEmpty())
         return Error(Error::Kind::InvalidArgument,
                      QStringLiteral("%1 names no interface or host").arg(uri.toString()));
-    if (uri.hasQuery(QStringLiteral("bitrate"))) {
-        if (auto b = uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000); !b)
-            return b.error();
-    }
-    if (auto dict = canopenDictionary(uri); !dict)
-        return dict.error();
+    if (auto bitrate = canopen::CanBusFactory::bitrateOf(uri); !bitrate)
+        return bitrate.error();
+    if (auto mode =
+            canopen::CanopenConnection::sdoModeFromText(uri.queryValue(QStringLiteral("sdo")));
+        !mode)
+        return mode.error();
     return {};
 }
 
-std::unique_ptr<DeviceConnection> makeCanopen(const ConnectionUri &uri)
+Result<void> prepareCanopen(ConnectionPlan &plan)
 {
-    auto bus = canopen::CanBusFactory::makeBus(uri);
-    if (!bus)
-        return nullptr;
-    auto connection = std::make_unique<canopen::CanopenConnection>(uri, bus.value());
-    connection->setDictionary(canopenDictionary(uri).valueOr(ObjectDictionary()));
-    return connection;
+    auto dictionary = canopenDictionary(plan.uri);
+    if (!dictionary)
+        return dictionary.error();
+    plan.dictionary = std::move(dictionary).value();
+    plan.hasDictionary = true;
+    return {};
+}
+
+// Every CANopen connection of this process: connections to nodes of the same bus share its
+// network (one socket or interface, one NMT master and node monitor).
+canopen::CanNetworkPool &networks()
+{
+    static canopen::CanNetworkPool pool;
+    return pool;
+}
+
+Result<std::unique_ptr<DeviceConnection>> makeCanopen(const ConnectionPlan &plan)
+{
+    auto network = networks().networkFor(plan.uri);
+    if (!network)
+        return network.error();
+    auto connection = std::make_unique<canopen::CanopenConnection>(plan.uri, network.value());
+    connection->setDictionary(plan.dictionary);
+    return std::unique_ptr<DeviceConnection>(std::move(connection));
 }
 
 ProtocolInfo canopenProtocol(const QString &transport, const QString &title, const QString &pattern,
@@ -75,7 +95,8 @@ ProtocolInfo canopenProtocol(const QString &transport, const QString &title, con
              pattern,
              defaultPort,
              makeCanopen,
-             checkCanopen };
+             checkCanopen,
+             prepareCanopen };
 }
 
 ProtocolRegistry makeRegistry()
@@ -87,11 +108,12 @@ ProtocolRegistry makeRegistry()
         tr("MovingCap RefGo (ASCII over TCP)"),
         QStringLiteral("refgo://HOST[:PORT]"),
         refgo::RefgoConnection::kDefaultPort,
-        [](const ConnectionUri &uri) -> std::unique_ptr<DeviceConnection> {
-            auto connection = std::make_unique<refgo::RefgoConnection>(uri);
+        [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
+            auto connection = std::make_unique<refgo::RefgoConnection>(plan.uri);
             connection->setDictionary(resources::movingCapDictionary());
-            return connection;
+            return std::unique_ptr<DeviceConnection>(std::move(connection));
         },
+        {},
         {},
     });
     registry.add(canopenProtocol(QStringLiteral("slcan"),

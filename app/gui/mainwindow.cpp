@@ -200,7 +200,18 @@ void MainWindow::createMenus()
 
 Result<DeviceConnection *> MainWindow::openConnection(const QString &uri)
 {
-    auto created = m_registry.create(uri);
+    auto plan = m_registry.prepare(uri);
+    if (!plan) {
+        m_log->error(tr("Cannot connect to %1: %2").arg(uri, plan.error().toString()));
+        return plan.error();
+    }
+    return openConnection(plan.value());
+}
+
+Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan)
+{
+    const QString uri = plan.uri.toString();
+    auto created = m_registry.create(plan);
     if (!created) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, created.error().toString()));
         return created.error();
@@ -311,7 +322,7 @@ void MainWindow::showConnectDialogFor(const QString &uri)
     if (dialog.exec() != QDialog::Accepted)
         return;
     m_recent = dialog.recentUris();
-    openConnection(dialog.uri());
+    openConnection(dialog.plan());
 }
 
 void MainWindow::disconnectCurrent()

@@ -50,6 +50,7 @@ public:
     // Makes a connection for `uri`, lists it, makes it current and opens it (asynchronously).
     // The error of an unusable URI is returned and logged.
     Result<DeviceConnection *> openConnection(const QString &uri);
+    Result<DeviceConnection *> openConnection(const ConnectionPlan &plan);
     DeviceConnection *currentConnection() const;
     QList<DeviceConnection *> connections() const;
     QStringList recentConnections() const { return m_recent; }

@@ -15,6 +15,13 @@ QString CanBusFactory::transportOf(const ConnectionUri &uri)
     return uri.scheme().mid(prefix.size());
 }
 
+Result<int> CanBusFactory::bitrateOf(const ConnectionUri &uri)
+{
+    if (!uri.hasQuery(QStringLiteral("bitrate")))
+        return 0;
+    return uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000);
+}
+
 Result<CanBus *> CanBusFactory::makeBus(const ConnectionUri &uri, QObject *parent)
 {
     const QString transport = transportOf(uri);
@@ -29,13 +36,10 @@ Result<CanBus *> CanBusFactory::makeBus(const ConnectionUri &uri, QObject *paren
             QStringLiteral("%1 names no %2")
                 .arg(uri.toString(),
                      transport == u"slcan" ? QStringLiteral("host") : QStringLiteral("interface")));
-    int bitrate = 0;
-    if (uri.hasQuery(QStringLiteral("bitrate"))) {
-        const auto b = uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000);
-        if (!b)
-            return b.error();
-        bitrate = *b;
-    }
+    const auto b = bitrateOf(uri);
+    if (!b)
+        return b.error();
+    const int bitrate = *b;
     if (transport == u"slcan") {
         auto *stream = new TcpStream(uri.host(), quint16(uri.portOr(kDefaultSlcanPort)));
         return static_cast<CanBus *>(

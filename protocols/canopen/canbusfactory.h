@@ -27,6 +27,8 @@ public:
     static Result<CanBus *> makeBus(const ConnectionUri &uri, QObject *parent = nullptr);
     // "socketcan" for "canopen+socketcan"; empty when the scheme is not a CANopen one.
     static QString transportOf(const ConnectionUri &uri);
+    // The ?bitrate= of a URI (1000..8000000), 0 when not given; InvalidArgument names a bad one.
+    static Result<int> bitrateOf(const ConnectionUri &uri);
 };
 
 } // namespace db::canopen

@@ -1,5 +1,7 @@
 #include "canopenconnection.h"
 
+#include "canbusfactory.h"
+#include "cannetwork.h"
 #include "canopenlogging.h"
 #include "emcyconsumer.h"
 #include "nmtmaster.h"
@@ -12,41 +14,97 @@
 
 namespace db::canopen {
 
-CanopenConnection::CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObject *parent)
+CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<CanNetwork> network,
+                                     QObject *parent)
     : DeviceConnection(uri, parent)
-    , m_bus(bus)
+    , m_network(std::move(network))
+    , m_blockEnabled(uri.queryValue(QStringLiteral("block")) == u"1")
     , m_nodeResult(nodeFromUri(uri))
     , m_node(m_nodeResult.valueOr(0))
     , m_probe(uri.queryValue(QStringLiteral("probe")) == u"1")
     , m_sdoModeResult(sdoModeFromText(uri.queryValue(QStringLiteral("sdo"))))
     , m_sdoMode(m_sdoModeResult.valueOr(SdoClient::Mode::Auto))
 {
-    m_bus->setParent(this);
-    m_sdo = new SdoClient(m_bus, this);
-    m_sdo->setBlockEnabled(uri.queryValue(QStringLiteral("block")) == u"1");
-    m_nmt = new NmtMaster(m_bus, this);
-    m_monitor = new NodeMonitor(m_bus, this);
-    m_emcy = new EmcyConsumer(m_bus, this);
-    m_sync = new SyncProducer(m_bus, this);
-    connect(m_bus, &CanBus::opened, this, &CanopenConnection::onBusOpened);
-    connect(m_bus, &CanBus::closed, this, &CanopenConnection::onBusClosed);
-    connect(m_bus, &CanBus::warning, this,
+    CanNetwork *net = m_network.get();
+    connect(net, &CanNetwork::opened, this, &CanopenConnection::onBusOpened);
+    connect(net, &CanNetwork::closed, this, &CanopenConnection::onBusClosed);
+    connect(net, &CanNetwork::warning, this,
             [this](const QString &text) { Q_EMIT logLine(QStringLiteral("! ") + text); });
-    connect(m_sdo, &SdoClient::logLine, this, &DeviceConnection::logLine);
-    connect(m_emcy, &EmcyConsumer::emergency, this,
-            [this](const Emergency &e) { Q_EMIT logLine(QStringLiteral("EMCY ") + e.toString()); });
-    connect(m_monitor, &NodeMonitor::bootUp, this,
-            [this](NodeId node) { Q_EMIT logLine(QStringLiteral("node %1 boot-up").arg(node)); });
-    connect(m_monitor, &NodeMonitor::heartbeatLost, this, [this](NodeId node) {
-        Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
+    connect(net->sdo(), &SdoClient::logLine, this, &DeviceConnection::logLine);
+    connect(net->emcy(), &EmcyConsumer::emergency, this, [this](const Emergency &e) {
+        if (e.node == m_node)
+            Q_EMIT logLine(QStringLiteral("EMCY ") + e.toString());
+    });
+    connect(net->monitor(), &NodeMonitor::bootUp, this, [this](NodeId node) {
+        if (node == m_node)
+            Q_EMIT logLine(QStringLiteral("node %1 boot-up").arg(node));
+    });
+    connect(net->monitor(), &NodeMonitor::heartbeatLost, this, [this](NodeId node) {
+        if (node == m_node)
+            Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
     });
 }
 
+CanopenConnection::CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObject *parent)
+    : CanopenConnection(
+        uri, std::make_shared<CanNetwork>(bus, CanBusFactory::bitrateOf(uri).valueOr(0)), parent)
+{ }
+
 CanopenConnection::~CanopenConnection()
 {
-    // The SDO client first: its replies fail while the bus still exists.
-    delete m_sdo;
-    m_sdo = nullptr;
+    // This node's transfers fail while the bus still exists; the network may outlive us.
+    m_network->disconnect(this);
+    m_network->sdo()->disconnect(this);
+    m_network->sdo()->cancelNode(
+        m_node,
+        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 deleted").arg(m_node)));
+    releaseNetwork();
+    m_network.reset();
+}
+
+CanBus *CanopenConnection::bus() const
+{
+    return m_network->bus();
+}
+
+SdoClient *CanopenConnection::sdo() const
+{
+    return m_network->sdo();
+}
+
+NmtMaster *CanopenConnection::nmt() const
+{
+    return m_network->nmt();
+}
+
+NodeMonitor *CanopenConnection::monitor() const
+{
+    return m_network->monitor();
+}
+
+EmcyConsumer *CanopenConnection::emcy() const
+{
+    return m_network->emcy();
+}
+
+SyncProducer *CanopenConnection::sync() const
+{
+    return m_network->sync();
+}
+
+void CanopenConnection::releaseNetwork()
+{
+    if (!m_acquired)
+        return;
+    m_acquired = false;
+    m_network->release();
+}
+
+void CanopenConnection::prepareSdo() const
+{
+    SdoClient *sdo = m_network->sdo();
+    sdo->setTimeoutMs(requestTimeoutMs());
+    sdo->setBlockEnabled(m_blockEnabled);
 }
 
 Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
@@ -82,20 +140,26 @@ void CanopenConnection::doOpen()
                  !m_nodeResult ? m_nodeResult.error() : m_sdoModeResult.error());
         return;
     }
-    m_emcy->setDictionary(m_node, dictionary());
-    Q_EMIT logLine(QStringLiteral("opening %1 for node %2").arg(m_bus->name()).arg(m_node));
-    if (m_bus->isOpen())
+    m_network->setDictionary(m_node, dictionary());
+    Q_EMIT logLine(QStringLiteral("opening %1 for node %2").arg(m_network->name()).arg(m_node));
+    if (!m_acquired) {
+        m_acquired = true;
+        m_network->bus()->setConnectTimeoutMs(connectTimeoutMs());
+        m_network->acquire();
+    }
+    if (m_network->isOpen())
         onBusOpened();
-    else
-        m_bus->open();
 }
 
 void CanopenConnection::doClose()
 {
-    if (m_bus->state() == CanBus::State::Closed)
+    m_network->sdo()->cancelNode(
+        m_node,
+        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 closed").arg(m_node)));
+    releaseNetwork();
+    // Other connections may keep the bus open; then this node is done at once.
+    if (m_network->users() > 0 || m_network->bus()->state() == CanBus::State::Closed)
         setState(State::Disconnected);
-    else
-        m_bus->close();
 }
 
 void CanopenConnection::onBusOpened()
@@ -106,23 +170,24 @@ void CanopenConnection::onBusOpened()
         probe();
         return;
     }
-    qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_bus->name();
-    Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_bus->name()));
+    qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_network->name();
+    Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
     setState(State::Connected);
 }
 
 // Reads 1000h: any answer, even an abort, shows the node is there.
 void CanopenConnection::probe()
 {
-    m_sdo->setTimeoutMs(requestTimeoutMs());
-    Reply *reply = m_sdo->upload(m_node, kDeviceType, SdoClient::Mode::Expedited);
+    prepareSdo();
+    Reply *reply = m_network->sdo()->upload(m_node, kDeviceType, SdoClient::Mode::Expedited);
     reply->setParent(this);
     connect(reply, &Reply::finished, this, [this, reply] {
         reply->deleteLater();
         if (state() != State::Connecting)
             return;
         if (reply->ok() || reply->error().kind() == Error::Kind::DeviceError) {
-            Q_EMIT logLine(QStringLiteral("node %1 answers on %2").arg(m_node).arg(m_bus->name()));
+            Q_EMIT logLine(
+                QStringLiteral("node %1 answers on %2").arg(m_node).arg(m_network->name()));
             setState(State::Connected);
             return;
         }
@@ -131,27 +196,28 @@ void CanopenConnection::probe()
                     QStringLiteral("node %1 does not answer on %2 (no SDO answer to 1000h within "
                                    "%3 ms)")
                         .arg(m_node)
-                        .arg(m_bus->name())
+                        .arg(m_network->name())
                         .arg(requestTimeoutMs()))
             : reply->error();
         setState(State::Closing);
         setState(State::Disconnected, why);
-        m_bus->close();
+        releaseNetwork();
     });
 }
 
 void CanopenConnection::onBusClosed(const Error &error)
 {
+    m_acquired = false; // a closed bus has no users left
     const State previous = state();
     if (previous == State::Disconnected)
         return;
     if (previous == State::Closing || !error.isError()) {
-        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_bus->name()));
+        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_network->name()));
         setState(State::Disconnected,
                  previous == State::Closing
                      ? Error()
                      : Error(Error::Kind::Disconnected,
-                             QStringLiteral("CAN bus %1 closed").arg(m_bus->name())));
+                             QStringLiteral("CAN bus %1 closed").arg(m_network->name())));
         return;
     }
     Q_EMIT logLine(QStringLiteral("! ") + error.message());
@@ -216,14 +282,14 @@ Result<QByteArray> CanopenConnection::bytesFromUnknownValue(const QVariant &valu
 
 void CanopenConnection::doRead(Reply *reply, const ObjectDef *def)
 {
-    m_sdo->setTimeoutMs(requestTimeoutMs());
+    prepareSdo();
     const bool variable = def && datatype::isVariableLength(def->type);
     const int size = def && !variable ? datatype::byteSize(def->type) : -1;
     // Unknown objects: a normal upload (the server picks expedited or segmented).
     const auto mode = m_sdoMode != SdoClient::Mode::Auto ? m_sdoMode
         : def                                            ? SdoClient::Mode::Auto
                                                          : SdoClient::Mode::Segmented;
-    Reply *inner = m_sdo->upload(m_node, reply->address(), mode, size);
+    Reply *inner = m_network->sdo()->upload(m_node, reply->address(), mode, size);
     if (!def) {
         Reply::forward(inner, reply, this,
                        [](const QVariant &v) { return valueFromUnknownBytes(v.toByteArray()); });
@@ -245,8 +311,9 @@ void CanopenConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectD
         reply->fail(bytes.error());
         return;
     }
-    m_sdo->setTimeoutMs(requestTimeoutMs());
-    Reply::forward(m_sdo->download(m_node, reply->address(), *bytes, m_sdoMode), reply, this);
+    prepareSdo();
+    Reply::forward(m_network->sdo()->download(m_node, reply->address(), *bytes, m_sdoMode), reply,
+                   this);
 }
 
 } // namespace db::canopen

@@ -1,18 +1,20 @@
 #pragma once
 
-// A CANopen node as a DeviceConnection (issue 3 item 5): read/write by index:sub through SDO
-// with the dictionary's types, plus the master services (NMT, heartbeat monitor, EMCY, SYNC)
-// for the GUI and CLI. One connection talks to one node (the URI's ?node=N) on one CanBus.
+// A CANopen node as a DeviceConnection: read/write by index:sub through SDO with the
+// dictionary's types. A connection is a CanNetwork (the bus and its master services, shared by
+// every connection to a node of the same bus) plus a node id plus the node's dictionary.
 //
 // URI query: node=N (1..127, required), probe=1 (on open, read 1000h and fail with "node N does
 // not answer" when it stays silent), block=1 (block SDO for large objects), sdo=auto|expedited|
 // segmented|block (force the SDO mode of every read and write; default auto).
-// Connected as soon as the bus is open (after the probe when asked for). The bus is injected
-// (see CanBusFactory) and owned.
+// Connected as soon as the bus is open (after the probe when asked for). Opening acquires the
+// network's bus, closing releases it: the bus closes with the last connection that used it.
 
 #include "canopenids.h"
 #include "core/deviceconnection.h"
 #include "sdoclient.h"
+
+#include <memory>
 
 namespace db {
 class CanBus;
@@ -20,6 +22,7 @@ class CanBus;
 
 namespace db::canopen {
 
+class CanNetwork;
 class EmcyConsumer;
 class NmtMaster;
 class NodeMonitor;
@@ -31,7 +34,11 @@ class CanopenConnection : public DeviceConnection
 public:
     static constexpr ObjectAddress kDeviceType { 0x1000, 0x00 };
 
-    // Takes ownership of bus. A bad ?node= makes open() fail with InvalidArgument.
+    // A node on a shared network (see CanNetworkPool). A bad ?node= makes open() fail with
+    // InvalidArgument.
+    CanopenConnection(const ConnectionUri &uri, std::shared_ptr<CanNetwork> network,
+                      QObject *parent = nullptr);
+    // A node on a network of its own around bus (taken over).
     CanopenConnection(const ConnectionUri &uri, CanBus *bus, QObject *parent = nullptr);
     ~CanopenConnection() override;
 
@@ -42,13 +49,14 @@ public:
     Capabilities capabilities() const override { return Capability::StoreNonVolatile; }
 
     NodeId node() const { return m_node; }
-    CanBus *bus() const { return m_bus; }
-    // The master services on this bus, owned by the connection.
-    SdoClient *sdo() const { return m_sdo; }
-    NmtMaster *nmt() const { return m_nmt; }
-    NodeMonitor *monitor() const { return m_monitor; }
-    EmcyConsumer *emcy() const { return m_emcy; }
-    SyncProducer *sync() const { return m_sync; }
+    // The network this node is on, with the master services of its bus (shared).
+    CanNetwork *network() const { return m_network.get(); }
+    CanBus *bus() const;
+    SdoClient *sdo() const;
+    NmtMaster *nmt() const;
+    NodeMonitor *monitor() const;
+    EmcyConsumer *emcy() const;
+    SyncProducer *sync() const;
 
     // The SDO mode of later reads and writes (Auto: by size and type, block when enabled).
     SdoClient::Mode sdoMode() const { return m_sdoMode; }
@@ -73,18 +81,17 @@ private:
     void onBusOpened();
     void onBusClosed(const Error &error);
     void probe();
+    void releaseNetwork();
+    void prepareSdo() const;
 
-    CanBus *m_bus;
+    std::shared_ptr<CanNetwork> m_network;
+    bool m_acquired = false;
+    bool m_blockEnabled = false;
     Result<NodeId> m_nodeResult;
     NodeId m_node = 0;
     bool m_probe = false;
     Result<SdoClient::Mode> m_sdoModeResult = SdoClient::Mode::Auto;
     SdoClient::Mode m_sdoMode = SdoClient::Mode::Auto;
-    SdoClient *m_sdo;
-    NmtMaster *m_nmt;
-    NodeMonitor *m_monitor;
-    EmcyConsumer *m_emcy;
-    SyncProducer *m_sync;
 };
 
 } // namespace db::canopen

@@ -250,14 +250,24 @@ void SdoClient::drop(NodeId node, const QByteArray &payload, const QString &why)
 
 void SdoClient::cancelAll(const Error &error)
 {
-    for (auto &[node, ch] : m_channels) {
-        ch->quiet.stop();
-        auto queue = std::exchange(ch->queue, {});
-        finishActive(*ch, error);
-        for (Job &job : queue) {
-            if (job.reply)
-                job.reply->fail(error);
-        }
+    for (auto &[node, ch] : m_channels)
+        cancelChannel(*ch, error);
+}
+
+void SdoClient::cancelNode(NodeId node, const Error &error)
+{
+    if (const auto it = m_channels.find(node); it != m_channels.end())
+        cancelChannel(*it->second, error);
+}
+
+void SdoClient::cancelChannel(Channel &ch, const Error &error)
+{
+    ch.quiet.stop();
+    auto queue = std::exchange(ch.queue, {});
+    finishActive(ch, error);
+    for (Job &job : queue) {
+        if (job.reply)
+            job.reply->fail(error);
     }
 }
 

@@ -78,6 +78,8 @@ public:
     int droppedFrames() const { return m_dropped; }
     // Fails every queued and running transfer (no abort frames are sent).
     void cancelAll(const Error &error);
+    // The same for one node's transfers only (its connection closes; others go on).
+    void cancelNode(NodeId node, const Error &error);
 
 Q_SIGNALS:
     // One readable line per notable event (abort, timeout, dropped frame) for the log console.
@@ -95,6 +97,7 @@ private:
     bool sendAll(Channel &ch, const QByteArrayList &frames);
     void finishActive(Channel &ch, const Error &error, const QByteArray &data = {});
     void onTimeout(Channel &ch);
+    void cancelChannel(Channel &ch, const Error &error);
     void drop(NodeId node, const QByteArray &payload, const QString &why);
 
     CanBus *m_bus;

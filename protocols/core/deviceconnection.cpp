@@ -37,7 +37,9 @@ Result<void> DeviceConnection::openAndWait(int timeoutMs)
             loop.quit();
     });
     bool timedOut = false;
-    QTimer::singleShot(timeoutMs, &loop, [&] {
+    // The transport's own timeout names the peer; this one is the last resort.
+    setConnectTimeoutMs(timeoutMs);
+    QTimer::singleShot(timeoutMs + kOpenGraceMs, &loop, [&] {
         timedOut = true;
         loop.quit();
     });

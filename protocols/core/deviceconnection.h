@@ -31,6 +31,10 @@ public:
     };
     Q_DECLARE_FLAGS(Capabilities, Capability)
 
+    // openAndWait() gives the transport this much longer than its own connect timeout, so that
+    // the transport's error (which names the peer) comes first.
+    static constexpr int kOpenGraceMs = 250;
+
     explicit DeviceConnection(const ConnectionUri &uri, QObject *parent = nullptr);
     ~DeviceConnection() override;
 
@@ -48,7 +52,7 @@ public:
     void open();
     // Blocks in a local event loop until open() has connected or failed (for the CLI,
     // benchmarks and tests only, like Reply::wait). The error names the cause: the link's own
-    // error, or a timeout after timeoutMs.
+    // error (the transport gets timeoutMs as its connect timeout), or a timeout after timeoutMs.
     Result<void> openAndWait(int timeoutMs);
     // Non-blocking: pending requests fail with Error::Kind::Cancelled; ends in Disconnected.
     // Also stops an automatic reconnect that is waiting for its next attempt.
@@ -60,6 +64,10 @@ public:
     // Per-request time limit in ms used by the protocol engine.
     int requestTimeoutMs() const { return m_timeoutMs; }
     void setRequestTimeoutMs(int ms) { m_timeoutMs = ms; }
+    // How long the transport may take to connect (TCP connect, bus open) before open() fails
+    // with a timeout that names the peer. openAndWait() sets it to its own limit.
+    int connectTimeoutMs() const { return m_connectTimeoutMs; }
+    void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = qMax(1, ms); }
 
     // Reads one object. The reply's value is the raw value (codec's canonical type; the
     // dictionary's type, or a qlonglong for objects the description does not know).
@@ -98,6 +106,7 @@ private:
     Error m_lastError;
     ObjectDictionary m_dictionary;
     int m_timeoutMs = 1000;
+    int m_connectTimeoutMs = 3000;
     QList<QPointer<Reply>> m_pending;
 };
 

@@ -44,17 +44,46 @@ Result<ConnectionUri> ProtocolRegistry::parseUri(const QString &text) const
     return result;
 }
 
-Result<std::shared_ptr<DeviceConnection>> ProtocolRegistry::create(const QString &text) const
+Result<ConnectionPlan> ProtocolRegistry::prepare(const QString &text, int connectTimeoutMs,
+                                                 int requestTimeoutMs) const
 {
     auto uri = parseUri(text);
     if (!uri)
         return uri.error();
-    const ProtocolInfo *info = find(uri->scheme());
-    std::shared_ptr<DeviceConnection> connection = info->create(uri.value());
-    if (!connection)
+    ConnectionPlan plan;
+    plan.uri = uri.value();
+    plan.connectTimeoutMs = connectTimeoutMs;
+    plan.requestTimeoutMs = requestTimeoutMs;
+    const ProtocolInfo *info = find(plan.uri.scheme());
+    if (info->prepare) {
+        if (auto prepared = info->prepare(plan); !prepared)
+            return prepared.error();
+    }
+    return plan;
+}
+
+Result<std::shared_ptr<DeviceConnection>> ProtocolRegistry::create(const ConnectionPlan &plan) const
+{
+    const ProtocolInfo *info = find(plan.uri.scheme());
+    if (!info || !info->create)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("cannot make a %1 connection for %2").arg(info->key, text));
+                     QStringLiteral("unknown protocol '%1' in %2")
+                         .arg(plan.uri.scheme(), plan.uri.toString()));
+    auto made = info->create(plan);
+    if (!made)
+        return made.error();
+    std::shared_ptr<DeviceConnection> connection = std::move(made).value();
+    connection->setConnectTimeoutMs(plan.connectTimeoutMs);
+    connection->setRequestTimeoutMs(plan.requestTimeoutMs);
     return connection;
+}
+
+Result<std::shared_ptr<DeviceConnection>> ProtocolRegistry::create(const QString &text) const
+{
+    auto plan = prepare(text);
+    if (!plan)
+        return plan.error();
+    return create(plan.value());
 }
 
 } // namespace db

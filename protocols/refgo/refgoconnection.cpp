@@ -101,6 +101,7 @@ void RefgoConnection::doOpen()
 {
     m_reconnectTimer.stop();
     Q_EMIT logLine(QStringLiteral("connecting to %1").arg(m_stream->peerName()));
+    m_stream->setConnectTimeoutMs(connectTimeoutMs());
     if (m_stream->isOpen())
         onOpened();
     else

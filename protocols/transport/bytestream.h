@@ -25,6 +25,8 @@ public:
     bool isOpen() const { return m_state == State::Open; }
     // Where the stream goes, for messages: "127.0.0.1:10001".
     virtual QString peerName() const = 0;
+    // How long open() may take before it fails with a timeout (streams that connect).
+    virtual void setConnectTimeoutMs(int ms) { Q_UNUSED(ms) }
 
     void open();
     void close();

@@ -37,6 +37,8 @@ public:
     virtual QString name() const = 0;
     State state() const { return m_state; }
     bool isOpen() const { return m_state == State::Open; }
+    // How long open() may take before it fails with a timeout (buses behind a connection).
+    virtual void setConnectTimeoutMs(int ms) { Q_UNUSED(ms) }
 
     void open();
     // Blocks in a local event loop until open() has opened the bus or failed (for command-line

@@ -195,4 +195,9 @@ void SlcanBus::handle(const slcan::Message &m)
     }
 }
 
+void SlcanBus::setConnectTimeoutMs(int ms)
+{
+    m_stream->setConnectTimeoutMs(ms);
+}
+
 } // namespace db

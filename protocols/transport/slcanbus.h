@@ -34,6 +34,7 @@ public:
 
     QString name() const override; // "slcan 127.0.0.1:15001"
     ByteStream *stream() const { return m_stream; }
+    void setConnectTimeoutMs(int ms) override;
     int bitrate() const { return m_bitrate; }
 
     static constexpr qsizetype kSliceBytes = CanBus::kReceiveSliceFrames * 16;

@@ -20,7 +20,7 @@ public:
 
     TcpStream(const QString &host, quint16 port, QObject *parent = nullptr);
 
-    void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
+    void setConnectTimeoutMs(int ms) override { m_connectTimeoutMs = ms; }
     QString peerName() const override;
     QString host() const { return m_host; }
     quint16 port() const { return m_port; }

@@ -22,8 +22,8 @@ protected:
 ProtocolRegistry registry()
 {
     ProtocolRegistry r;
-    auto make = [](const ConnectionUri &uri) {
-        return std::make_unique<NullConnection>(uri);
+    auto make = [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
+        return std::unique_ptr<DeviceConnection>(std::make_unique<NullConnection>(plan.uri));
     };
     r.add({ QStringLiteral("refgo"),
             QStringLiteral("refgo"),
@@ -31,6 +31,7 @@ ProtocolRegistry registry()
             QStringLiteral("refgo://HOST[:PORT]"),
             10001,
             make,
+            {},
             {} });
     r.add({ QStringLiteral("canopen+slcan"),
             QStringLiteral("canopen"),
@@ -38,6 +39,7 @@ ProtocolRegistry registry()
             QStringLiteral("canopen+slcan://HOST[:PORT]?node=N"),
             15001,
             make,
+            {},
             {} });
     r.add({ QStringLiteral("canopen+socketcan"),
             QStringLiteral("canopen"),
@@ -45,6 +47,7 @@ ProtocolRegistry registry()
             QStringLiteral("canopen+socketcan://IFACE?node=N"),
             -1,
             make,
+            {},
             {} });
     r.add({ QStringLiteral("vabus"),
             QStringLiteral("vabus"),
@@ -52,6 +55,7 @@ ProtocolRegistry registry()
             QStringLiteral("vabus://HOST[:PORT]"),
             17220,
             make,
+            {},
             {} });
     return r;
 }

@@ -15,8 +15,10 @@ namespace {
 ProtocolRegistry testRegistry()
 {
     ProtocolRegistry registry;
-    const auto makeFake = [](const ConnectionUri &uri) {
-        return std::make_unique<test::FakeConnection>(uri.toString());
+    const auto makeFake =
+        [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
+        return std::unique_ptr<DeviceConnection>(
+            std::make_unique<test::FakeConnection>(plan.uri.toString()));
     };
     registry.add({ QStringLiteral("refgo"),
                    QStringLiteral("refgo"),
@@ -24,6 +26,7 @@ ProtocolRegistry testRegistry()
                    QStringLiteral("refgo://HOST[:PORT]"),
                    10001,
                    makeFake,
+                   {},
                    {} });
     registry.add({ QStringLiteral("canopen+socketcan"),
                    QStringLiteral("canopen"),
@@ -31,6 +34,7 @@ ProtocolRegistry testRegistry()
                    QStringLiteral("canopen+socketcan://IFACE?node=N&bitrate=B"),
                    -1,
                    makeFake,
+                   {},
                    {} });
     return registry;
 }

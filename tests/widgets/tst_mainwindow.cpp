@@ -28,12 +28,13 @@ ProtocolRegistry fakeRegistry()
                    QStringLiteral("Test double"),
                    QStringLiteral("fake://NAME"),
                    -1,
-                   [](const ConnectionUri &uri) {
-                       auto fake = std::make_unique<FakeConnection>(uri.toString());
+                   [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
+                       auto fake = std::make_unique<FakeConnection>(plan.uri.toString());
                        fake->setDictionary(resources::movingCapDictionary());
                        fake->setValue({ 0x6041, 0 }, QVariant::fromValue<qulonglong>(0x0427));
-                       return fake;
+                       return std::unique_ptr<DeviceConnection>(std::move(fake));
                    },
+                   {},
                    {} });
     return registry;
 }

@@ -1,3 +1,4 @@
+#include "canopen/cannetwork.h"
 #include "canopen/nmtmaster.h"
 #include "canopen/nodemonitor.h"
 #include "scriptedcanbus.h"
@@ -24,14 +25,14 @@ class TestNodeList : public QObject
 private:
     struct Fixture
     {
-        ScriptedCanBus bus;
-        NodeMonitor monitor { &bus };
-        NmtMaster nmt { &bus };
+        CanNetwork network { new ScriptedCanBus };
+        ScriptedCanBus &bus = *static_cast<ScriptedCanBus *>(network.bus());
+        NodeMonitor &monitor = *network.monitor();
         NodeList list;
         Fixture()
         {
             bus.open();
-            list.setServices(&bus, &monitor, &nmt, 50, QStringLiteral("MovingCap ETH"));
+            list.setNetwork(&network, 50, QStringLiteral("MovingCap ETH"));
         }
         QString cell(NodeId node, int column) const
         {
@@ -118,7 +119,7 @@ private Q_SLOTS:
         Fixture f;
         f.bus.close();
         QVERIFY(!f.list.sendCommand(NmtCommand::Start));
-        f.list.setServices(nullptr, nullptr, nullptr);
+        f.list.setNetwork(nullptr);
         QCOMPARE(f.list.model()->rowCount(), 0);
         QVERIFY(!f.list.findChild<QToolButton *>(QStringLiteral("start"))->isEnabled());
     }

@@ -1,0 +1,110 @@
+#pragma once
+
+// One CAN bus and the CANopen master services on it (CiA 301): SDO client (one channel per
+// node, different nodes in parallel), NMT master, node monitor (boot-up, heartbeat), EMCY
+// consumer, SYNC producer, LSS master, and frame subscriptions by COB-ID. Every node connection
+// on the same bus shares one network, so N nodes behind one SLCAN link use one socket, one NMT
+// master and one node monitor; broadcast services (NMT to all, LSS, raw frames) go through the
+// network, not through a node.
+//
+// Contracts:
+// - The network owns its bus and services; they live as long as the network.
+// - The bus opens when the first user asks for it (acquire()) and closes when the last one lets
+//   go (release()); opened()/closed() are the bus's own signals. A user that acquires an open
+//   bus is told synchronously by isOpen().
+// - subscribe() handlers run from the event loop in the order frames arrive; a handler whose
+//   context object is destroyed is dropped.
+
+#include "canopenids.h"
+#include "core/error.h"
+#include "core/objectdictionary.h"
+
+#include <QCanBusFrame>
+#include <QObject>
+#include <QPointer>
+
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+namespace db {
+class CanBus;
+}
+
+namespace db::canopen {
+
+class EmcyConsumer;
+class LssMaster;
+class NmtMaster;
+class NodeMonitor;
+class SdoClient;
+class SyncProducer;
+
+class CanNetwork : public QObject
+{
+    Q_OBJECT
+public:
+    using FrameHandler = std::function<void(const QCanBusFrame &)>;
+
+    // Takes ownership of bus (closed or open). bitrate: what the bus was made with (0 unknown),
+    // so that a second connection asking for another bitrate on the same bus can be refused.
+    explicit CanNetwork(CanBus *bus, int bitrate = 0, QObject *parent = nullptr);
+    ~CanNetwork() override;
+
+    CanBus *bus() const { return m_bus; }
+    QString name() const;
+    int bitrate() const { return m_bitrate; }
+    bool isOpen() const;
+
+    SdoClient *sdo() const { return m_sdo; }
+    NmtMaster *nmt() const { return m_nmt; }
+    NodeMonitor *monitor() const { return m_monitor; }
+    EmcyConsumer *emcy() const { return m_emcy; }
+    SyncProducer *sync() const { return m_sync; }
+    LssMaster *lss() const { return m_lss; }
+
+    // Opens the bus unless it is open or opening; counts the users who need it open.
+    void acquire();
+    // One user less; the bus closes when none is left (closed() follows).
+    void release();
+    int users() const { return m_users; }
+    // Blocks in a local event loop until the bus is open or failed (CLI, benchmarks, tests).
+    Result<void> acquireAndWait(int timeoutMs);
+
+    // One frame out on the bus (raw, for the CAN monitor's sender and broadcast PDOs). False
+    // when the bus is not open.
+    bool send(const QCanBusFrame &frame);
+    // Frames with this COB-ID (11-bit or 29-bit id) call handler until context is destroyed.
+    void subscribe(quint32 cobId, QObject *context, FrameHandler handler);
+
+    // Texts for one node's EMCY codes (its description).
+    void setDictionary(NodeId node, const ObjectDictionary &dictionary);
+
+Q_SIGNALS:
+    void opened();
+    void closed(const db::Error &error);
+    // A bus problem that does not close it (error frame, overrun), for every user's log.
+    void warning(const QString &text);
+
+private:
+    struct Subscription
+    {
+        QPointer<QObject> context;
+        FrameHandler handler;
+    };
+    void dispatch(const QCanBusFrame &frame);
+
+    CanBus *m_bus;
+    int m_bitrate = 0;
+    int m_users = 0;
+    bool m_closing = false; // close() asked for by release(), not a failure
+    SdoClient *m_sdo;
+    NmtMaster *m_nmt;
+    NodeMonitor *m_monitor;
+    EmcyConsumer *m_emcy;
+    SyncProducer *m_sync;
+    LssMaster *m_lss;
+    std::unordered_map<quint32, std::vector<Subscription>> m_subscriptions;
+};
+
+} // namespace db::canopen
