@@ -1,7 +1,5 @@
 #include "jogpanel.h"
 
-#include "canopen/canopenconnection.h"
-#include "canopen/nodemonitor.h"
 #include "motionform.h"
 #include "widgetstyle.h"
 
@@ -138,13 +136,8 @@ void JogPanel::setConnection(DeviceConnection *connection)
         });
     m_connectionSignals << connect(connection, &QObject::destroyed, this,
                                    [this] { setConnection(nullptr); });
-    if (auto *canopen = qobject_cast<canopen::CanopenConnection *>(connection)) {
-        m_connectionSignals << connect(canopen->monitor(), &canopen::NodeMonitor::heartbeatLost,
-                                       this, [this, canopen](canopen::NodeId node) {
-                                           if (node == canopen->node())
-                                               onHeartbeatLost(node);
-                                       });
-    }
+    m_connectionSignals << connect(connection, &DeviceConnection::supervisionLost, this,
+                                   &JogPanel::onSupervisionLost);
     m_keepAlive->start();
     if (connection->isConnected())
         onInitialized(nullptr, m_generation);
@@ -306,9 +299,8 @@ void JogPanel::onConnectionLost(const Error &error)
     render();
 }
 
-void JogPanel::onHeartbeatLost(int node)
+void JogPanel::onSupervisionLost(const QString &reason)
 {
-    const QString reason = tr("heartbeat of node %1 lost").arg(node);
     if (isMotionInProgress())
         stopAll(reason);
     else

@@ -91,7 +91,7 @@ private:
     void applyLimits(const QHash<ObjectAddress, QVariant> &values);
     bool rotaryAcceleration() const;
     void onConnectionLost(const Error &error);
-    void onHeartbeatLost(int node);
+    void onSupervisionLost(const QString &reason);
     void onFocusChanged(QWidget *old, QWidget *now);
     void runPower(motion::CommandKind kind, bool enable);
     void render();

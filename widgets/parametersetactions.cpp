@@ -248,14 +248,14 @@ void ParameterSetActions::storeNow()
 {
     if (!m_connection || !m_connection->isConnected() || isBusy())
         return;
-    writeSignature(parameters::storeParameters(m_connection), tr("Parameters stored permanently"));
+    writeSignature(m_connection->storeNonVolatile(), tr("Parameters stored permanently"));
 }
 
 void ParameterSetActions::restoreFactoryDefaultsNow()
 {
     if (!m_connection || !m_connection->isConnected() || isBusy())
         return;
-    writeSignature(parameters::restoreFactoryDefaults(m_connection),
+    writeSignature(m_connection->restoreFactoryDefaults(),
                    tr("Factory defaults restored (1011h); they take effect after the next "
                       "reset or power cycle"));
 }

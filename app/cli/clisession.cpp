@@ -58,20 +58,20 @@ Result<void> Session::open(const QString &uriText)
     auto plan = m_registry.prepare(uriText, m_options.connectTimeoutMs, m_options.requestTimeoutMs);
     if (!plan)
         return plan.error();
+    if (!m_options.sdoMode.isEmpty()) {
+        // --sdo is the URI's ?sdo= given on the command line.
+        const ProtocolInfo *protocol = m_registry.find(plan->uri.scheme());
+        if (!protocol || protocol->key != u"canopen")
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("--sdo needs a canopen+... URI"));
+        if (const auto mode = canopen::CanopenConnection::sdoModeFromText(m_options.sdoMode); !mode)
+            return mode.error();
+        plan.value().uri.setQueryValue(QStringLiteral("sdo"), m_options.sdoMode);
+    }
     auto created = m_registry.create(plan.value());
     if (!created)
         return created.error();
     m_connection = created.value();
-    if (!m_options.sdoMode.isEmpty()) {
-        auto *canopen = qobject_cast<canopen::CanopenConnection *>(m_connection.get());
-        const auto mode = canopen::CanopenConnection::sdoModeFromText(m_options.sdoMode);
-        if (!canopen)
-            return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("--sdo needs a canopen+... URI"));
-        if (!mode)
-            return mode.error();
-        canopen->setSdoMode(*mode);
-    }
 
     return m_connection->openAndWait(m_options.connectTimeoutMs);
 }

@@ -8,7 +8,6 @@
 
 #include "core/printable.h"
 #include "core/valuecodec.h"
-#include "refgo/refgoconnection.h"
 
 namespace db::cli {
 
@@ -164,13 +163,14 @@ int refgo(Context &c)
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
-    auto *conn = qobject_cast<refgo::RefgoConnection *>(session.connection());
-    if (!conn)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("'refgo' needs a refgo:// URI, not %1")
-                              .arg(session.connection()->uri().scheme())));
-    const auto result = Reply::wait(conn->command(c.args.at(1)));
+    DeviceConnection *conn = session.connection();
+    if (!conn->capabilities().testFlag(DeviceConnection::Capability::RawCommands))
+        return fail(
+            c,
+            Error(
+                Error::Kind::InvalidArgument,
+                QStringLiteral("'refgo' needs a refgo:// URI, not %1").arg(conn->uri().scheme())));
+    const auto result = Reply::wait(conn->rawCommand(c.args.at(1)));
     if (!result)
         return fail(c, result.error());
     for (const QString &line : result.value().toStringList())

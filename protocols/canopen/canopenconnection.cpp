@@ -7,6 +7,7 @@
 #include "nmtmaster.h"
 #include "nodemonitor.h"
 #include "sdoclient.h"
+#include "storesignatures.h"
 #include "syncproducer.h"
 #include "transport/canbus.h"
 
@@ -40,8 +41,11 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
             Q_EMIT logLine(QStringLiteral("node %1 boot-up").arg(node));
     });
     connect(net->monitor(), &NodeMonitor::heartbeatLost, this, [this](NodeId node) {
-        if (node == m_node)
-            Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
+        if (node != m_node)
+            return;
+        Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
+        if (isConnected())
+            Q_EMIT supervisionLost(QStringLiteral("heartbeat of node %1 lost").arg(node));
     });
 }
 
@@ -60,6 +64,17 @@ CanopenConnection::~CanopenConnection()
         Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 deleted").arg(m_node)));
     releaseNetwork();
     m_network.reset();
+}
+
+Reply *CanopenConnection::storeNonVolatile()
+{
+    return write(store::kStoreAll, QVariant::fromValue<qulonglong>(store::kSaveSignature));
+}
+
+Reply *CanopenConnection::restoreFactoryDefaults()
+{
+    return write(store::kRestoreDefaultsAll,
+                 QVariant::fromValue<qulonglong>(store::kLoadSignature));
 }
 
 CanBus *CanopenConnection::bus() const

@@ -47,6 +47,9 @@ public:
 
     QString protocolKey() const override { return QStringLiteral("canopen"); }
     Capabilities capabilities() const override { return Capability::StoreNonVolatile; }
+    // 1010h / 1011h sub 1 = "save" / "load" (CiA 301).
+    Reply *storeNonVolatile() override;
+    Reply *restoreFactoryDefaults() override;
 
     NodeId node() const { return m_node; }
     // The network this node is on, with the master services of its bus (shared).

@@ -27,6 +27,7 @@ public:
     void setPort(int port) { m_port = port; }
     QMap<QString, QString> query() const { return m_query; }
     QString queryValue(const QString &key) const { return m_query.value(key); }
+    void setQueryValue(const QString &key, const QString &value) { m_query.insert(key, value); }
     bool hasQuery(const QString &key) const { return m_query.contains(key); }
     // A query parameter as an integer in [min, max]; InvalidArgument names the parameter.
     Result<int> queryInt(const QString &key, int min, int max) const;

@@ -163,4 +163,29 @@ QString stateName(DeviceConnection::State state)
     return {};
 }
 
+Reply *DeviceConnection::storeNonVolatile()
+{
+    return Reply::failed(
+        {},
+        Error(Error::Kind::NotSupported,
+              QStringLiteral("%1 cannot store parameters permanently").arg(m_uri.toString())));
+}
+
+Reply *DeviceConnection::restoreFactoryDefaults()
+{
+    return Reply::failed(
+        {},
+        Error(Error::Kind::NotSupported,
+              QStringLiteral("%1 cannot restore factory defaults").arg(m_uri.toString())));
+}
+
+Reply *DeviceConnection::rawCommand(const QString &command)
+{
+    Q_UNUSED(command)
+    return Reply::failed(
+        {},
+        Error(Error::Kind::NotSupported,
+              QStringLiteral("%1 takes no raw protocol commands").arg(m_uri.toString())));
+}
+
 } // namespace db

@@ -24,10 +24,8 @@ public:
 
     // Optional abilities beyond read/write.
     enum class Capability {
-        StoreNonVolatile = 0x1, // parameters can be saved permanently (1010h)
-        RawCommands = 0x2, // protocol commands as text (RefGo)
-        Motion = 0x4,
-        TraceSource = 0x8,
+        StoreNonVolatile = 0x1, // storeNonVolatile() and restoreFactoryDefaults()
+        RawCommands = 0x2, // rawCommand(): protocol commands as text (RefGo)
     };
     Q_DECLARE_FLAGS(Capabilities, Capability)
 
@@ -77,12 +75,25 @@ public:
     // Objects missing from the description are written as given.
     Reply *write(ObjectAddress address, const QVariant &raw);
 
+    // Saves the device's current parameters permanently, the way its protocol does it. The
+    // caller owns the reply; without Capability::StoreNonVolatile it fails with NotSupported.
+    virtual Reply *storeNonVolatile();
+    // Makes the device take its factory defaults (often only after its next reset). Ask the
+    // user first. Same contract as storeNonVolatile().
+    virtual Reply *restoreFactoryDefaults();
+    // One protocol command as text; the reply's value is the answer lines (QStringList). The
+    // caller owns the reply; without Capability::RawCommands it fails with NotSupported.
+    virtual Reply *rawCommand(const QString &command);
+
 Q_SIGNALS:
     void stateChanged(db::DeviceConnection::State state);
     // Connection-level problems (refused, lost, garbage); request errors go to their replies.
     void errorOccurred(const db::Error &error);
     // Human-readable traffic/events for the log console (one line each).
     void logLine(const QString &line);
+    // The device's own supervision says it is gone while the link is still up (a CANopen node
+    // whose heartbeat stopped): motion must be treated as out of control.
+    void supervisionLost(const QString &why);
 
 protected:
     virtual void doOpen() = 0;

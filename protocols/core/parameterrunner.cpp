@@ -1,24 +1,10 @@
-// ParameterBackup and the 1010h/1011h helpers. ParameterRestore is in parameterrunner_restore.cpp.
+// ParameterBackup. ParameterRestore is in parameterrunner_restore.cpp.
 
 #include "parameterrunner_p.h"
 
 #include <QTimer>
 
 namespace db {
-
-namespace parameters {
-
-Reply *storeParameters(DeviceConnection *connection)
-{
-    return connection->write(kStoreAll, QVariant::fromValue<qulonglong>(kStoreSignature));
-}
-
-Reply *restoreFactoryDefaults(DeviceConnection *connection)
-{
-    return connection->write(kRestoreDefaultsAll, QVariant::fromValue<qulonglong>(kLoadSignature));
-}
-
-} // namespace parameters
 
 namespace {
 

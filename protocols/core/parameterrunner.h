@@ -18,20 +18,6 @@ namespace db {
 // small enum state machines on the event loop; nothing blocks). The connection must outlive the
 // runner or the run fails with Error::Kind::Disconnected; the runner never opens or closes it.
 
-// CiA 301 7.5.2.13/14: the signatures written to 1010h/1011h sub 1 (ASCII, little-endian).
-namespace parameters {
-constexpr quint32 kStoreSignature = 0x65766173; // "save" (MovingCap: OW1010,1,1702257011)
-constexpr quint32 kLoadSignature = 0x64616F6C; // "load"
-constexpr ObjectAddress kStoreAll { 0x1010, 1 };
-constexpr ObjectAddress kRestoreDefaultsAll { 0x1011, 1 };
-
-// Writes "save" to 1010h sub 1 through the normal write(). The caller owns the reply.
-Reply *storeParameters(DeviceConnection *connection);
-// Writes "load" to 1011h sub 1: the device takes its factory defaults (on CANopen after the
-// next reset). Ask the user first. The caller owns the reply.
-Reply *restoreFactoryDefaults(DeviceConnection *connection);
-} // namespace parameters
-
 // One object a backup could not read, and why.
 struct BackupFailure
 {

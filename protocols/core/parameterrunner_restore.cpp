@@ -255,7 +255,7 @@ void ParameterRestore::store()
         return;
     }
     m_state = State::Storing;
-    track(parameters::storeParameters(m_connection), &ParameterRestore::onStoreDone);
+    track(m_connection->storeNonVolatile(), &ParameterRestore::onStoreDone);
 }
 
 void ParameterRestore::onStoreDone(Reply *reply)

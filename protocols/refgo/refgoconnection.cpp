@@ -1,5 +1,7 @@
 #include "refgoconnection.h"
 
+#include "canopen/storesignatures.h"
+
 #include "refgologging.h"
 #include "transport/tcpstream.h"
 
@@ -142,6 +144,18 @@ void RefgoConnection::onClosed(const Error &error)
     setState(State::Disconnected, why);
     if (m_autoReconnect)
         m_reconnectTimer.start();
+}
+
+Reply *RefgoConnection::storeNonVolatile()
+{
+    return write(canopen::store::kStoreAll,
+                 QVariant::fromValue<qulonglong>(canopen::store::kSaveSignature));
+}
+
+Reply *RefgoConnection::restoreFactoryDefaults()
+{
+    return write(canopen::store::kRestoreDefaultsAll,
+                 QVariant::fromValue<qulonglong>(canopen::store::kLoadSignature));
 }
 
 Reply *RefgoConnection::command(const QString &raw)

@@ -1,7 +1,8 @@
 #pragma once
 
 // MovingCap over RefGo (TCP 10001) as a DeviceConnection: object reads/writes through OR/OW,
-// raw commands for the terminal, store-to-NV through 1010h (movingcap.md 3, 9.9).
+// raw commands for the terminal, store-to-NV and factory defaults through 1010h/1011h as on its
+// CANopen side.
 
 #include "core/deviceconnection.h"
 #include "refgoclient.h"
@@ -35,6 +36,9 @@ public:
 
     // A raw RefGo command; the reply's value is the result lines (QStringList). Caller owns it.
     Reply *command(const QString &raw);
+    Reply *rawCommand(const QString &raw) override { return command(raw); }
+    Reply *storeNonVolatile() override;
+    Reply *restoreFactoryDefaults() override;
 
     // The engine, for typed commands (motion, TPSR, ...). Owned by the connection.
     RefgoClient *client() const { return m_client; }

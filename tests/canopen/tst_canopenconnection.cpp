@@ -179,7 +179,7 @@ void TstCanopenConnection::storeParametersWritesSave()
     open(QStringLiteral("canopen+slcan://127.0.0.1?node=50"));
     // movingcap.md 4.3: t63282310100173617665
     m_bus->play({ tx("23 10 10 01 73 61 76 65"), rx("60 10 10 01 00 00 00 00") });
-    QVERIFY(Reply::wait(parameters::storeParameters(m_conn), kWaitMs).ok());
+    QVERIFY(Reply::wait(m_conn->storeNonVolatile(), kWaitMs).ok());
     checkScript();
 }
 

@@ -5,6 +5,7 @@
 // transport. Failure modes: reject (writes to these objects fail as a device error), ignore
 // (writes accepted but not applied), silent (reads time out), goAway() (the link breaks).
 
+#include "canopen/storesignatures.h"
 #include "core/deviceconnection.h"
 
 #include <QSet>
@@ -31,6 +32,18 @@ public:
     }
 
     QString protocolKey() const override { return QStringLiteral("test"); }
+    // Stores and restores defaults as a CiA 301 device does (1010h / 1011h).
+    Capabilities capabilities() const override { return Capability::StoreNonVolatile; }
+    Reply *storeNonVolatile() override
+    {
+        return write(canopen::store::kStoreAll,
+                     QVariant::fromValue<qulonglong>(canopen::store::kSaveSignature));
+    }
+    Reply *restoreFactoryDefaults() override
+    {
+        return write(canopen::store::kRestoreDefaultsAll,
+                     QVariant::fromValue<qulonglong>(canopen::store::kLoadSignature));
+    }
 
     QSet<ObjectAddress> reject;
     QSet<ObjectAddress> silent; // reads fail at once as timeouts (the engine's time limit)

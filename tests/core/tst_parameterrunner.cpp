@@ -405,10 +405,10 @@ void TestParameterRunner::storeAndFactoryDefaults()
     rig.drive.powerCycle();
     QCOMPARE(rig.drive.read({ 0x6083, 0 }).value(), u32(3333)); // survived: stored by 1010h
 
-    QVERIFY(Reply::wait(parameters::restoreFactoryDefaults(&rig.connection)));
+    QVERIFY(Reply::wait(rig.connection.restoreFactoryDefaults()));
     QCOMPARE(rig.drive.read({ 0x6083, 0 }).value(), u32(1000)); // description default
     QVERIFY(rig.drive.write({ 0x6083, 0 }, u32(4444)));
-    QVERIFY(Reply::wait(parameters::storeParameters(&rig.connection)));
+    QVERIFY(Reply::wait(rig.connection.storeNonVolatile()));
     rig.drive.powerCycle();
     QCOMPARE(rig.drive.read({ 0x6083, 0 }).value(), u32(4444));
 }
@@ -464,8 +464,8 @@ void TestParameterRunner::writeOnlyRowIsWrittenNotVerified()
     MovingCapRig rig;
     QVERIFY(rig.drive.write({ 0x6083, 0 }, u32(2100)));
     ParameterSet set;
-    set.insert({ parameters::kStoreAll, QStringLiteral("Store parameters"), DataType::Unsigned32,
-                 u32(parameters::kStoreSignature), QString() });
+    set.insert({ canopen::store::kStoreAll, QStringLiteral("Store parameters"),
+                 DataType::Unsigned32, u32(canopen::store::kSaveSignature), QString() });
     ParameterRestore restore(&rig.connection);
     restore.setParameterSet(set);
     QVERIFY(runToEnd(&restore));

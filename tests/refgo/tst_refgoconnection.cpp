@@ -213,7 +213,7 @@ void TstRefgoConnection::unsupportedTypesAreRefusedWithoutTraffic()
 void TstRefgoConnection::storeParametersWritesSaveSignature()
 {
     connectNow();
-    Reply *reply = parameters::storeParameters(m_connection); // OW1010,1,"save"
+    Reply *reply = m_connection->storeNonVolatile(); // OW1010,1,"save"
     QCOMPARE(m_stream->takeWritten(), QByteArray("OW1010,1,1702257011\r"));
     m_stream->feed("OW1010,1,1702257011\r\nOW1010,1,1702257011,OK\r\n>");
     QVERIFY(test::await(reply, kWaitMs).ok());
