@@ -1,6 +1,6 @@
 #include "pdodiscovery.h"
 
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "canopen/pdoclient.h"
 #include "canopen/sdoclient.h"
 #include "core/valuecodec.h"
@@ -119,20 +119,24 @@ PdoChannelPlan planPdoChannels(const QList<canopen::PdoConfig> &configs,
     return plan;
 }
 
-Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
-                           const QList<ObjectAddress> &objects)
+Reply *discoverPdoChannels(DeviceConnection *connection, const QList<ObjectAddress> &objects)
 {
     const ObjectAddress first = objects.value(0);
     if (!connection || !connection->isConnected())
         return Reply::failed(first,
                              Error(Error::Kind::Disconnected,
                                    tr("cannot read the PDO configuration: not connected")));
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    if (!at)
+        return Reply::failed(
+            first,
+            Error(Error::Kind::InvalidArgument, tr("PDOs need a connection to a CANopen node")));
     auto *outer = new Reply(first);
     // Everything below lives as children of `outer`: deleting the reply early cancels the rest.
-    auto *client = new canopen::PdoClient(connection->sdo(), outer);
-    const canopen::NodeId node = connection->node();
+    auto *client = new canopen::PdoClient(at.network->sdo(), outer);
+    const canopen::NodeId node = at.node;
     const ObjectDictionary dictionary = connection->dictionary();
-    QPointer<canopen::SdoClient> sdo = connection->sdo();
+    QPointer<canopen::SdoClient> sdo = at.network->sdo();
     Reply *all = client->readAll(node, dictionary, canopen::PdoDirection::Transmit);
     all->setParent(outer);
     QObject::connect(all, &Reply::finished, outer, [=] {

@@ -8,8 +8,8 @@
 #include <QList>
 #include <QMetaType>
 
-namespace db::canopen {
-class CanopenConnection;
+namespace db {
+class DeviceConnection;
 }
 
 namespace db::scope {
@@ -55,8 +55,8 @@ PdoChannelPlan planPdoChannels(const QList<canopen::PdoConfig> &configs,
 // reply (caller owns it) finishes with QVariant::fromValue(PdoChannelPlan) (missing objects
 // are NOT an error: see PdoChannelPlan::missing) or with the SDO error of the configuration
 // read.
-Reply *discoverPdoChannels(canopen::CanopenConnection *connection,
-                           const QList<ObjectAddress> &objects);
+// Works on connections to a CANopen node (others fail with InvalidArgument).
+Reply *discoverPdoChannels(DeviceConnection *connection, const QList<ObjectAddress> &objects);
 
 // How long to wait after Start for the first PDO of `entries` before calling them silent:
 // 1.5 s, or three expected periods of the slowest one when that is longer. Pure.

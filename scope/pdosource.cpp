@@ -1,6 +1,6 @@
 #include "pdosource.h"
 
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "canopen/pdoclient.h"
 #include "transport/canbus.h"
 
@@ -25,6 +25,12 @@ int sizeOf(DataType type)
 // A gap between two frames longer than this many periods counts missed frames.
 constexpr double kLateFactor = 1.5;
 
+CanBus *busOf(const DeviceConnection *connection)
+{
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    return at ? at.network->bus() : nullptr;
+}
+
 } // namespace
 
 PdoSource::PdoSource(CanBus *bus, QObject *parent)
@@ -35,8 +41,8 @@ PdoSource::PdoSource(CanBus *bus, QObject *parent)
         m_device = bus->name();
 }
 
-PdoSource::PdoSource(canopen::CanopenConnection *connection, QObject *parent)
-    : PdoSource(connection ? connection->bus() : nullptr, parent)
+PdoSource::PdoSource(DeviceConnection *connection, QObject *parent)
+    : PdoSource(busOf(connection), parent)
 {
     if (connection)
         m_device = connection->uri().toString();

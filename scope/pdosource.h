@@ -12,8 +12,8 @@
 
 namespace db {
 class CanBus;
+class DeviceConnection;
 namespace canopen {
-class CanopenConnection;
 class PdoClient;
 } // namespace canopen
 } // namespace db
@@ -46,8 +46,9 @@ public:
 
     // The bus is not owned and must outlive the source.
     explicit PdoSource(CanBus *bus, QObject *parent = nullptr);
-    // Listens on the connection's bus; device URI from the connection.
-    explicit PdoSource(canopen::CanopenConnection *connection, QObject *parent = nullptr);
+    // Listens on the bus of the connection's CAN network (none for other protocols); device URI
+    // from the connection.
+    explicit PdoSource(DeviceConnection *connection, QObject *parent = nullptr);
     ~PdoSource() override;
 
     // InvalidArgument when running, offset+size > 8, or the type is not numeric.

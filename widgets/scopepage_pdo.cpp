@@ -1,7 +1,7 @@
 // ScopePage: channel sources (host polling, passive CANopen PDOs) and the opt-in TPDO mapping.
 #include "scopepage.h"
 
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/pdoclient.h"
 #include "scope/pdodiscovery.h"
@@ -135,11 +135,12 @@ std::optional<scope::PdoSource::Mapping> ScopePage::pdoMapping(const QString &id
 
 void ScopePage::addPdoChannels(const QList<ObjectAddress> &addresses)
 {
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
+    DeviceConnection *conn = m_connection.data();
+    const canopen::NetworkNode at = canopen::networkNodeOf(conn);
     QString refused;
     if (m_recorder->isRunning())
         refused = tr("stop recording to change the channels");
-    else if (!conn || !conn->isConnected())
+    else if (!at || !conn->isConnected())
         refused = tr("PDO channels need a connected CANopen device");
     else if (m_pdoRequest)
         refused = tr("wait for the PDO configuration being read");
@@ -148,7 +149,7 @@ void ScopePage::addPdoChannels(const QList<ObjectAddress> &addresses)
         Q_EMIT pdoLookupFinished(false);
         return;
     }
-    showMessage(tr("Reading the PDO configuration of node %1…").arg(conn->node()), false);
+    showMessage(tr("Reading the PDO configuration of node %1…").arg(at.node), false);
     Reply *reply = scope::discoverPdoChannels(conn, addresses);
     m_pdoRequest = reply;
     connect(reply, &Reply::finished, this, [this, reply] { onPdoPlan(reply); });
@@ -159,8 +160,9 @@ void ScopePage::onPdoPlan(Reply *reply)
 {
     reply->deleteLater();
     m_pdoRequest = nullptr;
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
-    if (!reply->ok() || !conn || m_recorder->isRunning()) {
+    DeviceConnection *conn = m_connection.data();
+    const canopen::NetworkNode at = canopen::networkNodeOf(conn);
+    if (!reply->ok() || !at || m_recorder->isRunning()) {
         showMessage(reply->ok() ? tr("the connection changed or recording started")
                                 : reply->error().message(),
                     true);
@@ -209,7 +211,7 @@ void ScopePage::onPdoPlan(Reply *reply)
         showMessage(tr("%n PDO channel(s) added; press Start to record (node %1 must be "
                        "operational).",
                        nullptr, int(plan.found.size()))
-                        .arg(conn->node()),
+                        .arg(at.node),
                     false);
     else
         showMessage(problems.join(QStringLiteral("; ")), true);
@@ -219,13 +221,13 @@ void ScopePage::onPdoPlan(Reply *reply)
 
 void ScopePage::promptMapToTpdo()
 {
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
-    if (!conn || m_unmapped.isEmpty())
+    const canopen::NetworkNode at = canopen::networkNodeOf(m_connection.data());
+    if (!at || m_unmapped.isEmpty())
         return;
     bool ok = false;
-    const int number = QInputDialog::getInt(this, tr("Map to TPDO"),
-                                            tr("TPDO number of node %1:").arg(conn->node()),
-                                            m_proposedTpdo + 1, 1, 4, 1, &ok);
+    const int number =
+        QInputDialog::getInt(this, tr("Map to TPDO"), tr("TPDO number of node %1:").arg(at.node),
+                             m_proposedTpdo + 1, 1, 4, 1, &ok);
     if (!ok)
         return;
     const int eventMs = m_rateBox->value() > 0 ? m_rateBox->value() : kDefaultEventMs;
@@ -237,7 +239,7 @@ void ScopePage::promptMapToTpdo()
         tr("This changes the PDO configuration of node %1: TPDO%2 will carry %3, sent every %4 "
            "ms. Whatever TPDO%2 carried before is replaced (in the device's RAM; nothing is "
            "stored). A PLC or other master using TPDO%2 will see the change.\n\nChange it?")
-            .arg(conn->node())
+            .arg(at.node)
             .arg(number)
             .arg(names.join(QStringLiteral(", ")))
             .arg(eventMs),
@@ -248,19 +250,19 @@ void ScopePage::promptMapToTpdo()
 
 void ScopePage::mapToTpdo(int tpdoNumber, int eventMs)
 {
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
-    if (!conn || m_unmapped.isEmpty() || m_pdoRequest || m_recorder->isRunning()) {
+    const canopen::NetworkNode at = canopen::networkNodeOf(m_connection.data());
+    if (!at || m_unmapped.isEmpty() || m_pdoRequest || m_recorder->isRunning()) {
         showMessage(tr("nothing to map (add PDO channels first; stop recording)"), true);
         Q_EMIT pdoLookupFinished(false);
         return;
     }
     const QList<ObjectAddress> objects = m_unmapped;
-    auto *client = new canopen::PdoClient(conn->sdo(), this);
-    Reply *reply = scope::configureTpdo(client, conn->node(), tpdoNumber, objects,
-                                        conn->dictionary(), eventMs);
+    auto *client = new canopen::PdoClient(at.network->sdo(), this);
+    Reply *reply = scope::configureTpdo(client, at.node, tpdoNumber, objects,
+                                        m_connection->dictionary(), eventMs);
     client->setParent(reply);
     m_pdoRequest = reply;
-    showMessage(tr("Writing TPDO%1 of node %2…").arg(tpdoNumber + 1).arg(conn->node()), false);
+    showMessage(tr("Writing TPDO%1 of node %2…").arg(tpdoNumber + 1).arg(at.node), false);
     connect(reply, &Reply::finished, this, [this, reply, objects, tpdoNumber] {
         reply->deleteLater();
         m_pdoRequest = nullptr;
@@ -288,11 +290,11 @@ void ScopePage::watchPdoArrival()
     // PDO channels without a frame after this time get the probable cause shown.
     const int firstPdoMs = scope::firstPdoTimeoutMs(m_pdoMappings.values());
     QTimer::singleShot(firstPdoMs, this, [this, run, firstPdoMs] {
-        auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
-        if (run != m_pdoWatch || !m_recorder->isRunning() || !conn)
+        const canopen::NetworkNode at = canopen::networkNodeOf(m_connection.data());
+        if (run != m_pdoWatch || !m_recorder->isRunning() || !at)
             return;
         scope::PdoChannelPlan silent;
-        silent.node = conn->node();
+        silent.node = at.node;
         silent.tpdos = m_tpdos;
         QStringList ids;
         for (int i = 0; i < m_recorder->channelCount(); ++i) {
@@ -309,7 +311,7 @@ void ScopePage::watchPdoArrival()
         showMessage(tr("No PDO within %1 s for %2: %3 (the scope never changes the NMT state).")
                         .arg(firstPdoMs / 1000.0)
                         .arg(ids.join(QStringLiteral(", ")),
-                             scope::silentPdoCause(silent, conn->monitor()->state(conn->node()))),
+                             scope::silentPdoCause(silent, at.network->monitor()->state(at.node))),
                     true);
     });
 }
@@ -318,9 +320,10 @@ Result<void> ScopePage::rebuildSource()
 {
     // Every channel of the page, with its scaling, on the current connection: polling channels
     // at their rate, PDO channels from their PDO. The recorder's channel order is kept.
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(m_connection.data());
     auto *polling = new scope::PollingSource(m_connection, this);
-    auto *pdo = conn ? new scope::PdoSource(conn, this) : nullptr;
+    auto *pdo = canopen::networkNodeOf(m_connection.data())
+        ? new scope::PdoSource(m_connection.data(), this)
+        : nullptr;
     QList<std::pair<scope::TraceSource *, int>> order;
     for (int i = 0; i < m_recorder->channelCount(); ++i) {
         scope::ChannelInfo info = m_recorder->channelInfo(i);

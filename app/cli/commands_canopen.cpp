@@ -308,11 +308,12 @@ int pdo(Context &c)
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
-    auto *conn = qobject_cast<CanopenConnection *>(session.connection());
-    if (!conn)
+    DeviceConnection *conn = session.connection();
+    const NetworkNode at = networkNodeOf(conn);
+    if (!at)
         return fail(c, usage(QStringLiteral("pdo needs a canopen+... URI")));
-    PdoClient client(conn->sdo());
-    const auto read = Reply::wait(client.readAll(conn->node(), conn->dictionary()));
+    PdoClient client(at.network->sdo());
+    const auto read = Reply::wait(client.readAll(at.node, conn->dictionary()));
     if (!read)
         return fail(c, read.error().prefixed(QStringLiteral("reading the PDO configuration")));
     const auto configs = read->value<QList<PdoConfig>>();
@@ -326,7 +327,7 @@ int pdo(Context &c)
         }
     }
     if (configs.isEmpty())
-        c.out << "node " << conn->node() << " has no PDO communication objects" << Qt::endl;
+        c.out << "node " << at.node << " has no PDO communication objects" << Qt::endl;
     return ExitOk;
 }
 
@@ -363,8 +364,8 @@ int dcf(Context &c)
                   << Qt::endl;
     }
     DcfCommissioning commissioning;
-    if (auto *conn = qobject_cast<CanopenConnection *>(session.connection()))
-        commissioning.nodeId = conn->node();
+    if (const NetworkNode at = networkNodeOf(session.connection()))
+        commissioning.nodeId = at.node;
     if (auto written = writeDcf(c.output, dict, values, commissioning); !written)
         return fail(c, written.error());
     c.out << "wrote " << c.output << ": " << values.size() << " values"

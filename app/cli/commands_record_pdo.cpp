@@ -1,6 +1,6 @@
 #include "commands_record_pdo.h"
 
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/pdoclient.h"
 
@@ -22,29 +22,29 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
                                                         const PdoRecordRequest &s,
                                                         scope::PdoChannelPlan &plan)
 {
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(connection);
-    if (!conn)
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    if (!at)
         return Error(Error::Kind::InvalidArgument,
                      QStringLiteral("--pdo and --configure-tpdo need a canopen+... URI"));
-    const ObjectDictionary &dictionary = conn->dictionary();
+    const ObjectDictionary &dictionary = connection->dictionary();
     if (s.configureTpdo >= 0) {
-        canopen::PdoClient client(conn->sdo());
-        const auto written = Reply::wait(scope::configureTpdo(
-            &client, conn->node(), s.configureTpdo, s.objects, dictionary, s.eventMs));
+        canopen::PdoClient client(at.network->sdo());
+        const auto written = Reply::wait(scope::configureTpdo(&client, at.node, s.configureTpdo,
+                                                              s.objects, dictionary, s.eventMs));
         // InvalidArgument is refused before any write; a device error may come half way.
         if (!written)
             return written.error().prefixed(
                 QStringLiteral("configuring TPDO%1 of node %2%3")
                     .arg(s.configureTpdo + 1)
-                    .arg(conn->node())
+                    .arg(at.node)
                     .arg(written.error().kind() == Error::Kind::InvalidArgument
                              ? QString()
                              : QStringLiteral(" (it may be left disabled)")));
-        c.err << "drivebench-cli: the PDO configuration of node " << conn->node()
+        c.err << "drivebench-cli: the PDO configuration of node " << at.node
               << " was changed (RAM only, not stored): "
               << written->value<canopen::PdoConfig>().toString() << Qt::endl;
     }
-    const auto discovered = Reply::wait(scope::discoverPdoChannels(conn, s.objects));
+    const auto discovered = Reply::wait(scope::discoverPdoChannels(connection, s.objects));
     if (!discovered)
         return discovered.error();
     plan = discovered->value<scope::PdoChannelPlan>();
@@ -53,8 +53,9 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
                      plan.missingText(dictionary)
                          + QStringLiteral("; use --configure-tpdo N to map it (this changes the "
                                           "device's PDO configuration)"));
-    auto source = std::make_unique<scope::PdoSource>(conn);
-    if (auto added = scope::addPlannedChannels(*source, plan, dictionary, conn->uri().toString());
+    auto source = std::make_unique<scope::PdoSource>(connection);
+    if (auto added =
+            scope::addPlannedChannels(*source, plan, dictionary, connection->uri().toString());
         !added)
         return added.error();
     for (const scope::PdoChannelPlanEntry &e : std::as_const(plan.found)) {
@@ -76,9 +77,9 @@ Error noPdoError(const Context &c, DeviceConnection *connection, const scope::Pd
         if (!pdos.contains(pdoName(e)))
             pdos.append(pdoName(e));
     }
-    auto *conn = qobject_cast<canopen::CanopenConnection *>(connection);
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
     const canopen::NmtState heard =
-        conn ? conn->monitor()->state(plan.node) : canopen::NmtState::Unknown;
+        at ? at.network->monitor()->state(plan.node) : canopen::NmtState::Unknown;
     QString text = QStringLiteral("no PDO arrived from node %1 within %2 s (%3): %4")
                        .arg(plan.node)
                        .arg(waitedMs / 1000.0)

@@ -16,6 +16,7 @@
 //   context object is destroyed is dropped.
 
 #include "canopenids.h"
+#include "core/deviceconnection.h"
 #include "core/error.h"
 #include "core/objectdictionary.h"
 
@@ -106,5 +107,25 @@ private:
     LssMaster *m_lss;
     std::unordered_map<quint32, std::vector<Subscription>> m_subscriptions;
 };
+
+// A node on a CAN network: what the services that work on the bus need of a connection.
+struct NetworkNode
+{
+    CanNetwork *network = nullptr;
+    NodeId node = 0;
+    explicit operator bool() const { return network != nullptr; }
+};
+
+// The network and node id of a connection to a CANopen node; empty for any other connection
+// (and for null).
+inline NetworkNode networkNodeOf(const DeviceConnection *connection)
+{
+    if (!connection)
+        return {};
+    auto *network = qobject_cast<CanNetwork *>(connection->network());
+    if (!network)
+        return {};
+    return { network, NodeId(connection->networkAddress()) };
+}
 
 } // namespace db::canopen

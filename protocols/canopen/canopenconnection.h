@@ -10,6 +10,7 @@
 // Connected as soon as the bus is open (after the probe when asked for). Opening acquires the
 // network's bus, closing releases it: the bus closes with the last connection that used it.
 
+#include "cannetwork.h"
 #include "canopenids.h"
 #include "core/deviceconnection.h"
 #include "sdoclient.h"
@@ -22,7 +23,6 @@ class CanBus;
 
 namespace db::canopen {
 
-class CanNetwork;
 class EmcyConsumer;
 class NmtMaster;
 class NodeMonitor;
@@ -53,7 +53,8 @@ public:
 
     NodeId node() const { return m_node; }
     // The network this node is on, with the master services of its bus (shared).
-    CanNetwork *network() const { return m_network.get(); }
+    CanNetwork *network() const override { return m_network.get(); }
+    int networkAddress() const override { return m_node; }
     CanBus *bus() const;
     SdoClient *sdo() const;
     NmtMaster *nmt() const;

@@ -85,6 +85,12 @@ public:
     // caller owns the reply; without Capability::RawCommands it fails with NotSupported.
     virtual Reply *rawCommand(const QString &command);
 
+    // The fieldbus network the device is on (a canopen::CanNetwork for CANopen) and its address
+    // there (the node id), for the services that work on the bus: PDO sampling, the CAN monitor,
+    // the node list. Null and 0 for protocols without one.
+    virtual QObject *network() const { return nullptr; }
+    virtual int networkAddress() const { return 0; }
+
 Q_SIGNALS:
     void stateChanged(db::DeviceConnection::State state);
     // Connection-level problems (refused, lost, garbage); request errors go to their replies.
