@@ -1,6 +1,6 @@
 #pragma once
 
-// The CAN monitor dock (issue 3 item 7): live frames of one CanBus with their CANopen reading,
+// The CAN monitor dock: live frames of one CanBus with their CANopen reading,
 // Kickdrive-style filters (COB-ID ranges, direction, object index, data pattern with ??
 // wildcards, text), pause, clear, autoscroll and saving as a candump log.
 //

@@ -1,6 +1,6 @@
 #pragma once
 
-// The CAN monitor's frames as a table (issue 3 item 7): time, direction, COB-ID, length, data
+// The CAN monitor's frames as a table: time, direction, COB-ID, length, data
 // and their CANopen reading. Bounded: a ring of capacity() frames; the oldest go first.
 //
 // Frames are not inserted one by one: they queue and join the table in one batch per

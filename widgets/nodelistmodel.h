@@ -1,6 +1,6 @@
 #pragma once
 
-// The CANopen nodes of one bus for the node list (issue 3 item 7): node id, NMT state from
+// The CANopen nodes of one bus for the node list: node id, NMT state from
 // heartbeat/boot-up (NodeMonitor), age of the last heartbeat, name. The connection's own node
 // is always listed, heard or not. No widgets here; NodeList is the view.
 

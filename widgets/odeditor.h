@@ -21,7 +21,7 @@ class OdEditorFilter;
 class OdEditorModel;
 class OdEditorPoller;
 
-// The object-dictionary editor page (issue 4 item 1): every object of the current device in a
+// The object-dictionary editor page: every object of the current device in a
 // tree grouped by communication / manufacturer / profile, a filter by index, name or value,
 // live refresh of the visible rows, in-place editing checked before anything is sent, a details
 // pane with the bits of the selected word, read/write by index for objects the description does

@@ -1,6 +1,6 @@
 #pragma once
 
-// The object dictionary as a tree for the editor (issue 4 item 1): groups (communication,
+// The object dictionary as a tree for the editor: groups (communication,
 // manufacturer, profile) -> objects -> sub-indices, with the device's last known value of each
 // sub-index and the state of the last request for it. Definitions come from the dictionary
 // (ARCHITECTURE.md habit 4); values only from setValue(). No I/O and no widgets here: an edit

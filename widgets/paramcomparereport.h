@@ -8,7 +8,7 @@ class QTreeWidget;
 
 namespace db::widgets {
 
-// The outcome of a restore (issue 4 item 2): counts, then every selected row with what happened
+// The outcome of a restore: counts, then every selected row with what happened
 // to it (verified, written, failed with the device's reason, mismatch, skipped) and the result of
 // the permanent store. Failed rows come first. "Copy" puts RestoreReport::summary() on the
 // clipboard for a ticket or a commissioning record.

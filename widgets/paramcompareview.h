@@ -20,7 +20,7 @@ namespace db::widgets {
 class ParamCompareFilter;
 class ParamCompareModel;
 
-// The parameter-set page (issue 4 item 2): load a set from a file, read the same objects from the
+// The parameter-set page: load a set from a file, read the same objects from the
 // device, and show device / file / defaults side by side with a status per row and the counts;
 // the user ticks the rows to restore. Loading and comparing only read; the device is written only
 // by startRestore() (after the confirmation in restoreSelected()), and then only the ticked rows.

@@ -15,7 +15,7 @@ class QWidget;
 
 namespace db::widgets {
 
-// The "Parameters" commands of the GUI (issue 4 item 2) as actions for a menu and the editor's
+// The "Parameters" commands of the GUI as actions for a menu and the editor's
 // tool row: Back Up…, Compare… (compareRequested; the page does the rest), Store Permanently
 // (1010h), Restore Factory Defaults… (1011h, after a strong confirmation that offers a backup
 // first) and Export DCF…. Long runs show a progress dialog with Cancel; outcomes are reported by

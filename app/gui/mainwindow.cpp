@@ -86,7 +86,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     createDocks();
     createMenus();
     createParameterPages();
-    // Scope (issue 6): records objects of the current connection.
+    // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
     statusBar()->addPermanentWidget(m_connectionState);
@@ -150,7 +150,7 @@ void MainWindow::createDocks()
                                       QStringLiteral("canMonitorDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(log, canMonitor);
     createMotionDock();
-    // Morse IP decoder (issue 7): files read by app/morse, "Connect" prefills the dialog.
+    // Morse IP decoder: files read by app/morse, "Connect" prefills the dialog.
     auto *morse = new widgets::MorsePanel(this);
     morse->setLoader(loadMorseSource);
     connect(morse, &widgets::MorsePanel::connectRequested, this, &MainWindow::showConnectDialogFor);

@@ -70,13 +70,13 @@ public:
     QTabWidget *pages() const { return m_pages; }
     // Brings the CAN monitor's tab to the front.
     void showCanMonitor();
-    // The "Motion" dock (right): jog/motion panel of the current connection (issue 5).
+    // The "Motion" dock (right): jog/motion panel of the current connection.
     widgets::JogPanel *jogPanel() const { return m_jogPanel; }
-    // Issue 4: "Object Dictionary" and "Parameter Sets" pages and the "Parameters" menu.
+    // "Object Dictionary" and "Parameter Sets" pages and the "Parameters" menu.
     widgets::OdEditor *odEditor() const { return m_odEditor; }
     widgets::ParamCompareView *compareView() const { return m_compareView; }
     widgets::ParameterSetActions *parameterActions() const { return m_paramActions; }
-    // Issue 6: the "Scope" page, recording from the current connection.
+    // The "Scope" page, recording from the current connection.
     widgets::ScopePage *scopePage() const { return m_scopePage; }
 
 public Q_SLOTS:

@@ -1,4 +1,4 @@
-// MainWindow: the "Motion" dock (issue 5) and the stops that must work whatever has the focus.
+// MainWindow: the "Motion" dock and the stops that must work whatever has the focus.
 #include "mainwindow.h"
 
 #include "widgets/jogpanel.h"

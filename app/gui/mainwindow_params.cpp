@@ -1,4 +1,4 @@
-// MainWindow, issue 4: the object-dictionary editor and parameter-set pages and the
+// MainWindow: the object-dictionary editor and parameter-set pages and the
 // "Parameters" menu. Only composition; the widgets do the work.
 
 #include "mainwindow.h"

@@ -1,4 +1,4 @@
-// Time to scan node ids 1..127 (issue 3 item 9): NodeScanner (pipelined SDO probe of 1000h, then
+// Time to scan node ids 1..127: NodeScanner (pipelined SDO probe of 1000h, then
 // 1018h.1-4 and 1008h of each node found) against simulated test nodes behind an SlcanServer, over
 // SLCAN-over-TCP on loopback, both in this process. The scan ends when the probes of the absent
 // ids time out, so its time is about one SDO timeout; the figure shows how far above it we are.

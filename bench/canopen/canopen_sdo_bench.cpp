@@ -1,4 +1,4 @@
-// SDO benchmark (issue 3 item 9): the SdoClient against a SimulatedNode served by an
+// SDO benchmark: the SdoClient against a SimulatedNode served by an
 // SlcanServer, over SLCAN-over-TCP on loopback, both in this process. Prints expedited round
 // trips per second with latency percentiles (a p99 near 40 ms would show Nagle/delayed-ACK
 // stalls), and segmented and block throughput for a 100 kB domain, both directions.

@@ -1,4 +1,4 @@
-// Time for a full parameter backup (issue 4 item 6): ParameterBackup of every storable object of
+// Time for a full parameter backup: ParameterBackup of every storable object of
 // the MovingCap description against the simulated MovingCap (app::DemoDrive, in this process)
 // over RefGo and over CANopen SDO on SLCAN-over-TCP, both on loopback. Target: < 1 s each.
 //   params_backup_bench [--repeat N] [--pipeline D] [--all]

@@ -1,4 +1,4 @@
-// Plot frame time of the scope (issue 6): decimation + QCustomPlot replot, offscreen, for
+// Plot frame time of the scope: decimation + QCustomPlot replot, offscreen, for
 // 8 channels x 1e6 samples and 1 channel x 1e7 samples, full view and zoomed (a panning 1 %
 // window, so every frame decimates anew). Prints ms per frame and fps; target >= 30 fps.
 //

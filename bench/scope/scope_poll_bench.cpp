@@ -1,4 +1,4 @@
-// Scope benchmark (issue 6 item 8): host polling with scope::PollingSource and the Recorder
+// Scope benchmark: host polling with scope::PollingSource and the Recorder
 // against the simulated MovingCap of `drivebench --demo` (app::DemoDrive), in this process, over
 // RefGo (ASCII over TCP) and over CANopen SDO via SLCAN-over-TCP, both on loopback. Polls 1 and
 // 4 objects as fast as the link allows (rate 0, one request in flight) and at a fixed period,

@@ -1,6 +1,6 @@
 #pragma once
 
-// Node discovery (issue 3 item 3): passive (boot-up and heartbeat through NodeMonitor) plus an
+// Node discovery: passive (boot-up and heartbeat through NodeMonitor) plus an
 // active SDO probe of 1000h on a range of node ids, sent pipelined: the requests of a window
 // (all 127 by default) go out at once, each with the SDO client's own timeout, so a full scan
 // takes about one SDO timeout. Any answer, even an abort, shows a node. For each node found,

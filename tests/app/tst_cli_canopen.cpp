@@ -1,4 +1,4 @@
-// drivebench-cli over CANopen end to end (issue 3 "Done when"), against `drivebench-sim canopen`
+// drivebench-cli over CANopen end to end, against `drivebench-sim canopen`
 // (nodes 1, 2, 5 answering, node 9 silent) over SLCAN-over-TCP on an OS-chosen loopback port and
 // over Qt's virtualcan (LOCK virtualcan): 1008h, a 1 kB string and a 100 kB domain written and
 // read back by segmented and by block SDO, scan, nmt, lss, pdo, dcf, and the failures (abort,
