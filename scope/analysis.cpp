@@ -173,7 +173,11 @@ Result<Spectrum> spectrum(const TraceBuffer &buffer, double t0, double t1, const
 Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t1,
                                   const ChannelInfo &info, double settlingBand)
 {
-    const auto [first, last] = range(buffer, t0, t1);
+    // Plain variables, not a structured binding: the lambdas below capture them, which clang
+    // before 16 refuses for bindings.
+    const std::pair<qint64, qint64> bounds = range(buffer, t0, t1);
+    const qint64 first = bounds.first;
+    const qint64 last = bounds.second;
     const qint64 n = last - first;
     if (n < 3)
         return Error(Error::Kind::InvalidArgument,

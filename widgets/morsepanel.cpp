@@ -224,6 +224,14 @@ void MorsePanel::step()
     std::size_t end = m_fed;
     while (end < m_source.samples.size() && m_source.samples[end].t <= now)
         ++end;
+    // The decoder cuts the recording at a gap longer than kMaxSampleGap: playback skips it
+    // instead of waiting for it (a gap of hours in a file).
+    const auto &s = m_source.samples;
+    if (end == m_fed && end > 0 && end < s.size()
+        && s[end].t - s[end - 1].t > morse::kMaxSampleGap) {
+        m_playStart += s[end].t - now;
+        ++end;
+    }
     feedUntil(end);
     if (m_fed >= m_source.samples.size()) {
         m_timer->stop();
@@ -323,9 +331,11 @@ void MorsePanel::refresh()
         status = tr("Open a video of the green STATUS LED (at least two message repetitions) or a "
                     "CSV of samples, or start a camera.");
     else if (d.confident())
-        status = tr("Confident: %1 agreeing messages, unit %2 ms.")
+        status = tr("Confident: %1 agreeing messages, unit %2 ms")
                      .arg(ip.messages)
-                     .arg(d.unitFit().unit * 1000.0, 0, 'f', 0);
+                     .arg(d.unitFit().unit * 1000.0, 0, 'f', 0)
+            + (d.gapCount() > 0 ? QStringLiteral("; ") + d.gapNote() : QString())
+            + QLatin1Char('.');
     else
         status = (playing() || m_live ? tr("Decoding… ") : QString()) + d.reasonMessage();
     m_status->setText(status);

@@ -39,6 +39,9 @@ int morse(Context &c)
     decoder.feed(rec->samples);
     decoder.finish();
     const morse::DecodeResult r = decoder.result();
+    // A recording cut at gaps in time is said on success too (on failure the reason says it).
+    if (!decoder.gapNote().isEmpty() && r.reason == morse::Reason::None)
+        c.out << "note: " << decoder.gapNote() << Qt::endl;
     if (!r.text.isEmpty())
         c.out << "text: " << r.text << Qt::endl;
     if (r.unit > 0.0)

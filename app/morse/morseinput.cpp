@@ -87,17 +87,27 @@ std::optional<QRect> parseRegion(const QString &text)
 Result<Recording> readCsv(const QString &path)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+    if (!file.open(QIODevice::ReadOnly))
         return ioError(QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
-    QTextStream in(&file);
     Recording rec;
     rec.source = QStringLiteral("csv");
     static const QRegularExpression sep(QStringLiteral("[,;\\t]"));
+    auto invalid = [&path](int line, const QString &what) {
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("%1:%2: %3").arg(path).arg(line).arg(what));
+    };
+    auto seconds = [](double t) {
+        return QString::number(t, 'g', 10);
+    };
     int line = 0;
     bool first = true;
-    while (!in.atEnd()) {
-        const QString text = in.readLine().trimmed();
+    while (!file.atEnd()) {
+        // One byte more than a line may have, so that a longer one is noticed, not split.
+        const QByteArray raw = file.readLine(kMaxCsvLine + 2);
         ++line;
+        if (raw.size() > kMaxCsvLine && !raw.endsWith('\n') && !file.atEnd())
+            return invalid(line, QStringLiteral("line longer than %1 characters").arg(kMaxCsvLine));
+        const QString text = QString::fromUtf8(raw).trimmed();
         if (text.isEmpty() || text.startsWith(QLatin1Char('#')))
             continue;
         const QStringList f = text.split(sep);
@@ -110,15 +120,39 @@ Result<Recording> readCsv(const QString &path)
                 first = false;
                 continue;
             }
-            return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("%1:%2: expected \"time_s,brightness\", got \"%3\"")
-                             .arg(path)
-                             .arg(line)
-                             .arg(text.left(60)));
+            return invalid(
+                line,
+                QStringLiteral("expected \"time_s,brightness\", got \"%1\"").arg(text.left(60)));
         }
         first = false;
+        // The decoder needs strictly increasing, finite times: a row out of order (rows sorted
+        // wrongly, two recordings appended) or a clock that stepped back makes the file
+        // ambiguous, so it is refused with the row rather than read in part.
+        if (!std::isfinite(t))
+            return invalid(
+                line, QStringLiteral("time \"%1\" is not a finite number").arg(f[0].trimmed()));
+        if (!std::isfinite(v))
+            return invalid(
+                line,
+                QStringLiteral("brightness \"%1\" is not a finite number").arg(f[1].trimmed()));
+        if (t < 0.0)
+            return invalid(line, QStringLiteral("time %1 s is negative").arg(seconds(t)));
+        if (!rec.samples.empty() && t == rec.samples.back().t)
+            return invalid(
+                line, QStringLiteral("time %1 s repeats the previous row's time").arg(seconds(t)));
+        if (!rec.samples.empty() && t < rec.samples.back().t)
+            return invalid(line,
+                           QStringLiteral("time %1 s is before the previous row's %2 s "
+                                          "(rows must be in time order)")
+                               .arg(seconds(t), seconds(rec.samples.back().t)));
+        if (rec.samples.size() >= kMaxCsvSamples)
+            return invalid(
+                line,
+                QStringLiteral("more than %1 samples: cut the recording").arg(kMaxCsvSamples));
         rec.samples.push_back({ t, v });
     }
+    if (file.error() != QFileDevice::NoError)
+        return ioError(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (rec.samples.empty())
         return Error(Error::Kind::InvalidArgument, QStringLiteral("%1: no samples").arg(path));
     return rec;
@@ -295,20 +329,36 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     const QSize analysis = analysisSize(QSize(w, h));
     const int sw = analysis.width();
     const int sh = analysis.height();
-    const int pw = std::min(w, kPreviewWidth);
-    const int ph = std::max(1, h * pw / w);
+    // The preview at most kPreviewWidth wide and high (a tall frame is scaled to fit).
+    int pw = std::min(w, kPreviewWidth);
+    int ph = std::max(1, int(qint64(h) * pw / w));
+    if (ph > kPreviewWidth) {
+        ph = kPreviewWidth;
+        pw = std::max(1, int(qint64(w) * ph / h));
+    }
 
     GreyFrames grey { sw, sh, {} };
     std::vector<double> times;
-    std::vector<QImage> previews; // every 8th frame, to pick an "on" frame later
+    // Every previewEvery-th frame, to pick an "on" frame later: at most kMaxPreviews (every
+    // other one is dropped and the step doubled when they are full).
+    std::vector<QImage> previews;
+    std::size_t previewEvery = 8;
+    const std::size_t frameBytes = std::size_t(sw) * std::size_t(sh);
+    bool tooLong = false;
     AvFrame frame;
     AvPacket packet;
     Sws small;
     Sws preview;
     const double tb = av_q2d(stream->time_base);
     auto take = [&](AVFrame *f) {
+        if ((grey.frames.size() + 1) * frameBytes > kMaxVideoBytes) {
+            tooLong = true;
+            return;
+        }
         std::vector<unsigned char> g = toGrey(small, AVPixelFormat(f->format), f->data, f->linesize,
                                               QSize(f->width, f->height), analysis);
+        if (g.size() != frameBytes)
+            return; // a frame libswscale cannot convert
         const int64_t pts = f->best_effort_timestamp;
         double t = pts != AV_NOPTS_VALUE ? double(pts) * tb : 0.0;
         if (pts == AV_NOPTS_VALUE || (!times.empty() && t <= times.back()))
@@ -316,7 +366,15 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
                               : times.back() + 1.0 / std::max(1.0, av_q2d(stream->r_frame_rate));
         times.push_back(t);
         grey.frames.push_back(std::move(g));
-        if (grey.frames.size() % 8 == 1) {
+        if ((grey.frames.size() - 1) % previewEvery == 0) {
+            if (previews.size() == kMaxPreviews) {
+                for (std::size_t i = 0; i < kMaxPreviews / 2; ++i)
+                    previews[i] = previews[2 * i];
+                previews.resize(kMaxPreviews / 2);
+                previewEvery *= 2;
+                if ((grey.frames.size() - 1) % previewEvery != 0)
+                    return;
+            }
             preview.p =
                 sws_getCachedContext(preview.p, f->width, f->height, AVPixelFormat(f->format), pw,
                                      ph, AV_PIX_FMT_RGB32, SWS_BILINEAR, nullptr, nullptr, nullptr);
@@ -331,13 +389,21 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
         while (avcodec_receive_frame(dec.p, frame.p) == 0)
             take(frame.p);
     };
-    while (av_read_frame(fmt.p, packet.p) >= 0) {
+    while (!tooLong && av_read_frame(fmt.p, packet.p) >= 0) {
         if (packet.p->stream_index == si && avcodec_send_packet(dec.p, packet.p) == 0)
             drain();
         av_packet_unref(packet.p);
     }
     avcodec_send_packet(dec.p, nullptr);
     drain();
+    if (tooLong)
+        return ioError(QStringLiteral("%1: longer than %2 frames of %3x%4 pixels (%5 MB) at once: "
+                                      "cut the video")
+                           .arg(path)
+                           .arg(grey.frames.size())
+                           .arg(sw)
+                           .arg(sh)
+                           .arg(kMaxVideoBytes >> 20));
     if (grey.frames.size() < 2)
         return ioError(QStringLiteral("%1: no frames decoded").arg(path));
 
@@ -362,9 +428,9 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     for (std::size_t f = 0; f < grey.frames.size(); ++f) {
         const double v = regionMean(grey.frames[f], sw, use);
         rec.samples.push_back({ times[f], v });
-        if (f % 8 == 0 && v > brightest) {
+        if (f % previewEvery == 0 && f / previewEvery < previews.size() && v > brightest) {
             brightest = v;
-            rec.frame = previews[f / 8];
+            rec.frame = previews[f / previewEvery];
         }
     }
     return rec;

@@ -20,7 +20,8 @@ struct Recording
 {
     std::vector<morse::Sample> samples;
     QRect region; // video: the LED region in frame pixels; empty for CSV
-    QImage frame; // video: a frame with the LED on (at most kPreviewWidth wide); null for CSV
+    QImage
+        frame; // video: a frame with the LED on (at most kPreviewWidth wide and high); null for CSV
     QSize frameSize; // video: the frame size of the stream (the scale of `region`)
     double frameRate = 0.0; // video: frames per second
     QString source; // "csv" or "video (codec WxH)"
@@ -28,8 +29,12 @@ struct Recording
 
 // CSV: one sample per line, "time_s,brightness" (',' ';' or tab; any brightness scale). An
 // optional header line (a first line that is not numeric) is skipped; blank lines and lines
-// starting with '#' are ignored. Any other unreadable line is an error naming the line.
+// starting with '#' are ignored. Any other unreadable line is an error naming the line, and so
+// are times or brightness that are not finite, negative times, times that repeat or go back
+// (rows out of order), lines longer than kMaxCsvLine and more than kMaxCsvSamples samples.
 Result<Recording> readCsv(const QString &path);
+constexpr int kMaxCsvLine = 256; // characters
+constexpr std::size_t kMaxCsvSamples = 10'000'000; // 160 MB; 2.7 h at 1 kHz
 
 // Video (any container/codec libavformat/libavcodec read): frames are converted to grey,
 // scaled down to kAnalysisWidth and the LED region is the one with the strongest on/off
@@ -45,6 +50,10 @@ std::optional<QRect> parseRegion(const QString &text);
 
 constexpr int kAnalysisWidth = 160;
 constexpr int kPreviewWidth = 640;
+// readVideo() keeps the analysis frames of the whole video (the LED region is searched on all of
+// them) up to this many bytes: 20 minutes at 30 fps of 16:9 frames. Longer videos are refused.
+constexpr std::size_t kMaxVideoBytes = std::size_t(1) << 29;
+constexpr std::size_t kMaxPreviews = 32; // preview frames kept to pick one with the LED on
 
 // A stack of small grey frames, row-major, width * height bytes each.
 struct GreyFrames

@@ -29,6 +29,8 @@ constexpr std::size_t kMaxJoins = 2; // spurious word gaps re-read inside one me
 constexpr double kReparseSeconds = 600.0;
 // Samples kept for checkFrames(): those of every stretch that may still be parsed.
 constexpr double kKeepSamples = kReparseSeconds + 120.0;
+// And at most twice this many of them (32 MB): a source of more than 2.9 kHz keeps less time.
+constexpr std::size_t kMaxKeptSamples = std::size_t(1) << 21;
 // checkFrames(): the value read and up to kRivals others whose soft cost is below kCheckRange
 // nats (the voter uses up to IpVoter::kMaxWeight * kNatsPerWeight = 6).
 constexpr std::size_t kRivals = 3;
@@ -108,10 +110,18 @@ Decoder::Decoder(DecoderOptions options)
 void Decoder::feed(std::span<const Sample> samples)
 {
     for (const Sample &s : samples) {
+        const bool valid = std::isfinite(s.t) && std::isfinite(s.value);
+        if (valid && std::isfinite(m_lastTime) && s.t - m_lastTime > kMaxSampleGap)
+            endPart(s.t - m_lastTime);
+        ++m_fed;
         m_slicer.feed(s);
-        if (std::isfinite(s.t) && std::isfinite(s.value)
-            && (m_samples.empty() || s.t > m_samples.back().t))
+        if (valid && (m_samples.empty() || s.t > m_samples.back().t)) {
             m_samples.push_back(s);
+            m_lastTime = s.t;
+            if (m_samples.size() >= 2 * kMaxKeptSamples)
+                m_samples.erase(m_samples.begin(),
+                                m_samples.begin() + std::ptrdiff_t(kMaxKeptSamples));
+        }
     }
     // Drop the old samples in blocks (amortised): at most twice the window is kept.
     if (!m_samples.empty()) {
@@ -127,6 +137,56 @@ void Decoder::feed(std::span<const Sample> samples)
 void Decoder::finish()
 {
     update(true);
+}
+
+void Decoder::endPart(double gapLength)
+{
+    update(true);
+    const auto rank = [](Reason r) {
+        return r == Reason::None ? 100 : int(r);
+    };
+    if (rank(partReason()) > rank(m_doneReason))
+        m_doneReason = partReason();
+    m_doneReadings.insert(m_doneReadings.end(), m_partReadings.begin(), m_partReadings.end());
+    m_doneText = m_text;
+    m_doneComplete = m_completeSeen;
+    if (m_gaps.size() < kMaxGapsKept)
+        m_gaps.push_back({ m_lastTime, gapLength, m_fed });
+    ++m_gapCount;
+    qCDebug(lcMorse) << "gap of" << gapLength << "s after" << m_lastTime << ": new recording";
+    m_slicer = {};
+    m_samples.clear();
+    m_frameCache.clear();
+    m_fit = {};
+    m_symbols = {};
+    m_fittedAt = 0;
+    m_symbolizedKey = 0;
+    m_symbolizedUnit = 0.0;
+    m_wasFound = false;
+    m_wasIdle = false;
+    m_cache.clear();
+    m_model = {};
+    m_modelUnit = 0.0;
+    m_modelDuty = 0.0;
+    m_partReadings.clear();
+}
+
+QString Decoder::gapNote() const
+{
+    if (m_gapCount == 0)
+        return {};
+    QStringList where;
+    for (const SampleGap &g : m_gaps) {
+        where << QStringLiteral("a %1 s gap in time after sample %2 (at %3 s)")
+                     .arg(g.length, 0, 'g', 3)
+                     .arg(g.samples)
+                     .arg(g.after, 0, 'f', 2);
+    }
+    if (m_gapCount > m_gaps.size())
+        where << QStringLiteral("%1 more").arg(m_gapCount - m_gaps.size());
+    return QStringLiteral("the recording has %1: read as %2 recordings")
+        .arg(where.join(QStringLiteral(", ")))
+        .arg(m_gapCount + 1);
 }
 
 void Decoder::event(DecoderEvent::Kind kind, QString detail)
@@ -158,7 +218,8 @@ void Decoder::update(bool final)
     }
     if (!m_fit.valid || m_fit.quality < m_options.minFitQuality) {
         m_symbols = {};
-        m_text.clear();
+        m_text = m_doneText;
+        m_partReadings.clear();
         return;
     }
 
@@ -188,7 +249,10 @@ void Decoder::update(bool final)
         m_frameCache.clear();
     }
     IpVoter voter;
-    int complete = 0;
+    for (const IpObservation &obs : m_doneReadings)
+        voter.add(obs);
+    m_partReadings.clear();
+    int complete = m_doneComplete;
     QString corrected;
     const std::vector<StretchInput> stretches = splitStretches(m_symbols.elements);
     for (std::size_t i = 0; i < stretches.size(); ++i) {
@@ -229,6 +293,7 @@ void Decoder::update(bool final)
                 continue;
             qCDebug(lcMorse).noquote() << "  reading" << readingText(obs);
             voter.add(obs);
+            m_partReadings.push_back(obs);
             if (obs.complete && ++complete > m_completeSeen) {
                 IpEstimate one;
                 one.octets = obs.octets;
@@ -239,7 +304,10 @@ void Decoder::update(bool final)
     m_completeSeen = std::max(m_completeSeen, complete);
     m_ip = voter.observations() > 0 ? voter.estimate() : IpEstimate {};
     qCDebug(lcMorse) << "ip" << m_slicer.lastTime() << m_ip.toString() << m_ip.confidence;
-    m_text = corrected;
+    // The parts of a recording cut at gaps are told apart by '|'.
+    m_text = m_doneText.isEmpty() || corrected.isEmpty()
+        ? m_doneText + corrected
+        : m_doneText + QStringLiteral(" | ") + corrected;
 
     const qsizetype colon = m_text.indexOf(QLatin1Char(':'));
     m_closedMessage = colon >= 0 && m_text.indexOf(QLatin1Char(':'), colon + 1) >= 0;
@@ -372,6 +440,16 @@ std::vector<DecoderEvent> Decoder::takeEvents()
 
 Reason Decoder::reason() const
 {
+    const Reason part = partReason();
+    if (m_gapCount == 0 || part == Reason::None)
+        return part;
+    if (m_doneReason == Reason::None)
+        return Reason::LowConfidence; // a part was confident alone, the later ones disagree
+    return std::max(part, m_doneReason, [](Reason a, Reason b) { return int(a) < int(b); });
+}
+
+Reason Decoder::partReason() const
+{
     if (m_slicer.validSamples() < 2)
         return Reason::InvalidInput;
     if (!m_slicer.found())
@@ -398,6 +476,8 @@ QString Decoder::reasonMessage() const
     // damaged every message), not that it sends something else.
     if (r == Reason::NoValidIp && m_ip.anyOctet())
         message += QStringLiteral("; octets read so far: %1").arg(m_ip.toString());
+    if (m_gapCount > 0)
+        message += QStringLiteral("; ") + gapNote();
     return message;
 }
 

@@ -10,6 +10,7 @@
 
 #include <QString>
 
+#include <limits>
 #include <map>
 #include <span>
 #include <tuple>
@@ -25,6 +26,21 @@ struct DecoderOptions
     // Re-read each octet on the samples (framecheck.h). Off: the readings of the lengths alone
     // (for comparison in tests and benchmarks).
     bool checkFrames = true;
+};
+
+// A gap between two samples longer than this ends one recording and starts the next (a camera
+// that stopped delivering frames, two recordings in one file): far longer than any Morse element
+// (a word gap is 3.5 s at the slowest unit), and the levels, the sample period and the unit of
+// the part before say nothing about the part after. Each part is read on its own; the readings
+// of all parts vote for the IP.
+constexpr double kMaxSampleGap = 10.0; // s
+
+// Where the recording was cut (Decoder::gaps()).
+struct SampleGap
+{
+    double after = 0.0; // time of the last sample before the gap, s
+    double length = 0.0; // s
+    std::size_t samples = 0; // samples fed before the gap (the gap follows sample number this)
 };
 
 enum class DecoderState {
@@ -95,17 +111,32 @@ public:
     // Events since the last call, oldest first.
     std::vector<DecoderEvent> takeEvents();
 
-    // Why there is no confident IP (Reason::None when there is one).
+    // Where the recording was cut at gaps longer than kMaxSampleGap (the first kMaxGapsKept),
+    // and how many there were in all.
+    const std::vector<SampleGap> &gaps() const { return m_gaps; }
+    std::size_t gapCount() const { return m_gapCount; }
+    // The cuts for the user ("the recording has a 1e+09 s gap in time after sample 36 (at
+    // 3.60 s): read as 2 recordings"); empty without a cut.
+    QString gapNote() const;
+
+    // Why there is no confident IP (Reason::None when there is one). With a recording cut at
+    // gaps: the reason of the part that came farthest.
     Reason reason() const;
     // reasonText(reason()), with the octets voted so far when no valid message was read
-    // ("...; octets read so far: ?.?.7.42").
+    // ("...; octets read so far: ?.?.7.42"), and gapNote() where the recording was cut.
     QString reasonMessage() const;
     // The reason as an Error (deviceCode = int(Reason)); Kind::None when confident.
     Error diagnosis() const;
     DecodeResult result() const;
 
+    static constexpr std::size_t kMaxGapsKept = 3;
+
 private:
     void update(bool final);
+    // Completes the part before a gap and starts the next one from scratch; its readings,
+    // text and reason are kept for the whole recording.
+    void endPart(double gapLength);
+    Reason partReason() const;
     void event(DecoderEvent::Kind kind, QString detail = {});
     StretchParse cachedParse(const StretchInput &stretch, ParseMode mode);
     // Re-reads each octet of the parse on the samples (framecheck.h): the value read and its
@@ -135,6 +166,17 @@ private:
     ElementModel m_model;
     double m_modelUnit = 0.0;
     double m_modelDuty = 0.0;
+    // The readings of the current part (at its last update), and those of the parts before the
+    // last gap with their text and the farthest reason.
+    std::vector<IpObservation> m_partReadings;
+    std::vector<IpObservation> m_doneReadings;
+    QString m_doneText;
+    int m_doneComplete = 0;
+    Reason m_doneReason = Reason::InvalidInput;
+    std::vector<SampleGap> m_gaps;
+    std::size_t m_gapCount = 0;
+    std::size_t m_fed = 0;
+    double m_lastTime = -std::numeric_limits<double>::infinity(); // of the last finite sample
 };
 
 // One-shot: the whole recording. An error (with the Reason in deviceCode) when no IP address

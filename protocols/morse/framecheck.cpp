@@ -154,15 +154,7 @@ double regionLogLikelihood(std::span<const Sample> all, const RegionModel &m, co
     // the length's prior, not the samples' likelihood. No finer than a 16th of a unit (a
     // photodiode at 1 kHz: the lengths' spread is far wider), no coarser than a third.
     const double h = std::clamp(period, m.unit / 16.0, m.unit / 3.0);
-    const auto grid = static_cast<std::size_t>(std::ceil((m.to - m.from) / h));
-    // first[g]: the first sample at or after grid point g.
-    std::vector<std::size_t> first(grid + 2);
-    for (std::size_t g = 0, j = 0; g <= grid + 1; ++g) {
-        const double t = m.from + double(g) * h;
-        while (j < n && s[j].t < t)
-            ++j;
-        first[g] = j;
-    }
+    const double cells = std::ceil((m.to - m.from) / h);
     // Per element: the lengths considered (grid steps) and the probability of each, Huber
     // around the nominal length and normalised over the grid cells, so that readings with more
     // or fewer elements, or with dahs (wider spread) instead of dits, compare fairly. The dark at
@@ -205,6 +197,20 @@ double regionLogLikelihood(std::span<const Sample> all, const RegionModel &m, co
     for (std::size_t i = elements.size(); i-- > 0;) {
         minRest[i] = minRest[i + 1] + steps[i].shortest;
         maxRest[i] = maxRest[i + 1] + steps[i].longest;
+    }
+    // A region longer than the longest reading of the text cannot hold it. Checked before the
+    // grid is allocated: the region's length comes from the recording (a gap of hours in the
+    // samples), the grid's bound from the text.
+    if (!(cells <= double(maxRest[0])))
+        return kNegInf;
+    const auto grid = static_cast<std::size_t>(cells);
+    // first[g]: the first sample at or after grid point g.
+    std::vector<std::size_t> first(grid + 2);
+    for (std::size_t g = 0, j = 0; g <= grid + 1; ++g) {
+        const double t = m.from + double(g) * h;
+        while (j < n && s[j].t < t)
+            ++j;
+        first[g] = j;
     }
     // Forward algorithm: alpha[g] = ln p(element i begins at grid point g, the samples before
     // it), summed over all edge positions. The samples of an element from a to b contribute

@@ -47,6 +47,10 @@ constexpr double kMinLag = 0.05;
 constexpr double kMinContrastKept = 0.25; // of the previous contrast: the fit never collapses it
 constexpr double kQuiet = 8.0; // s without an edge before the levels are checked again
 constexpr double kMadToSigma = 1.4826; // median absolute deviation -> sigma (Gaussian)
+// The boxcar and the window hold at most this many samples, whatever the sample rate: a source
+// faster than 340 kHz (boxcar) or 4 kHz (window) has them cover less time.
+constexpr std::size_t kMaxSmooth = 4096;
+constexpr std::size_t kMaxWindow = 16384;
 
 double median(std::vector<double> &v)
 {
@@ -76,7 +80,7 @@ void LevelSlicer::feed(const Sample &s)
     m_smooth.push_back(s);
     m_smoothSum += s.value;
     m_smoothTSum += s.t;
-    while (m_smooth.front().t < s.t - kSmoothTime) {
+    while (m_smooth.front().t < s.t - kSmoothTime || m_smooth.size() > kMaxSmooth) {
         m_smoothSum -= m_smooth.front().value;
         m_smoothTSum -= m_smooth.front().t;
         m_smooth.pop_front();
@@ -233,7 +237,7 @@ double LevelSlicer::crossingSigma(double before, double after, double dt) const
 void LevelSlicer::process(const Point &p)
 {
     m_window.push_back(p);
-    while (m_window.front().t < p.t - kWindow)
+    while (m_window.front().t < p.t - kWindow || m_window.size() > kMaxWindow)
         m_window.pop_front();
 
     const bool quiet = m_tracking && p.t - m_lastEdge > kQuiet;

@@ -162,6 +162,16 @@ private slots:
         QVERIFY(std::isinf(regionLogLikelihood(r.samples, reversed, QStringLiteral("5"))));
         // Far more marks than the region holds.
         QVERIFY(std::isinf(regionLogLikelihood(r.samples, m, QStringLiteral("00000"))));
+        // A region far longer than the text: a gap in time of hours between the samples at its
+        // ends. Nothing is allocated for the length of the gap.
+        for (const double gap : { 1e9, 1e8, 1e7 }) {
+            std::vector<Sample> apart = r.samples;
+            for (const Sample &s : r.samples)
+                apart.push_back({ s.t + r.region.to + gap, s.value });
+            RegionModel wide = m;
+            wide.to = apart.back().t;
+            QVERIFY(std::isinf(regionLogLikelihood(apart, wide, QStringLiteral("5"))));
+        }
         // Levels: too few samples, or no contrast.
         RegionModel none;
         QVERIFY(!estimateLevels(std::span(r.samples).first(4), &none));

@@ -473,6 +473,54 @@ private slots:
         QCOMPARE(right, 6);
     }
 
+    // A gap in time far longer than any Morse element (a camera that stalled, two recordings in
+    // one file) cuts the recording: each part is read on its own (the levels and the sample
+    // period of one say nothing about the other), the readings of both vote, and the cut is
+    // named. Fed in chunks, as the GUI and a camera do.
+    void gapInTimeCutsTheRecording()
+    {
+        SignalOptions o = specSignal(30.0, 0.1);
+        o.repetitions = 2;
+        const std::vector<Sample> part = generateSignal(o).samples;
+        const auto joined = [&part](std::size_t size, double gap) {
+            std::vector<Sample> out(part.begin(), part.begin() + std::ptrdiff_t(size));
+            for (std::size_t i = 0; i < size; ++i)
+                out.push_back({ part[i].t + part[size - 1].t + gap, part[i].value });
+            return out;
+        };
+        const std::vector<Sample> samples = joined(part.size(), 1e8);
+        Decoder decoder;
+        for (std::size_t i = 0; i < samples.size(); i += 7)
+            decoder.feed(
+                std::span(samples).subspan(i, std::min<std::size_t>(7, samples.size() - i)));
+        decoder.finish();
+        QCOMPARE(decoder.ip().toString(), QStringLiteral("192.168.2.150"));
+        QVERIFY(decoder.confident());
+        const QStringList parts = decoder.text().split(QStringLiteral(" | "));
+        QCOMPARE(parts.size(), 2);
+        QVERIFY2(parts[0].contains(QLatin1String("MC+IP192+168+2+150:"))
+                     && parts[1].contains(QLatin1String("MC+IP192+168+2+150:")),
+                 qPrintable(decoder.text()));
+
+        // Too short on either side: the reason, and the cut that made the parts short.
+        Decoder shortParts;
+        shortParts.feed(joined(36, 1e9));
+        shortParts.finish();
+        QVERIFY(!shortParts.confident());
+        const QString message = shortParts.diagnosis().message();
+        QVERIFY2(message.contains(QStringLiteral("the recording has a 1e+09 s gap in time after "
+                                                 "sample 36 (at %1 s): read as 2 recordings")
+                                      .arg(part[35].t, 0, 'f', 2)),
+                 qPrintable(message));
+
+        // A gap of a few seconds is dark LED, not a cut: back-to-back recording as one.
+        Decoder pause;
+        pause.feed(joined(part.size(), 5.0));
+        pause.finish();
+        QVERIFY(!pause.text().contains(QLatin1Char('|')));
+        QVERIFY(!pause.reasonMessage().contains(QLatin1String("gap")));
+    }
+
     void otherTextIsTolerated()
     {
         SignalOptions o = specSignal(30.0, 0.1);

@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/resource.h>
+
 using namespace db::morse;
 using namespace db::morseio;
 
@@ -42,11 +44,24 @@ struct Cli
     QString err;
 };
 
+// The CLI may use at most this much address space: a file must not be able to size its
+// allocations (an exhausted limit aborts it with std::bad_alloc instead of swapping).
+constexpr rlim_t kCliMemory = rlim_t(2) << 30;
+
 Cli runCli(const QStringList &args)
 {
     QProcess p;
+    p.setChildProcessModifier([] {
+        const rlimit limit { kCliMemory, kCliMemory };
+        setrlimit(RLIMIT_AS, &limit);
+    });
     p.start(QStringLiteral(DRIVEBENCH_CLI), QStringList { QStringLiteral("morse") } + args);
-    p.waitForFinished(60000);
+    if (!p.waitForFinished(60000))
+        p.kill();
+    if (p.exitStatus() != QProcess::NormalExit)
+        return { -1,
+                 {},
+                 QStringLiteral("crashed: ") + QString::fromUtf8(p.readAllStandardError()) };
     return { p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
              QString::fromUtf8(p.readAllStandardError()) };
 }
@@ -213,6 +228,129 @@ private slots:
         const auto r = decodeRecording(sig.samples);
         const Reason got = r.ok() ? r->reason : Reason(r.error().deviceCode());
         QCOMPARE(int(got), reason);
+        const Cli cli = runCli({ path });
+        QCOMPARE(cli.code, 1);
+        QVERIFY2(cli.err.contains(message), qPrintable(cli.err));
+    }
+
+    // A recording with a long jump in time: read as two recordings, each decoded where it is
+    // long enough, in bounded memory and time. The short file (72 rows) has nothing to decode
+    // on either side and must say so, and why.
+    void csvWithGapInTime_data()
+    {
+        QTest::addColumn<double>("jump");
+        QTest::addColumn<int>("rows"); // per side; 0: the whole signal on each
+        QTest::addColumn<bool>("lit"); // the jump inside a mark, else between two recordings
+        for (const double jump : { 1e9, 1e8, 1e7 }) {
+            QTest::addRow("%g s, two recordings", jump) << jump << 0 << false;
+            QTest::addRow("%g s, inside a mark", jump) << jump << 0 << true;
+            QTest::addRow("%g s, 72 rows", jump) << jump << 36 << false;
+        }
+    }
+    void csvWithGapInTime()
+    {
+        QFETCH(double, jump);
+        QFETCH(int, rows);
+        QFETCH(bool, lit);
+        SignalOptions o = ledSignal(30.0, 0.1, QStringLiteral("MC+IP10+0+7+42:"));
+        std::vector<Sample> part = generateSignal(o).samples;
+        std::vector<Sample> samples;
+        if (lit) {
+            // One recording whose clock jumps while the LED is on, in its second message.
+            samples = part;
+            std::size_t at = samples.size() / 2;
+            while (samples[at].value < 1.0 || samples[at + 1].value < 1.0)
+                ++at;
+            part.resize(at + 1);
+            for (std::size_t i = at + 1; i < samples.size(); ++i)
+                samples[i].t += jump;
+        } else {
+            if (rows > 0)
+                part.resize(std::size_t(rows));
+            samples = part;
+            const double shift = part.back().t + jump;
+            for (const Sample &s : part)
+                samples.push_back({ s.t + shift, s.value });
+        }
+        const bool longParts = rows == 0;
+        const QString path = m_dir.filePath(QStringLiteral("gap%1.csv").arg(samples.size()));
+        writeCsv(path, samples, true);
+        const auto rec = readCsv(path);
+        QVERIFY2(rec.ok(), qPrintable(rec.error().toString()));
+        QCOMPARE(rec->samples.size(), samples.size());
+
+        const QString note = QStringLiteral("the recording has a %1 s gap in time after sample %2")
+                                 .arg(jump, 0, 'g', 3)
+                                 .arg(part.size());
+        const Cli cli = runCli({ path });
+        QVERIFY2(cli.code >= 0, qPrintable(cli.err));
+        if (longParts) {
+            const auto r = decodeRecording(rec->samples);
+            QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+            QCOMPARE(r->ip.toString(), QStringLiteral("10.0.7.42"));
+            // Messages read on both sides of the cut.
+            const QStringList parts = r->text.split(QStringLiteral(" | "));
+            QCOMPARE(parts.size(), 2);
+            // Cut inside its second message, the recording has a complete one only after the
+            // cut; the part before ends with the start of the one cut.
+            const QString before =
+                lit ? QStringLiteral("MC+IP10+0+7+4") : QStringLiteral("MC+IP10+0+7+42:");
+            QVERIFY2(parts[0].contains(before)
+                         && parts[1].contains(QLatin1String("MC+IP10+0+7+42:")),
+                     qPrintable(r->text));
+            QCOMPARE(r->reason, Reason::None);
+            QCOMPARE(cli.code, 0);
+            QVERIFY2(cli.out.contains(QLatin1String("ip: 10.0.7.42 (confidence")),
+                     qPrintable(cli.out + cli.err));
+            QVERIFY2(cli.out.contains(QStringLiteral("note: ") + note), qPrintable(cli.out));
+            QVERIFY(cli.out.contains(QLatin1String("read as 2 recordings")));
+        } else {
+            QCOMPARE(cli.code, 1);
+            QVERIFY2(cli.err.contains(note) && cli.err.contains(QLatin1String("read as 2")),
+                     qPrintable(cli.err));
+        }
+    }
+
+    // Times the decoder cannot use: each refused with its row and what is wrong with it.
+    void csvBadTimes_data()
+    {
+        QTest::addColumn<QByteArray>("rows");
+        QTest::addColumn<QString>("message");
+        QByteArray ordered;
+        for (int i = 0; i < 15; ++i)
+            ordered += QByteArray::number(0.1 * (i + 21), 'f', 1) + ",1\n";
+        // Line 1 is the header; the 16th data row is line 17.
+        QTest::newRow("out of order")
+            << ordered + "3.2,1\n3.6,1\n"
+            << "gap.csv:17: time 3.2 s is before the previous row's 3.5 s";
+        QTest::newRow("repeated time") << ordered + "3.5,0\n"
+                                       << "gap.csv:17: time 3.5 s repeats the previous row's time";
+        QTest::newRow("time nan") << ordered + "nan,1\n"
+                                  << "gap.csv:17: time \"nan\" is not a finite number";
+        QTest::newRow("time inf") << ordered + "inf,1\n"
+                                  << "gap.csv:17: time \"inf\" is not a finite number";
+        QTest::newRow("brightness nan") << ordered + "3.6,nan\n"
+                                        << "gap.csv:17: brightness \"nan\" is not a finite number";
+        QTest::newRow("brightness -inf")
+            << ordered + "3.6,-inf\n"
+            << "gap.csv:17: brightness \"-inf\" is not a finite number";
+        QTest::newRow("negative time")
+            << QByteArray("-0.5,1\n") + ordered << "gap.csv:2: time -0.5 s is negative";
+        QTest::newRow("line too long") << ordered + "3.6," + QByteArray(300, '1') + "\n"
+                                       << "gap.csv:17: line longer than 256 characters";
+    }
+    void csvBadTimes()
+    {
+        QFETCH(QByteArray, rows);
+        QFETCH(QString, message);
+        const QString path = m_dir.filePath(QStringLiteral("gap.csv"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write("time_s,brightness\n" + rows);
+        f.close();
+        const auto rec = readCsv(path);
+        QVERIFY(!rec.ok());
+        QVERIFY2(rec.error().message().contains(message), qPrintable(rec.error().message()));
         const Cli cli = runCli({ path });
         QCOMPARE(cli.code, 1);
         QVERIFY2(cli.err.contains(message), qPrintable(cli.err));

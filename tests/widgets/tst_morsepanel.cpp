@@ -111,6 +111,32 @@ private slots:
                                       + QStringLiteral("/morse-back-to-back.png")));
     }
 
+    // A gap of hours between the samples of a file: playback skips it (at 8x it would wait for
+    // years), and the status names the cut as the CLI does. Decoded on both sides.
+    void gapInTimeIsSkippedAndNamed()
+    {
+        const std::vector<morse::Sample> part =
+            morse::generateSignal(signal(QStringLiteral("MC+IP10+0+7+42:"))).samples;
+        std::vector<morse::Sample> samples = part;
+        for (const morse::Sample &s : part)
+            samples.push_back({ s.t + part.back().t + 1e9, s.value });
+        MorsePanel panel;
+        panel.resize(1000, 420);
+        panel.show();
+        panel.setSource({ samples, {}, {}, 0, QStringLiteral("test") });
+        QVERIFY(panel.playing());
+        // Into the second part: played, not waited for.
+        QTRY_VERIFY_WITH_TIMEOUT(panel.statusText().contains(QLatin1String("read as 2 recordings")),
+                                 30000);
+        panel.finishPlayback();
+        QCOMPARE(panel.ipText(), QStringLiteral("10.0.7.42"));
+        QVERIFY2(panel.statusText().startsWith(QLatin1String("Confident:"))
+                     && panel.statusText().contains(
+                         QStringLiteral("the recording has a 1e+09 s gap in time after sample %1")
+                             .arg(part.size())),
+                 qPrintable(panel.statusText()));
+    }
+
     void undecodableShowsReason()
     {
         MorsePanel panel;
