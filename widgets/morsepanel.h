@@ -34,7 +34,7 @@ struct MorseSource
     QString description; // "video (mpeg4 160x120), 25 fps"
 };
 
-// The LED Morse decoder panel (issue 7): open a video or CSV, see the frame with the LED
+// The LED Morse decoder panel: open a video or CSV, see the frame with the LED
 // region, a live brightness plot with the decision threshold and the dit/dah timeline, the
 // decoded text, and the IP with its confidence; "Connect" asks for a connection to that IP.
 //

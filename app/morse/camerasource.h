@@ -23,7 +23,7 @@ class QVideoSink;
 
 namespace db::morseio {
 
-// Live LED input for the Morse decoder (issue 7): a QCamera runs into a QMediaCaptureSession
+// Live LED input for the Morse decoder: a QCamera runs into a QMediaCaptureSession
 // whose QVideoSink hands every frame to consumeFrame(); frames become small grey analysis frames
 // (analysisSize(), the same area scaling as readVideo) and LiveLedTracker finds the LED and
 // turns each frame into a brightness sample.

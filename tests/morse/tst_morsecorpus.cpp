@@ -4,7 +4,7 @@
 // chunks. SNR as in signalgenerator.h: 10 log10(A^2 / (4 sigma^2)), A = on/off step,
 // sigma = per-sample noise; 6 dB is sigma = A / 4.
 //
-// The rows assert the targets of issue 7: 100 % exact on clean signals, >= 99 % exact with
+// The rows assert the decoder's targets: 100 % exact on clean signals, >= 99 % exact with
 // +-30 % jitter and noise at 6 dB, and a confident IP within two repetitions (asserted as
 // >= 99 % of the cases confident no later than two message periods after the first complete
 // message began, periods counted as sent, i.e. before the third message begins: with jitter the
