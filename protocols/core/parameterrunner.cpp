@@ -1,6 +1,7 @@
 // ParameterBackup. ParameterRestore is in parameterrunner_restore.cpp.
 
 #include "parameterrunner_p.h"
+#include "printable.h"
 
 #include <QTimer>
 
@@ -36,23 +37,8 @@ DataType typeOfValue(const QVariant &raw)
     }
 }
 
-// One line of a device's text: control characters as \xNN, at most kMaxLineChars characters.
-QString oneLine(const QString &text)
-{
-    constexpr qsizetype kMaxLineChars = 300;
-    QString out;
-    for (const QChar c : text) {
-        if (out.size() >= kMaxLineChars) {
-            out += QStringLiteral("...");
-            break;
-        }
-        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
-            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
-        else
-            out += c;
-    }
-    return out;
-}
+// A failure line quotes the device's text: one line, at most this long.
+constexpr qsizetype kMaxLineChars = 300;
 
 } // namespace
 
@@ -64,7 +50,7 @@ QString BackupFailure::text() const
                     .arg(error.deviceCode(), 8, 16, QLatin1Char('0'))
                     .toUpper()
                     .replace(QLatin1String("0X"), QLatin1String("0x"));
-    return oneLine(line);
+    return oneLine(line, kMaxLineChars);
 }
 
 ParameterBackup::ParameterBackup(DeviceConnection *connection, QObject *parent)

@@ -61,24 +61,9 @@ QString hex32(quint32 v)
         + QString::number(v, 16).toUpper().rightJustified(8, QLatin1Char('0'));
 }
 
-// One line of text for a "# " comment: control characters (a NUL or CR a device sent) as
-// \xNN, at most kMaxCommentChars characters.
-QString commentText(const QString &text)
-{
-    constexpr qsizetype kMaxCommentChars = 400;
-    QString out;
-    for (const QChar c : text) {
-        if (out.size() >= kMaxCommentChars) {
-            out += QStringLiteral("...");
-            break;
-        }
-        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
-            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
-        else
-            out += c;
-    }
-    return out;
-}
+// A "# " comment line (a NUL or CR a device sent stays visible and on the line): at most this
+// long.
+constexpr qsizetype kMaxCommentChars = 400;
 
 bool isTextType(DataType type)
 {
@@ -151,7 +136,7 @@ QByteArray ParameterSet::serialize(const QStringList &comments) const
     if (created.isValid())
         line(QStringLiteral("created %1").arg(created.toUTC().toString(Qt::ISODateWithMs)));
     for (const QString &comment : comments)
-        line(QStringLiteral("# ") + commentText(comment));
+        line(QStringLiteral("# ") + oneLine(comment, kMaxCommentChars));
     line(QStringLiteral("entries %1").arg(m_entries.size()));
     for (const ParameterEntry &e : m_entries) {
         const QString value = codec::toText(e.type, e.raw);

@@ -166,4 +166,20 @@ qsizetype completeUtf8Prefix(QByteArrayView bytes)
     return n;
 }
 
+QString oneLine(QStringView text, qsizetype maxChars)
+{
+    QString out;
+    for (const QChar c : text) {
+        if (out.size() >= maxChars) {
+            out += QStringLiteral("...");
+            break;
+        }
+        if (c.unicode() < 0x20 || c.unicode() == 0x7F)
+            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out;
+}
+
 } // namespace db

@@ -31,6 +31,10 @@ QString printable(QStringView text, LineBreaks lineBreaks = LineBreaks::Escape);
 // "\xNN", then the text is escaped as above.
 QString printable(QByteArrayView bytes, LineBreaks lineBreaks = LineBreaks::Escape);
 
+// One line of outside text for a log line or a file comment: C0 controls and DEL as "\xNN"
+// (every byte value visible, "\x00" for NUL), at most maxChars characters, "..." marking a cut.
+QString oneLine(QStringView text, qsizetype maxChars);
+
 // True when printable(text, lineBreaks) would return text unchanged.
 bool isPrintable(QStringView text, LineBreaks lineBreaks = LineBreaks::Escape);
 
