@@ -3,15 +3,17 @@
 #   bash tools/bootstrap.sh demo   install dependencies, build, start `drivebench --demo`
 #   bash tools/bootstrap.sh test   install dependencies, build, run the whole test suite (ctest)
 #   bash tools/bootstrap.sh build  install dependencies and build only
+#   bash tools/bootstrap.sh deb    install dependencies, build, make build/drivebench_*.deb
+#                                  (cpack) and check it with lintian
 # Environment: BUILD_DIR (default: build), CI=true turns warnings into errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 mode=${1:-}
 case "$mode" in
-demo | test | build) ;;
+demo | test | build | deb) ;;
 *)
-    echo "usage: bash tools/bootstrap.sh demo|test|build" >&2
+    echo "usage: bash tools/bootstrap.sh demo|test|build|deb" >&2
     exit 2
     ;;
 esac
@@ -26,7 +28,13 @@ packages=(
     libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
     qt6-multimedia-dev gstreamer1.0-plugins-good
     fonts-dejavu-core xvfb xauth
+    python3 librsvg2-bin                                 # man pages from --help, PNG icons
+    desktop-file-utils appstream bash-completion         # tst_packaging's validators
 )
+# The .deb: dpkg-shlibdeps (dpkg-dev) and file for its dependencies, lintian to check it.
+if [ "$mode" = deb ]; then
+    packages+=(dpkg-dev file lintian)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -57,6 +65,14 @@ demo)
 test)
     cd "$build_dir"
     QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" --timeout 300
+    ;;
+deb)
+    rm -f "$build_dir"/drivebench_*.deb
+    (cd "$build_dir" && cpack -G DEB)
+    deb=$(ls "$build_dir"/drivebench_*.deb)
+    lintian --fail-on error "$deb"
+    case "$deb" in /*) ;; *) deb=./$deb ;; esac # apt takes a path, not a package name
+    echo "built $deb; install it with: apt install $deb"
     ;;
 build) ;;
 esac

@@ -7,6 +7,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 
 #include <cstdio>
 #include <memory>
@@ -18,6 +19,10 @@ int main(int argc, char *argv[])
     QApplication::setApplicationName(QStringLiteral("drivebench"));
     QApplication::setApplicationDisplayName(QStringLiteral("drivebench"));
     QApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    // The installed desktop entry and icon (packaging/) carry this id; in the build tree the
+    // icon theme has no such icon and the window keeps the platform's default.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.drivebench.drivebench"));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("org.drivebench.drivebench")));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
