@@ -26,8 +26,8 @@ void appendHex(QString &out, const char *prefix, uint value, int digits)
 void appendEscape(QString &out, char16_t u)
 {
     switch (u) {
-    case 0:
-        out += QLatin1String("\\0");
+    case 0: // "\x00", not "\0": a digit after it would read as an octal escape ("\034")
+        out += QLatin1String("\\x00");
         return;
     case '\t':
         out += QLatin1String("\\t");

@@ -16,7 +16,7 @@ enum class LineBreaks { Escape, Keep };
 // the cursor, overwrite a line ("\r" + fake "OK"), cut the text (NUL) or reverse its direction.
 //
 // Replaced by a visible escape:
-//   NUL -> "\0"; TAB, CR, LF -> "\t", "\r", "\n" (LF kept with LineBreaks::Keep);
+//   NUL -> "\x00"; TAB, CR, LF -> "\t", "\r", "\n" (LF kept with LineBreaks::Keep);
 //   other C0 controls and DEL -> "\xNN" (ESC -> "\x1b", so "ESC [2J" shows as "\x1b[2J");
 //   C1 controls U+0080-U+009F, bidi embeddings/overrides/isolates U+202A-U+202E and
 //   U+2066-U+2069, the marks U+200E, U+200F, U+061C, the line/paragraph separators U+2028,

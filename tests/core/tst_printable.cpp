@@ -36,7 +36,7 @@ void TestPrintable::escapesText_data()
     QTest::newRow("CR fake OK") << u"4711\rOK        "_qs << u"4711\\rOK        "_qs;
     QTest::newRow("line feed") << u"a\nOK"_qs << u"a\\nOK"_qs;
     QTest::newRow("CRLF") << u"a\r\n"_qs << u"a\\r\\n"_qs;
-    QTest::newRow("NUL") << QString(u"ab\0cd"_qs) << u"ab\\0cd"_qs;
+    QTest::newRow("NUL") << QString(u"ab\0cd"_qs) << u"ab\\x00cd"_qs;
     QTest::newRow("BEL BS TAB") << u"\a\b\t"_qs << u"\\x07\\x08\\t"_qs;
     QTest::newRow("DEL") << u"x\x7fy"_qs << u"x\\x7fy"_qs;
     QTest::newRow("C1 CSI") << u"a\u009b2Jb"_qs << u"a\\u009b2Jb"_qs;
@@ -76,7 +76,7 @@ void TestPrintable::escapesBytes_data()
         << QByteArray("\xc3\xa4\xc3\xb6\xc3\xbc \xc2\xb5m 90\xc2\xb0") << u"äöü µm 90°"_qs;
     QTest::newRow("4-byte utf-8") << QByteArray("\xf0\x9f\x94\xa7") << u"\U0001F527"_qs;
     QTest::newRow("ESC") << QByteArray("\x1b[31mOK") << u"\\x1b[31mOK"_qs;
-    QTest::newRow("NUL") << QByteArray("a\0b", 3) << u"a\\0b"_qs;
+    QTest::newRow("NUL") << QByteArray("a\0b", 3) << u"a\\x00b"_qs;
     QTest::newRow("C1 as utf-8") << QByteArray("\xc2\x9b") << u"\\u009b"_qs;
     QTest::newRow("RLO as utf-8") << QByteArray("\xe2\x80\xae") << u"\\u202e"_qs;
     QTest::newRow("latin-1 byte") << QByteArray("Gr\xf6\xdf") << u"Gr\\xf6\\xdf"_qs;
