@@ -1,17 +1,16 @@
 #pragma once
 
-// The RefGo request/response engine (movingcap.md 3.1, 3.7): a FIFO of commands over a
-// ByteStream, one in flight, each answer matched by its echo line.
+// The RefGo client (movingcap.md 3.1, 3.7): a FIFO of commands over a ByteStream, one in
+// flight, each answer matched by its echo line; the queue, time limits and late-answer handling
+// are the shared RequestEngine's.
 
 #include "core/reply.h"
 #include "refgocodec.h"
 #include "refgoframer.h"
+#include "transport/requestengine.h"
 
-#include <QList>
 #include <QObject>
-#include <QPointer>
 #include <QStringList>
-#include <QTimer>
 
 #include <functional>
 #include <optional>
@@ -38,18 +37,19 @@ class RefgoClient : public QObject
     Q_OBJECT
 public:
     static constexpr int kDefaultTimeoutMs = 1000; // the manual gives none; answers take < 80 ms
-    static constexpr int kMaxAbandoned = 32; // timed-out commands whose answer may come
+    // Timed-out commands whose answer may come.
+    static constexpr int kMaxAbandoned = RequestEngineBase::kMaxAbandoned;
 
     explicit RefgoClient(ByteStream *stream, QObject *parent = nullptr);
     ~RefgoClient() override;
 
-    int timeoutMs() const { return m_timeoutMs; }
+    int timeoutMs() const { return m_engine.timeoutMs(); }
     // Applies to requests sent from now on.
-    void setTimeoutMs(int ms) { m_timeoutMs = ms; }
+    void setTimeoutMs(int ms) { m_engine.setTimeoutMs(ms); }
     // Requests queued or in flight.
-    int pendingCount() const;
+    int pendingCount() const { return m_engine.pendingCount(); }
     // Bytes of a partial answer held by the framer (bounded by Framer::kMaxAnswerBytes).
-    qsizetype bufferedBytes() const { return m_framer.bufferedBytes(); }
+    qsizetype bufferedBytes() const { return m_engine.bufferedBytes(); }
 
     // Pass-through for the terminal: value is the result lines (QStringList). A command with
     // CR or LF in it, or an empty one, fails with InvalidArgument.
@@ -97,29 +97,24 @@ Q_SIGNALS:
 private:
     // Turns the result lines of a matched answer into the reply's value.
     using Decoder = std::function<Result<QVariant>(const QStringList &lines)>;
-    struct Request
+    // RefGo for the request engine: answers framed by Framer, matched by their echo line.
+    struct Protocol
     {
-        QString text;
-        Decoder decode;
-        QPointer<Reply> reply;
+        using Answer = refgo::Answer;
+        using Framer = refgo::Framer;
+        struct Matcher
+        {
+            QString text; // the command as sent, which the drive echoes
+            Decoder decode;
+            Verdict operator()(const Answer &answer) const;
+        };
+        static QString summary(const Answer &answer);
+        static QString identify(const Answer &answer) { return answer.echo; }
     };
 
     Reply *enqueue(const QString &text, Decoder decode, ObjectAddress address = {});
-    void sendNext();
-    void onReceived(const QByteArray &bytes);
-    void onAnswer(const Answer &answer);
-    void onTimeout();
-    void onClosed(const Error &error);
-    void complete(const Result<QVariant> &result);
-    void failAll(const Error &error);
 
-    ByteStream *m_stream;
-    Framer m_framer;
-    QTimer m_timer; // per-request time limit of the command in flight
-    int m_timeoutMs = kDefaultTimeoutMs;
-    QList<Request> m_queue;
-    std::optional<Request> m_inFlight;
-    QStringList m_abandoned; // timed-out commands, oldest first
+    RequestEngine<Protocol> m_engine;
 };
 
 } // namespace db::refgo
