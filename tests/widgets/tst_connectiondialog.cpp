@@ -12,6 +12,9 @@ using namespace db;
 using db::widgets::ConnectionDialog;
 
 namespace {
+// How often a plan was prepared (the description loaded).
+int g_prepared = 0;
+
 ProtocolRegistry testRegistry()
 {
     ProtocolRegistry registry;
@@ -35,7 +38,14 @@ ProtocolRegistry testRegistry()
                    -1,
                    makeFake,
                    {},
-                   {} });
+                   [](ConnectionPlan &plan) -> Result<void> {
+                       ++g_prepared;
+                       const QString eds = plan.uri.queryValue(QStringLiteral("eds"));
+                       if (!eds.isEmpty())
+                           return Error(Error::Kind::InvalidArgument,
+                                        QStringLiteral("eds=%1: cannot open the file").arg(eds));
+                       return {};
+                   } });
     return registry;
 }
 } // namespace
@@ -97,6 +107,30 @@ private Q_SLOTS:
         QTest::keyClicks(dialog.findChild<QLineEdit *>(QStringLiteral("options")),
                          QStringLiteral("node=50"));
         QCOMPARE(dialog.uri(), QStringLiteral("canopen+socketcan://can0?node=50"));
+    }
+
+    void okPreparesThePlanOnceAndStaysOpenWithTheCause()
+    {
+        ConnectionDialog dialog(m_registry, {});
+        dialog.show();
+        g_prepared = 0;
+        QTest::keyClicks(dialog.findChild<QLineEdit *>(QStringLiteral("uri")),
+                         QStringLiteral("canopen+socketcan://can0?node=5&eds=/nonexistent/n.eds"));
+        QVERIFY(dialog.isValid()); // the cheap check passes while typing
+        QCOMPARE(g_prepared, 0); // nothing is loaded per keystroke
+        QTest::mouseClick(okButton(dialog), Qt::LeftButton);
+        QCOMPARE(g_prepared, 1);
+        QVERIFY(dialog.isVisible()); // stays open with the cause
+        QVERIFY2(dialog.errorText().contains(QStringLiteral("/nonexistent/n.eds")),
+                 qPrintable(dialog.errorText()));
+        if (const QByteArray shots = qgetenv("DRIVEBENCH_SCREENSHOT_DIR"); !shots.isEmpty())
+            dialog.grab().save(QString::fromLocal8Bit(shots)
+                               + QStringLiteral("/connect-error.png"));
+        dialog.setUri(QStringLiteral("canopen+socketcan://can0?node=5"));
+        QTest::mouseClick(okButton(dialog), Qt::LeftButton);
+        QCOMPARE(g_prepared, 2);
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(dialog.plan().uri.toString(), QStringLiteral("canopen+socketcan://can0?node=5"));
     }
 
     void invalidUriDisablesOkAndExplains_data()

@@ -41,7 +41,7 @@ private Q_SLOTS:
         console.warning(QString(u"< \x1b[2J\rOK\u202eKO\0\u0085 x\u2029ERROR y\nz"_qs));
         QCOMPARE(console.lineCount(), 1);
         const QString text = console.toPlainText();
-        QVERIFY2(text.endsWith(u" < \\x1b[2J\\rOK\\u202eKO\\0\\u0085 x\\u2029ERROR y\\nz"_qs),
+        QVERIFY2(text.endsWith(u" < \\x1b[2J\\rOK\\u202eKO\\x00\\u0085 x\\u2029ERROR y\\nz"_qs),
                  qPrintable(text));
         console.info(u"Drehzahl 3000 min⁻¹, Temperatur 40 °C, Weg 12 µm, Größe"_qs);
         QVERIFY(console.toPlainText().endsWith(
