@@ -103,8 +103,9 @@ private Q_SLOTS:
         rec.mode = QStringLiteral("single\x1b[31m");
         const QByteArray text = csv::toCsv(rec);
         QVERIFY2(isPrintable(QString::fromUtf8(text), LineBreaks::Keep), text.constData());
-        QVERIFY2(text.contains("\ntime_s,\"6064:0 Pos\\x1b[2J\\rOK\\n,\\x00\\u009b\\u202e\",\"6078:0 "),
-                 text.constData());
+        QVERIFY2(
+            text.contains("\ntime_s,\"6064:0 Pos\\x1b[2J\\rOK\\n,\\x00\\u009b\\u202e\",\"6078:0 "),
+            text.constData());
         QCOMPARE(text.count('\n'), csv::toCsv(sample()).count('\n'));
         const auto back = csv::fromCsv(text);
         QVERIFY2(back.ok(), qPrintable(back.error().toString()));
