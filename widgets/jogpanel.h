@@ -2,6 +2,7 @@
 
 #include "core/deviceconnection.h"
 #include "motion/cia402axis.h"
+#include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
 #include <QPointer>
@@ -25,9 +26,10 @@ class MotionForm;
 // creates transports.
 //
 // Jog: while a jog button or key (Left/Minus, Right/Plus; auto-repeat ignored) is held, the
-// axis moves towards the software limit (MC_MoveAbsolute to 607Dh, so the limit is never
-// passed) or, without software limits, with MC_MoveVelocity. Release halts it with the jog
-// deceleration (MC_Halt).
+// axis moves by leases (motion::LeasedMove): profile position moves from the actual position,
+// each covering LeasedMove::kLeaseMs at the jog velocity plus the braking distance, renewed every
+// LeasedMove::kRenewMs, never past the software limits. Release halts it with the jog
+// deceleration (MC_Halt). A step is a leased move of the step size.
 //
 // Safety contract: a running jog halts on button or key release, on window deactivation, when
 // the focus leaves the panel and when the panel is hidden. stopAll() (Esc, wired application-
@@ -35,7 +37,10 @@ class MotionForm;
 // heartbeat of the node quick-stops and fails the running command with the cause. The
 // MotionAxis deadman watchdog runs with kWatchdogMs; the panel's keep-alive timer (every
 // kKeepAliveMs, object name "keepAliveTimer") feeds it, so an event loop that stops turning
-// stops the drive. Every stop names its reason in lastStopReason() and stopped().
+// quick-stops the drive. If nothing reaches the drive any more (process killed, PC asleep,
+// cable pulled) the lease runs out on the drive: it brakes and stands at most
+// LeasedMove::leaseTimeMs() after the last renewal it took. Every stop names its reason in
+// lastStopReason() and stopped().
 class JogPanel : public QWidget
 {
     Q_OBJECT
@@ -54,6 +59,7 @@ public:
     DeviceConnection *connection() const { return m_connection; }
     motion::MotionAxis *motionAxis() const { return m_motion.get(); }
     motion::Cia402Axis *cia402Axis() const { return m_cia.get(); }
+    motion::LeasedMove *leasedMove() const { return m_lease.get(); }
     MotionForm *motionForm() const { return m_form; }
     // Limits read from the drive (607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
     bool limitsKnown() const { return m_limitsKnown; }
@@ -105,9 +111,7 @@ private:
     std::unique_ptr<motion::MotionAxis> m_motion;
     std::unique_ptr<motion::MotionCommand> m_power;
     std::unique_ptr<motion::MotionCommand> m_reset;
-    std::unique_ptr<motion::MotionCommand> m_jog;
-    std::unique_ptr<motion::MotionCommand> m_jogHalt;
-    std::unique_ptr<motion::MotionCommand> m_step;
+    std::unique_ptr<motion::LeasedMove> m_lease; // jog and step
     QList<QMetaObject::Connection> m_connectionSignals;
     quint64 m_generation = 0; // which connection a late reply belongs to
     bool m_limitsKnown = false;

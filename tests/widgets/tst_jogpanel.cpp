@@ -219,6 +219,32 @@ private Q_SLOTS:
         QVERIFY(b->panel->lastStopReason().contains(QLatin1String("watchdog")));
     }
 
+    void frozenPanelLeaseRunsOut()
+    {
+        // The GUI freezes mid-jog (no renewal, no keep-alive, no stop): with the watchdog out of
+        // the way, only the lease on the drive is left to stop it.
+        auto b = makeBench();
+        QVERIFY(b && enable(*b));
+        b->panel->motionAxis()->setWatchdogTimeout(0);
+        QTest::mousePress(b->button("jogPlus"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(b->axis().position() > 3 * JogPanel::kDefaultJogVelocity
+                                         * motion::LeasedMove::kLeaseMs / 1000.0,
+                                 kMoveMs);
+        QVERIFY(b->axis().isMoving());
+        auto *keepAlive = b->panel->findChild<QTimer *>(QStringLiteral("keepAliveTimer"));
+        keepAlive->stop();
+        motion::LeasedMove *lease = b->panel->leasedMove();
+        QVERIFY(lease && lease->isRenewing());
+        lease->renewTimer()->stop();
+        const double target = lease->lastTarget();
+        QTRY_VERIFY_WITH_TIMEOUT(!b->axis().isMoving(), int(lease->leaseTimeMs()) + 250);
+        QVERIFY2(qAbs(b->axis().position() - target) < 2,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(b->axis().position()).arg(target)));
+        // Its own profile ended the move: no quick stop, still enabled.
+        QCOMPARE(b->demo->drive().state(), cia402::State::OperationEnabled);
+        QTest::mouseRelease(b->button("jogPlus"), Qt::LeftButton);
+    }
+
     void linkLossEndsJogWithTheCause()
     {
         auto b = makeBench();
