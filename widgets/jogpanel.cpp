@@ -63,6 +63,7 @@ void JogPanel::teardown()
         disconnect(c);
     m_connectionSignals.clear();
     m_keepAlive->stop();
+    releaseSupervision();
     m_form->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
@@ -85,6 +86,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
     if (!connection) {
         render();
         renderLimits();
+        renderSupervision();
         return;
     }
     const ObjectDictionary &dict = connection->dictionary();
@@ -103,6 +105,8 @@ void JogPanel::setConnection(DeviceConnection *connection)
     m_power = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Power);
     m_reset = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Reset);
     m_lease = std::make_unique<LeasedMove>(m_motion.get());
+    if (canopen::DriveSupervision::modeFor(connection) != canopen::DriveSupervision::Mode::None)
+        m_driveSupervision = std::make_unique<canopen::DriveSupervision>(connection);
     m_form->setAxis(m_motion.get());
     m_form->setFeatures(m_cia->features());
     if (const ObjectDef *method = dict.find(cia402::obj::HomingMethod))
@@ -142,6 +146,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
         onInitialized(nullptr, m_generation);
     render();
     renderLimits();
+    renderSupervision();
 }
 
 void JogPanel::onInitialized(Reply *reply, quint64 generation)
@@ -190,13 +195,38 @@ void JogPanel::runPower(CommandKind kind, bool enable)
 void JogPanel::enableDrive()
 {
     setMessage({});
-    runPower(CommandKind::Power, true);
+    if (!m_driveSupervision || m_driveSupervision->isArmed()) {
+        runPower(CommandKind::Power, true);
+        return;
+    }
+    // Drive-side supervision before the power stage goes on. If the drive refuses it, the
+    // drive is enabled all the same (the lease still bounds every jog) and the panel says so.
+    Reply *r = m_driveSupervision->arm();
+    const quint64 generation = m_generation;
+    connect(r, &Reply::finished, this, [this, r, generation] {
+        r->deleteLater();
+        if (generation != m_generation)
+            return;
+        renderSupervision();
+        runPower(CommandKind::Power, true);
+        if (!r->ok())
+            setMessage(r->error().message(), style::warningColor());
+    });
 }
 
 void JogPanel::disableDrive()
 {
     m_jogDirection = 0;
     runPower(CommandKind::Power, false);
+    if (m_driveSupervision && m_driveSupervision->isArmed()) {
+        Reply *r = m_driveSupervision->disarm();
+        connect(r, &Reply::finished, this, [this, r] {
+            r->deleteLater();
+            renderSupervision();
+            if (!r->ok())
+                setMessage(r->error().message(), style::warningColor());
+        });
+    }
 }
 
 void JogPanel::resetFault()

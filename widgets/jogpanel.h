@@ -1,5 +1,6 @@
 #pragma once
 
+#include "canopen/drivesupervision.h"
 #include "core/deviceconnection.h"
 #include "motion/cia402axis.h"
 #include "motion/leasedmove.h"
@@ -39,8 +40,10 @@ class MotionForm;
 // kKeepAliveMs, object name "keepAliveTimer") feeds it, so an event loop that stops turning
 // quick-stops the drive. If nothing reaches the drive any more (process killed, PC asleep,
 // cable pulled) the lease runs out on the drive: it brakes and stands at most
-// LeasedMove::leaseTimeMs() after the last renewal it took. Every stop names its reason in
-// lastStopReason() and stopped().
+// LeasedMove::leaseTimeMs() after the last renewal it took. On CANopen, Enable first arms the
+// drive-side supervision (canopen::DriveSupervision: heartbeat or node guarding, 6007h quick
+// stop), Disable restores the drive's previous settings; the label "supervision" says what is
+// active. Every stop names its reason in lastStopReason() and stopped().
 class JogPanel : public QWidget
 {
     Q_OBJECT
@@ -60,6 +63,8 @@ public:
     motion::MotionAxis *motionAxis() const { return m_motion.get(); }
     motion::Cia402Axis *cia402Axis() const { return m_cia.get(); }
     motion::LeasedMove *leasedMove() const { return m_lease.get(); }
+    // Null unless the connection's drive offers heartbeat consumption or node guarding.
+    canopen::DriveSupervision *supervision() const { return m_driveSupervision.get(); }
     MotionForm *motionForm() const { return m_form; }
     // Limits read from the drive (607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
     bool limitsKnown() const { return m_limitsKnown; }
@@ -102,6 +107,8 @@ private:
     void runPower(motion::CommandKind kind, bool enable);
     void render();
     void renderLimits();
+    void renderSupervision();
+    void releaseSupervision();
     void setMessage(const QString &text, const QColor &color = {});
     void noteStop(const QString &reason);
     motion::MoveParams jogParams() const;
@@ -112,6 +119,7 @@ private:
     std::unique_ptr<motion::MotionCommand> m_power;
     std::unique_ptr<motion::MotionCommand> m_reset;
     std::unique_ptr<motion::LeasedMove> m_lease; // jog and step
+    std::unique_ptr<canopen::DriveSupervision> m_driveSupervision;
     QList<QMetaObject::Connection> m_connectionSignals;
     quint64 m_generation = 0; // which connection a late reply belongs to
     bool m_limitsKnown = false;
@@ -139,6 +147,7 @@ private:
     QPushButton *m_stepMinus = nullptr;
     QPushButton *m_stepPlus = nullptr;
     QLabel *m_limits = nullptr;
+    QLabel *m_supervision = nullptr;
     MotionForm *m_form = nullptr;
 };
 

@@ -1,5 +1,6 @@
 #include "commands_motion.h"
 
+#include "canopen/drivesupervision.h"
 #include "cia402/modes.h"
 #include "motion/axislimits.h"
 #include "motion/cia402axis.h"
@@ -67,6 +68,21 @@ bool waitRounds(Axis &axis, int rounds, int timeoutMs)
     QObject::disconnect(c);
     return ok;
 }
+
+// Gives the drive its previous supervision settings back when the command ends normally (on
+// every return path); a killed process never gets here, and the drive then reacts.
+struct RestoreSupervision
+{
+    canopen::DriveSupervision *supervision;
+    Context &c;
+    ~RestoreSupervision()
+    {
+        if (!supervision || !supervision->isArmed())
+            return;
+        if (auto restored = Reply::wait(supervision->disarm()); !restored)
+            c.err << "drivebench-cli: warning: " << restored.error().message() << Qt::endl;
+    }
+};
 
 Result<double> number(Context &c, const QString &option)
 {
@@ -331,6 +347,17 @@ int jog(Context &c)
         *field = *x;
     }
     p.jerk = axis.model->config().maxJerk;
+    // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
+    DeviceConnection *conn = axis.session.connection();
+    std::unique_ptr<canopen::DriveSupervision> supervision;
+    if (canopen::DriveSupervision::modeFor(conn) != canopen::DriveSupervision::Mode::None) {
+        supervision = std::make_unique<canopen::DriveSupervision>(conn);
+        if (auto armed = Reply::wait(supervision->arm()); !armed)
+            c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
+        else if (c.options.verbose)
+            c.out << "supervision: " << supervision->description() << Qt::endl;
+    }
+    const RestoreSupervision restore { supervision.get(), c };
     // In leases renewed while this process runs: killed, frozen or cut off, it leaves a drive
     // that brakes by itself at most LeasedMove::leaseTimeMs() after the last renewal.
     LeasedMove lease(axis.model.get());

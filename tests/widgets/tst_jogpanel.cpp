@@ -245,6 +245,31 @@ private Q_SLOTS:
         QTest::mouseRelease(b->button("jogPlus"), Qt::LeftButton);
     }
 
+    void canopenEnableArmsSupervision()
+    {
+        auto b = makeBench({}, true);
+        QVERIFY(b);
+        auto *label = b->panel->findChild<QLabel *>(QStringLiteral("supervision"));
+        QVERIFY2(label->text().contains(QLatin1String("On enable: drive stops within 500 ms")),
+                 qPrintable(label->text()));
+        QVERIFY(enable(*b));
+        QTRY_VERIFY2(label->text().contains(QLatin1String("Active: drive stops within 500 ms")),
+                     qPrintable(label->text()));
+        sim::MovingCapDrive &drive = b->demo->drive();
+        QCOMPARE(drive.read({ 0x6007, 0 }).value().toInt(), 3);
+        QCOMPARE(drive.read({ 0x100D, 0 }).value().toInt(), 5);
+        QTest::mouseClick(b->button("disable"), Qt::LeftButton);
+        QTRY_VERIFY(label->text().contains(QLatin1String("On enable:")));
+        QCOMPARE(drive.read({ 0x6007, 0 }).value().toInt(), 1);
+        QCOMPARE(drive.read({ 0x100D, 0 }).value().toInt(), 0);
+        // RefGo has nothing of the kind.
+        auto r = makeBench();
+        QVERIFY(r);
+        QVERIFY(r->panel->findChild<QLabel *>(QStringLiteral("supervision"))
+                    ->text()
+                    .contains(QLatin1String("No drive-side supervision")));
+    }
+
     void linkLossEndsJogWithTheCause()
     {
         auto b = makeBench();
@@ -278,6 +303,12 @@ private Q_SLOTS:
         QVERIFY(b && enable(*b));
         auto *canopen = qobject_cast<canopen::CanopenConnection *>(b->connection.get());
         QVERIFY(canopen);
+        // Guard replies would keep the node alive in the monitor: this test is about the
+        // node's own heartbeat, so the panel's node guarding goes off first.
+        Reply *disarmed = b->panel->supervision()->disarm();
+        QSignalSpy restored(disarmed, &Reply::finished);
+        QVERIFY(restored.wait(5000) && disarmed->ok());
+        delete disarmed;
         // The node's heartbeat on the bus (0x700 + 50, operational), every 50 ms.
         canopen->monitor()->setConsumerTime(canopen->node(), 250);
         QTimer heartbeat;
