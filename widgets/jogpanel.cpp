@@ -63,12 +63,11 @@ void JogPanel::teardown()
         disconnect(c);
     m_connectionSignals.clear();
     m_keepAlive->stop();
+    releaseSupervision();
     m_form->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
-    m_jog.reset();
-    m_jogHalt.reset();
-    m_step.reset();
+    m_lease.reset();
     m_motion.reset();
     m_cia.reset();
     m_jogDirection = 0;
@@ -87,6 +86,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
     if (!connection) {
         render();
         renderLimits();
+        renderSupervision();
         return;
     }
     const ObjectDictionary &dict = connection->dictionary();
@@ -104,8 +104,9 @@ void JogPanel::setConnection(DeviceConnection *connection)
     m_motion->setVelocityOverride(m_override->value());
     m_power = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Power);
     m_reset = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Reset);
-    m_jogHalt = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Halt);
-    m_step = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::MoveRelative);
+    m_lease = std::make_unique<LeasedMove>(m_motion.get());
+    if (canopen::DriveSupervision::modeFor(connection) != canopen::DriveSupervision::Mode::None)
+        m_driveSupervision = std::make_unique<canopen::DriveSupervision>(connection);
     m_form->setAxis(m_motion.get());
     m_form->setFeatures(m_cia->features());
     if (const ObjectDef *method = dict.find(cia402::obj::HomingMethod))
@@ -118,11 +119,13 @@ void JogPanel::setConnection(DeviceConnection *connection)
         m_jogDirection = 0;
         noteStop(tr("deadman watchdog: the GUI stopped refreshing for %1 ms").arg(kWatchdogMs));
     });
-    connect(m_jogHalt.get(), &MotionCommand::statusChanged, this, [this](MotionCommand::Status s) {
-        if (s == MotionCommand::Status::Done)
-            m_jogHalt->setExecute(false); // MC_Halt holds its state until Execute is released
+    connect(m_lease.get(), &LeasedMove::ended, this, [this](MotionCommand::Status s) {
+        m_jogDirection = 0; // at the limit or the step's end, refused or superseded
+        if (s == MotionCommand::Status::Error)
+            setMessage(tr("Jog: %1").arg(m_lease->command()->error().message()),
+                       style::errorColor());
     });
-    for (MotionCommand *c : { m_power.get(), m_reset.get(), m_step.get() }) {
+    for (MotionCommand *c : { m_power.get(), m_reset.get() }) {
         connect(c, &MotionCommand::statusChanged, this, [this, c](MotionCommand::Status s) {
             if (s == MotionCommand::Status::Error)
                 setMessage(tr("%1: %2").arg(c->name(), c->error().message()), style::errorColor());
@@ -143,6 +146,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
         onInitialized(nullptr, m_generation);
     render();
     renderLimits();
+    renderSupervision();
 }
 
 void JogPanel::onInitialized(Reply *reply, quint64 generation)
@@ -191,13 +195,38 @@ void JogPanel::runPower(CommandKind kind, bool enable)
 void JogPanel::enableDrive()
 {
     setMessage({});
-    runPower(CommandKind::Power, true);
+    if (!m_driveSupervision || m_driveSupervision->isArmed()) {
+        runPower(CommandKind::Power, true);
+        return;
+    }
+    // Drive-side supervision before the power stage goes on. If the drive refuses it, the
+    // drive is enabled all the same (the lease still bounds every jog) and the panel says so.
+    Reply *r = m_driveSupervision->arm();
+    const quint64 generation = m_generation;
+    connect(r, &Reply::finished, this, [this, r, generation] {
+        r->deleteLater();
+        if (generation != m_generation)
+            return;
+        renderSupervision();
+        runPower(CommandKind::Power, true);
+        if (!r->ok())
+            setMessage(r->error().message(), style::warningColor());
+    });
 }
 
 void JogPanel::disableDrive()
 {
     m_jogDirection = 0;
     runPower(CommandKind::Power, false);
+    if (m_driveSupervision && m_driveSupervision->isArmed()) {
+        Reply *r = m_driveSupervision->disarm();
+        connect(r, &Reply::finished, this, [this, r] {
+            r->deleteLater();
+            renderSupervision();
+            if (!r->ok())
+                setMessage(r->error().message(), style::warningColor());
+        });
+    }
 }
 
 void JogPanel::resetFault()
@@ -219,54 +248,30 @@ MoveParams JogPanel::jogParams() const
 
 void JogPanel::startJog(int direction)
 {
-    if (!m_motion || direction == 0 || m_jogDirection == direction)
+    if (!m_lease || direction == 0 || m_jogDirection == direction)
         return;
     setMessage({});
-    MoveParams p = jogParams();
     m_jogDirection = direction > 0 ? 1 : -1;
-    if (m_config.softLimitsUsed) {
-        // Towards the software limit: the positioning never passes it (607Dh respected).
-        p.position = m_jogDirection > 0 ? m_config.softLimitPositive : m_config.softLimitNegative;
-        m_jog = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::MoveAbsolute);
-    } else {
-        p.velocity *= m_jogDirection;
-        m_jog = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::MoveVelocity);
-    }
-    MotionCommand *jog = m_jog.get();
-    connect(jog, &MotionCommand::statusChanged, this, [this, jog](MotionCommand::Status s) {
-        if (s == MotionCommand::Status::Error)
-            setMessage(tr("Jog: %1").arg(jog->error().message()), style::errorColor());
-        if (s == MotionCommand::Status::Error || s == MotionCommand::Status::CommandAborted
-            || (s == MotionCommand::Status::Done && jog->kind() == CommandKind::MoveAbsolute))
-            m_jogDirection = 0; // at the limit, refused or superseded: the jog is over
-    });
-    jog->setParams(p);
-    jog->setExecute(true);
+    m_lease->jog(m_jogDirection, jogParams());
     m_motion->keepAlive();
 }
 
 void JogPanel::stopJog(const QString &reason)
 {
-    if (m_jogDirection == 0 || !m_motion)
+    if (m_jogDirection == 0 || !m_lease)
         return;
     m_jogDirection = 0;
-    MoveParams p = jogParams();
-    m_jogHalt->setParams(p);
-    m_jogHalt->setExecute(false);
-    m_jogHalt->setExecute(true);
+    m_lease->halt();
     noteStop(reason);
 }
 
 void JogPanel::stepJog(int direction)
 {
-    if (!m_step)
+    if (!m_lease)
         return;
     setMessage({});
-    MoveParams p = jogParams();
-    p.position = direction * m_stepSize->value();
-    m_step->setParams(p);
-    m_step->setExecute(false);
-    m_step->setExecute(true);
+    m_jogDirection = 0;
+    m_lease->step(direction * m_stepSize->value(), jogParams());
 }
 
 void JogPanel::stopAll(const QString &reason)
@@ -274,6 +279,7 @@ void JogPanel::stopAll(const QString &reason)
     if (!isMotionInProgress())
         return;
     m_jogDirection = 0;
+    m_lease->stopRenewing();
     m_motion->stopNow();
     noteStop(reason);
 }

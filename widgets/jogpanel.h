@@ -1,7 +1,9 @@
 #pragma once
 
+#include "canopen/drivesupervision.h"
 #include "core/deviceconnection.h"
 #include "motion/cia402axis.h"
+#include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
 #include <QPointer>
@@ -25,9 +27,10 @@ class MotionForm;
 // creates transports.
 //
 // Jog: while a jog button or key (Left/Minus, Right/Plus; auto-repeat ignored) is held, the
-// axis moves towards the software limit (MC_MoveAbsolute to 607Dh, so the limit is never
-// passed) or, without software limits, with MC_MoveVelocity. Release halts it with the jog
-// deceleration (MC_Halt).
+// axis moves by leases (motion::LeasedMove): profile position moves from the actual position,
+// each covering LeasedMove::kLeaseMs at the jog velocity plus the braking distance, renewed every
+// LeasedMove::kRenewMs, never past the software limits. Release halts it with the jog
+// deceleration (MC_Halt). A step is a leased move of the step size.
 //
 // Safety contract: a running jog halts on button or key release, on window deactivation, when
 // the focus leaves the panel and when the panel is hidden. stopAll() (Esc, wired application-
@@ -35,7 +38,12 @@ class MotionForm;
 // heartbeat of the node quick-stops and fails the running command with the cause. The
 // MotionAxis deadman watchdog runs with kWatchdogMs; the panel's keep-alive timer (every
 // kKeepAliveMs, object name "keepAliveTimer") feeds it, so an event loop that stops turning
-// stops the drive. Every stop names its reason in lastStopReason() and stopped().
+// quick-stops the drive. If nothing reaches the drive any more (process killed, PC asleep,
+// cable pulled) the lease runs out on the drive: it brakes and stands at most
+// LeasedMove::leaseTimeMs() after the last renewal it took. On CANopen, Enable first arms the
+// drive-side supervision (canopen::DriveSupervision: heartbeat or node guarding, 6007h quick
+// stop), Disable restores the drive's previous settings; the label "supervision" says what is
+// active. Every stop names its reason in lastStopReason() and stopped().
 class JogPanel : public QWidget
 {
     Q_OBJECT
@@ -54,6 +62,9 @@ public:
     DeviceConnection *connection() const { return m_connection; }
     motion::MotionAxis *motionAxis() const { return m_motion.get(); }
     motion::Cia402Axis *cia402Axis() const { return m_cia.get(); }
+    motion::LeasedMove *leasedMove() const { return m_lease.get(); }
+    // Null unless the connection's drive offers heartbeat consumption or node guarding.
+    canopen::DriveSupervision *supervision() const { return m_driveSupervision.get(); }
     MotionForm *motionForm() const { return m_form; }
     // Limits read from the drive (607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
     bool limitsKnown() const { return m_limitsKnown; }
@@ -96,6 +107,8 @@ private:
     void runPower(motion::CommandKind kind, bool enable);
     void render();
     void renderLimits();
+    void renderSupervision();
+    void releaseSupervision();
     void setMessage(const QString &text, const QColor &color = {});
     void noteStop(const QString &reason);
     motion::MoveParams jogParams() const;
@@ -105,9 +118,8 @@ private:
     std::unique_ptr<motion::MotionAxis> m_motion;
     std::unique_ptr<motion::MotionCommand> m_power;
     std::unique_ptr<motion::MotionCommand> m_reset;
-    std::unique_ptr<motion::MotionCommand> m_jog;
-    std::unique_ptr<motion::MotionCommand> m_jogHalt;
-    std::unique_ptr<motion::MotionCommand> m_step;
+    std::unique_ptr<motion::LeasedMove> m_lease; // jog and step
+    std::unique_ptr<canopen::DriveSupervision> m_driveSupervision;
     QList<QMetaObject::Connection> m_connectionSignals;
     quint64 m_generation = 0; // which connection a late reply belongs to
     bool m_limitsKnown = false;
@@ -135,6 +147,7 @@ private:
     QPushButton *m_stepMinus = nullptr;
     QPushButton *m_stepPlus = nullptr;
     QLabel *m_limits = nullptr;
+    QLabel *m_supervision = nullptr;
     MotionForm *m_form = nullptr;
 };
 

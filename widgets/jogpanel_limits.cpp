@@ -1,8 +1,11 @@
-// JogPanel: reading the drive's limits into the command model's AxisConfig (motion/axislimits.h).
+// JogPanel: reading the drive's limits into the command model's AxisConfig (motion/axislimits.h)
+// and what stops the drive when drivebench goes away.
 #include "jogpanel.h"
 
 #include "motion/axislimits.h"
 #include "motionform.h"
+
+#include <QLabel>
 
 #include <memory>
 
@@ -51,6 +54,44 @@ void JogPanel::applyLimits(const QHash<ObjectAddress, QVariant> &values)
     m_limitsKnown = true;
     m_form->setLimits(m_config, m_positionUnit, m_velocityUnit);
     renderLimits();
+}
+
+} // namespace db::widgets
+
+namespace db::widgets {
+
+void JogPanel::renderSupervision()
+{
+    if (!m_connection) {
+        m_supervision->clear();
+        return;
+    }
+    const QString lease = tr("Jog and step move in leases of %1 ms plus the braking distance: "
+                             "the drive stops by itself when the renewals stop.")
+                              .arg(motion::LeasedMove::kLeaseMs);
+    QString drive;
+    if (!m_driveSupervision)
+        drive = tr("No drive-side supervision on this connection.");
+    else if (m_driveSupervision->isArmed())
+        drive = tr("Active: %1.").arg(m_driveSupervision->description());
+    else
+        drive = tr("On enable: %1.").arg(m_driveSupervision->description());
+    m_supervision->setText(lease + QLatin1Char('\n') + drive);
+}
+
+void JogPanel::releaseSupervision()
+{
+    auto supervision = std::move(m_driveSupervision);
+    if (!supervision || !supervision->isArmed() || !m_connection || !m_connection->isConnected())
+        return; // destroyed unarmed, or our side just stops: the drive reacts as to a lost master
+    // A clean let-go: the drive's previous settings go back; the object lives until then.
+    canopen::DriveSupervision *s = supervision.release();
+    s->setParent(m_connection);
+    Reply *r = s->disarm();
+    connect(r, &Reply::finished, s, [r, s] {
+        r->deleteLater();
+        s->deleteLater();
+    });
 }
 
 } // namespace db::widgets

@@ -150,6 +150,10 @@ void JogPanel::buildUi()
     auto *jogLayout = new QVBoxLayout(jogBox);
     jogLayout->addLayout(jogButtons);
     jogLayout->addLayout(jogForm);
+    m_supervision = new QLabel(jogBox);
+    m_supervision->setObjectName(QStringLiteral("supervision"));
+    m_supervision->setWordWrap(true);
+    jogLayout->addWidget(m_supervision);
 
     auto *limitsBox = new QGroupBox(tr("Drive limits"), this);
     m_limits = new QLabel(tr("Not read yet"), limitsBox);

@@ -1,8 +1,10 @@
 #include "commands_motion.h"
 
+#include "canopen/drivesupervision.h"
 #include "cia402/modes.h"
 #include "motion/axislimits.h"
 #include "motion/cia402axis.h"
+#include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
 #include <QCoreApplication>
@@ -10,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace db::cli {
 
@@ -65,6 +68,21 @@ bool waitRounds(Axis &axis, int rounds, int timeoutMs)
     QObject::disconnect(c);
     return ok;
 }
+
+// Gives the drive its previous supervision settings back when the command ends normally (on
+// every return path); a killed process never gets here, and the drive then reacts.
+struct RestoreSupervision
+{
+    canopen::DriveSupervision *supervision;
+    Context &c;
+    ~RestoreSupervision()
+    {
+        if (!supervision || !supervision->isArmed())
+            return;
+        if (auto restored = Reply::wait(supervision->disarm()); !restored)
+            c.err << "drivebench-cli: warning: " << restored.error().message() << Qt::endl;
+    }
+};
 
 Result<double> number(Context &c, const QString &option)
 {
@@ -329,18 +347,32 @@ int jog(Context &c)
         *field = *x;
     }
     p.jerk = axis.model->config().maxJerk;
-    MotionCommand jogging(axis.model.get(), CommandKind::MoveVelocity);
-    jogging.setParams(p);
-    jogging.setExecute(true);
-    // Jog for the time unless the command ends early (refused, fault, link lost).
+    // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
+    DeviceConnection *conn = axis.session.connection();
+    std::unique_ptr<canopen::DriveSupervision> supervision;
+    if (canopen::DriveSupervision::modeFor(conn) != canopen::DriveSupervision::Mode::None) {
+        supervision = std::make_unique<canopen::DriveSupervision>(conn);
+        if (auto armed = Reply::wait(supervision->arm()); !armed)
+            c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
+        else if (c.options.verbose)
+            c.out << "supervision: " << supervision->description() << Qt::endl;
+    }
+    const RestoreSupervision restore { supervision.get(), c };
+    // In leases renewed while this process runs: killed, frozen or cut off, it leaves a drive
+    // that brakes by itself at most LeasedMove::leaseTimeMs() after the last renewal.
+    LeasedMove lease(axis.model.get());
+    std::optional<MotionCommand::Status> ended;
+    QObject::connect(&lease, &LeasedMove::ended, [&ended](MotionCommand::Status s) { ended = s; });
+    lease.jog(*v >= 0 ? 1 : -1, p);
+    if (c.options.verbose)
+        c.out << "lease: " << LeasedMove::kLeaseMs << " ms, " << lease.leaseTravel()
+              << " units; the drive stops within " << qRound(lease.leaseTimeMs())
+              << " ms if drivebench-cli stops" << Qt::endl;
+    // Jog for the time unless the move ends early (software limit, refused, fault, link lost).
     const QDeadlineTimer until { qint64(*t) };
     waitUntil(
-        axis,
-        [&] {
-            return until.hasExpired() || jogging.status() == MotionCommand::Status::Error
-                || jogging.status() == MotionCommand::Status::CommandAborted;
-        },
-        int(*t) + kStopFlushMs);
+        axis, [&] { return until.hasExpired() || ended.has_value(); }, int(*t) + kStopFlushMs);
+    const MotionCommand &jogging = *lease.command();
     if (jogging.status() == MotionCommand::Status::Error) {
         if (jogging.refusal() != Refusal::None) {
             c.err << "drivebench-cli: " << jogging.error().message() << Qt::endl;
@@ -348,11 +380,21 @@ int jog(Context &c)
         }
         return fail(c, jogging.error());
     }
-    MotionCommand halt(axis.model.get(), CommandKind::Halt);
-    halt.setParams(p);
-    if (const int rc = runToEnd(c, axis, halt); rc != ExitOk)
-        return rc;
-    halt.setExecute(false); // leaves Discrete Motion (Sec. 3.12)
+    if (!ended) {
+        lease.halt();
+        MotionCommand &halt = *lease.haltCommand();
+        if (!waitUntil(
+                axis, [&] { return halt.isFinished(); }, axis.waitMs)) {
+            axis.model->stopNow();
+            return fail(c,
+                        Error(Error::Kind::Timeout,
+                              QStringLiteral("MC_Halt not done within %1 ms (--wait); axis "
+                                             "stopped")
+                                  .arg(axis.waitMs)));
+        }
+        if (halt.status() != MotionCommand::Status::Done)
+            return fail(c, halt.error());
+    }
     printPosition(c, axis);
     return ExitOk;
 }

@@ -1,8 +1,10 @@
 #include "cannetwork.h"
 
 #include "emcyconsumer.h"
+#include "heartbeatproducer.h"
 #include "lssmaster.h"
 #include "nmtmaster.h"
+#include "nodeguarding.h"
 #include "nodemonitor.h"
 #include "sdoclient.h"
 #include "syncproducer.h"
@@ -28,6 +30,8 @@ CanNetwork::CanNetwork(CanBus *bus, int bitrate, QObject *parent)
     m_emcy = new EmcyConsumer(m_bus, this);
     m_sync = new SyncProducer(m_bus, this);
     m_lss = new LssMaster(m_bus, this);
+    m_heartbeat = new HeartbeatProducer(m_bus, this);
+    m_guarding = new NodeGuarding(m_bus, this);
     connect(m_bus, &CanBus::opened, this, &CanNetwork::opened);
     connect(m_bus, &CanBus::closed, this, [this](const Error &error) {
         const bool requested = std::exchange(m_closing, false);

@@ -2,10 +2,11 @@
 
 // One CAN bus and the CANopen master services on it (CiA 301): SDO client (one channel per
 // node, different nodes in parallel), NMT master, node monitor (boot-up, heartbeat), EMCY
-// consumer, SYNC producer, LSS master, and frame subscriptions by COB-ID. Every node connection
-// on the same bus shares one network, so N nodes behind one SLCAN link use one socket, one NMT
-// master and one node monitor; broadcast services (NMT to all, LSS, raw frames) go through the
-// network, not through a node.
+// consumer, SYNC producer, LSS master, the tool's own heartbeat producer and node guarding
+// (what drives watch to stop when the tool goes away), and frame subscriptions by COB-ID. Every
+// node connection on the same bus shares one network, so N nodes behind one SLCAN link use one
+// socket, one NMT master and one node monitor; broadcast services (NMT to all, LSS, raw frames) go
+// through the network, not through a node.
 //
 // Contracts:
 // - The network owns its bus and services; they live as long as the network.
@@ -35,8 +36,10 @@ class CanBus;
 namespace db::canopen {
 
 class EmcyConsumer;
+class HeartbeatProducer;
 class LssMaster;
 class NmtMaster;
+class NodeGuarding;
 class NodeMonitor;
 class SdoClient;
 class SyncProducer;
@@ -63,6 +66,8 @@ public:
     EmcyConsumer *emcy() const { return m_emcy; }
     SyncProducer *sync() const { return m_sync; }
     LssMaster *lss() const { return m_lss; }
+    HeartbeatProducer *heartbeat() const { return m_heartbeat; }
+    NodeGuarding *guarding() const { return m_guarding; }
 
     // Opens the bus unless it is open or opening; counts the users who need it open.
     void acquire();
@@ -105,6 +110,8 @@ private:
     EmcyConsumer *m_emcy;
     SyncProducer *m_sync;
     LssMaster *m_lss;
+    HeartbeatProducer *m_heartbeat;
+    NodeGuarding *m_guarding;
     std::unordered_map<quint32, std::vector<Subscription>> m_subscriptions;
 };
 

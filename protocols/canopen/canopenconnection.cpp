@@ -188,6 +188,29 @@ void CanopenConnection::onBusOpened()
     qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_network->name();
     Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
     setState(State::Connected);
+    watchHeartbeat();
+}
+
+// The node's own heartbeat period (1017h) sets how long our NodeMonitor waits before it reports
+// "heartbeat lost" (supervisionLost()): kHeartbeatConsumerFactor periods.
+void CanopenConnection::watchHeartbeat()
+{
+    if (!dictionary().contains(kProducerHeartbeat))
+        return;
+    Reply *r = read(kProducerHeartbeat);
+    connect(r, &Reply::finished, this, [this, r] {
+        r->deleteLater();
+        const int period = r->ok() ? r->value().toInt() : 0;
+        if (period <= 0 || !isConnected())
+            return;
+        const int consumer = period * kHeartbeatConsumerFactor;
+        m_network->monitor()->setConsumerTime(m_node, consumer);
+        Q_EMIT logLine(QStringLiteral("node %1 sends its heartbeat every %2 ms (1017h): "
+                                      "watched, lost after %3 ms of silence")
+                           .arg(m_node)
+                           .arg(period)
+                           .arg(consumer));
+    });
 }
 
 // Reads 1000h: any answer, even an abort, shows the node is there.
@@ -204,6 +227,7 @@ void CanopenConnection::probe()
             Q_EMIT logLine(
                 QStringLiteral("node %1 answers on %2").arg(m_node).arg(m_network->name()));
             setState(State::Connected);
+            watchHeartbeat();
             return;
         }
         const Error why = reply->error().kind() == Error::Kind::Timeout

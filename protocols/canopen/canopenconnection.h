@@ -33,6 +33,10 @@ class CanopenConnection : public DeviceConnection
     Q_OBJECT
 public:
     static constexpr ObjectAddress kDeviceType { 0x1000, 0x00 };
+    static constexpr ObjectAddress kProducerHeartbeat { 0x1017, 0x00 };
+    // Once connected, the node's heartbeat (1017h, when described and > 0) is watched by the
+    // network's NodeMonitor with this many periods of silence allowed.
+    static constexpr int kHeartbeatConsumerFactor = 2;
 
     // A node on a shared network (see CanNetworkPool). A bad ?node= makes open() fail with
     // InvalidArgument.
@@ -85,6 +89,7 @@ private:
     void onBusOpened();
     void onBusClosed(const Error &error);
     void probe();
+    void watchHeartbeat();
     void releaseNetwork();
     void prepareSdo() const;
 

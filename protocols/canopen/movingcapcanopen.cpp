@@ -14,6 +14,9 @@ MovingCapCanopen::MovingCapCanopen(sim::MovingCapDrive *drive, QObject *parent)
     // movingcap.md 7.1 [R]: exactly the drive's 8 bytes (code LE, 1001h, five zeros).
     connect(m_drive, &sim::MovingCapDrive::emergency, this,
             [this](quint16, quint8, const QByteArray &data8) { m_node->sendEmergency(data8); });
+    // CiA 402 6007h: the drive's reaction when its master stops guarding it.
+    connect(m_node.get(), &SimulatedNode::communicationLost, this,
+            [this] { m_drive->connectionLost(); });
     m_node->start();
 }
 

@@ -5,6 +5,8 @@
 // frames carry exactly the bytes of movingcap.md 7.1 on COB-ID 0x0B2, from
 // MovingCapDrive::emergency. NMT and heartbeat behave as a standard CiA 301 node (the manual
 // does not say whether the drive supports them; 4.1); the description has no PDO objects.
+// Life guarding (100Ch/100Dh, the XDD's objects of 4.4; no 1016h consumer) ends in the
+// drive's abort connection reaction (6007h).
 
 #include "simulatednode.h"
 

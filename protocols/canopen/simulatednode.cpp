@@ -82,6 +82,7 @@ SimulatedNode::SimulatedNode(const ObjectDictionary &dictionary, NodeId node, QO
     , m_access(m_ownStore.get())
     , m_node(node)
     , m_sdo(this, node)
+    , m_errorControl(this)
 {
     init();
 }
@@ -91,6 +92,7 @@ SimulatedNode::SimulatedNode(ObjectAccess *access, NodeId node, QObject *parent)
     , m_access(access)
     , m_node(node)
     , m_sdo(this, node)
+    , m_errorControl(this)
 {
     init();
 }
@@ -106,6 +108,9 @@ void SimulatedNode::init()
         bootUp();
     });
     m_lss.setActiveNodeId(m_node);
+    m_errorControl.setNodeId(m_node);
+    connect(&m_errorControl, &ErrorControlSlave::transmit, this, &SimulatedNode::transmit);
+    connect(&m_errorControl, &ErrorControlSlave::lost, this, &SimulatedNode::onCommunicationError);
     connect(&m_heartbeat, &QTimer::timeout, this,
             [this] { send(cob::heartbeat(m_node), QByteArray(1, char(m_state))); });
     for (int n = 0; n < kPdoCount; ++n) {
@@ -121,6 +126,7 @@ void SimulatedNode::setNodeId(NodeId node)
     m_node = node;
     m_sdo.setNodeId(node);
     m_lss.setActiveNodeId(node);
+    m_errorControl.setNodeId(node);
 }
 
 void SimulatedNode::start()
@@ -138,6 +144,7 @@ void SimulatedNode::attach(CanBus *bus)
 void SimulatedNode::bootUp()
 {
     m_sdo.reset();
+    m_errorControl.reset();
     m_state = NmtState::BootUp;
     send(cob::heartbeat(m_node), QByteArray(1, '\0')); // boot-up (CiA 301 7.2.8.3.2.1)
     setState((u32({ 0x1F80, 0 }) & 0x08) ? NmtState::Operational : NmtState::PreOperational);
@@ -154,6 +161,8 @@ void SimulatedNode::setState(NmtState state)
 
 void SimulatedNode::receive(const QCanBusFrame &frame)
 {
+    if (m_started && m_errorControl.receive(frame, m_state))
+        return;
     if (!m_started || frame.frameType() != QCanBusFrame::DataFrame
         || frame.hasExtendedFrameFormat())
         return;
@@ -201,6 +210,21 @@ void SimulatedNode::handleNmt(const QByteArray &data)
             m_ownStore->resetToDefaults([](ObjectAddress a) { return a.index < 0x2000; });
         return bootUp();
     }
+}
+
+// Life guarding or heartbeat event: EMCY 8130h and the NMT reaction of 1029h:01 (CiA 301
+// 7.2.8.3.2; 0 = pre-operational if operational, 1 = no change, 2 = stopped).
+void SimulatedNode::onCommunicationError(const QString &reason)
+{
+    Q_EMIT communicationLost(reason);
+    constexpr quint16 kLifeGuardOrHeartbeatError = 0x8130;
+    constexpr quint8 kCommunicationErrorRegister = 0x11; // generic + communication
+    raiseEmergency(kLifeGuardOrHeartbeatError, kCommunicationErrorRegister);
+    const quint32 reaction = u32({ 0x1029, 1 }, 0);
+    if (reaction == 0 && m_state == NmtState::Operational)
+        setState(NmtState::PreOperational);
+    else if (reaction == 2)
+        setState(NmtState::Stopped);
 }
 
 void SimulatedNode::handleLss(const QCanBusFrame &frame)
@@ -256,6 +280,8 @@ Result<void> SimulatedNode::write(ObjectAddress address, const QVariant &raw)
     if (address.index == 0x1017 || (address.index >= 0x1800 && address.index < 0x1800 + kPdoCount)
         || (address.index >= 0x1A00 && address.index < 0x1A00 + kPdoCount))
         configureTimers();
+    if (address.index == 0x100C || address.index == 0x100D || address.index == 0x1016)
+        m_errorControl.configure();
     Q_EMIT objectWritten(address, raw);
     return {};
 }

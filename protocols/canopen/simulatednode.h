@@ -1,11 +1,13 @@
 #pragma once
 
 // A simulated CANopen node for tests, benchmarks and the simulators (CiA 301 device side):
-// SDO server, NMT slave with boot-up, heartbeat producer (1017h), EMCY producer (1014h),
+// SDO server, NMT slave with boot-up, heartbeat producer (1017h), life guarding (100Ch/100Dh)
+// and heartbeat consumer (1016h) with the error behaviour of 1029h:01, EMCY producer (1014h),
 // TPDOs (1800h/1A00h) on SYNC or event timer, RPDOs (1400h/1600h), and switchable SDO failure
 // modes (ARCHITECTURE.md habit 6). Bus-agnostic: frames in through receive(), out through
 // transmit(); attach() wires both to a CanBus, an SlcanServer is wired by its owner.
 
+#include "errorcontrolslave.h"
 #include "lssslave.h"
 #include "sdoserver.h"
 
@@ -107,12 +109,17 @@ Q_SIGNALS:
     void nmtStateChanged(db::canopen::NmtState state);
     // A write through SDO or RPDO succeeded.
     void objectWritten(db::ObjectAddress address, const QVariant &raw);
+    // A life guarding or heartbeat event (errorcontrolslave.h). Emitted before the node's own
+    // reaction (EMCY 8130h, the NMT state change of 1029h:01), so that a device profile can
+    // react first (CiA 402 6007h).
+    void communicationLost(const QString &reason);
 
 private:
     void init();
     void bootUp();
     void setState(NmtState state);
     void handleNmt(const QByteArray &data);
+    void onCommunicationError(const QString &reason);
     void handleLss(const QCanBusFrame &frame);
     void handleSdo(const QCanBusFrame &frame);
     void sdoResponse(const QCanBusFrame &frame);
@@ -129,6 +136,7 @@ private:
     NodeId m_node;
     SdoServer m_sdo;
     LssSlave m_lss;
+    ErrorControlSlave m_errorControl;
     NmtState m_state = NmtState::BootUp;
     bool m_started = false;
     QTimer m_heartbeat;

@@ -132,6 +132,7 @@ void MotionAxis::startMotion(MotionCommand *command)
         refuse(command, plan);
         return;
     }
+    const bool renewal = m_active == command && controlsAxis(command);
     if (m_active && m_active != command && controlsAxis(m_active))
         m_active->setStatus(
             MotionCommand::Status::CommandAborted,
@@ -146,7 +147,8 @@ void MotionAxis::startMotion(MotionCommand *command)
         m_tracker.setTarget(plan.target);
     }
     setState(plan.nextState);
-    keepAlive(); // a new motion gets a full watchdog period
+    if (!renewal)
+        keepAlive(); // a new motion gets a full watchdog period; a renewed set-point does not
     QPointer<MotionCommand> guard(command);
     whenFinished(request(command, plan), [=, this](Reply *r) { onAccepted(guard, generation, r); });
 }

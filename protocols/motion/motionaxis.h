@@ -23,7 +23,8 @@ namespace db::motion {
 //
 // Safety: stopNow() sends a quick stop at once in every state. The deadman watchdog
 // (setWatchdogTimeout, at most kMaxWatchdogMs) stops the axis the same way when keepAlive() has
-// not been called for that long while a motion command is busy or the axis moves. A lost
+// not been called for that long while a motion command is busy or the axis moves; restarting
+// the running command with a new set-point (a LeasedMove renewal) does not feed it. A lost
 // connection fails the busy command with the cause.
 class MotionAxis : public QObject
 {

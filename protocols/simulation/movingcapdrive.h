@@ -67,6 +67,9 @@ public:
     Result<void> setWay(qint64 distance); // WA
     Result<void> setSpeed(qint64 velocity); // SP
     Result<void> stopMotion(); // SM
+    // The fieldbus master went away (life guarding or heartbeat event): the CiA 402 abort
+    // connection reaction of 6007h (0 none, 1 fault, 2 disable voltage, 3 quick stop with 605Ah).
+    void connectionLost();
     Result<void> continueMotion(); // CM
     Result<void> powerContinue(); // PWC
     Result<void> powerQuit(); // PQ

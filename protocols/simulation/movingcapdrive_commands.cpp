@@ -1,5 +1,6 @@
 // MovingCapDrive: the RefGo-level operations (movingcap.md 3.3, 3.4) and their motion helpers.
 #include "movingcapdrive.h"
+#include "movingcapfaults.h"
 
 #include <cmath>
 
@@ -140,6 +141,27 @@ Result<void> MovingCapDrive::stopMotion()
     // active (spec 3.4 *10).
     handle(m_machine.quickStop(6));
     return {};
+}
+
+void MovingCapDrive::connectionLost()
+{
+    if (!m_store.dictionary().contains({ 0x6007, 0 }))
+        return;
+    switch (m_store.integer({ 0x6007, 0 })) {
+    case 1:
+        injectFault(faults::Communication);
+        return;
+    case 2:
+        applyControlword(0); // disable voltage
+        return;
+    case 3:
+        if (m_machine.state() == cia402::State::OperationEnabled)
+            handle(m_machine.quickStop(m_machine.quickStopOption()));
+        emitStatusIfChanged();
+        return;
+    default:
+        return; // 0 and the manufacturer-specific values: no action
+    }
 }
 
 Result<void> MovingCapDrive::continueMotion()

@@ -3,6 +3,7 @@
 // (SLCAN on loopback, node 50). The simulated drive has software limits of +-100000 (607Dh).
 #include "clirun.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
@@ -21,6 +22,8 @@ private Q_SLOTS:
     void usageErrorsExitWithTwo_data();
     void usageErrorsExitWithTwo();
     void tooShortWaitStopsTheAxis();
+    void killedJogStopsByItself_data();
+    void killedJogStopsByItself();
 
 private:
     using Run = db::test::CliRun;
@@ -197,6 +200,64 @@ void TestCliMotion::tooShortWaitStopsTheAxis()
         QStringLiteral("0"), 5000);
     r = cli({ QStringLiteral("reset"), u });
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+void TestCliMotion::killedJogStopsByItself_data()
+{
+    addTransports();
+}
+
+void TestCliMotion::killedJogStopsByItself()
+{
+    // jog moves in leases of 300 ms plus the braking distance: killed without a chance to send
+    // anything, the CLI leaves a drive that brakes with its own ramp at the end of the lease.
+    QFETCH(QString, transport);
+    const QString u = uri(transport);
+    constexpr double kVelocity = 2000;
+    constexpr double kRamp = 20000; // braking: 100 units in 100 ms
+    constexpr double kLeaseTravel = kVelocity * 0.3 + kVelocity * kVelocity / (2 * kRamp);
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    QProcess jog;
+    jog.start(QStringLiteral(DRIVEBENCH_CLI),
+              { QStringLiteral("jog"), u, QStringLiteral("--vel"), QString::number(kVelocity),
+                QStringLiteral("--acc"), QString::number(kRamp), QStringLiteral("--dec"),
+                QString::number(kRamp), QStringLiteral("--time"), QStringLiteral("60000") });
+    QVERIFY(jog.waitForStarted());
+    const auto velocity = [&] {
+        return cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") })
+            .out.trimmed()
+            .toDouble();
+    };
+    // Mid-jog: at the jog velocity for more than a lease.
+    QTRY_VERIFY_WITH_TIMEOUT(qAbs(velocity() - kVelocity) < 20, 10000);
+    const Run before = cli({ QStringLiteral("read"), u, QStringLiteral("6064:0") });
+    QVERIFY2(jog.state() == QProcess::Running, qPrintable(QString::fromUtf8(jog.readAll())));
+    jog.kill(); // SIGKILL: no stop, no cleanup
+    QElapsedTimer since;
+    since.start();
+    QVERIFY(jog.waitForFinished(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(velocity() == 0.0, 1000 + int(1000 * kVelocity / kRamp));
+    qInfo("%s: read 606Ch = 0 %lld ms after SIGKILL", qPrintable(transport), since.elapsed());
+    const double stoppedAt =
+        cli({ QStringLiteral("read"), u, QStringLiteral("6064:0") }).out.trimmed().toDouble();
+    const double beforeKill = before.out.trimmed().toDouble();
+    // At most one lease past the position read just before the kill (which is stale by the
+    // time that read took).
+    QVERIFY2(stoppedAt - beforeKill <= kLeaseTravel + kVelocity * before.ms / 1000.0 + 2,
+             qPrintable(QStringLiteral("%1 -> %2").arg(beforeKill).arg(stoppedAt)));
+    const auto state = [&] {
+        return cli({ QStringLiteral("read"), u, QStringLiteral("6041:0") }).out.trimmed().toInt()
+            & 0x6F;
+    };
+    if (transport == u"refgo") {
+        // Operation enabled: the drive ended its own profile move, nobody quick-stopped it.
+        QCOMPARE(state(), 0x27);
+    } else {
+        // On CANopen the drive also missed our node guarding (armed by jog) and reacted with
+        // 6007h = quick stop: no longer operation enabled.
+        QTRY_VERIFY_WITH_TIMEOUT(state() != 0x27, 2000);
+    }
     QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
 }
 

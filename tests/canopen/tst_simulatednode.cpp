@@ -39,7 +39,12 @@ ObjectDictionary nodeDictionary()
         add(d, 0x1003, s, T::Unsigned32, ro, 0u);
     add(d, 0x1005, 0, T::Unsigned32, rw, 0x80u);
     add(d, 0x1014, 0, T::Unsigned32, rw, 0x85u);
+    add(d, 0x100C, 0, T::Unsigned16, rw, 0u);
+    add(d, 0x100D, 0, T::Unsigned8, rw, 0u);
+    add(d, 0x1016, 0, T::Unsigned8, ro, 1u);
+    add(d, 0x1016, 1, T::Unsigned32, rw, 0u);
     add(d, 0x1017, 0, T::Unsigned16, rw, 0u);
+    add(d, 0x1029, 1, T::Unsigned8, rw, 0u);
     add(d, 0x1400, 1, T::Unsigned32, rw, 0x205u);
     add(d, 0x1600, 0, T::Unsigned8, rw, 1u);
     add(d, 0x1600, 1, T::Unsigned32, rw, 0x60400010u);
@@ -89,6 +94,9 @@ private Q_SLOTS:
     void failureSlowReply();
     void failureDropAfterN();
     void failureGarbage();
+    void lifeGuardingAnswersWithToggle();
+    void lifeGuardingEventAfterLifeTime();
+    void heartbeatConsumerEvent();
 
 private:
     QList<QCanBusFrame> feed(const QCanBusFrame &f);
@@ -315,6 +323,58 @@ void TestSimulatedNode::failureGarbage()
     QCOMPARE(out.size(), 1);
     QCOMPARE(out.at(0).frameId(), 0x585u);
     QCOMPARE(out.at(0).payload(), hex("E7 DE AD BE EF 5A 5A 5A"));
+}
+
+static QCanBusFrame guardRequest(quint32 id)
+{
+    QCanBusFrame rtr(id, QByteArray());
+    rtr.setFrameType(QCanBusFrame::RemoteRequestFrame);
+    return rtr;
+}
+
+void TestSimulatedNode::lifeGuardingAnswersWithToggle()
+{
+    m_node->start();
+    auto out = feed(guardRequest(0x705));
+    QCOMPARE(out.size(), 1);
+    QCOMPARE(out.at(0).frameId(), 0x705u);
+    QCOMPARE(out.at(0).payload(), hex("7F")); // pre-operational, toggle 0
+    out = feed(guardRequest(0x705));
+    QCOMPARE(out.at(0).payload(), hex("FF")); // toggle 1
+    QVERIFY(feed(guardRequest(0x706)).isEmpty()); // another node's
+}
+
+void TestSimulatedNode::lifeGuardingEventAfterLifeTime()
+{
+    m_node->start();
+    feed(frame(0x000, "01 05"));
+    feed(frame(0x605, "2B 0C 10 00 32000000")); // 100Ch guard time 50 ms
+    feed(frame(0x605, "2F 0D 10 00 03000000")); // 100Dh factor 3: life time 150 ms
+    QSignalSpy lost(m_node, &SimulatedNode::communicationLost);
+    m_tx->clear();
+    QVERIFY(!lost.wait(300)); // not guarded yet: no event (CiA 301: starts with the first RTR)
+    feed(guardRequest(0x705));
+    QVERIFY(lost.wait(1000));
+    QVERIFY2(lost.at(0).at(0).toString().contains(QLatin1String("life guarding")),
+             qPrintable(lost.at(0).at(0).toString()));
+    QCOMPARE(m_node->nmtState(), NmtState::PreOperational); // 1029h:01 = 0
+    const auto emcy = m_tx->last().at(0).value<QCanBusFrame>();
+    QCOMPARE(emcy.frameId(), 0x85u);
+    QCOMPARE(emcy.payload().left(3), hex("30 81 11")); // 8130h life guard / heartbeat error
+}
+
+void TestSimulatedNode::heartbeatConsumerEvent()
+{
+    m_node->start();
+    feed(frame(0x000, "01 05"));
+    feed(frame(0x605, "2F 29 10 01 02000000")); // 1029h:01 = 2: to Stopped
+    feed(frame(0x605, "23 16 10 01 C8007F00")); // 1016h:01 = node 127, 200 ms
+    QSignalSpy lost(m_node, &SimulatedNode::communicationLost);
+    feed(frame(0x77F, "05")); // the first heartbeat starts the watch
+    QVERIFY(lost.wait(1000));
+    QVERIFY2(lost.at(0).at(0).toString().contains(QLatin1String("heartbeat of node 127")),
+             qPrintable(lost.at(0).at(0).toString()));
+    QCOMPARE(m_node->nmtState(), NmtState::Stopped);
 }
 
 QTEST_GUILESS_MAIN(TestSimulatedNode)

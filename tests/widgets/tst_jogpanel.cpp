@@ -219,6 +219,57 @@ private Q_SLOTS:
         QVERIFY(b->panel->lastStopReason().contains(QLatin1String("watchdog")));
     }
 
+    void frozenPanelLeaseRunsOut()
+    {
+        // The GUI freezes mid-jog (no renewal, no keep-alive, no stop): with the watchdog out of
+        // the way, only the lease on the drive is left to stop it.
+        auto b = makeBench();
+        QVERIFY(b && enable(*b));
+        b->panel->motionAxis()->setWatchdogTimeout(0);
+        QTest::mousePress(b->button("jogPlus"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(b->axis().position() > 3 * JogPanel::kDefaultJogVelocity
+                                         * motion::LeasedMove::kLeaseMs / 1000.0,
+                                 kMoveMs);
+        QVERIFY(b->axis().isMoving());
+        auto *keepAlive = b->panel->findChild<QTimer *>(QStringLiteral("keepAliveTimer"));
+        keepAlive->stop();
+        motion::LeasedMove *lease = b->panel->leasedMove();
+        QVERIFY(lease && lease->isRenewing());
+        lease->renewTimer()->stop();
+        const double target = lease->lastTarget();
+        QTRY_VERIFY_WITH_TIMEOUT(!b->axis().isMoving(), int(lease->leaseTimeMs()) + 250);
+        QVERIFY2(qAbs(b->axis().position() - target) < 2,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(b->axis().position()).arg(target)));
+        // Its own profile ended the move: no quick stop, still enabled.
+        QCOMPARE(b->demo->drive().state(), cia402::State::OperationEnabled);
+        QTest::mouseRelease(b->button("jogPlus"), Qt::LeftButton);
+    }
+
+    void canopenEnableArmsSupervision()
+    {
+        auto b = makeBench({}, true);
+        QVERIFY(b);
+        auto *label = b->panel->findChild<QLabel *>(QStringLiteral("supervision"));
+        QVERIFY2(label->text().contains(QLatin1String("On enable: drive stops within 500 ms")),
+                 qPrintable(label->text()));
+        QVERIFY(enable(*b));
+        QTRY_VERIFY2(label->text().contains(QLatin1String("Active: drive stops within 500 ms")),
+                     qPrintable(label->text()));
+        sim::MovingCapDrive &drive = b->demo->drive();
+        QCOMPARE(drive.read({ 0x6007, 0 }).value().toInt(), 3);
+        QCOMPARE(drive.read({ 0x100D, 0 }).value().toInt(), 5);
+        QTest::mouseClick(b->button("disable"), Qt::LeftButton);
+        QTRY_VERIFY(label->text().contains(QLatin1String("On enable:")));
+        QCOMPARE(drive.read({ 0x6007, 0 }).value().toInt(), 1);
+        QCOMPARE(drive.read({ 0x100D, 0 }).value().toInt(), 0);
+        // RefGo has nothing of the kind.
+        auto r = makeBench();
+        QVERIFY(r);
+        QVERIFY(r->panel->findChild<QLabel *>(QStringLiteral("supervision"))
+                    ->text()
+                    .contains(QLatin1String("No drive-side supervision")));
+    }
+
     void linkLossEndsJogWithTheCause()
     {
         auto b = makeBench();
@@ -252,6 +303,12 @@ private Q_SLOTS:
         QVERIFY(b && enable(*b));
         auto *canopen = qobject_cast<canopen::CanopenConnection *>(b->connection.get());
         QVERIFY(canopen);
+        // Guard replies would keep the node alive in the monitor: this test is about the
+        // node's own heartbeat, so the panel's node guarding goes off first.
+        Reply *disarmed = b->panel->supervision()->disarm();
+        QSignalSpy restored(disarmed, &Reply::finished);
+        QVERIFY(restored.wait(5000) && disarmed->ok());
+        delete disarmed;
         // The node's heartbeat on the bus (0x700 + 50, operational), every 50 ms.
         canopen->monitor()->setConsumerTime(canopen->node(), 250);
         QTimer heartbeat;
