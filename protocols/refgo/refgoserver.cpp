@@ -158,16 +158,8 @@ void Server::Private::drop(QTcpSocket *socket, qint64 queued, int pausedMs)
 {
     if (!clients.remove(socket))
         return;
-    qCWarning(lcRefgo).noquote() << QStringLiteral(
-                                        "RefGo server: dropping client %1:%2: it has not read "
-                                        "its answers for %3 ms (%4 bytes queued)")
-                                        .arg(socket->peerAddress().toString())
-                                        .arg(socket->peerPort())
-                                        .arg(pausedMs)
-                                        .arg(queued);
-    socket->disconnect(q);
-    socket->abort();
-    socket->deleteLater();
+    qCWarning(lcRefgo).noquote() << "RefGo server:"
+                                 << ClientThrottle::drop(socket, q, queued, pausedMs);
 }
 
 // "<request>\r\n" + "<line>\r\n"... + ">" (spec 3.1, 3.8); a refused request gets one

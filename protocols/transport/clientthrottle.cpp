@@ -36,4 +36,19 @@ void ClientThrottle::onBytesWritten()
     Q_EMIT resumed();
 }
 
+QString ClientThrottle::drop(QTcpSocket *socket, QObject *receiver, qint64 queuedBytes,
+                             int pausedMs)
+{
+    const QString why = QStringLiteral("dropping client %1:%2: it has not read its answers for "
+                                       "%3 ms (%4 bytes queued)")
+                            .arg(socket->peerAddress().toString())
+                            .arg(socket->peerPort())
+                            .arg(pausedMs)
+                            .arg(queuedBytes);
+    socket->disconnect(receiver);
+    socket->abort();
+    socket->deleteLater();
+    return why;
+}
+
 } // namespace db

@@ -34,6 +34,11 @@ public:
     // Becomes a child of the socket.
     ClientThrottle(QTcpSocket *socket, const Limits &limits);
 
+    // Disconnects a stalled client at once (its socket is deleted later) and says why, for the
+    // server's warning: "dropping client 127.0.0.1:40000: it has not read ...". The socket's
+    // signals to receiver are disconnected first.
+    static QString drop(QTcpSocket *socket, QObject *receiver, qint64 queuedBytes, int pausedMs);
+
     bool mayRead() const { return !m_paused; }
     // After the server queued output: pauses the client when its queue is over the limit.
     // Returns the bytes now queued.

@@ -220,15 +220,7 @@ void SlcanServer::Private::drop(QTcpSocket *socket, qint64 queued, int pausedMs)
     if (!clients.remove(socket))
         return;
     qCWarning(lcSlcanServer).noquote()
-        << QStringLiteral("slcan server: dropping client %1:%2: it has not read for %3 ms (%4 "
-                          "bytes queued)")
-               .arg(socket->peerAddress().toString())
-               .arg(socket->peerPort())
-               .arg(pausedMs)
-               .arg(queued);
-    socket->disconnect(q);
-    socket->abort();
-    socket->deleteLater();
+        << "slcan server:" << ClientThrottle::drop(socket, q, queued, pausedMs);
     Q_EMIT q->clientDisconnected();
 }
 
