@@ -20,14 +20,15 @@ struct CliRun
     qint64 ms = 0; // wall time of the run
 };
 
-// Runs program with args and waits at most timeoutMs for it to exit.
-inline CliRun runProgram(const QString &program, const QStringList &args, int timeoutMs)
+// The outcome of a run that was waited for: a program still running is killed (a hang), one
+// that did not start is no exit code either.
+inline CliRun finishedRun(QProcess &p, const QElapsedTimer &clock, int timeoutMs)
 {
-    QProcess p;
-    QElapsedTimer clock;
-    clock.start();
-    p.start(program, args);
-    if (!p.waitForFinished(timeoutMs)) {
+    if (p.error() == QProcess::FailedToStart)
+        return {
+            -2, {}, QStringLiteral("cannot start %1: %2").arg(p.program(), p.errorString()), 0
+        };
+    if (p.state() != QProcess::NotRunning) {
         p.kill();
         p.waitForFinished();
         return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
@@ -35,6 +36,17 @@ inline CliRun runProgram(const QString &program, const QStringList &args, int ti
     return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
              QString::fromUtf8(p.readAllStandardOutput()),
              QString::fromUtf8(p.readAllStandardError()), clock.elapsed() };
+}
+
+// Runs program with args and waits at most timeoutMs for it to exit.
+inline CliRun runProgram(const QString &program, const QStringList &args, int timeoutMs)
+{
+    QProcess p;
+    QElapsedTimer clock;
+    clock.start();
+    p.start(program, args);
+    p.waitForFinished(timeoutMs);
+    return finishedRun(p, clock, timeoutMs);
 }
 
 // Like runProgram, but the caller's event loop keeps turning while the program runs, so that
@@ -57,14 +69,7 @@ inline CliRun runServing(const QString &program, const QStringList &args, int ti
     limit.start(timeoutMs);
     if (p.state() != QProcess::NotRunning)
         loop.exec();
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-        return { -2, {}, QStringLiteral("hang: no exit within %1 ms").arg(timeoutMs), 0 };
-    }
-    return { p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -3,
-             QString::fromUtf8(p.readAllStandardOutput()),
-             QString::fromUtf8(p.readAllStandardError()), clock.elapsed() };
+    return finishedRun(p, clock, timeoutMs);
 }
 
 // Starts a simulator and collects its standard output until it holds `lines` lines, it exits,
