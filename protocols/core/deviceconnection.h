@@ -1,5 +1,6 @@
 #pragma once
 
+#include "addressformat.h"
 #include "connectionuri.h"
 #include "objectdictionary.h"
 #include "reply.h"
@@ -90,6 +91,11 @@ public:
     // the node list. Null and 0 for protocols without one.
     virtual QObject *network() const { return nullptr; }
     virtual int networkAddress() const { return 0; }
+
+    // How addresses of this device are written and read (hex INDEX:SUB for CANopen and RefGo,
+    // decimal NUMBER:DATASET for inverter parameters). Everything that shows or parses an
+    // address for this connection goes through it.
+    virtual const AddressFormat &addressFormat() const { return AddressFormat::canopen(); }
 
 Q_SIGNALS:
     void stateChanged(db::DeviceConnection::State state);
