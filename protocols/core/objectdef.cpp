@@ -31,27 +31,27 @@ std::optional<Access> access::fromName(const QString &text)
     return std::nullopt;
 }
 
-Result<QVariant> ObjectDef::validate(const QVariant &value) const
+Result<QVariant> ObjectDef::validate(const QVariant &value, const AddressFormat &format) const
 {
     auto raw = codec::normalize(type, value);
     if (!raw)
-        return raw.error().prefixed(address.toString());
+        return raw.error().prefixed(format.format(address));
     if (auto limits = codec::checkLimits(type, raw.value(), minimum, maximum); !limits)
-        return limits.error().prefixed(address.toString());
+        return limits.error().prefixed(format.format(address));
     return raw;
 }
 
-Result<QVariant> ObjectDef::parseText(const QString &text) const
+Result<QVariant> ObjectDef::parseText(const QString &text, const AddressFormat &format) const
 {
     const QString t = text.trimmed();
     for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it) {
         if (it.value().compare(t, Qt::CaseInsensitive) == 0)
-            return validate(QVariant::fromValue<qlonglong>(it.key()));
+            return validate(QVariant::fromValue<qlonglong>(it.key()), format);
     }
     auto raw = codec::fromText(type, text);
     if (!raw)
-        return raw.error().prefixed(address.toString());
-    return validate(raw.value());
+        return raw.error().prefixed(format.format(address));
+    return validate(raw.value(), format);
 }
 
 QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const
