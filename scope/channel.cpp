@@ -10,10 +10,11 @@ QString ChannelInfo::label() const
 }
 
 ChannelInfo ChannelInfo::forObject(ObjectAddress address, const ObjectDictionary &dictionary,
-                                   const QString &device, int rateMs)
+                                   const QString &device, int rateMs, const AddressFormat *format)
 {
     ChannelInfo info;
-    info.id = address.toString();
+    info.addressFormat = format ? format : &dictionary.addressFormat();
+    info.id = info.addressFormat->format(address);
     info.address = address;
     info.device = device;
     info.sourceRateMs = rateMs;

@@ -1,5 +1,6 @@
 #pragma once
 // One recorded signal: what it is and how its raw values are shown.
+#include "core/addressformat.h"
 #include "core/objectaddress.h"
 #include <QList>
 #include <QMetaType>
@@ -16,8 +17,11 @@ namespace scope {
 // (display = raw * scale + offset).
 struct ChannelInfo
 {
-    QString id; // "6064:0" (ObjectAddress::toString()); unique within one device
+    QString id; // "6064:0", "372:2": the address as addressFormat writes it; unique per device
     ObjectAddress address;
+    // How the device writes its addresses (CANopen's hex INDEX:SUB, or decimal NUMBER:DATASET
+    // of inverter parameters). Never null.
+    const AddressFormat *addressFormat = &AddressFormat::canopen();
     QString name; // "Position actual value"; may be empty for objects without description
     QString unit; // unit of the displayed value ("inc", "mA"); may be empty
     QString device; // connection URI of the device the channel comes from
@@ -32,9 +36,11 @@ struct ChannelInfo
     QString label() const;
 
     // A channel for `address` with name, unit and scaling (factor/offset) taken from the
-    // dictionary when it knows the object; otherwise named by the address only.
+    // dictionary when it knows the object; otherwise named by the address only. The id is
+    // written in `format`, the dictionary's when null (pass the connection's).
     static ChannelInfo forObject(ObjectAddress address, const ObjectDictionary &dictionary,
-                                 const QString &device, int rateMs = 0);
+                                 const QString &device, int rateMs = 0,
+                                 const AddressFormat *format = nullptr);
 
     friend bool operator==(const ChannelInfo &, const ChannelInfo &) = default;
 };

@@ -125,7 +125,12 @@ bool writeCsv(QIODevice &device, const Recording &rec, double t0, double t1)
             + "; offset: " + numberText(i.offset)
             + "; rate-ms: " + QByteArray::number(i.sourceRateMs)
             + "; dropped: " + QByteArray::number(c.buffer.droppedOverwritten())
-            + "; lost: " + QByteArray::number(c.buffer.lostAtSource()) + '\n';
+            + "; lost: " + QByteArray::number(c.buffer.lostAtSource());
+        // CANopen ids are written as before the key existed; other formats say so, because
+        // "372:2" means another object in hex.
+        if (i.addressFormat->key() != AddressFormat::canopen().key())
+            out += "; addresses: " + i.addressFormat->key().toUtf8();
+        out += '\n';
         if (i.device != rec.device)
             out += "# channel-device: " + escape(i.id).toUtf8() + "; " + escape(i.device).toUtf8()
                 + '\n';

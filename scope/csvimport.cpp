@@ -175,9 +175,20 @@ Result<Recording> fromCsv(const QByteArray &text)
             const QHash<QString, QString> map = pairs(body);
             RecordedChannel c;
             c.info.id = map.value(QStringLiteral("channel"));
-            const auto address = ObjectAddress::parse(c.info.id);
+            const QString formatKey =
+                map.value(QStringLiteral("addresses"), AddressFormat::canopen().key());
+            c.info.addressFormat = AddressFormat::byKey(formatKey);
+            if (!c.info.addressFormat)
+                return malformed(n,
+                                 tr("channel %1: unknown address format '%2' (canopen or "
+                                    "parameter)")
+                                     .arg(c.info.id, formatKey));
+            const auto address = c.info.addressFormat->parse(c.info.id);
             if (c.info.id.isEmpty() || !address)
-                return malformed(n, tr("channel line without a valid 'INDEX:SUB' id"));
+                return malformed(n,
+                                 tr("channel line without a valid id (%1 addresses are written "
+                                    "like %2)")
+                                     .arg(formatKey, c.info.addressFormat->example()));
             c.info.address = *address;
             c.info.name = map.value(QStringLiteral("name"));
             c.info.unit = map.value(QStringLiteral("unit"));

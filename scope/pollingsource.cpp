@@ -51,7 +51,8 @@ Result<int> PollingSource::addChannel(ObjectAddress address, int rateMs)
     if (!m_connection)
         return Error(Error::Kind::InvalidArgument, tr("no connection to poll"));
     return addChannel(ChannelInfo::forObject(address, m_connection->dictionary(),
-                                             m_connection->uri().toString(), rateMs));
+                                             m_connection->uri().toString(), rateMs,
+                                             &m_connection->addressFormat()));
 }
 
 Result<int> PollingSource::addChannel(const ChannelInfo &info)
@@ -65,11 +66,11 @@ Result<int> PollingSource::addChannel(const ChannelInfo &info)
         if (const ObjectDef *def = m_connection->dictionary().find(info.address)) {
             if (!def->readable())
                 return Error(Error::Kind::AccessDenied,
-                             tr("%1 (%2) is write-only").arg(info.address.toString(), def->name));
+                             tr("%1 (%2) is write-only").arg(info.id, def->name));
             if (!datatype::isNumeric(def->type))
-                return Error(Error::Kind::InvalidArgument,
-                             tr("%1 (%2) is not a number and cannot be recorded")
-                                 .arg(info.address.toString(), def->name));
+                return Error(
+                    Error::Kind::InvalidArgument,
+                    tr("%1 (%2) is not a number and cannot be recorded").arg(info.id, def->name));
         }
     }
     m_entries.append({ info, 0 });

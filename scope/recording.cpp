@@ -34,11 +34,16 @@ double Recording::endTime() const
 
 int Recording::indexOf(const QString &id) const
 {
-    const auto wanted = ObjectAddress::parse(id);
     for (int i = 0; i < channels.size(); ++i) {
         if (channels[i].info.id == id)
             return i;
-        if (wanted && channels[i].info.address == *wanted)
+    }
+    // Another spelling of the address ("6064:00", "0x6064:0"), as each channel's device
+    // writes addresses.
+    for (int i = 0; i < channels.size(); ++i) {
+        const ChannelInfo &info = channels[i].info;
+        const auto wanted = info.addressFormat->parse(id);
+        if (wanted && info.address == *wanted)
             return i;
     }
     return -1;

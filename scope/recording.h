@@ -32,7 +32,8 @@ struct Recording
     // Earliest/latest sample time over all channels (0, 0 when empty).
     double startTime() const;
     double endTime() const;
-    // Index of the channel with this id ("6064:0"), -1 when none.
+    // Index of the channel with this id ("6064:0", or another spelling of the address in the
+    // channel's format), -1 when none.
     int indexOf(const QString &id) const;
     // A copy holding only samples with t0 <= t <= t1 (counters copied as they are).
     Recording slice(double t0, double t1) const;

@@ -69,20 +69,22 @@ Result<Trigger> Trigger::parse(const QString &spec, const QStringList &channelId
 }
 
 Result<Trigger> Trigger::parse(const QString &spec, const QStringList &channelIds,
-                               const Trigger &base)
+                               const Trigger &base, const AddressFormat &format)
 {
     const QStringList parts = spec.trimmed().split(QLatin1Char(','));
     if (parts.size() < 2)
         return invalid(spec, tr("missing condition"));
     Trigger trigger = base;
-    const auto address = ObjectAddress::parse(parts[0].trimmed());
-    if (!address)
-        return invalid(spec, address.error().message());
-    trigger.channel = -1;
-    for (int i = 0; i < channelIds.size(); ++i) {
-        const auto id = ObjectAddress::parse(channelIds[i]);
-        if (id && *id == *address)
-            trigger.channel = i;
+    trigger.channel = int(channelIds.indexOf(parts[0].trimmed()));
+    if (trigger.channel < 0) {
+        const auto address = format.parse(parts[0].trimmed());
+        if (!address)
+            return invalid(spec, address.error().message());
+        for (int i = 0; i < channelIds.size(); ++i) {
+            const auto id = format.parse(channelIds[i]);
+            if (id && *id == *address)
+                trigger.channel = i;
+        }
     }
     if (trigger.channel < 0)
         return invalid(spec, tr("%1 is not one of the recorded channels").arg(parts[0].trimmed()));

@@ -1,5 +1,6 @@
 #pragma once
 // Trigger settings (value type) and the pure detector that evaluates them sample by sample.
+#include "core/addressformat.h"
 #include "core/result.h"
 #include <QMetaType>
 #include <QObject>
@@ -53,12 +54,14 @@ public:
     // Parses the CLI/CSV SPEC "CHANNEL,CONDITION":
     //   6064:0,rising,100   6064:0,falling,-5.5   6078:0,above,500   6078:0,below,-500
     //   6064:0,inside,0,1000   6064:0,outside,-10,10   6041:0,bit3,set   6041:0,bit3,clear
-    // CHANNEL is a channel id from `channelIds` (matched as an object address, so "6041:00"
-    // and "6041" find "6041:0"). pre/post are not part of the spec and stay as in `base`.
+    // CHANNEL is a channel id from `channelIds`, as written there or as another spelling of
+    // the same address in `format` (so "6041:00" and "6041" find "6041:0"; with the parameter
+    // format "372.2" finds "372:2"). pre/post are not part of the spec and stay as in `base`.
     // InvalidArgument naming the problem when the spec is malformed or the channel unknown.
     static Result<Trigger> parse(const QString &spec, const QStringList &channelIds);
     static Result<Trigger> parse(const QString &spec, const QStringList &channelIds,
-                                 const Trigger &base);
+                                 const Trigger &base,
+                                 const AddressFormat &format = AddressFormat::canopen());
 
     friend bool operator==(const Trigger &, const Trigger &) = default;
 };

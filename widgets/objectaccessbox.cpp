@@ -108,6 +108,7 @@ void ObjectAccessBox::setConnection(DeviceConnection *connection)
     ++m_generation;
     setBusy(false);
     m_connection = connection;
+    m_address->setPlaceholderText(addressFormat().example());
     if (connection) {
         m_connectionSignals = {
             connect(connection, &DeviceConnection::stateChanged, this,
@@ -117,6 +118,11 @@ void ObjectAccessBox::setConnection(DeviceConnection *connection)
         };
     }
     updateInfo();
+}
+
+const AddressFormat &ObjectAccessBox::addressFormat() const
+{
+    return m_connection ? m_connection->addressFormat() : AddressFormat::canopen();
 }
 
 QString ObjectAccessBox::addressText() const
@@ -156,7 +162,7 @@ QString ObjectAccessBox::resultText() const
 
 std::optional<ObjectDef> ObjectAccessBox::currentDefinition() const
 {
-    auto address = ObjectAddress::parse(m_address->text());
+    auto address = addressFormat().parse(m_address->text());
     if (!address)
         return std::nullopt;
     if (m_connection) {
@@ -173,12 +179,12 @@ std::optional<ObjectDef> ObjectAccessBox::currentDefinition() const
 void ObjectAccessBox::updateInfo()
 {
     const QString text = m_address->text().trimmed();
-    auto address = ObjectAddress::parse(text);
+    auto address = addressFormat().parse(text);
     const ObjectDef *known =
         (address && m_connection) ? m_connection->dictionary().find(address.value()) : nullptr;
     m_type->setVisible(address && !known);
     if (text.isEmpty()) {
-        m_info->setText(tr("Enter an object address, e.g. 6041:0 or 6064"));
+        m_info->setText(tr("Enter an object address, e.g. %1").arg(addressFormat().example()));
         style::setTextColor(m_info, style::inactiveColor());
     } else if (!address) {
         m_info->setText(address.error().message());
@@ -198,7 +204,7 @@ void ObjectAccessBox::updateInfo()
     } else {
         m_info->setText(tr("%1 is not in the device description; it is read as an integer, "
                            "or as the type you pick.")
-                            .arg(address->toString()));
+                            .arg(addressFormat().format(*address)));
         m_info->setToolTip(QString());
         style::setTextColor(m_info, style::warningColor());
     }
@@ -229,7 +235,7 @@ void ObjectAccessBox::showResult(bool ok, const QString &text)
 
 void ObjectAccessBox::read()
 {
-    auto address = ObjectAddress::parse(m_address->text());
+    auto address = addressFormat().parse(m_address->text());
     if (!address) {
         showResult(false, address.error().toString());
         Q_EMIT finished(false);
@@ -253,16 +259,17 @@ void ObjectAccessBox::write()
 {
     const auto def = currentDefinition();
     if (!def) {
-        showResult(false, ObjectAddress::parse(m_address->text()).error().toString());
+        showResult(false, addressFormat().parse(m_address->text()).error().toString());
         Q_EMIT finished(false);
         return;
     }
     if (!def->writable()) {
-        showResult(false, tr("%1 %2 is read-only").arg(def->address.toString(), def->name));
+        showResult(false,
+                   tr("%1 %2 is read-only").arg(addressFormat().format(def->address), def->name));
         Q_EMIT finished(false);
         return;
     }
-    auto raw = def->parseText(m_value->text());
+    auto raw = def->parseText(m_value->text(), addressFormat());
     if (!raw) {
         showResult(false, raw.error().toString());
         Q_EMIT finished(false);

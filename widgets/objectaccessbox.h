@@ -52,6 +52,8 @@ Q_SIGNALS:
     void finished(bool ok);
 
 private:
+    // The connection's (CANopen's without one): what the address field takes and shows.
+    const AddressFormat &addressFormat() const;
     void updateInfo();
     void updateActions();
     void setBusy(bool busy);

@@ -202,6 +202,9 @@ void OdEditor::setConnection(DeviceConnection *connection)
     ++m_generation;
     m_poller->setConnection(connection);
     m_connection = connection;
+    m_model->setAddressFormat(connection ? &connection->addressFormat() : nullptr);
+    m_details->setAddressFormat(connection ? connection->addressFormat()
+                                           : AddressFormat::canopen());
     m_model->setDictionary(connection ? connection->dictionary() : ObjectDictionary());
     if (connection) {
         m_stateConnection =
@@ -301,7 +304,7 @@ void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
     reply->setParent(this);
     const quint64 generation = m_generation;
     const QString shown = m_model->data(m_model->indexOf(address, OdEditorModel::Name)).toString();
-    showStatus(tr("Writing %1 %2…").arg(address.toString(), shown));
+    showStatus(tr("Writing %1 %2…").arg(m_model->addressFormat().format(address), shown));
     connect(reply, &Reply::finished, this, [this, reply, generation, address, shown] {
         reply->deleteLater();
         if (generation != m_generation)
@@ -309,11 +312,13 @@ void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
         const QString message = reply->ok() ? QString() : reply->error().toString();
         m_model->setWriteFinished(address, reply->ok(), message);
         if (reply->ok()) {
-            showStatus(tr("%1 %2 written").arg(address.toString(), shown), style::okColor());
+            showStatus(tr("%1 %2 written").arg(m_model->addressFormat().format(address), shown),
+                       style::okColor());
             m_poller->readNow({ address }); // verify: show what the device really holds
         } else {
-            showStatus(tr("%1 %2: %3").arg(address.toString(), shown, message),
-                       style::errorColor());
+            showStatus(
+                tr("%1 %2: %3").arg(m_model->addressFormat().format(address), shown, message),
+                style::errorColor());
         }
         Q_EMIT writeFinished(address, reply->ok(), message);
     });

@@ -114,7 +114,7 @@ void OdBitFieldView::setObject(const ObjectDef *def)
     m_def = *def;
     style::setTextColor(m_title, QColor());
     QString title = QStringLiteral("<b>%1</b> &nbsp;%2")
-                        .arg(def->address.toString(),
+                        .arg(m_addressFormat->format(def->address),
                              (def->objectName.isEmpty() || def->objectName == def->name
                                   ? def->name
                                   : def->objectName + QStringLiteral(" / ") + def->name)

@@ -23,6 +23,8 @@ public:
 
     // def null: nothing selected. Rebuilds the lamps only when the object changes.
     void setObject(const ObjectDef *def);
+    // How the title writes the object's address (CANopen's unless set).
+    void setAddressFormat(const AddressFormat &format) { m_addressFormat = &format; }
     // The object's current raw value (invalid: unknown, lamps drawn stale).
     void setValue(const QVariant &raw);
 
@@ -36,6 +38,7 @@ private:
     void clearBits();
 
     std::optional<ObjectDef> m_def;
+    const AddressFormat *m_addressFormat = &AddressFormat::canopen();
     QList<BitField> m_fields;
     QLabel *m_title;
     QLabel *m_description;

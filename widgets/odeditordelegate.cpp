@@ -93,8 +93,9 @@ QWidget *OdEditorDelegate::createEditor(QWidget *parent, const QStyleOptionViewI
     const QString limits = odtext::limits(*def, false);
     edit->setPlaceholderText(limits.isEmpty() ? datatype::name(def->type) : limits);
     const ObjectDef copy = *def;
-    connect(edit, &QLineEdit::textEdited, edit, [this, edit, copy](const QString &text) {
-        const auto parsed = odtext::parse(copy, text);
+    const AddressFormat *format = &m_model->addressFormat();
+    connect(edit, &QLineEdit::textEdited, edit, [this, edit, copy, format](const QString &text) {
+        const auto parsed = odtext::parse(copy, text, *format);
         const QString problem = parsed ? QString() : parsed.error().message();
         edit->setToolTip(problem);
         style::setTextColor(edit, problem.isEmpty() ? QColor() : style::errorColor());

@@ -7,8 +7,10 @@
 namespace db::widgets {
 
 namespace {
-OdEditorModel::Group groupOf(quint16 index)
+OdEditorModel::Group groupOf(quint16 index, const AddressFormat &format)
 {
+    if (format.key() != AddressFormat::canopen().key())
+        return OdEditorModel::Group::Parameters;
     if (index >= 0x1000 && index <= 0x1FFF)
         return OdEditorModel::Group::Communication;
     if (index >= 0x2000 && index <= 0x5FFF)
@@ -18,10 +20,6 @@ OdEditorModel::Group groupOf(quint16 index)
     return OdEditorModel::Group::Other;
 }
 
-QString indexText(quint16 index)
-{
-    return QStringLiteral("%1").arg(index, 4, 16, QLatin1Char('0')).toUpper();
-}
 } // namespace
 
 QString groupName(OdEditorModel::Group group)
@@ -37,6 +35,8 @@ QString groupName(OdEditorModel::Group group)
         return OdEditorModel::tr("Other");
     case OdEditorModel::Group::Extra:
         return OdEditorModel::tr("Not in the description");
+    case OdEditorModel::Group::Parameters:
+        return OdEditorModel::tr("Parameters");
     }
     return {};
 }
@@ -93,7 +93,8 @@ void OdEditorModel::rebuild()
         const auto flush = [&] {
             if (subs.isEmpty())
                 return;
-            const Group group = extra ? Group::Extra : groupOf(subs.first().address.index);
+            const Group group =
+                extra ? Group::Extra : groupOf(subs.first().address.index, addressFormat());
             insertObject(groupNode(group), subs);
             subs.clear();
         };
@@ -253,13 +254,14 @@ QVariant OdEditorModel::objectData(const Node &node, int column, int role) const
     if (role == Qt::FontRole && column == Address)
         return style::monospaceFont();
     if (role == FilterTextRole)
-        return QString(indexText(node.index) + QLatin1Char(' ') + node.title).toLower();
+        return QString(addressFormat().formatIndex(node.index) + QLatin1Char(' ') + node.title)
+            .toLower();
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole)
         return {};
     if (node.parent == 0)
         return column == Address ? node.title : QVariant();
     if (column == Address)
-        return indexText(node.index);
+        return addressFormat().formatIndex(node.index);
     if (column == Name)
         return node.title;
     return {};
@@ -317,7 +319,7 @@ bool OdEditorModel::setData(const QModelIndex &index, const QVariant &value, int
         Q_EMIT editRefused(*address, tr("not connected"));
         return false;
     }
-    auto raw = odtext::parse(*def, value.toString());
+    auto raw = odtext::parse(*def, value.toString(), addressFormat());
     if (!raw) {
         Cell &cell = m_cells[*address];
         if (cell.state != CellState::Writing) {
@@ -343,8 +345,11 @@ QMimeData *OdEditorModel::mimeData(const QModelIndexList &indexes) const
     if (list.isEmpty())
         return nullptr;
     QStringList lines;
+    // CANopen lists are plain lines as they always were; other formats say which they are.
+    if (addressFormat().key() != AddressFormat::canopen().key())
+        lines.append(QStringLiteral("addresses ") + addressFormat().key());
     for (ObjectAddress a : list)
-        lines.append(a.toString());
+        lines.append(addressFormat().format(a));
     const QByteArray text = lines.join(QLatin1Char('\n')).toUtf8();
     auto *mime = new QMimeData;
     mime->setData(QString::fromLatin1(kMimeType), text);

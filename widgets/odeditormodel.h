@@ -23,7 +23,9 @@ QString display(const ObjectDef &def, const QVariant &raw, bool hex);
 QString edit(const ObjectDef &def, const QVariant &raw, bool hex);
 // User text -> raw, checked against type, the object's limits and its access. Scaled objects take
 // the physical value; enumeration names are accepted.
-Result<QVariant> parse(const ObjectDef &def, const QString &text);
+// Errors name the object as `format` writes addresses.
+Result<QVariant> parse(const ObjectDef &def, const QString &text,
+                       const AddressFormat &format = AddressFormat::canopen());
 // "0 … 65535" (scaled and hex like display()); empty when the object states no limit.
 QString limits(const ObjectDef &def, bool hex);
 } // namespace odtext
@@ -42,7 +44,8 @@ public:
     };
     enum class CellState { Unknown, Fresh, Writing, Written, ReadFailed, WriteFailed, Refused };
     Q_ENUM(CellState)
-    enum class Group { Communication, Manufacturer, Profile, Other, Extra };
+    // The CANopen ranges for hex dictionaries; one Parameters group for parameter lists.
+    enum class Group { Communication, Manufacturer, Profile, Other, Extra, Parameters };
 
     static constexpr const char *kMimeType = "application/x-drivebench-objects";
 
@@ -51,6 +54,13 @@ public:
     // Replaces every object (values and states are forgotten).
     void setDictionary(const ObjectDictionary &dictionary);
     const ObjectDictionary &dictionary() const { return m_dictionary; }
+    // How addresses are shown, dragged and searched: the connection's. Without one set, the
+    // dictionary's. Call before setDictionary() (it does not rebuild).
+    void setAddressFormat(const AddressFormat *format) { m_addressFormat = format; }
+    const AddressFormat &addressFormat() const
+    {
+        return m_addressFormat ? *m_addressFormat : m_dictionary.addressFormat();
+    }
     // Adds an object the description does not know (read/write by index), in group "Not in
     // description". Known addresses are left as they are.
     void addExtraObject(const ObjectDef &def);
@@ -130,6 +140,7 @@ private:
     QVariant objectData(const Node &node, int column, int role) const;
 
     ObjectDictionary m_dictionary;
+    const AddressFormat *m_addressFormat = nullptr; // null: the dictionary's
     QMap<ObjectAddress, ObjectDef> m_extra;
     QList<Node> m_nodes; // m_nodes[0] is the invisible root
     QHash<ObjectAddress, int> m_leafNode;

@@ -122,8 +122,9 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case StatusTextRole:
         return column == Value ? cell.message : QVariant();
     case FilterTextRole:
-        return QString(def.address.toString() + QLatin1Char(' ') + def.name + QLatin1Char(' ')
-                       + def.objectName + QLatin1Char(' ') + odtext::display(def, cell.raw, m_hex))
+        return QString(addressFormat().format(def.address) + QLatin1Char(' ') + def.name
+                       + QLatin1Char(' ') + def.objectName + QLatin1Char(' ')
+                       + odtext::display(def, cell.raw, m_hex))
             .toLower();
     case Qt::FontRole:
         if (column == Address || column == Value || column == Default || column == Limits)
@@ -162,7 +163,7 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     }
     switch (column) {
     case Address:
-        return def.address.toString();
+        return addressFormat().format(def.address);
     case Name:
         return def.name;
     case Type:

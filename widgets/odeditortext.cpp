@@ -64,12 +64,12 @@ QString edit(const ObjectDef &def, const QVariant &raw, bool hex)
     return number(def, raw, hex);
 }
 
-Result<QVariant> parse(const ObjectDef &def, const QString &text)
+Result<QVariant> parse(const ObjectDef &def, const QString &text, const AddressFormat &format)
 {
     if (!def.writable()) {
         return Error(Error::Kind::AccessDenied,
                      tr("%1 is %2 and cannot be written")
-                         .arg(def.address.toString(), access::name(def.access)));
+                         .arg(format.format(def.address), access::name(def.access)));
     }
     const QString t = text.trimmed();
     if (t.isEmpty() && datatype::isNumeric(def.type))
@@ -84,9 +84,9 @@ Result<QVariant> parse(const ObjectDef &def, const QString &text)
         auto raw = codec::fromPhysical(def.type, physical, def.factor, def.offset);
         if (!raw)
             return raw.error();
-        return def.validate(raw.value());
+        return def.validate(raw.value(), format);
     }
-    return def.parseText(t);
+    return def.parseText(t, format);
 }
 
 QString limits(const ObjectDef &def, bool hex)

@@ -166,7 +166,7 @@ QVariant ParamCompareModel::data(const QModelIndex &index, int role) const
     // Names and string values come from the file and the device: shown escaped, one line.
     switch (column) {
     case Address:
-        return r.address.toString();
+        return m_comparison.addressFormat->format(r.address);
     case Name:
         return printable(r.name);
     case DeviceValue:
@@ -214,7 +214,8 @@ QVariant ParamCompareModel::headerData(int section, Qt::Orientation orientation,
     case Select:
         return QString();
     case Address:
-        return tr("Index:Sub");
+        return m_comparison.addressFormat->key() == AddressFormat::canopen().key() ? tr("Index:Sub")
+                                                                                   : tr("Address");
     case Name:
         return tr("Name");
     case DeviceValue:

@@ -82,8 +82,11 @@ ParamCompareReport::ParamCompareReport(const RestoreReport &report, QWidget *par
     m_rows->setObjectName(QStringLiteral("reportRows"));
     m_rows->setRootIsDecorated(false);
     m_rows->setAlternatingRowColors(true);
-    m_rows->setHeaderLabels(
-        { tr("Outcome"), tr("Index:Sub"), tr("Name"), tr("Value"), tr("Reason") });
+    m_rows->setHeaderLabels({ tr("Outcome"),
+                              report.addressFormat->key() == AddressFormat::canopen().key()
+                                  ? tr("Index:Sub")
+                                  : tr("Address"),
+                              tr("Name"), tr("Value"), tr("Reason") });
     QList<RestoreRow> rows = report.rows;
     std::stable_sort(rows.begin(), rows.end(), [](const RestoreRow &a, const RestoreRow &b) {
         return severity(a.outcome) < severity(b.outcome);
@@ -92,7 +95,7 @@ ParamCompareReport::ParamCompareReport(const RestoreReport &report, QWidget *par
         auto *item = new QTreeWidgetItem(m_rows);
         item->setText(0, restoreOutcomeName(r.outcome));
         item->setForeground(0, outcomeColor(r.outcome));
-        item->setText(1, r.address.toString());
+        item->setText(1, report.addressFormat->format(r.address));
         item->setFont(1, style::monospaceFont());
         // Name, value and reason quote the file and the device: escaped, one line each.
         item->setText(2, printable(r.name));

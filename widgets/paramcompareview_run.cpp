@@ -82,9 +82,24 @@ void ParamCompareView::compare()
     }
     const ObjectDictionary dictionary =
         m_connection ? m_connection->dictionary() : ObjectDictionary();
-    const ParameterSet defaults = ParameterSet::defaults(dictionary);
-    QList<ParameterSet> sides { m_device.value_or(ParameterSet()), *m_file };
+    // Every side is in the device's address format; a file in another one holds other objects
+    // under the same addresses and is not compared.
+    const AddressFormat *format =
+        m_connection ? &m_connection->addressFormat() : m_file->addressFormat;
+    ParameterSet defaults = ParameterSet::defaults(dictionary);
+    defaults.addressFormat = format;
+    ParameterSet device = m_device.value_or(ParameterSet());
+    if (!m_device)
+        device.addressFormat = format;
+    QList<ParameterSet> sides { device, *m_file };
     QStringList names { tr("Device"), tr("File") };
+    if (auto same = checkSameAddressFormat(sides, names); !same) {
+        m_model->setComparison({}, {}, {});
+        m_counts->clear();
+        showStatus(same.error().message(), style::errorColor());
+        updateActions();
+        return;
+    }
     if (m_withDefaults->isChecked()) {
         sides.append(defaults);
         names.append(tr("Defaults"));

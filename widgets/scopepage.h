@@ -70,8 +70,11 @@ public:
     // address that could not be added and why; the others are added.
     Result<void> addChannels(const QList<ObjectAddress> &addresses, int rateMs = -1);
     bool removeChannel(int index);
-    // The addresses in a drag's mime data (kObjectsMimeType); InvalidArgument naming a bad line.
-    static Result<QList<ObjectAddress>> parseObjects(const QMimeData *mime);
+    // The addresses in a drag's mime data (kObjectsMimeType), read in `format` (the device's);
+    // InvalidArgument naming a bad line, or the drag's own format when it is another one (an
+    // "addresses KEY" first line; none means CANopen).
+    static Result<QList<ObjectAddress>>
+    parseObjects(const QMimeData *mime, const AddressFormat &format = AddressFormat::canopen());
 
     // Where new channels come from (the "Source" box; PDO only on a CANopen connection).
     enum class ChannelSource { Polling, Pdo };
@@ -131,6 +134,8 @@ private:
     void measure();
     void showMessage(const QString &text, bool error);
     void addFromEdit();
+    // The connection's (CANopen's without one): what the address field and drops take.
+    const AddressFormat &addressFormat() const;
     void removeSelected();
     void chooseColor(int row);
     void promptOpen();

@@ -38,22 +38,44 @@ void ScopePage::setConnection(DeviceConnection *connection)
     delete m_pdoRequest; // a lookup on the old connection
     m_unmapped.clear();
     m_connection = connection;
+    m_addressEdit->setPlaceholderText(tr("Object address, e.g. %1").arg(addressFormat().example()));
+    m_addressEdit->setToolTip(tr("Object addresses (%1 and %2, as the device writes them), "
+                                 "separated by commas")
+                                  .arg(addressFormat().indexName(), addressFormat().subName()));
     updateControls();
 }
 
-Result<QList<ObjectAddress>> ScopePage::parseObjects(const QMimeData *mime)
+const AddressFormat &ScopePage::addressFormat() const
+{
+    return m_connection ? m_connection->addressFormat() : AddressFormat::canopen();
+}
+
+Result<QList<ObjectAddress>> ScopePage::parseObjects(const QMimeData *mime,
+                                                     const AddressFormat &format)
 {
     if (!mime || !mime->hasFormat(QString::fromLatin1(kObjectsMimeType)))
         return Error(Error::Kind::InvalidArgument, tr("no drivebench objects in the drop"));
     const QString text = QString::fromUtf8(mime->data(QString::fromLatin1(kObjectsMimeType)));
-    QList<ObjectAddress> addresses;
+    QStringList lines = text.split(QLatin1Char('\n'));
+    // "addresses KEY" first when the objects are not CANopen ones (OdEditorModel::mimeData).
+    QString dropped = AddressFormat::canopen().key();
     int lineNumber = 0;
-    for (const QString &raw : text.split(QLatin1Char('\n'))) {
+    if (!lines.isEmpty() && lines.first().trimmed().startsWith(QLatin1String("addresses "))) {
+        dropped = lines.takeFirst().trimmed().mid(10).trimmed();
+        ++lineNumber;
+    }
+    if (dropped != format.key())
+        return Error(Error::Kind::InvalidArgument,
+                     tr("the dropped objects have %1 addresses, this device's are %2 addresses "
+                        "(like %3)")
+                         .arg(dropped, format.key(), format.example()));
+    QList<ObjectAddress> addresses;
+    for (const QString &raw : std::as_const(lines)) {
         ++lineNumber;
         const QString line = raw.trimmed();
         if (line.isEmpty())
             continue;
-        const Result<ObjectAddress> a = ObjectAddress::parse(line);
+        const Result<ObjectAddress> a = format.parse(line);
         if (!a)
             return Error(Error::Kind::InvalidArgument,
                          tr("line %1 \"%2\": %3").arg(lineNumber).arg(line, a.error().message()));
@@ -80,15 +102,16 @@ Result<void> ScopePage::addChannels(const QList<ObjectAddress> &addresses, int r
         for (int i = 0; i < m_recorder->channelCount(); ++i)
             present = present || m_recorder->channelInfo(i).address == address;
         if (present) {
-            problems.append(tr("%1 is already recorded").arg(address.toString()));
+            problems.append(tr("%1 is already recorded").arg(addressFormat().format(address)));
             continue;
         }
         const Result<int> index = m_source->addChannel(address, rate);
         if (!index) {
-            problems.append(tr("%1: %2").arg(address.toString(), index.error().message()));
+            problems.append(
+                tr("%1: %2").arg(addressFormat().format(address), index.error().message()));
             continue;
         }
-        m_model->setRateMs(address.toString(), rate);
+        m_model->setRateMs(m_source->channels().at(*index).id, rate);
         m_recorder->addChannel(m_source, *index);
     }
     if (!problems.isEmpty()) {
@@ -114,7 +137,7 @@ void ScopePage::addFromEdit()
 {
     QList<ObjectAddress> addresses;
     for (const QString &part : m_addressEdit->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-        const Result<ObjectAddress> a = ObjectAddress::parse(part.trimmed());
+        const Result<ObjectAddress> a = addressFormat().parse(part.trimmed());
         if (!a) {
             showMessage(tr("\"%1\": %2").arg(part.trimmed(), a.error().message()), true);
             return;
@@ -122,7 +145,7 @@ void ScopePage::addFromEdit()
         addresses.append(*a);
     }
     if (addresses.isEmpty()) {
-        showMessage(tr("Type an object address such as 6064:0."), true);
+        showMessage(tr("Type an object address such as %1.").arg(addressFormat().example()), true);
         return;
     }
     if (channelSource() == ChannelSource::Pdo) {
@@ -159,7 +182,7 @@ void ScopePage::dragEnterEvent(QDragEnterEvent *event)
 
 void ScopePage::dropEvent(QDropEvent *event)
 {
-    const Result<QList<ObjectAddress>> addresses = parseObjects(event->mimeData());
+    const Result<QList<ObjectAddress>> addresses = parseObjects(event->mimeData(), addressFormat());
     if (!addresses) {
         showMessage(addresses.error().message(), true);
         return;

@@ -147,7 +147,7 @@ int write(Context &c)
         return fail(c, target.error());
     const QString valueText = c.args.value(2);
     const auto raw = !c.file.isEmpty() ? loadValueFromFile(c, target->def, target->type)
-        : target->def                  ? target->def->parseText(valueText)
+        : target->def                  ? target->def->parseText(valueText, session.addressFormat())
                                        : codec::fromText(target->type, valueText);
     if (!raw)
         return fail(c, raw.error());

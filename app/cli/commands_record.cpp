@@ -240,7 +240,8 @@ int record(Context &c)
         scope::Trigger base;
         base.preTriggerS = s.preS;
         base.postTriggerS = s.postS;
-        const auto trigger = scope::Trigger::parse(s.trigger, ids, base);
+        const auto trigger =
+            scope::Trigger::parse(s.trigger, ids, base, session.connection()->addressFormat());
         if (!trigger)
             return fail(c, trigger.error());
         recorder.setMode(scope::Recorder::Mode::Single);

@@ -65,6 +65,11 @@ public:
 
 } // namespace
 
+QString AddressFormat::formatIndex(quint16 index) const
+{
+    return format(ObjectAddress(index, 0)).section(QLatin1Char(':'), 0, 0);
+}
+
 const AddressFormat &AddressFormat::canopen()
 {
     static const CanopenFormat format;

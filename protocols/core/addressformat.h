@@ -26,6 +26,8 @@ public:
     // What the two parts are called: "index"/"sub-index", "parameter"/"data set".
     virtual QString indexName() const = 0;
     virtual QString subName() const = 0;
+    // The index (parameter number) alone, as format() writes it: "6041", "372".
+    QString formatIndex(quint16 index) const;
 
     // Hexadecimal INDEX:SUB as in CiA 301 ("6041:0"; see ObjectAddress::parse for the forms
     // accepted).

@@ -59,10 +59,12 @@ Result<void> ObjectStore::checkRead(ObjectAddress address) const
     const ObjectDef *def = definition(address);
     if (!def)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()));
+                     QStringLiteral("object %1 does not exist")
+                         .arg(m_dictionary.addressFormat().format(address)));
     if (!def->readable())
-        return Error(Error::Kind::AccessDenied,
-                     QStringLiteral("%1 is write-only").arg(address.toString()));
+        return Error(
+            Error::Kind::AccessDenied,
+            QStringLiteral("%1 is write-only").arg(m_dictionary.addressFormat().format(address)));
     return {};
 }
 
@@ -71,11 +73,13 @@ Result<QVariant> ObjectStore::checkWrite(ObjectAddress address, const QVariant &
     const ObjectDef *def = definition(address);
     if (!def)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()));
+                     QStringLiteral("object %1 does not exist")
+                         .arg(m_dictionary.addressFormat().format(address)));
     if (!def->writable())
-        return Error(Error::Kind::AccessDenied,
-                     QStringLiteral("%1 is read-only").arg(address.toString()));
-    return def->validate(value);
+        return Error(
+            Error::Kind::AccessDenied,
+            QStringLiteral("%1 is read-only").arg(m_dictionary.addressFormat().format(address)));
+    return def->validate(value, m_dictionary.addressFormat());
 }
 
 void ObjectStore::storeToNvm()

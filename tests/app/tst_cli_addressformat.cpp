@@ -10,6 +10,7 @@
 #include "fakeconnection.h"
 
 #include <QBuffer>
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -296,6 +297,27 @@ void TestCliAddressFormat::recordObjParsesDecimal()
     QCOMPARE(twice.code, int(cli::ExitUsage));
     QVERIFY2(twice.err.contains(QLatin1String("--obj 372:2 given twice")), qPrintable(twice.err));
     QCOMPARE(m_opened, 0);
+    // A recording of parameter 372 data set 2 names its column so, and triggers find it.
+    const Run ok = run(QStringLiteral("record"), { QStringLiteral("fakeparam://drive") },
+                       { QStringLiteral("--obj"), QStringLiteral("372:2"),
+                         QStringLiteral("--rate-ms"), QStringLiteral("20"),
+                         QStringLiteral("--trigger"), QStringLiteral("0372.2,above,1000"),
+                         QStringLiteral("--pre"), QStringLiteral("0"), QStringLiteral("--post"),
+                         QStringLiteral("0.2"), QStringLiteral("--wait"), QStringLiteral("0.3") },
+                       csv);
+    QVERIFY2(ok.out.contains(QLatin1String("armed: waiting for 0372.2,above,1000")),
+             qPrintable(ok.out + ok.err));
+    const Run recorded =
+        run(QStringLiteral("record"), { QStringLiteral("fakeparam://drive") },
+            { QStringLiteral("--obj"), QStringLiteral("372:2"), QStringLiteral("--rate-ms"),
+              QStringLiteral("20"), QStringLiteral("--duration"), QStringLiteral("0.2") },
+            csv);
+    QVERIFY2(recorded.code == cli::ExitOk, qPrintable(recorded.err));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    QVERIFY2(text.contains("# channel: 372:2; name: Acceleration;"), text.constData());
+    QVERIFY2(text.contains("; addresses: parameter"), text.constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliAddressFormat)

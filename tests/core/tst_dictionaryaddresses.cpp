@@ -3,6 +3,7 @@
 // errors a dictionary or connection gives name objects in that format.
 #include "core/objectdictionary.h"
 #include "fakeconnection.h"
+#include "simulation/objectstore.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -32,6 +33,7 @@ private Q_SLOTS:
     void connectionTakesTheDictionaryFormat();
     void valueErrorsNameTheAddressInTheFormat();
     void accessErrorsNameTheAddressInTheFormat();
+    void simulatedStoreSpeaksItsDictionaryFormat();
 };
 
 void TestDictionaryAddresses::dictionariesAreCanopenByDefault()
@@ -130,6 +132,21 @@ void TestDictionaryAddresses::accessErrorsNameTheAddressInTheFormat()
     QVERIFY(!missing);
     QVERIFY2(missing.error().message().contains(QLatin1String("373:0")),
              qPrintable(missing.error().message()));
+}
+
+void TestDictionaryAddresses::simulatedStoreSpeaksItsDictionaryFormat()
+{
+    const auto dict = ObjectDictionary::parseDescription(
+        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    QVERIFY(dict);
+    const sim::ObjectStore store(*dict, {});
+    const auto missing = store.checkRead({ 373, 0 });
+    QVERIFY(!missing);
+    QCOMPARE(missing.error().message(), QStringLiteral("object 373:0 does not exist"));
+    const auto tooBig = store.checkWrite({ 372, 2 }, 5000u);
+    QVERIFY(!tooBig);
+    QVERIFY2(tooBig.error().message().startsWith(QLatin1String("372:2")),
+             qPrintable(tooBig.error().message()));
 }
 
 QTEST_GUILESS_MAIN(TestDictionaryAddresses)
