@@ -9,8 +9,8 @@
 #include "canopen/nodescanner.h"
 #include "canopen/pdoclient.h"
 #include "canopen/sdoclient.h"
-#include "core/dcfwriter.h"
 #include "core/printable.h"
+#include "description/dcfwriter.h"
 #include "transport/canbus.h"
 
 #include <QElapsedTimer>

@@ -3,7 +3,7 @@
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
-#include "core/devicedescription.h"
+#include "description/devicedescription.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
 

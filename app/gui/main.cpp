@@ -3,7 +3,7 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "mainwindow.h"
-#include "widgets/logconsole.h"
+#include "widgets/common/logconsole.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

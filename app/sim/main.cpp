@@ -5,8 +5,8 @@
 #include "../common/demodrive.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "resources/builtindescriptions.h"
-#include "simulation/movingcapdrive.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
