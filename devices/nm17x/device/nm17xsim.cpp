@@ -74,6 +74,14 @@ void Nm17xSim::startDevices()
     if (d->started)
         return;
     d->started = true;
+    // One bus: every display hears what the others send (queued, as frames on a wire are).
+    for (SimulatedNm17x *from : d->devices) {
+        for (SimulatedNm17x *to : d->devices) {
+            if (from != to)
+                connect(from, &SimulatedNm17x::transmit, to, &SimulatedNm17x::receive,
+                        Qt::QueuedConnection);
+        }
+    }
     for (SimulatedNm17x *device : d->devices)
         device->start();
 }

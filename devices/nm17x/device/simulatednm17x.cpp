@@ -202,6 +202,11 @@ void SimulatedNm17x::receive(const QCanBusFrame &frame)
         return handleNmt(d);
     if (id == cob::LssMaster)
         return handleLss(frame); // every NMT state
+    if (id == cob::LssSlave && m_addressing && d.size() >= 2
+        && quint8(d.at(0)) == lss::ConfigureNodeId && d.at(1) == 0) {
+        m_offered = 0; // another display took the offered id; wait for the next offer
+        return;
+    }
     if (id == cob::sdoRequest(m_node)) {
         if (m_state != NmtState::Stopped)
             m_sdo.handleRequest(frame);

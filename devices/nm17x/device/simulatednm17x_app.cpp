@@ -250,6 +250,7 @@ void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
         const double position = double(v - correction);
         m_presetOffset += position - m_spindle.position();
         m_spindle.setPosition(position);
+        m_spindle.turnByHand(0, settings()); // In Position only if still inside the window
         m_store->set(address, v);
         return;
     }
