@@ -13,6 +13,7 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
+#include <QtEndian>
 
 namespace db::cli {
 
@@ -148,12 +149,18 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
         if (!speed || direct)
             return fail(c, usage(tr("--plunge takes slow, medium or fast, and not with --direct")));
     }
+    // A correction beyond the 16 bits of the PDO goes to 2010h by SDO first; the PDO then
+    // carries -32768, "keep 2010h".
     std::optional<qint16> correction;
+    std::optional<qint32> wideCorrection;
     if (c.parser->isSet(QStringLiteral("correction"))) {
         const auto mm = parseMillimetres(c.parser->value(QStringLiteral("correction")));
-        if (!mm || *mm < -32767 || *mm > 32767)
-            return fail(c, usage(tr("--correction takes -327.67..327.67 mm")));
-        correction = qint16(*mm);
+        if (!mm)
+            return fail(c, mm.error());
+        if (*mm >= -32767 && *mm <= 32767)
+            correction = qint16(*mm);
+        else
+            wideCorrection = *mm;
     }
     const SetpointKind kind = direct ? SetpointKind::Direct
         : speed   ? (release ? SetpointKind::PlungeRelease : SetpointKind::Plunge)
@@ -162,11 +169,19 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
     const auto waitS = intOption(c, QStringLiteral("wait"), kDefaultWaitS, 1, 3600);
     if (!waitS)
         return fail(c, waitS.error());
+    if (wideCorrection) {
+        QByteArray data(4, '\0');
+        qToLittleEndian(*wideCorrection, data.data());
+        const auto written =
+            Reply::wait(session.network()->sdo()->download(*node, { 0x2010, 0 }, data));
+        if (!written)
+            return fail(c, written.error().prefixed(tr("node %1, 2010:0").arg(*node)));
+    }
     startNode(session, *node);
     if (auto sent = line.setpoint(*node, *value, kind, correction, speed); !sent)
         return fail(c, sent.error());
     if (kind == SetpointKind::Standard || kind == SetpointKind::Plunge) {
-        session.flush(2, kFlushMs);
+        session.flush(wideCorrection ? 3 : 2, kFlushMs);
         c.out << tr("node %1: setpoint %2 set (no release)")
                      .arg(*node)
                      .arg(formatPosition(*value, false))

@@ -58,7 +58,9 @@ int runNm17x(const Nm17xOptions &options, void (*quitOnSignals)())
             return 3;
         }
         out << "nm17x: control listening on 127.0.0.1:" << sim.controlPort()
-            << " (list | turn INDEX DELTA | key INDEX left|right [MS])" << Qt::endl;
+            << " (list | turn INDEX DELTA | key INDEX left|right [MS] | fault INDEX "
+               "motor|sensor|none)"
+            << Qt::endl;
     }
     quitOnSignals();
     return QCoreApplication::exec();

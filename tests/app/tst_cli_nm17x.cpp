@@ -24,6 +24,7 @@ private Q_SLOTS:
     void presetByBroadcast();
     void forbiddenControlWordIsRefused();
     void emergencyShownWithText();
+    void wideCorrectionGoesThrough2010();
     void usageErrors();
 
 private:
@@ -258,6 +259,24 @@ void TestCliNm17x::emergencyShownWithText()
     QVERIFY2(out.contains(QLatin1String(
                  "node 3 EMCY 8230h sub 01: RxPDO2: invalid value in the control word")),
              qPrintable(out));
+}
+
+void TestCliNm17x::wideCorrectionGoesThrough2010()
+{
+    // 500.00 mm does not fit the PDO's 16 bits: written to 2010h, the PDO keeps it.
+    const CliRun r =
+        cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("setpoint"), QStringLiteral("2"),
+              QStringLiteral("50"), QStringLiteral("--correction"), QStringLiteral("500") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const CliRun read =
+        cli({ QStringLiteral("read"), uri() + QStringLiteral("&node=2"), QStringLiteral("2010:0"),
+              QStringLiteral("--type"), QStringLiteral("s32") });
+    QVERIFY2(read.exitCode == 0, qPrintable(read.err));
+    QCOMPARE(read.out.trimmed(), QStringLiteral("50000"));
+    const CliRun pdo =
+        cli({ QStringLiteral("read"), uri() + QStringLiteral("&node=2"), QStringLiteral("2501:2"),
+              QStringLiteral("--type"), QStringLiteral("s16") });
+    QCOMPARE(pdo.out.trimmed(), QStringLiteral("-32768"));
 }
 
 void TestCliNm17x::usageErrors()

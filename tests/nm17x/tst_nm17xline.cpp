@@ -8,6 +8,8 @@
 #include "scriptedcanbus.h"
 
 #include "canopen/nmtmaster.h"
+#include "canopen/nodemonitor.h"
+#include "canopen/sdoclient.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -61,6 +63,7 @@ private Q_SLOTS:
     void forbiddenCommandsNeverLeave();
     void jogStopAndPresetAll();
     void emergencyWithText();
+    void segmentedStringsAndNodeIdBySdo();
     void millimetres();
 };
 
@@ -185,6 +188,24 @@ void TstNm17xLine::emergencyWithText()
     QCOMPARE(emcy.at(0).at(2).toUInt(), 1u);
     QCOMPARE(emcy.at(0).at(3).toString(),
              QStringLiteral("RxPDO2: invalid value in the control word"));
+}
+
+void TstNm17xLine::segmentedStringsAndNodeIdBySdo()
+{
+    Bench b({ Variant::Nm172 });
+    canopen::SdoClient *sdo = b.network.sdo();
+    QCOMPARE(Reply::wait(sdo->upload(127, { 0x1008, 0 }))->toByteArray(),
+             QByteArray("NM172 Standard"));
+    QVERIFY(Reply::wait(sdo->download(127, { 0x2007, 0 }, "HELLO-WORLD_")));
+    const auto shortText = Reply::wait(sdo->download(127, { 0x2007, 0 }, "HELLO"));
+    QVERIFY(!shortText);
+    QCOMPARE(shortText.error().deviceCode(), 0x06090030u);
+    QVERIFY(Reply::wait(sdo->download(127, { 0x2101, 0 }, QByteArray(1, char(9)))));
+    QSignalSpy boot(b.network.monitor(), &canopen::NodeMonitor::bootUp);
+    b.network.nmt()->send(canopen::NmtCommand::ResetNode, 127);
+    QVERIFY(boot.wait(2000));
+    QCOMPARE(boot.at(0).at(0).value<canopen::NodeId>(), canopen::NodeId(9));
+    QCOMPARE(Reply::wait(sdo->upload(9, { 0x2101, 0 }))->toByteArray(), QByteArray(1, char(9)));
 }
 
 void TstNm17xLine::millimetres()

@@ -80,6 +80,10 @@ private Q_SLOTS:
     void setpointBeyondEndLimitIsRefused();
     void jogUntilStopAndUntilLimit();
     void txPdo2OnChange();
+    void faultsShowTheirErrors();
+    void heartbeatLossStopsAndReports();
+    void storeAndRestoreCommunicationObjects();
+    void lowerNmtStateStopsPositioning();
     void simParsesDevices();
     void controlCommands();
 };
@@ -293,6 +297,79 @@ void TstSimulatedNm17x::txPdo2OnChange()
     QVERIFY(line.takeId(0x1FF).isEmpty()); // TxPDO1 is off at delivery
 }
 
+void TstSimulatedNm17x::faultsShowTheirErrors()
+{
+    Line line({ Variant::Nm174 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    d->spindle().setMotorFault(true);
+    line.send(0x37F, "0000000000009900"); // jog: refused, Er 4
+    QTRY_VERIFY(d->errorWord() & (1u << 3));
+    QVERIFY(!d->spindle().isMoving());
+    QCOMPARE(activeErrors(d->errorWord()).at(0).code, QStringLiteral("Er 4"));
+    d->spindle().setMotorFault(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!(d->errorWord() & (1u << 3)), 8000); // shown for about 5 s
+    line.send(0x37F, "0000000000009900");
+    QTRY_VERIFY(d->spindle().isMoving());
+    d->spindle().setSensorFault(true); // Er C: the motor stops and stays off
+    QTRY_VERIFY(!d->spindle().isMoving());
+    QCOMPARE(activeErrors(d->errorWord()).at(0).code, QStringLiteral("Er C"));
+    line.take();
+    line.send(0x67F, "4001100000000000"); // error register: manufacturer bit with a display error
+    QCOMPARE(quint8(line.takeId(0x5FF).at(0).data.at(4)) & 0x80, 0x80);
+}
+
+void TstSimulatedNm17x::heartbeatLossStopsAndReports()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2316100164000100"); // watch node 1, 100 ms
+    line.send(0x37F, "0000000000009900"); // jog right fast
+    QTRY_VERIFY(d->spindle().isMoving());
+    line.send(0x701, "05"); // the master's first heartbeat arms the watch
+    line.take();
+    QTRY_VERIFY(!line.frames.isEmpty() && !d->spindle().isMoving());
+    const QList<Frame> emcy = line.takeId(0x0FF);
+    QCOMPARE(emcy.size(), 1);
+    QCOMPARE(emcy.at(0).data.left(2), QByteArray::fromHex("3081"));
+    QCOMPARE(d->nmtState(), canopen::NmtState::PreOperational); // 1029h:01 = 0
+}
+
+void TstSimulatedNm17x::storeAndRestoreCommunicationObjects()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x67F, "2B171000F4010000"); // heartbeat 500 ms, not saved
+    line.send(0x000, "817F");
+    QCOMPARE(d->read({ 0x1017, 0 }).value().toUInt(), 0u); // lost at reset
+    line.send(0x67F, "2B171000F4010000");
+    line.send(0x67F, "2310100173617665"); // save
+    line.send(0x000, "817F");
+    QCOMPARE(d->read({ 0x1017, 0 }).value().toUInt(), 500u);
+    line.send(0x67F, "2F01210005000000"); // node id 5 by SDO: active after Reset Node
+    QCOMPARE(d->nodeId(), canopen::NodeId(127));
+    line.send(0x000, "817F");
+    QCOMPARE(d->nodeId(), canopen::NodeId(5));
+    line.send(0x605, "231110016C6F6164"); // load: defaults (and node 127) after the next reset
+    line.send(0x000, "8105");
+    QCOMPARE(d->nodeId(), canopen::NodeId(127));
+    QCOMPARE(d->read({ 0x1017, 0 }).value().toUInt(), 0u);
+    QCOMPARE(d->read({ 0x1801, 1 }).value().toUInt(), 0x400002FFu);
+}
+
+void TstSimulatedNm17x::lowerNmtStateStopsPositioning()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x67F, "2320200210270000"); // SDO setpoint with release works in Pre-operational
+    QTRY_VERIFY(d->spindle().isMoving());
+    line.send(0x000, "017F"); // Pre-operational -> Operational does not stop it
+    QVERIFY(d->spindle().isMoving());
+    line.send(0x000, "807F"); // Operational -> Pre-operational does
+    QTRY_VERIFY(!d->spindle().isMoving());
+}
+
 void TstSimulatedNm17x::simParsesDevices()
 {
     const auto specs = Nm17xSim::parseDevices(QStringLiteral("nm172@127,NM172@127, nm174@5"));
@@ -320,6 +397,8 @@ void TstSimulatedNm17x::controlCommands()
     QVERIFY(sim.execute(QStringLiteral("turn 3 1")).startsWith(QLatin1String("error: ")));
     QVERIFY(sim.execute(QStringLiteral("key 1 up")).startsWith(QLatin1String("error: ")));
     QVERIFY(sim.execute(QStringLiteral("fly")).startsWith(QLatin1String("error: ")));
+    QCOMPARE(sim.execute(QStringLiteral("fault 1 motor")), QStringLiteral("ok"));
+    QVERIFY(sim.execute(QStringLiteral("fault 2 sensor")).startsWith(QLatin1String("error: ")));
 }
 
 QTEST_GUILESS_MAIN(TstSimulatedNm17x)

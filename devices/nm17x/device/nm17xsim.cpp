@@ -193,7 +193,21 @@ QString Nm17xSim::execute(const QString &line)
         device->pressKey(side == QLatin1String("right") ? 1 : -1, ms);
         return QStringLiteral("ok");
     }
-    return QStringLiteral("error: ") + tr("unknown command '%1' (list, turn, key)").arg(line);
+    if (command == QLatin1String("fault") && words.size() == 3) {
+        const QString what = words.at(2);
+        if (what == QLatin1String("motor") || what == QLatin1String("none"))
+            device->spindle().setMotorFault(what == QLatin1String("motor"));
+        if (what == QLatin1String("sensor") && device->variant() != Variant::Nm174)
+            return QStringLiteral("error: ") + tr("only an NM174 has an external sensor");
+        if (what == QLatin1String("sensor") || what == QLatin1String("none"))
+            device->spindle().setSensorFault(what == QLatin1String("sensor"));
+        if (what == QLatin1String("motor") || what == QLatin1String("sensor")
+            || what == QLatin1String("none"))
+            return QStringLiteral("ok");
+        return QStringLiteral("error: ") + tr("fault INDEX motor|sensor|none");
+    }
+    return QStringLiteral("error: ")
+        + tr("unknown command '%1' (list, turn, key, fault)").arg(line);
 }
 
 QString Nm17xSim::describe() const

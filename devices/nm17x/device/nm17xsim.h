@@ -7,6 +7,8 @@
 //                             status, errors, addressing state; then "ok"
 //   turn INDEX DELTA          turn the shaft of display INDEX (1-based) by DELTA 1/100 mm
 //   key INDEX left|right [MS] press a key for MS ms (default 100)
+//   fault INDEX motor|sensor|none   motor fault (Er 4 on the next drive command), sensor fault
+//                             (NM174: Er C, motor off), or none
 // Every command is answered with "ok" or "error: <cause>" on its own line.
 
 #include "nm17x/nm17xdescription.h"

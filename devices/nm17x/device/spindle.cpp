@@ -10,11 +10,13 @@ namespace {
 // 204Eh:02 bits
 constexpr quint16 kEr1 = 1u << 0;
 constexpr quint16 kEr2 = 1u << 1;
+constexpr quint16 kEr4 = 1u << 3;
 constexpr quint16 kEr5 = 1u << 4;
 constexpr quint16 kEr8 = 1u << 8;
 constexpr quint16 kEr9 = 1u << 9;
 constexpr quint16 kErA = 1u << 10;
 constexpr quint16 kErB = 1u << 11;
+constexpr quint16 kErC = 1u << 12;
 
 // The limit a motor move towards `direction` must not pass.
 double limitTowards(int direction, const SpindleSettings &s)
@@ -58,9 +60,29 @@ quint16 Spindle::setTarget(qint32 target, bool withLoop, std::optional<Speed> sp
     return refused;
 }
 
+bool Spindle::driveRefused()
+{
+    if (m_motorFault) {
+        m_errors |= kEr4;
+        m_er4Ms = kMotorFaultShownMs;
+    }
+    return m_motorFault || m_sensorFault;
+}
+
+void Spindle::setSensorFault(bool on)
+{
+    m_sensorFault = on;
+    if (on) {
+        m_errors |= kErC;
+        stop();
+    } else {
+        m_errors &= ~kErC;
+    }
+}
+
 bool Spindle::release(const SpindleSettings &s)
 {
-    if (!m_motor || !m_hasTarget || !m_accepted)
+    if (!m_motor || !m_hasTarget || !m_accepted || driveRefused())
         return false;
     m_jog = 0;
     m_manualAbort = false;
@@ -86,7 +108,7 @@ quint16 Spindle::start(qint32 target, bool withLoop, std::optional<Speed> speed,
 
 void Spindle::jog(int direction, Speed speed, const SpindleSettings &s)
 {
-    if (!m_motor || direction == 0)
+    if (!m_motor || direction == 0 || driveRefused())
         return;
     const double limit = limitTowards(direction, s);
     if ((limit - m_position) * direction <= 0)
@@ -183,6 +205,8 @@ void Spindle::arrive(const SpindleSettings &s)
 
 void Spindle::tick(int ms, const SpindleSettings &s)
 {
+    if (m_er4Ms > 0 && (m_er4Ms -= ms) <= 0)
+        m_errors &= ~kEr4;
     switch (m_phase) {
     case Phase::Idle:
         return;

@@ -87,6 +87,13 @@ public:
 
     void tick(int ms, const SpindleSettings &s);
 
+    // Faults the operator (or a test) injects. A motor fault shows Er 4 when a drive command
+    // comes (the motor does not start) and for kMotorFaultShownMs after; a sensor fault (NM174)
+    // shows Er C and keeps the motor off while it lasts.
+    static constexpr int kMotorFaultShownMs = 5000;
+    void setMotorFault(bool on) { m_motorFault = on; }
+    void setSensorFault(bool on);
+
     qint32 target() const { return m_target; }
     // Status bits (204Eh:01) owned by the motion: Moving, manual abort, speed and direction
     // outputs, arrows, In Position.
@@ -116,6 +123,10 @@ private:
     bool m_manualAbort = false;
     bool m_loopPending = false; // the target needs the loop still (blinking arrow)
     quint16 m_errors = 0;
+    bool m_motorFault = false;
+    bool m_sensorFault = false;
+    int m_er4Ms = 0; // how long Er 4 is still shown
+    bool driveRefused(); // a fault keeps the motor off (and shows its error)
 };
 
 } // namespace db::nm17x
