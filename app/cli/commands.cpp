@@ -204,7 +204,7 @@ const QList<Command> &commands()
           "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
           "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
           "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
-          "WORD | watch",
+          "WORD | watch [--seconds S]",
           "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)", 2, 4,
           nm17x, nm17xOptions },
         { "dcf", "URI -o FILE", "write a DCF of the device's current values (?eds= needed)", 1, 1,

@@ -166,7 +166,7 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
         : speed   ? (release ? SetpointKind::PlungeRelease : SetpointKind::Plunge)
         : release ? SetpointKind::Release
                   : SetpointKind::Standard;
-    const auto waitS = intOption(c, QStringLiteral("wait"), kDefaultWaitS, 1, 3600);
+    const auto waitS = intOption(c, QStringLiteral("position-timeout"), kDefaultWaitS, 1, 3600);
     if (!waitS)
         return fail(c, waitS.error());
     if (wideCorrection) {
@@ -302,7 +302,7 @@ int control(Context &c, NetworkSession &session, Nm17xLine &line)
 
 int watch(Context &c, NetworkSession &session, Nm17xLine &line)
 {
-    const auto seconds = intOption(c, QStringLiteral("duration"), kDefaultWatchS, 1, 86400);
+    const auto seconds = intOption(c, QStringLiteral("seconds"), kDefaultWatchS, 1, 86400);
     if (!seconds)
         return fail(c, seconds.error());
     QObject::connect(&line, &Nm17xLine::tpdo1, &line, [&c](NodeId node, const Tpdo1 &p) {
@@ -393,9 +393,11 @@ QList<QCommandLineOption> nm17xOptions()
         { QStringLiteral("step-timeout"),
           tr("nm17x address: seconds the operator has per display (default 60)."),
           QStringLiteral("s") },
-        { QStringLiteral("wait"), tr("seconds to wait (nm17x setpoint: for In Position)."),
+        { QStringLiteral("position-timeout"),
+          tr("nm17x setpoint: seconds to wait for In Position (default 30)."),
           QStringLiteral("s") },
-        { QStringLiteral("duration"), tr("seconds (nm17x watch)."), QStringLiteral("s") },
+        { QStringLiteral("seconds"), tr("nm17x watch: how long to watch (default 5)."),
+          QStringLiteral("s") },
     };
 }
 
