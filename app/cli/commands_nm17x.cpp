@@ -3,7 +3,6 @@
 #include "networksession.h"
 
 #include "canopen/nmtmaster.h"
-#include "canopen/nodescanner.h"
 #include "canopen/sdoclient.h"
 #include "core/printable.h"
 #include "nm17x/nm17xaddressing.h"
@@ -72,31 +71,16 @@ void startNode(NetworkSession &session, NodeId node)
     session.network()->nmt()->send(canopen::NmtCommand::Start, node);
 }
 
-int list(Context &c, NetworkSession &session)
+int list(Context &c, NetworkSession &session, Nm17xLine &line)
 {
-    canopen::SdoClient *sdo = session.network()->sdo();
-    sdo->setTimeoutMs(c.options.requestTimeoutMs);
-    canopen::NodeScanner scanner(sdo, session.network()->monitor());
-    QEventLoop loop;
-    QObject::connect(&scanner, &canopen::NodeScanner::finished, &loop, &QEventLoop::quit);
-    QTimer::singleShot(10 * c.options.requestTimeoutMs + 10000, &loop, &QEventLoop::quit);
-    scanner.start();
-    if (scanner.isRunning())
-        loop.exec();
-    Nm17xLine line(session.network());
-    int found = 0;
-    for (const canopen::NodeInfo &node : scanner.nodes()) {
-        if (!node.hasIdentity || !variantOf(node.vendorId, node.productCode))
-            continue;
-        const auto state = Reply::wait(line.readState(node.id));
-        if (!state) {
-            c.err << "drivebench-cli: " << state.error().toString() << Qt::endl;
-            continue;
-        }
-        c.out << printable(state->value<DisplayState>().toString()) << Qt::endl;
-        ++found;
-    }
-    if (found == 0)
+    QList<DisplayState> displays;
+    if (const auto found = Reply::wait(line.findDisplays()); found)
+        displays = found->value<QList<DisplayState>>();
+    for (const QString &problem : line.problems())
+        c.err << "drivebench-cli: " << printable(problem) << Qt::endl;
+    for (const DisplayState &display : displays)
+        c.out << printable(display.toString()) << Qt::endl;
+    if (displays.isEmpty())
         return fail(
             c,
             Error(Error::Kind::Timeout,
@@ -416,7 +400,7 @@ int nm17x(Context &c)
     session.network()->sdo()->setTimeoutMs(c.options.requestTimeoutMs);
     Nm17xLine line(session.network());
     if (sub == u"list")
-        return list(c, session);
+        return list(c, session, line);
     if (sub == u"setpoint")
         return setpoint(c, session, line);
     if (sub == u"jog")

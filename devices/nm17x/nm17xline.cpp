@@ -2,6 +2,7 @@
 
 #include "nm17xcodes.h"
 
+#include "canopen/nodescanner.h"
 #include "canopen/sdoclient.h"
 
 #include <QCoreApplication>
@@ -184,6 +185,40 @@ Reply *Nm17xLine::readState(NodeId node)
     state.node = node;
     readNext(outer, state, { { 0x1018, 1 }, { 0x1018, 2 }, { 0x1018, 4 } });
     return outer;
+}
+
+Reply *Nm17xLine::findDisplays()
+{
+    auto *outer = new Reply();
+    auto *scanner = new NodeScanner(m_network->sdo(), m_network->monitor(), outer);
+    m_problems.clear();
+    connect(scanner, &NodeScanner::finished, outer, [this, outer, scanner] {
+        QList<NodeId> displays;
+        for (const NodeInfo &node : scanner->nodes()) {
+            if (node.hasIdentity && variantOf(node.vendorId, node.productCode))
+                displays.append(node.id);
+        }
+        readStates(outer, displays, {});
+    });
+    scanner->start();
+    return outer;
+}
+
+void Nm17xLine::readStates(Reply *outer, QList<NodeId> todo, QList<DisplayState> done)
+{
+    if (todo.isEmpty()) {
+        outer->finish(QVariant::fromValue(done));
+        return;
+    }
+    Reply *inner = readState(todo.takeFirst());
+    connect(inner, &Reply::finished, outer, [this, outer, inner, todo, done]() mutable {
+        inner->deleteLater();
+        if (inner->ok())
+            done.append(inner->value().value<DisplayState>());
+        else
+            m_problems.append(inner->error().toString());
+        readStates(outer, todo, done);
+    });
 }
 
 // Reads `todo` one after the other; after the identity, the variant decides what follows.

@@ -77,6 +77,11 @@ public:
     // ---- SDO ----
     // Value: QVariant::fromValue(DisplayState). NotSupported when the node is no NM17x.
     Reply *readState(canopen::NodeId node);
+    // Every NM17x display on the bus (node ids 1..127 probed at once, about one SDO timeout),
+    // sorted by node id. Value: QVariant::fromValue(QList<DisplayState>); nodes of other
+    // vendors are left out, displays that fail to answer their state are named in problems().
+    Reply *findDisplays();
+    QStringList problems() const { return m_problems; }
 
 Q_SIGNALS:
     // Decoded as they arrive, for every node (TxPDO COB-IDs 180h/280h + node).
@@ -88,12 +93,15 @@ Q_SIGNALS:
 private:
     Result<void> sendFrame(quint32 id, const QByteArray &payload);
     void readNext(Reply *outer, DisplayState state, QList<ObjectAddress> todo);
+    void readStates(Reply *outer, QList<canopen::NodeId> todo, QList<DisplayState> done);
 
     canopen::CanNetwork *m_network;
+    QStringList m_problems;
 };
 
 } // namespace db::nm17x
 
 Q_DECLARE_METATYPE(db::nm17x::DisplayState)
+Q_DECLARE_METATYPE(QList<db::nm17x::DisplayState>)
 Q_DECLARE_METATYPE(db::nm17x::Tpdo1)
 Q_DECLARE_METATYPE(db::nm17x::Tpdo2)

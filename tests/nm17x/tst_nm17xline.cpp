@@ -10,6 +10,7 @@
 #include "canopen/nmtmaster.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/sdoclient.h"
+#include "canopen/simulatednode.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -21,14 +22,15 @@ namespace {
 
 struct Bench
 {
-    explicit Bench(const QList<Variant> &variants)
+    explicit Bench(const QList<Variant> &variants, const QList<canopen::NodeId> &nodes = {})
         : bus(new test::ScriptedCanBus)
         , network(bus)
     {
         network.acquire();
         quint32 serial = 0x1000;
         for (const Variant v : variants) {
-            auto *d = new SimulatedNm17x(v, serial++);
+            const auto node = nodes.value(displays.size(), canopen::NodeId(127));
+            auto *d = new SimulatedNm17x(v, serial++, node);
             QObject::connect(bus, &test::ScriptedCanBus::frameWritten, d, &SimulatedNm17x::receive);
             QObject::connect(d, &SimulatedNm17x::transmit, bus,
                              [this](const QCanBusFrame &f) { bus->feedLater(f); });
@@ -60,6 +62,7 @@ private Q_SLOTS:
     void addressingTimesOutWithoutOperator();
     void addressingEndsAtFirstSilentStepWithoutCount();
     void readStateAndPosition();
+    void findDisplaysSkipsOtherDevices();
     void forbiddenCommandsNeverLeave();
     void jogStopAndPresetAll();
     void emergencyWithText();
@@ -139,6 +142,29 @@ void TstNm17xLine::readStateAndPosition()
     QCOMPARE(s.position, 12345);
     QVERIFY(s.toString().contains(QLatin1String("NM174  serial 0x00001000  position 123.45 mm")));
     QCOMPARE(formatPosition(2540, true), QStringLiteral("1.0000 in"));
+}
+
+void TstNm17xLine::findDisplaysSkipsOtherDevices()
+{
+    Bench b({ Variant::Nm170, Variant::Nm174 }, { 5, 2 });
+    b.network.sdo()->setTimeoutMs(200);
+    // A node of another vendor at 9 with a look-alike product code.
+    canopen::SimulatedNode foreign(dictionary(Variant::Nm172), 9);
+    foreign.store()->set({ 0x1018, 1 }, 0x53Bu);
+    connect(b.bus, &test::ScriptedCanBus::frameWritten, &foreign, &canopen::SimulatedNode::receive);
+    connect(&foreign, &canopen::SimulatedNode::transmit, b.bus,
+            [&b](const QCanBusFrame &f) { b.bus->feedLater(f); });
+    foreign.start();
+    Nm17xLine line(&b.network);
+    const auto found = Reply::wait(line.findDisplays());
+    QVERIFY(found);
+    const auto displays = found->value<QList<DisplayState>>();
+    QCOMPARE(displays.size(), 2);
+    QCOMPARE(displays.at(0).node, canopen::NodeId(2));
+    QCOMPARE(displays.at(0).variant, Variant::Nm174);
+    QCOMPARE(displays.at(1).node, canopen::NodeId(5));
+    QCOMPARE(displays.at(1).variant, Variant::Nm170);
+    QVERIFY(line.problems().isEmpty());
 }
 
 void TstNm17xLine::forbiddenCommandsNeverLeave()
