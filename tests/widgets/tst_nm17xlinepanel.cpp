@@ -29,6 +29,7 @@ private Q_SLOTS:
     void jogAndStop();
     void broadcastsReachEveryDisplay();
     void withoutNetworkNothingIsEnabled();
+    void screenshotOfARunningLine();
 
 private:
     QPushButton *button(const char *name) { return m_panel->findChild<QPushButton *>(name); }
@@ -95,6 +96,7 @@ void TstNm17xLinePanel::setpointWithReleaseReachesInPosition()
     QTRY_VERIFY_WITH_TIMEOUT(
         cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
     QCOMPARE(cell(1, widgets::Nm17xLineModel::Position), QStringLiteral("12.50 mm"));
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Setpoint), QStringLiteral("12.50 mm"));
     QCOMPARE(m_displays.at(0)->position(), 1250);
 }
 
@@ -107,6 +109,7 @@ void TstNm17xLinePanel::jogAndStop()
     QTest::mouseClick(button("jogLeft"), Qt::LeftButton);
     QTRY_VERIFY(m_displays.at(1)->position() < -300);
     QTRY_VERIFY(cell(0, widgets::Nm17xLineModel::Status).contains(QLatin1String("Moving")));
+    QVERIFY(cell(0, widgets::Nm17xLineModel::Status).endsWith(QLatin1String("(left)")));
     QTest::mouseClick(button("stop"), Qt::LeftButton);
     QTRY_VERIFY(!m_displays.at(1)->spindle().isMoving());
     QTRY_COMPARE(cell(0, widgets::Nm17xLineModel::Position),
@@ -134,6 +137,28 @@ void TstNm17xLinePanel::withoutNetworkNothingIsEnabled()
     QVERIFY(!button("send")->isEnabled());
     QVERIFY(!button("stopAll")->isEnabled());
     QCOMPARE(m_panel->model()->rowCount(), 0);
+}
+
+// For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-nm17x.png of the panel
+// while one display positions and another jogs.
+void TstNm17xLinePanel::screenshotOfARunningLine()
+{
+    const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+    if (dir.isEmpty())
+        QSKIP("DRIVEBENCH_SCREENSHOT_DIR not set");
+    m_panel->resize(980, 300);
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(2);
+    m_panel->findChild<QComboBox *>("speed")->setCurrentIndex(1);
+    QTest::mouseClick(button("jogRight"), Qt::LeftButton);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(125.5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY(m_displays.at(0)->position() > 3000 && m_displays.at(1)->position() > 1000);
+    QTRY_VERIFY(cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("Moving")));
+    QVERIFY(m_panel->grab().save(dir + QStringLiteral("/screenshot-nm17x.png")));
 }
 
 QTEST_MAIN(TstNm17xLinePanel)

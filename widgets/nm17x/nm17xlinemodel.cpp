@@ -42,6 +42,14 @@ void Nm17xLineModel::setDisplays(const QList<DisplayState> &displays)
     endResetModel();
 }
 
+void Nm17xLineModel::setSetpoint(canopen::NodeId node, qint32 value)
+{
+    m_setpoints.insert(node, value);
+    const int row = rowOf(node);
+    if (row >= 0)
+        Q_EMIT dataChanged(index(row, Setpoint), index(row, Setpoint));
+}
+
 int Nm17xLineModel::rowOf(canopen::NodeId node) const
 {
     for (int i = 0; i < m_rows.size(); ++i) {
@@ -94,12 +102,23 @@ QVariant Nm17xLineModel::data(const QModelIndex &index, int role) const
     case Serial:
         return QStringLiteral("0x%1").arg(
             QString::number(s.serial, 16).toUpper().rightJustified(8, u'0'));
+    case Setpoint:
+        return m_setpoints.contains(s.node) ? formatPosition(m_setpoints.value(s.node), s.inch)
+                                            : QStringLiteral("-");
     case Position:
         return formatPosition(s.position, s.inch);
     case Correction:
         return formatPosition(m_corrections.value(index.row()), s.inch);
-    case Status:
-        return statusText(s.status);
+    case Status: {
+        // The operator's view: the flags, with the direction instead of the output pins.
+        constexpr quint16 kPins = status::In1Left | status::In2Right | status::In3 | status::In4;
+        QString text = statusText(s.status & ~kPins);
+        if (s.status & status::In2Right)
+            text += tr(" (right)");
+        else if (s.status & status::In1Left)
+            text += tr(" (left)");
+        return text;
+    }
     case Errors: {
         const QString text = errorText(s.errors);
         return text.isEmpty() ? QStringLiteral("-") : text;
@@ -120,6 +139,8 @@ QVariant Nm17xLineModel::headerData(int section, Qt::Orientation orientation, in
         return tr("Variant");
     case Serial:
         return tr("Serial number");
+    case Setpoint:
+        return tr("Setpoint");
     case Position:
         return tr("Position");
     case Correction:

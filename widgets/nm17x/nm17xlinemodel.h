@@ -1,12 +1,13 @@
 #pragma once
 
-// The table of the NM17x line panel: one row per display (node, variant, serial, position,
-// correction, status, errors), filled by Nm17xLine::findDisplays() and kept live from the
+// The table of the NM17x line panel: one row per display (node, variant, serial, setpoint,
+// position, correction, status, errors), filled by Nm17xLine::findDisplays() and kept live from the
 // displays' TxPDO1/TxPDO2. Values from the bus only update the rows; nothing is written back.
 
 #include "nm17x/nm17xline.h"
 
 #include <QAbstractTableModel>
+#include <QHash>
 
 namespace db::widgets {
 
@@ -14,7 +15,17 @@ class Nm17xLineModel : public QAbstractTableModel
 {
     Q_OBJECT
 public:
-    enum Column { Node, Variant, Serial, Position, Correction, Status, Errors, ColumnCount };
+    enum Column {
+        Node,
+        Variant,
+        Serial,
+        Setpoint,
+        Position,
+        Correction,
+        Status,
+        Errors,
+        ColumnCount
+    };
 
     explicit Nm17xLineModel(QObject *parent = nullptr);
 
@@ -22,6 +33,8 @@ public:
     void setLine(nm17x::Nm17xLine *line);
     void setDisplays(const QList<nm17x::DisplayState> &displays);
     const QList<nm17x::DisplayState> &displays() const { return m_rows; }
+    // The setpoint last sent to a node from this panel (shown until the next one).
+    void setSetpoint(canopen::NodeId node, qint32 value);
     // The row of a node, -1 when it is not listed.
     int rowOf(canopen::NodeId node) const;
 
@@ -36,6 +49,7 @@ private:
 
     QList<nm17x::DisplayState> m_rows;
     QList<qint16> m_corrections; // from TxPDO2, per row
+    QHash<canopen::NodeId, qint32> m_setpoints; // sent from the panel
     QMetaObject::Connection m_pdo1;
     QMetaObject::Connection m_pdo2;
 };

@@ -52,6 +52,7 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_kind->addItem(tr("standard"), int(SetpointKind::Standard));
     m_kind->addItem(tr("with release"), int(SetpointKind::Release));
     m_kind->addItem(tr("direct (no loop)"), int(SetpointKind::Direct));
@@ -198,6 +199,8 @@ void Nm17xLinePanel::sendSetpoint()
     startNode(node);
     const qint32 value = qint32(qRound(m_setpoint->value() * 100));
     const auto sent = m_line->setpoint(node, value, kind, {}, speed);
+    if (sent)
+        m_model->setSetpoint(node, value);
     report(sent ? tr("node %1: setpoint %2 sent").arg(node).arg(formatPosition(value, false))
                 : sent.error().message());
 }
