@@ -26,6 +26,7 @@ private Q_SLOTS:
     void emergencyShownWithText();
     void wideCorrectionGoesThrough2010();
     void usageErrors();
+    void thirdPartyMasterByteExact();
 
 private:
     CliRun cli(const QStringList &args, int timeoutMs = 30000);
@@ -297,6 +298,35 @@ void TestCliNm17x::usageErrors()
     r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("address") });
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains(QLatin1String("--broadcast FIRST")));
+}
+
+// python-can (a CAN stack of its own, SLCAN over TCP) addresses a display by LSS and reads and
+// writes it by SDO with exactly the documented frames (tests/app/nm17x_thirdparty.py).
+void TestCliNm17x::thirdPartyMasterByteExact()
+{
+    const QString python = QStringLiteral("/usr/bin/python3");
+    if (db::test::runProgram(python, { QStringLiteral("-c"), QStringLiteral("import can") }, 10000)
+            .exitCode
+        != 0)
+        QSKIP("python3-can is not installed");
+    QProcess sim;
+    const QString banner = db::test::startAndReadBanner(
+        sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("nm17x"), QStringLiteral("--slcan-port"), QStringLiteral("0"),
+          QStringLiteral("--devices"), QStringLiteral("nm172@127") },
+        1);
+    const quint16 port = db::test::listeningPort(banner, QStringLiteral("SLCAN"));
+    QVERIFY2(port, qPrintable(banner));
+    const CliRun r = db::test::runProgram(
+        python,
+        { QStringLiteral(DRIVEBENCH_SOURCE_DIR "/tests/app/nm17x_thirdparty.py"),
+          QString::number(port) },
+        30000);
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(5000));
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    QVERIFY(r.out.contains(QLatin1String("SDO-5 out of range: 5A5 80 00 20 05 30 00 09 06")));
+    QVERIFY(r.out.trimmed().endsWith(QLatin1String("ok")));
 }
 
 QTEST_GUILESS_MAIN(TestCliNm17x)
