@@ -103,6 +103,11 @@ public:
     void setLateGraceMs(int ms) { m_quiet.setInterval(qMax(0, ms)); }
     bool foreignAnswerFails() const { return m_foreignAnswerFails; }
     void setForeignAnswerFails(bool fails) { m_foreignAnswerFails = fails; }
+    // With true, a partial answer the framer holds when a transmission times out is dropped
+    // before the request is sent again, so the retransmission's answer is framed from its first
+    // byte (for binary protocols whose framer cannot resynchronise on its own). Default false.
+    bool dropsPartialAnswerOnTimeout() const { return m_dropPartialOnTimeout; }
+    void setDropsPartialAnswerOnTimeout(bool drops) { m_dropPartialOnTimeout = drops; }
 
     // 0 when keep-alive is off.
     int keepAliveIdleMs() const { return m_keepAliveIdleMs; }
@@ -161,6 +166,7 @@ private:
     int m_maxTransmissions = kDefaultMaxTransmissions;
     int m_keepAliveIdleMs = 0;
     bool m_foreignAnswerFails = false;
+    bool m_dropPartialOnTimeout = false;
 };
 
 template<typename Protocol>
@@ -370,6 +376,8 @@ private:
     {
         if (!m_inFlight)
             return;
+        if (dropsPartialAnswerOnTimeout())
+            m_framer.reset();
         if (mayResend()) {
             logRetry(m_inFlight->label, timedOut(m_inFlight->label, 1).message(),
                      m_inFlight->sent + 1);
