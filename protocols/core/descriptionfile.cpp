@@ -3,8 +3,8 @@
 //   { "format": "drivebench-device-description", "version": 1,
 //     "device": { "vendor", "vendorId", "product", "productCode", "revision", "version" },
 //     "objects": [ { "index": "0x6041", "sub": 0, "name", "object", "type": "UNSIGNED16",
-//                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "default", "min",
-//                    "max", "enum": { "1": "Profile Position" },
+//                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "decimals",
+//                    "default", "min", "max", "enum": { "1": "Profile Position" },
 //                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on" } ],
 //                    "storable", "pdo", "trace", "description" } ],
 //     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ] }
@@ -12,9 +12,11 @@
 #include "objectdictionary.h"
 
 #include <QFile>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <cmath>
 
 namespace db {
 
@@ -121,6 +123,12 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
         def.unit = o.value(QLatin1String("unit")).toString();
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);
         def.offset = o.value(QLatin1String("offset")).toDouble(0.0);
+        // Fixed-point parameters give their decimals; the factor follows from them.
+        def.decimals = o.value(QLatin1String("decimals")).toInt(-1);
+        if (def.decimals > 9)
+            return fail(QStringLiteral("decimals %1 (0-9 allowed)").arg(def.decimals));
+        if (def.decimals >= 0)
+            def.factor = std::pow(10.0, -def.decimals);
         for (const char *key : { "default", "min", "max" }) {
             auto v = rawValue(def.type, o.value(QLatin1String(key)));
             if (!v)
