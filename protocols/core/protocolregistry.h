@@ -28,9 +28,6 @@ struct ProtocolInfo
     QString title; // for people: "MovingCap RefGo (ASCII over TCP)"
     QString uriPattern; // "refgo://HOST[:PORT]"
     int defaultPort = -1;
-    // How the protocol's object addresses are written, so that the CLI can parse them before it
-    // connects. Null means AddressFormat::canopen().
-    const AddressFormat *addressFormat = nullptr;
     // Makes an unopened connection from a prepared plan; the error names the real cause (an
     // unknown CAN plugin, a bus in use at another bitrate, ...).
     std::function<Result<std::unique_ptr<DeviceConnection>>(const ConnectionPlan &plan)> create;
@@ -40,6 +37,9 @@ struct ProtocolInfo
     // Optional: the rest of the plan (loads the description the URI names). Runs once per
     // connection, when the user connects.
     std::function<Result<void>(ConnectionPlan &plan)> prepare;
+    // How the protocol's object addresses are written, so that the CLI can parse them before it
+    // connects. Null means AddressFormat::canopen().
+    const AddressFormat *addressFormat = nullptr;
 };
 
 // Maps URI schemes to connection factories. Filled in one place (app/), passed to whoever
