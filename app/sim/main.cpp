@@ -2,10 +2,12 @@
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
 //                            [--reject-write INDEX:SUB ...]
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
+//   drivebench-sim acu --vabus-port PORT [--watchdog-ms MS] [--fail MODE] [--slave ID ...]
 #include "../common/demodrive.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
+#include "simacu.h"
 #include "simulation/movingcapdrive.h"
 
 #include <QCommandLineParser>
@@ -57,7 +59,8 @@ int main(int argc, char *argv[])
         "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
         "(RefGo and SLCAN doors)\n  canopen     CANopen nodes driven by a device description "
         "(SLCAN "
-        "and/or virtualcan doors)"));
+        "and/or virtualcan doors)\n  acu         a Bonfiglioli ACTIVE Cube with CM-VABus/TCP (PLC "
+        "port)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -102,11 +105,18 @@ int main(int argc, char *argv[])
                                     "(failure mode for tests; repeatable)."),
         QStringLiteral("INDEX:SUB"));
     parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite });
+    app::addAcuOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
+    if (args.size() == 1 && args.first() == QLatin1String("acu")) {
+        if (const int code = app::runAcu(parser, out, err); code >= 0)
+            return code;
+        quitOnSignals(app);
+        return app.exec();
+    }
     if (args.size() == 1 && args.first() == QLatin1String("canopen")) {
         app::SimNodesOptions options;
         const auto ids = app::SimNodes::parseNodeList(parser.value(nodes));
