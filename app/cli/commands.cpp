@@ -118,7 +118,11 @@ int read(Context &c)
     QByteArray bytes = raw.toByteArray();
     while (bytes.endsWith('\0'))
         bytes.chop(1);
-    const QString text = !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
+    // Fixed-point parameters (inverters) print their physical value with its unit: "10.00 Hz".
+    const bool physical = target->def && target->def->decimals >= 0
+        && datatype::isInteger(target->type) && format == codec::TextFormat::Decimal;
+    const QString text = physical ? target->def->displayText(raw, format)
+        : !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
         ? QString::fromUtf8(bytes)
         : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
