@@ -119,8 +119,16 @@ def clean(text):
     """The table's meaning column without references to sections or to the source."""
     text = re.sub(r'\s*\((?:\d+(?:\.\d+)*(?:,\s*)?)+\)', '', text)
     keep = [s for s in re.split(r'(?<=[.;])\s+', text)
-            if not re.search(r'manual|example|printed|seed|\bex\.|reading|§|inferred|rejected|as printed', s, re.I)]
+            if not re.search(r'manual|handbuch|example|printed|seed|\bex\.|reading|§|inferred|rejected|probably|^\x27', s, re.I)]
     return ' '.join(keep).strip()
+
+
+def tidy_name(text):
+    """A parameter name without remarks about how the table printed it."""
+    text = re.sub(r"\s*\((?:individual )?name not given\)|;\s*name not given", '', text)
+    text = re.sub(r"\s*\((?:Einzelname|Name) nicht angegeben\)|;\s*Name nicht angegeben", '', text)
+    text = re.sub(r"\s*\((?:as printed|so im Handbuch)[^)]*\)", '', text)
+    return text.replace("'Function'", 'Function').strip()
 
 
 def group(n):
@@ -157,6 +165,8 @@ def main():
             if unit == '-':
                 unit = ''
             four = row['datasets'].startswith('1-4')
+            row['name_en'] = tidy_name(row['name_en'])
+            row['name_de'] = tidy_name(row['name_de'])
             base = dict(name=row['name_en'], type=dtype, access=access)
             if unit:
                 base['unit'] = unit

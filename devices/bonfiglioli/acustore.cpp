@@ -62,6 +62,8 @@ AcuStore::Outcome AcuStore::read(quint16 parameter, quint8 dataSet) const
     } else {
         raw = m_ram.value(key(parameter, dataSet));
     }
+    if (it->type == DataType::VisibleString) // an empty string is a telegram without data
+        return { NoError, raw.toString().toLatin1() };
     auto data = encodeValue(it->type, raw);
     if (!data)
         return { UnknownError, {} };

@@ -51,6 +51,8 @@ public:
     // Values written to RAM only are lost.
     void powerCycle();
     quint64 eepromWrites() const { return m_eepromWrites; }
+    // For EEPROM writes of values kept elsewhere (index parameters).
+    void countEepromWrite() { ++m_eepromWrites; }
 
 private:
     struct Param

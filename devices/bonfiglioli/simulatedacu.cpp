@@ -135,6 +135,7 @@ void SimulatedAcu::addSystemBusSlave(quint8 nodeId)
 void SimulatedAcu::powerCycle()
 {
     m_store.powerCycle();
+    m_indexed.powerCycle();
     for (const auto &slave : std::as_const(m_slaves))
         slave->powerCycle();
     m_block.clear();
@@ -204,7 +205,9 @@ std::optional<Telegram> SimulatedAcu::handle(const Telegram &request)
     if (request.sys == kSysLocal || request.sys == kSysLocalAscii) {
         bool handled = false;
         outcome = special(request, &handled);
-        if (!handled)
+        if (!handled && m_indexed.handles(request.parameter))
+            outcome = m_indexed.access(request, m_store);
+        else if (!handled)
             outcome = access(m_store, request);
     } else if (request.sys > kSlaveSysBase && m_slaves.contains(request.sys - kSlaveSysBase)) {
         outcome = access(*m_slaves.value(request.sys - kSlaveSysBase), request);

@@ -6,6 +6,7 @@
 // parameter 388, block access (17/18/19), the network parameters (1431-1437), warnings and
 // faults, and system bus slaves behind the module.
 
+#include "acuindexed.h"
 #include "acustore.h"
 #include "core/result.h"
 #include "vabus/device/vabusserver.h"
@@ -80,6 +81,7 @@ private:
     };
 
     AcuStore m_store;
+    AcuIndexed m_indexed;
     QMap<quint8, std::shared_ptr<AcuStore>> m_slaves;
     vabus::Server m_server;
     QTimer m_watchdog;

@@ -132,10 +132,10 @@ Verdict VabusClient::Protocol::Matcher::operator()(const Answer &answer) const
                                             .arg(what, hex(t.data), hex(request.data))));
         return Verdict::mine(QVariant());
     }
-    if (t.data.isEmpty())
+    const DataType decodeAs = type.value_or(typeForSize(t.data.size()));
+    if (t.data.isEmpty() && decodeAs != DataType::VisibleString) // an empty string has no data
         return Verdict::retry(Error(Error::Kind::Malformed,
                                     QStringLiteral("answer to %1 carries no value").arg(what)));
-    const DataType decodeAs = type.value_or(typeForSize(t.data.size()));
     auto value = decodeValue(decodeAs, t.data);
     if (!value)
         return Verdict::retry(value.error().prefixed(what));

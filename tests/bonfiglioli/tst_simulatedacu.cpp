@@ -146,6 +146,42 @@ private Q_SLOTS:
         QCOMPARE(codeOf(await(m_client->read(19, 0))), 1u);
     }
 
+    void indexParameters()
+    {
+        const quint64 before = m_acu->eepromWrites();
+        // T20/T21: 1202 = 30000 into RAM index 1 (34 = 33 + 1).
+        QVERIFY(await(m_client->write(1200, 0, DataType::Integer16, qlonglong(34))).ok());
+        QVERIFY(await(m_client->write(1202, 0, DataType::Integer32, qlonglong(30000))).ok());
+        QCOMPARE(m_acu->eepromWrites(), before);
+        // T22-T24: select index 1 for reading, then read.
+        QVERIFY(await(m_client->write(1201, 0, DataType::Integer16, qlonglong(1))).ok());
+        QCOMPARE(await(m_client->read(1202, 0, DataType::Integer32)).value(),
+                 QVariant(qlonglong(30000)));
+        // Index 2 in EEPROM; index 1 is untouched.
+        QVERIFY(await(m_client->write(1200, 0, DataType::Integer16, qlonglong(2))).ok());
+        QVERIFY(await(m_client->write(1202, 0, DataType::Integer32, qlonglong(123000))).ok());
+        QCOMPARE(m_acu->eepromWrites(), before + 1);
+        QVERIFY(await(m_client->write(1201, 0, DataType::Integer16, qlonglong(2))).ok());
+        QCOMPARE(await(m_client->read(1202, 0, DataType::Integer32)).value(),
+                 QVariant(qlonglong(123000)));
+        QCOMPARE(codeOf(await(m_client->write(1200, 0, DataType::Integer16, qlonglong(66)))), 1u);
+        // 16-index group: 17 = all indices in RAM.
+        QVERIFY(await(m_client->write(1250, 0, DataType::Integer16, qlonglong(17))).ok());
+        QVERIFY(await(m_client->write(1252, 0, DataType::Unsigned16, qulonglong(7))).ok());
+        QVERIFY(await(m_client->write(1251, 0, DataType::Integer16, qlonglong(16))).ok());
+        QCOMPARE(await(m_client->read(1252, 0, DataType::Unsigned16)).value(),
+                 QVariant(qulonglong(7)));
+        // A power cycle loses the RAM indices and the selections.
+        m_acu->powerCycle();
+        QCOMPARE(codeOf(await(m_client->read(1202, 0, DataType::Integer32))), 1u);
+        QVERIFY(await(m_client->write(1201, 0, DataType::Integer16, qlonglong(1))).ok());
+        QCOMPARE(await(m_client->read(1202, 0, DataType::Integer32)).value(),
+                 QVariant(qlonglong(0)));
+        QVERIFY(await(m_client->write(1201, 0, DataType::Integer16, qlonglong(2))).ok());
+        QCOMPARE(await(m_client->read(1202, 0, DataType::Integer32)).value(),
+                 QVariant(qlonglong(123000)));
+    }
+
     void networkParameters()
     {
         QVERIFY(await(m_client->read(1431, 0)).value().toString().contains(QLatin1String("MAC")));

@@ -117,6 +117,19 @@ private Q_SLOTS:
         QCOMPARE(await(reply).value(), QVariant(qlonglong(-1000)));
     }
 
+    void emptyStringIsAnAnswerWithoutData()
+    {
+        Reply *reply = m_client->read(1441, 0, DataType::VisibleString);
+        m_stream->feed(hexBytes("00 04 00 00 A1 05"));
+        QCOMPARE(await(reply).value(), QVariant(QString()));
+        // A word without data is no answer: sent again.
+        reply = m_client->read(372, 2, DataType::Unsigned16);
+        m_stream->feed(hexBytes("00 04 00 02 74 01"));
+        QCOMPARE(m_stream->writes().size(), 3);
+        m_stream->feed(hexBytes("00 06 00 02 74 01 6E 05"));
+        QVERIFY(await(reply).ok());
+    }
+
     void errorAnswerIsDeviceErrorWithCodeAndText()
     {
         Reply *reply = m_client->write(376, 4, DataType::Unsigned16, qulonglong(0));
