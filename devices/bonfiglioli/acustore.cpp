@@ -23,9 +23,16 @@ AcuStore::AcuStore(const ObjectDictionary &description)
         if (p.dataSets && def.address.sub == 0)
             continue;
         QVariant raw = def.defaultValue;
-        if (!raw.isValid())
-            raw = p.type == DataType::VisibleString ? QVariant(QString())
-                                                    : codec::normalize(p.type, 0).valueOr({});
+        if (!raw.isValid() && p.type == DataType::VisibleString) {
+            raw = QString();
+        } else if (!raw.isValid()) {
+            // No default given: 0, or the nearest limit when 0 is outside the range.
+            raw = codec::normalize(p.type, 0).valueOr({});
+            if (p.min.isValid() && !codec::checkLimits(p.type, raw, p.min, {}))
+                raw = p.min;
+            else if (p.max.isValid() && !codec::checkLimits(p.type, raw, {}, p.max))
+                raw = p.max;
+        }
         m_eeprom.insert(key(def.address.index, def.address.sub), raw);
     }
     m_ram = m_eeprom;

@@ -100,6 +100,7 @@ void SimulatedAcu::seed(AcuStore &store, quint8 nodeId)
               QStringLiteral("MAC-ID 00:1B:2C:00:00:%1 Sno 4711 HW 1.0 SW 1.2")
                   .arg(nodeId, 2, 16, QLatin1Char('0')));
     // 376 refuses 0 kW; fixed frequencies end at 999.99 Hz.
+    store.set(1441, 0, QStringLiteral("Please call the service, ext. 2121"));
     store.setLimits(376, u(1), u(65535));
     for (const quint16 p : { quint16(480), quint16(481), quint16(482) })
         store.setLimits(p, i(-99999), i(99999));

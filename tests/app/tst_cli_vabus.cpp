@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QTcpServer>
 #include <QTcpSocket>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using db::test::CliRun;
@@ -121,6 +122,33 @@ private Q_SLOTS:
             { QStringLiteral("write"), m_uri, QStringLiteral("481:1"), QStringLiteral("10.555") });
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(QLatin1String("decimal")), qPrintable(r.err));
+    }
+
+    // backup, change two data sets, diff names them, restore writes them back, diff is clean.
+    void backupDiffRestoreRoundTrip()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString file = dir.filePath(QStringLiteral("acu.set"));
+        CliRun r = cli({ QStringLiteral("backup"), m_uri, QStringLiteral("-o"), file });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        for (const auto &[address, value] :
+             { std::pair { "481:3", "33.33" }, std::pair { "372:4", "1400" } }) {
+            r = cli(
+                { QStringLiteral("write"), m_uri, QLatin1String(address), QLatin1String(value) });
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        }
+        r = cli({ QStringLiteral("diff"), m_uri, file });
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains(QLatin1String("481:3")) && r.out.contains(QLatin1String("372:4"))
+                     && r.out.contains(QLatin1String("2 changed")),
+                 qPrintable(r.out));
+        r = cli({ QStringLiteral("restore"), m_uri, file });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        r = cli({ QStringLiteral("diff"), m_uri, file });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        r = cli({ QStringLiteral("read"), m_uri, QStringLiteral("481:3") });
+        QCOMPARE(r.out, QStringLiteral("20.00 Hz\n"));
     }
 
     void refusalsNameTheirCode()

@@ -2,6 +2,7 @@
 // values, every error code it produces, data sets and RAM, the EEPROM counter, block access,
 // network parameters, system bus slaves, one PLC connection, the watchdog, failure modes.
 
+#include "bonfiglioli/acudescription.h"
 #include "bonfiglioli/simulatedacu.h"
 #include "transport/tcpstream.h"
 #include "vabus/vabusclient.h"
@@ -24,6 +25,12 @@ Result<QVariant> await(Reply *reply, int timeoutMs = 5000)
     if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
         return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
     return reply->result();
+}
+
+// Parameters of the index groups (selected through 1200/1201 and the other index parameters).
+bool isIndexed(quint16 p)
+{
+    return (p >= 1200 && p <= 1265) || (p >= 1341 && p <= 1352) || (p >= 1420 && p <= 1422);
 }
 
 quint32 codeOf(const Result<QVariant> &result)
@@ -109,6 +116,34 @@ private Q_SLOTS:
         raw.write(QByteArray::fromHex("010400027401")); // header bits 5..0 set
         QTRY_COMPARE(raw.bytesAvailable(), 8);
         QCOMPARE(raw.readAll().toHex(' '), QByteArray("40 06 00 02 74 01 0d 00"));
+    }
+
+    // Every value the simulator starts with is one it accepts back (a restore of a fresh backup).
+    void defaultsAreWithinTheirLimits()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        for (const ObjectDef &def : d.objects()) {
+            if (!def.writable() || !def.readable() || def.address.index == 17
+                || def.address.index == 18 || def.address.index == 410 || def.address.index == 1437
+                || isIndexed(def.address.index))
+                continue;
+            const QVariant raw = m_acu->store().value(
+                def.address.index,
+                def.address.sub == 0 && bonfiglioli::hasDataSets(d, def.address.index)
+                    ? 1
+                    : def.address.sub);
+            const auto data = encodeValue(def.type, raw);
+            QVERIFY2(data.ok(), qPrintable(def.name));
+            const quint64 before = m_acu->eepromWrites();
+            const auto outcome =
+                m_acu->store().write(def.address.index, def.address.sub, data.value());
+            QVERIFY2(outcome.error == 0,
+                     qPrintable(QStringLiteral("%1 %2: error %3")
+                                    .arg(def.address.index)
+                                    .arg(def.name)
+                                    .arg(outcome.error)));
+            QCOMPARE(m_acu->eepromWrites(), before + 1);
+        }
     }
 
     void dataSetsRamAndEepromCounter()
