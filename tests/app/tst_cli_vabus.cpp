@@ -151,6 +151,30 @@ private Q_SLOTS:
         QCOMPARE(r.out, QStringLiteral("20.00 Hz\n"));
     }
 
+    // --ram writes the RAM copy (DS + 5): the value reads back, the EEPROM counter stays put.
+    void ramWritesSpareTheEeprom()
+    {
+        QProcess sim;
+        const QString uri = startSim(sim, {});
+        QVERIFY(!uri.isEmpty());
+        CliRun r = cli({ QStringLiteral("write"), uri, QStringLiteral("481:2"),
+                         QStringLiteral("12.34"), QStringLiteral("--ram") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({ QStringLiteral("read"), uri, QStringLiteral("481:2") });
+        QCOMPARE(r.out, QStringLiteral("12.34 Hz\n"));
+        r = cli({ QStringLiteral("write"), QStringLiteral("refgo://127.0.0.1:1"),
+                  QStringLiteral("6041:0"), QStringLiteral("1"), QStringLiteral("--ram") });
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains(QLatin1String("--ram needs a vabus:// URI")));
+        // The same write without --ram is the one EEPROM write the simulator counts.
+        r = cli({ QStringLiteral("write"), uri, QStringLiteral("481:2"), QStringLiteral("12.34") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        sim.terminate();
+        QVERIFY(sim.waitForFinished(5000));
+        const QString out = QString::fromUtf8(sim.readAllStandardOutput());
+        QVERIFY2(out.contains(QLatin1String("acu: 1 EEPROM writes")), qPrintable(out));
+    }
+
     void refusalsNameTheirCode()
     {
         CliRun r =
