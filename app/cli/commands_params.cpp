@@ -119,6 +119,14 @@ Result<void> checkIdentity(Context &c, Session &session, const ParameterSet &set
     return {};
 }
 
+// An empty set that stands for the addresses of a device (for checkSameAddressFormat()).
+ParameterSet addressSet(const AddressFormat &format)
+{
+    ParameterSet set;
+    set.addressFormat = &format;
+    return set;
+}
+
 // A diff side is a URI when it names a scheme ("refgo://..."); anything else is a file.
 bool isUri(const QString &text)
 {
@@ -185,12 +193,17 @@ int restore(Context &c)
     if (set->isEmpty())
         return fail(
             c, usage(QStringLiteral("%1 holds no object: nothing to restore").arg(c.args.at(1))));
+    // The set's addresses must be written as the device at the URI writes them, and --only
+    // names objects in that format too; both are checked before anything is connected.
+    const auto format = addressFormatFor(c.registry, c.args.at(0));
+    if (!format)
+        return fail(c, format.error());
+    if (auto same =
+            checkSameAddressFormat({ *set, addressSet(**format) }, { c.args.at(1), c.args.at(0) });
+        !same)
+        return fail(c, same.error());
     QList<ObjectAddress> only;
     if (c.parser && c.parser->isSet(kOnly)) {
-        // --only names objects of the device at the URI, in its protocol's address format.
-        const auto format = addressFormatFor(c.registry, c.args.at(0));
-        if (!format)
-            return fail(c, format.error());
         for (const QString &part : c.parser->value(kOnly).split(u',', Qt::SkipEmptyParts)) {
             const auto address = (*format)->parse(part.trimmed());
             if (!address)
@@ -239,8 +252,6 @@ int diff(Context &c)
 {
     QList<ParameterSet> sides;
     std::unique_ptr<ObjectDictionary> dictionary;
-    // Rows are printed as the first device compared writes its addresses.
-    const AddressFormat *addressFormat = nullptr;
     Error readError;
     for (const QString &side : c.args) {
         if (!isUri(side)) {
@@ -261,20 +272,18 @@ int diff(Context &c)
             readError = run->error.prefixed(QStringLiteral("reading %1").arg(side));
         if (!dictionary)
             dictionary = std::make_unique<ObjectDictionary>(session.connection()->dictionary());
-        if (!addressFormat)
-            addressFormat = &session.connection()->addressFormat();
         sides.append(run->read);
     }
+    if (auto same = checkSameAddressFormat(sides, c.args); !same)
+        return fail(c, same.error());
     const ParameterComparison comparison = compareParameterSets(sides, c.args, dictionary.get());
-    if (!addressFormat)
-        addressFormat = &AddressFormat::canopen();
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     for (const CompareRow &row : comparison.rows) {
         if (!row.differs)
             continue;
         c.out << compareStatusName(row.status).leftJustified(8)
-              << addressFormat->format(row.address) << "  " << printable(row.name) << ": "
-              << printable(row.valueText(0, format)) << " | "
+              << comparison.addressFormat->format(row.address) << "  " << printable(row.name)
+              << ": " << printable(row.valueText(0, format)) << " | "
               << printable(row.valueText(1, format));
         if (!row.unit.isEmpty())
             c.out << ' ' << printable(row.unit);

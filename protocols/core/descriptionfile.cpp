@@ -7,7 +7,10 @@
 //                    "default", "min", "max", "enum": { "1": "Profile Position" },
 //                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on" } ],
 //                    "storable", "pdo", "trace", "description" } ],
-//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ] }
+//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ],
+//     "addresses": "canopen" }
+// "addresses" says how people write the objects' addresses: "canopen" (hex INDEX:SUB, the
+// default) or "parameter" (decimal NUMBER:DATASET, index = parameter number, sub = data set).
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
 #include "objectdictionary.h"
 
@@ -91,6 +94,15 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
     dict.identity.revision = device.value(QLatin1String("revision")).toString();
     dict.identity.descriptionVersion = device.value(QLatin1String("version")).toString();
     dict.identity.descriptionFile = origin;
+    if (const QJsonValue addresses = root.value(QLatin1String("addresses"));
+        !addresses.isUndefined()) {
+        const AddressFormat *format = AddressFormat::byKey(addresses.toString());
+        if (!format)
+            return Error(Error::Kind::Malformed,
+                         QStringLiteral("%1: unknown \"addresses\" '%2' (canopen or parameter)")
+                             .arg(origin, addresses.toVariant().toString()));
+        dict.setAddressFormat(*format);
+    }
 
     const QJsonArray objects = root.value(QLatin1String("objects")).toArray();
     for (qsizetype i = 0; i < objects.size(); ++i) {

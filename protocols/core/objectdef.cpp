@@ -33,22 +33,22 @@ std::optional<Access> access::fromName(const QString &text)
     return std::nullopt;
 }
 
-Result<QVariant> ObjectDef::validate(const QVariant &value) const
+Result<QVariant> ObjectDef::validate(const QVariant &value, const AddressFormat &format) const
 {
     auto raw = codec::normalize(type, value);
     if (!raw)
-        return raw.error().prefixed(address.toString());
+        return raw.error().prefixed(format.format(address));
     if (auto limits = codec::checkLimits(type, raw.value(), minimum, maximum); !limits)
-        return limits.error().prefixed(address.toString());
+        return limits.error().prefixed(format.format(address));
     return raw;
 }
 
-Result<QVariant> ObjectDef::parseText(const QString &text) const
+Result<QVariant> ObjectDef::parseText(const QString &text, const AddressFormat &format) const
 {
     const QString t = text.trimmed();
     for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it) {
         if (it.value().compare(t, Qt::CaseInsensitive) == 0)
-            return validate(QVariant::fromValue<qlonglong>(it.key()));
+            return validate(QVariant::fromValue<qlonglong>(it.key()), format);
     }
     if (decimals > 0 && datatype::isInteger(type)) {
         bool ok = false;
@@ -56,21 +56,21 @@ Result<QVariant> ObjectDef::parseText(const QString &text) const
         if (!ok)
             return Error(Error::Kind::InvalidArgument,
                          QStringLiteral("'%1' is not a number").arg(text))
-                .prefixed(address.toString());
+                .prefixed(format.format(address));
         const double scaled = (physical - offset) / factor;
         if (std::abs(scaled - std::round(scaled)) > 1e-6)
             return Error(Error::Kind::InvalidArgument,
                          QStringLiteral("%1 has more than %2 decimal places").arg(t).arg(decimals))
-                .prefixed(address.toString());
+                .prefixed(format.format(address));
         auto raw = codec::fromPhysical(type, physical, factor, offset);
         if (!raw)
-            return raw.error().prefixed(address.toString());
-        return validate(raw.value());
+            return raw.error().prefixed(format.format(address));
+        return validate(raw.value(), format);
     }
     auto raw = codec::fromText(type, text);
     if (!raw)
-        return raw.error().prefixed(address.toString());
-    return validate(raw.value());
+        return raw.error().prefixed(format.format(address));
+    return validate(raw.value(), format);
 }
 
 QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "addressformat.h"
 #include "datatype.h"
 #include "objectaddress.h"
 #include "valuecodec.h"
@@ -55,11 +56,14 @@ struct ObjectDef
     bool readable() const { return access != Access::WriteOnly; }
     bool writable() const { return access == Access::ReadWrite || access == Access::WriteOnly; }
 
-    // Type conversion, type range and the object's own min/max in one step.
-    Result<QVariant> validate(const QVariant &value) const;
+    // Type conversion, type range and the object's own min/max in one step. Errors name the
+    // object's address as `format` writes it.
+    Result<QVariant> validate(const QVariant &value,
+                              const AddressFormat &format = AddressFormat::canopen()) const;
     // User text -> raw, accepting enumeration names as well as numbers (physical values for
     // fixed-point parameters, see decimals).
-    Result<QVariant> parseText(const QString &text) const;
+    Result<QVariant> parseText(const QString &text,
+                               const AddressFormat &format = AddressFormat::canopen()) const;
     // "1 (Profile Position)", "0x0427", "1200 mm"
     QString displayText(const QVariant &raw,
                         codec::TextFormat format = codec::TextFormat::Decimal) const;

@@ -31,6 +31,7 @@ ObjectDictionary fakeDictionary()
         def.name = a == kParameter ? QStringLiteral("Acceleration") : QStringLiteral("Hex twin");
         def.type = DataType::Unsigned16;
         def.access = Access::ReadWrite;
+        def.storable = true;
         dictionary.insert(def);
     }
     return dictionary;
@@ -82,6 +83,8 @@ private Q_SLOTS:
     void dumpPrintsDecimalAddresses();
     void restoreOnlyParsesDecimal();
     void recordObjParsesDecimal();
+    void restoreRefusesASetOfAnotherFormat();
+    void diffPrintsDecimalAddresses();
 
 private:
     Run run(const QString &command, const QStringList &args, const QStringList &options = {},
@@ -225,6 +228,7 @@ void TestCliAddressFormat::restoreOnlyParsesDecimal()
 {
     // --only is checked against the file before anything is connected.
     ParameterSet set;
+    set.addressFormat = &AddressFormat::parameter();
     set.insert({ kHexTwin, QStringLiteral("Hex twin"), DataType::Unsigned16,
                  codec::normalize(DataType::Unsigned16, 5u).value(), QString() });
     const QString file = m_dir.filePath(QStringLiteral("twin.dbp"));
@@ -238,6 +242,42 @@ void TestCliAddressFormat::restoreOnlyParsesDecimal()
                         { QStringLiteral("--only"), QStringLiteral("0x372:2") });
     QCOMPARE(bad.code, int(cli::ExitUsage));
     QVERIFY2(bad.err.contains(QLatin1String("NUMBER:DATASET")), qPrintable(bad.err));
+}
+
+void TestCliAddressFormat::restoreRefusesASetOfAnotherFormat()
+{
+    // The same file lines would name other objects on this device: refused before connecting.
+    ParameterSet set;
+    set.insert({ kHexTwin, QStringLiteral("Hex twin"), DataType::Unsigned16,
+                 codec::normalize(DataType::Unsigned16, 5u).value(), QString() });
+    const QString file = m_dir.filePath(QStringLiteral("hex.dbp"));
+    QVERIFY(set.save(file).ok());
+    const Run r = run(QStringLiteral("restore"), { QStringLiteral("fakeparam://drive"), file });
+    QCOMPARE(r.code, int(cli::ExitUsage));
+    QVERIFY2(r.err.contains(QLatin1String("canopen addresses")), qPrintable(r.err));
+    QVERIFY2(r.err.contains(QLatin1String("parameter addresses")), qPrintable(r.err));
+    QCOMPARE(m_opened, 0);
+    // diff refuses to compare them.
+    const Run diff = run(QStringLiteral("diff"), { QStringLiteral("fakeparam://drive"), file });
+    QCOMPARE(diff.code, int(cli::ExitUsage));
+    QVERIFY2(diff.err.contains(QLatin1String("cannot be compared")), qPrintable(diff.err));
+}
+
+void TestCliAddressFormat::diffPrintsDecimalAddresses()
+{
+    ParameterSet set;
+    set.addressFormat = &AddressFormat::parameter();
+    set.insert({ kParameter, QStringLiteral("Acceleration"), DataType::Unsigned16,
+                 codec::normalize(DataType::Unsigned16, 1200u).value(), QString() });
+    set.insert({ kHexTwin, QStringLiteral("Hex twin"), DataType::Unsigned16,
+                 codec::normalize(DataType::Unsigned16, 999u).value(), QString() });
+    const QString file = m_dir.filePath(QStringLiteral("decimal.dbp"));
+    QVERIFY(set.save(file).ok());
+    const Run r = run(QStringLiteral("diff"), { QStringLiteral("fakeparam://drive"), file });
+    QCOMPARE(r.code, int(cli::ExitFailure)); // they differ
+    QVERIFY2(r.out.contains(QLatin1String("changed 372:2  Acceleration: 1234 | 1200")),
+             qPrintable(r.out));
+    QVERIFY2(!r.out.contains(QLatin1String("882:2")), qPrintable(r.out)); // equal on both sides
 }
 
 void TestCliAddressFormat::recordObjParsesDecimal()
