@@ -215,6 +215,7 @@ def main():
                    'version': '1'},
         'objects': objects,
         'errors': errors,
+        'addresses': 'parameter',
     }
     with open(OUT, 'w', encoding='utf-8') as f:
         json.dump(doc, f, indent=1, ensure_ascii=False)
