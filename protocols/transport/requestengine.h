@@ -25,7 +25,8 @@
 //   in flight's is dropped and logged, or, with setForeignAnswerFails(true), fails the request
 //   in flight as Malformed (for protocols where any answer after a request is that request's).
 //   With lateGraceMs() > 0 nothing is sent for that long after a timeout, so a late answer
-//   arrives while the link is quiet.
+//   arrives while the link is quiet; answers still missing when it ends are taken as lost and
+//   their requests forgotten, so that an identical request sent next gets its own answer.
 // - Every Reply finishes exactly once: value, Timeout, Malformed, DeviceError, Disconnected
 //   (link closed: the stream's close error), or Cancelled (engine deleted). Requests made while
 //   the stream is not open fail at once with Disconnected. Replies deleted by their requester
@@ -355,13 +356,7 @@ private:
             }
             return;
         }
-        if (!m_abandoned.isEmpty()) {
-            QStringList labels;
-            for (const Abandoned &a : std::as_const(m_abandoned))
-                labels.append(a.label);
-            logForgotten(labels);
-            m_abandoned.clear();
-        }
+        forgetAbandoned();
         ++m_inFlight->answered;
         logAnswer(Protocol::summary(answer), m_inFlight->keepAlive);
         if (verdict->kind == Verdict::Kind::Retry && mayResend()) {
@@ -389,7 +384,22 @@ private:
         complete(error);
     }
 
-    void onQuietOver() override { sendNext(); }
+    void onQuietOver() override
+    {
+        forgetAbandoned();
+        sendNext();
+    }
+
+    void forgetAbandoned()
+    {
+        if (m_abandoned.isEmpty())
+            return;
+        QStringList labels;
+        for (const Abandoned &a : std::as_const(m_abandoned))
+            labels.append(a.label);
+        logForgotten(labels);
+        m_abandoned.clear();
+    }
 
     void onKeepAliveDue() override
     {

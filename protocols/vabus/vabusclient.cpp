@@ -28,6 +28,7 @@ VabusClient::VabusClient(ByteStream *stream, QObject *parent)
     m_engine.setTimeoutMs(kDefaultTimeoutMs);
     m_engine.setMaxTransmissions(kMaxTransmissions);
     m_engine.setDropsPartialAnswerOnTimeout(true);
+    m_engine.setLateGraceMs(kLateGraceMs);
     connect(&m_engine, &RequestEngineBase::logLine, this, &VabusClient::logLine);
     updateKeepAlive();
 }

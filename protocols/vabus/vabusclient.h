@@ -32,7 +32,8 @@ namespace db::vabus {
 //   request is sent again when its time runs out. A NAK byte, garbage, a write echo whose data
 //   differs from what was sent, or a read value whose size does not fit the parameter's type
 //   fail that transmission: the request goes out again at once. At most kMaxTransmissions in
-//   all (7.1.2: "in total three transmissions").
+//   all (7.1.2: "in total three transmissions"). After a timeout the client waits kLateGraceMs
+//   for late answers before it sends anything else.
 // - Keep-alive: while the stream is open, parameter 411 (status word) is read whenever nothing
 //   has been sent for keepAliveIdleMs(), so that the inverter's 10 s communication watchdog
 //   (parameter 388) never fires while we are connected.
@@ -42,6 +43,10 @@ class VabusClient : public QObject
 public:
     static constexpr int kDefaultTimeoutMs = 1000; // the manual gives none; well below 10 s
     static constexpr int kMaxTransmissions = 3;
+    // After a request failed with a timeout nothing is sent for this long; an answer that has
+    // not come by then is taken as lost (the inverter answers in order, and an identical
+    // request would otherwise take its late answer for its own).
+    static constexpr int kLateGraceMs = 200;
     static constexpr int kWatchdogMs = 10000; // the inverter's supervision of the PLC port
     static constexpr int kDefaultKeepAliveIdleMs = 3000; // leaves room for 2 lost keep-alives
     static constexpr quint16 kKeepAliveParameter = 411;

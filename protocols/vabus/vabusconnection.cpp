@@ -148,7 +148,7 @@ void VabusConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef
                                       .arg(def->name)));
                 return;
             }
-            auto checked = def->validate(raw);
+            auto checked = def->validate(raw, addressFormat());
             if (!checked) {
                 reply->fail(checked.error());
                 return;

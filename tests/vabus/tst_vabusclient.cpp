@@ -235,14 +235,28 @@ private Q_SLOTS:
         m_client->setTimeoutMs(kShortTimeoutMs);
         Reply *first = m_client->read(372, 2, DataType::Unsigned16);
         QCOMPARE(await(first).error().kind(), Error::Kind::Timeout);
+        // The next request waits out the grace time; answers to the first that come meanwhile
+        // are dropped, never given to it.
         Reply *second = m_client->read(372, 2, DataType::Unsigned16);
-        QTRY_COMPARE(m_stream->writes().size(), 4);
-        // Three late answers to the first request's transmissions, then the second's own.
+        QCOMPARE(m_stream->writes().size(), 3);
         for (int i = 0; i < 3; ++i)
             m_stream->feed(hexBytes("00 06 00 02 74 01 01 00"));
+        QTRY_COMPARE(m_stream->writes().size(), 4);
         QVERIFY(!second->isFinished());
         m_stream->feed(hexBytes("00 06 00 02 74 01 6E 05"));
         QCOMPARE(await(second).value(), QVariant(qulonglong(1390)));
+    }
+
+    // Answers that have not come within the grace time are lost: a device that stayed silent
+    // (still starting) and then answers gives the identical next request its answer.
+    void silenceThenAnswerGoesToNextRequest()
+    {
+        m_client->setTimeoutMs(kShortTimeoutMs);
+        QCOMPARE(await(m_client->read(12, 0)).error().kind(), Error::Kind::Timeout);
+        Reply *again = m_client->read(12, 0);
+        QTRY_COMPARE(m_stream->writes().size(), 4);
+        m_stream->feed(hexBytes("00 0D 00 00 0C 00 35 2E 33 2E 32 20 53 54 4F"));
+        QCOMPARE(await(again).value(), QVariant(QStringLiteral("5.3.2 STO")));
     }
 
     void partialAnswerIsDroppedWhenTransmissionTimesOut()
