@@ -71,6 +71,9 @@ GROUPS = [
     (1300, 1399, 'PLC function table'), (1400, 1449, 'Network'),
     (1450, 1469, 'Motion control override'),
 ]
+# Contradictory limits, read as recommended: 414 also takes 5 (switching while not enabled), the
+# target window ends at 2^20 - 1.
+LIMITS = {414: (0, 5), 1165: (0, 2 ** 20 - 1)}
 IP_OCTETS = {1432: [172, 22, 1, 25], 1433: [255, 255, 255, 0], 1434: [0, 0, 0, 0],
              1435: [0, 0, 0, 0]}
 
@@ -156,6 +159,8 @@ def main():
             dtype = infer_type(row, scale, lo, hi)
             if n in IP_OCTETS:
                 lo, hi, default = 0, 255, None
+            if n in LIMITS:
+                lo, hi = LIMITS[n]
             access = ACCESS.get(n)
             if not access:
                 a = row['access']

@@ -54,6 +54,15 @@ const QCommandLineOption &dropAfter()
                                       QStringLiteral("n"), QStringLiteral("1"));
     return o;
 }
+const QCommandLineOption &startupDelay()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("startup-delay-ms"),
+        tr("acu: answer nothing for this long after start, as the module initialising after "
+           "power-on (up to 20000)."),
+        QStringLiteral("ms"), QStringLiteral("0"));
+    return o;
+}
 const QCommandLineOption &slave()
 {
     static const QCommandLineOption o(
@@ -76,7 +85,8 @@ int number(const QCommandLineParser &parser, const QCommandLineOption &option, i
 
 void addAcuOptions(QCommandLineParser &parser)
 {
-    parser.addOptions({ vabusPort(), watchdogMs(), fail(), slowMs(), dropAfter(), slave() });
+    parser.addOptions(
+        { vabusPort(), watchdogMs(), fail(), slowMs(), dropAfter(), startupDelay(), slave() });
 }
 
 int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
@@ -90,11 +100,12 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
                                                     : bonfiglioli::SimulatedAcu::kWatchdogMs;
     const int slow = number(parser, slowMs(), 600000);
     const int drop = number(parser, dropAfter(), 1000000);
-    if (port < 0 || watchdog < 1 || slow < 0 || drop < 0) {
+    const int startup = number(parser, startupDelay(), 600000);
+    if (port < 0 || watchdog < 1 || slow < 0 || drop < 0 || startup < 0) {
         err << "drivebench-sim: "
             << (port < 0           ? "--vabus-port takes a port number 0..65535"
                     : watchdog < 1 ? "--watchdog-ms takes a time in ms (1 or more)"
-                                   : "--slow-ms and --drop-after take a number")
+                                   : "--slow-ms, --drop-after and --startup-delay-ms take a number")
             << Qt::endl;
         return 2;
     }
@@ -122,6 +133,7 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
         acu->addSystemBusSlave(quint8(node));
     }
     acu->setWatchdogMs(watchdog);
+    acu->setStartupDelayMs(startup);
     acu->server().setFailure(mode);
     QObject::connect(acu, &bonfiglioli::SimulatedAcu::logLine, acu,
                      [&err](const QString &line) { err << "acu: " << line << Qt::endl; });

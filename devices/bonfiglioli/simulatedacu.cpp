@@ -126,6 +126,15 @@ void SimulatedAcu::setWatchdogMs(int ms)
     m_watchdog.setInterval(qMax(1, ms));
 }
 
+void SimulatedAcu::setStartupDelayMs(int ms)
+{
+    m_starting.setSingleShot(true);
+    if (ms > 0)
+        m_starting.start(ms);
+    else
+        m_starting.stop();
+}
+
 void SimulatedAcu::addSystemBusSlave(quint8 nodeId)
 {
     auto store = std::make_shared<AcuStore>(acuDictionary());
@@ -202,6 +211,8 @@ void SimulatedAcu::onWatchdog()
 
 std::optional<Telegram> SimulatedAcu::handle(const Telegram &request)
 {
+    if (m_starting.isActive())
+        return std::nullopt; // still initialising
     AcuStore::Outcome outcome;
     if (request.sys == kSysLocal || request.sys == kSysLocalAscii) {
         bool handled = false;

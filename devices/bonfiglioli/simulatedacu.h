@@ -39,6 +39,11 @@ public:
     int watchdogMs() const { return m_watchdog.interval(); }
     bool isWatchdogArmed() const { return m_watchdog.isActive(); }
 
+    // The module initialises for up to 20 s after power-on; until ms from now pass nothing is
+    // answered (0 ends the wait).
+    void setStartupDelayMs(int ms);
+    bool isStarting() const { return m_starting.isActive(); }
+
     // A system bus slave with this node id (1-63) answers SYS 0x40 + id.
     void addSystemBusSlave(quint8 nodeId);
 
@@ -85,6 +90,7 @@ private:
     QMap<quint8, std::shared_ptr<AcuStore>> m_slaves;
     vabus::Server m_server;
     QTimer m_watchdog;
+    QTimer m_starting;
     QList<BlockItem> m_block; // block definition (17), volatile
     QMap<quint16, QList<QVariant>> m_activeIp; // 1432-1435 as applied (octets 1-4)
     quint16 m_controlWord = 0;

@@ -78,6 +78,10 @@ private Q_SLOTS:
         QVERIFY(!behaviour->parseText(QStringLiteral("6")).ok());
 
         QCOMPARE(d.find(ObjectAddress(1432, 1))->defaultValue, QVariant(qulonglong(172)));
+        // Contradictory limits, as recommended: 414 takes 5, 1165 ends at 2^20 - 1.
+        QVERIFY(d.find(ObjectAddress(414, 0))->parseText(QStringLiteral("5")).ok());
+        QVERIFY(!d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048576")).ok());
+        QVERIFY(d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048575")).ok());
         QCOMPARE(d.find(ObjectAddress(1459, 0))->type, DataType::Integer16);
     }
 

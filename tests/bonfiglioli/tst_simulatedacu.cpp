@@ -324,6 +324,16 @@ private Q_SLOTS:
             QCOMPARE(result.value(), QVariant(qulonglong(1390)));
     }
 
+    void startupDelayAnswersNothing()
+    {
+        m_client->setTimeoutMs(100);
+        m_acu->setStartupDelayMs(60000);
+        QVERIFY(m_acu->isStarting());
+        QCOMPARE(await(m_client->read(12, 0)).error().kind(), Error::Kind::Timeout);
+        m_acu->setStartupDelayMs(0);
+        QCOMPARE(await(m_client->read(12, 0)).value(), QVariant(QStringLiteral("5.3.2 STO")));
+    }
+
     void dropAfterN()
     {
         m_acu->server().setFailure({ Server::Failure::DropAfter, 0, 2 });
