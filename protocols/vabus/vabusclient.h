@@ -41,7 +41,7 @@ class VabusClient : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr int kDefaultTimeoutMs = 1000; // the manual gives none; well below 10 s
+    static constexpr int kDefaultTimeoutMs = 1000; // the protocol defines none; well below 10 s
     static constexpr int kMaxTransmissions = 3;
     // After a request failed with a timeout nothing is sent for this long; an answer that has
     // not come by then is taken as lost (the inverter answers in order, and an identical

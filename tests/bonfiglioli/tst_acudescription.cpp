@@ -34,7 +34,7 @@ private Q_SLOTS:
         }
     }
 
-    void manualExampleParameters()
+    void exampleParameters()
     {
         const ObjectDictionary &d = bonfiglioli::acuDictionary();
         const ObjectDef *rated = d.find(ObjectAddress(372, 2));

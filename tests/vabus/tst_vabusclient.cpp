@@ -50,7 +50,7 @@ private Q_SLOTS:
         delete m_stream;
     }
 
-    void manualExamplesByteExact_data()
+    void protocolExamplesByteExact_data()
     {
         QTest::addColumn<bool>("write");
         QTest::addColumn<int>("parameter");
@@ -79,7 +79,7 @@ private Q_SLOTS:
                                        << hexBytes("80 08 00 09 E2 01 62 11 00 00")
                                        << hexBytes("80 08 00 09 E2 01 62 11 00 00");
     }
-    void manualExamplesByteExact()
+    void protocolExamplesByteExact()
     {
         QFETCH(bool, write);
         QFETCH(int, parameter);
