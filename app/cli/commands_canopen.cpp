@@ -267,7 +267,7 @@ int pdo(Context &c)
         c.out << config.toString() << Qt::endl;
         for (const PdoMappingEntry &e : config.entries) {
             const ObjectDef *def = conn->dictionary().find(e.address);
-            c.out << "    " << e.address.toString() << " " << e.bits << " bits"
+            c.out << "    " << conn->addressFormat().format(e.address) << " " << e.bits << " bits"
                   << (def ? QStringLiteral("  %1").arg(printable(def->name)) : QString())
                   << Qt::endl;
         }
@@ -303,11 +303,12 @@ int dcf(Context &c)
         if (kind == Error::Kind::Timeout || kind == Error::Kind::Disconnected)
             return fail(
                 c,
-                value.error().prefixed(QStringLiteral("reading %1").arg(def.address.toString())));
+                value.error().prefixed(
+                    QStringLiteral("reading %1").arg(session.addressFormat().format(def.address))));
         ++skipped;
         if (c.options.verbose)
-            c.err << "warning: " << def.address.toString() << ": " << value.error().message()
-                  << Qt::endl;
+            c.err << "warning: " << session.addressFormat().format(def.address) << ": "
+                  << value.error().message() << Qt::endl;
     }
     DcfCommissioning commissioning;
     if (const NetworkNode at = networkNodeOf(session.connection()))

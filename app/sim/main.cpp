@@ -4,12 +4,14 @@
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
 //   drivebench-sim nm17x [--slcan-port PORT] [--virtualcan IFACE] [--control-port PORT]
 //                        --devices nm172@127,nm172@127,nm174@5
+//   drivebench-sim acu --vabus-port PORT [--watchdog-ms MS] [--fail MODE] [--slave ID ...]
 #include "../common/demodrive.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "resources/builtindescriptions.h"
 #include "sim_nm17x.h"
+#include "simacu.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -68,7 +70,8 @@ int main(int argc, char *argv[])
         "(RefGo and SLCAN doors)\n  canopen     CANopen nodes driven by a device description "
         "(SLCAN "
         "and/or virtualcan doors)\n  nm17x       a line of Baumer NM170/NM172/NM174 displays "
-        "(SLCAN and/or virtualcan doors, control socket)"));
+        "(SLCAN and/or virtualcan doors, control socket)\n  acu         a Bonfiglioli ACTIVE Cube with CM-VABus/TCP (PLC "
+        "port)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -126,11 +129,18 @@ int main(int argc, char *argv[])
         QStringLiteral("port"));
     parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
                         devices, controlPort });
+    app::addAcuOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
+    if (args.size() == 1 && args.first() == QLatin1String("acu")) {
+        if (const int code = app::runAcu(parser, out, err); code >= 0)
+            return code;
+        quitOnSignals(app);
+        return app.exec();
+    }
     if (args.size() == 1 && args.first() == QLatin1String("nm17x")) {
         const auto valueOf = [&parser](const QCommandLineOption &o) {
             return parser.isSet(o) ? std::optional<QString>(parser.value(o)) : std::nullopt;

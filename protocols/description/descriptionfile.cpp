@@ -3,20 +3,25 @@
 //   { "format": "drivebench-device-description", "version": 1,
 //     "device": { "vendor", "vendorId", "product", "productCode", "revision", "version" },
 //     "objects": [ { "index": "0x6041", "sub": 0, "name", "object", "type": "UNSIGNED16",
-//                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "default", "min",
-//                    "max", "enum": { "1": "Profile Position" },
+//                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "decimals",
+//                    "default", "min", "max", "enum": { "1": "Profile Position" },
 //                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on" } ],
 //                    "storable", "pdo", "trace", "description" } ],
-//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ] }
+//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ],
+//     "addresses": "canopen" }
+// "addresses" says how people write the objects' addresses: "canopen" (hex INDEX:SUB, the
+// default) or "parameter" (decimal NUMBER:DATASET, index = parameter number, sub = data set).
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
 #include "descriptionfile.h"
 
 #include "core/objectdictionary.h"
 
 #include <QFile>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <cmath>
 
 namespace db {
 
@@ -90,6 +95,15 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
     dict.identity.revision = device.value(QLatin1String("revision")).toString();
     dict.identity.descriptionVersion = device.value(QLatin1String("version")).toString();
     dict.identity.descriptionFile = origin;
+    if (const QJsonValue addresses = root.value(QLatin1String("addresses"));
+        !addresses.isUndefined()) {
+        const AddressFormat *format = AddressFormat::byKey(addresses.toString());
+        if (!format)
+            return Error(Error::Kind::Malformed,
+                         QStringLiteral("%1: unknown \"addresses\" '%2' (canopen or parameter)")
+                             .arg(origin, addresses.toVariant().toString()));
+        dict.setAddressFormat(*format);
+    }
 
     const QJsonArray objects = root.value(QLatin1String("objects")).toArray();
     for (qsizetype i = 0; i < objects.size(); ++i) {
@@ -122,6 +136,12 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         def.unit = o.value(QLatin1String("unit")).toString();
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);
         def.offset = o.value(QLatin1String("offset")).toDouble(0.0);
+        // Fixed-point parameters give their decimals; the factor follows from them.
+        def.decimals = o.value(QLatin1String("decimals")).toInt(-1);
+        if (def.decimals > 9)
+            return fail(QStringLiteral("decimals %1 (0-9 allowed)").arg(def.decimals));
+        if (def.decimals >= 0)
+            def.factor = std::pow(10.0, -def.decimals);
         for (const char *key : { "default", "min", "max" }) {
             auto v = rawValue(def.type, o.value(QLatin1String(key)));
             if (!v)

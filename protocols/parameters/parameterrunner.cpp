@@ -44,7 +44,8 @@ constexpr qsizetype kMaxLineChars = 300;
 
 QString BackupFailure::text() const
 {
-    QString line = QStringLiteral("%1 %2: %3").arg(address.toString(), name, error.toString());
+    QString line =
+        QStringLiteral("%1 %2: %3").arg(addressFormat->format(address), name, error.toString());
     if (error.deviceCode() != 0)
         line += QStringLiteral(" (device code 0x%1)")
                     .arg(error.deviceCode(), 8, 16, QLatin1Char('0'))
@@ -89,6 +90,7 @@ void ParameterBackup::start()
         return;
     }
     const ObjectDictionary &dict = m_connection->dictionary();
+    m_set.addressFormat = &m_connection->addressFormat();
     if (!m_explicit.isEmpty()) {
         m_todo = m_explicit;
     } else {
@@ -207,18 +209,18 @@ void ParameterBackup::onReply(Reply *reply)
     if (error.isError()) {
         if (restore::isFatal(error)) {
             fail(address, error);
-            finish(error.prefixed(tr("reading %1").arg(address.toString())));
+            finish(error.prefixed(tr("reading %1").arg(m_set.addressFormat->format(address))));
             return;
         }
         m_timeoutsInRow = error.kind() == Error::Kind::Timeout ? m_timeoutsInRow + 1 : 0;
         if (m_scope == Scope::Readable && m_explicit.isEmpty()
             && error.kind() == Error::Kind::NotSupported)
-            m_skipped.append({ address, def ? def->name : QString(), error });
+            m_skipped.append({ address, def ? def->name : QString(), error, m_set.addressFormat });
         else
             fail(address, error);
         if (m_timeoutsInRow >= kMaxConsecutiveTimeouts) {
-            finish(error.prefixed(
-                tr("the device stopped answering; reading %1").arg(address.toString())));
+            finish(error.prefixed(tr("the device stopped answering; reading %1")
+                                      .arg(m_set.addressFormat->format(address))));
             return;
         }
     } else if (m_identityOnly.contains(address)) {
@@ -257,7 +259,7 @@ void ParameterBackup::onReply(Reply *reply)
 void ParameterBackup::fail(ObjectAddress address, const Error &error)
 {
     const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
-    m_failures.append({ address, def ? def->name : QString(), error });
+    m_failures.append({ address, def ? def->name : QString(), error, m_set.addressFormat });
 }
 
 void ParameterBackup::finish(const Error &error)

@@ -24,6 +24,7 @@ struct BackupFailure
     ObjectAddress address;
     QString name; // from the description; empty when it does not know the object
     Error error;
+    const AddressFormat *addressFormat = &AddressFormat::canopen(); // the device's; never null
 
     // "6084:0 Profile deceleration: malformed answer: ...", one line (control characters as
     // \xNN), for logs, stderr and the comment lines of a partial file.
@@ -154,6 +155,7 @@ struct RestoreReport
     QString storeReason; // why not stored (error text, or "not stored: 2 rows failed")
     Error error; // fatal error that stopped the run (connection lost, Cancelled); else None
     QStringList notes; // e.g. "PDO 1400h left disabled (COB-ID bit 31 set)"
+    const AddressFormat *addressFormat = &AddressFormat::canopen(); // the device's; never null
 
     int count(RestoreOutcome outcome) const;
     // At least one row, every row Verified or Written, no fatal error, and the store done when

@@ -74,6 +74,8 @@ void ParameterRestore::plan()
     m_steps->clear();
     m_report = RestoreReport();
     m_report.storeRequested = m_store;
+    if (m_connection)
+        m_report.addressFormat = &m_connection->addressFormat();
     m_current.clear();
     m_groupBlocked.clear();
     m_mappingBlocked.clear();

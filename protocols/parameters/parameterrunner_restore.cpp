@@ -10,10 +10,10 @@ namespace db {
 namespace {
 constexpr int kMaxConsecutiveTimeouts = 2; // then the device is taken as gone
 
-QString rowLabel(const RestoreRow &row)
+QString rowLabel(const RestoreRow &row, const AddressFormat &format)
 {
-    return row.name.isEmpty() ? row.address.toString()
-                              : QStringLiteral("%1 %2").arg(row.address.toString(), row.name);
+    const QString address = format.format(row.address);
+    return row.name.isEmpty() ? address : QStringLiteral("%1 %2").arg(address, row.name);
 }
 } // namespace
 
@@ -40,6 +40,17 @@ void ParameterRestore::start()
         }
         if (!m_connection || !m_connection->isConnected()) {
             stopWithError(Error(Error::Kind::Disconnected, tr("not connected")));
+            return;
+        }
+        // The same text is another object in another format: never restore across them.
+        if (m_set.addressFormat->key() != m_connection->addressFormat().key()) {
+            stopWithError(Error(Error::Kind::InvalidArgument,
+                                tr("the set's addresses are %1 addresses (like %2), the "
+                                   "device's are %3 addresses (like %4): it is not a set for "
+                                   "this device")
+                                    .arg(m_set.addressFormat->key(), m_set.addressFormat->example(),
+                                         m_connection->addressFormat().key(),
+                                         m_connection->addressFormat().example())));
             return;
         }
         Q_EMIT progress(0, int(m_steps->size()));
@@ -150,7 +161,8 @@ void ParameterRestore::onWriteDone(Reply *reply)
         }
         m_timeoutsInRow = error.kind() == Error::Kind::Timeout ? m_timeoutsInRow + 1 : 0;
         if (restore::isFatal(error) || m_timeoutsInRow >= kMaxConsecutiveTimeouts) {
-            stopWithError(error.prefixed(tr("writing %1").arg(step.address.toString())));
+            stopWithError(
+                error.prefixed(tr("writing %1").arg(m_report.addressFormat->format(step.address))));
             return;
         }
     } else {
@@ -184,9 +196,10 @@ void ParameterRestore::onWriteDone(Reply *reply)
                 step.pdo,
                 tr("PDO %1h not changed: reading its COB-ID failed: %2").arg(pdo, error.message()));
         else
-            m_mappingBlocked.insert(step.pdo,
-                                    tr("mapping not changed: reading %1 failed: %2")
-                                        .arg(step.address.toString(), error.message()));
+            m_mappingBlocked.insert(
+                step.pdo,
+                tr("mapping not changed: reading %1 failed: %2")
+                    .arg(m_report.addressFormat->format(step.address), error.message()));
         break;
     case Step::Kind::Disable:
         if (ok)
@@ -197,16 +210,18 @@ void ParameterRestore::onWriteDone(Reply *reply)
         break;
     case Step::Kind::ClearMapping:
         if (!ok)
-            m_mappingBlocked.insert(step.pdo,
-                                    tr("mapping %1 could not be cleared: %2")
-                                        .arg(step.address.toString(), error.message()));
+            m_mappingBlocked.insert(
+                step.pdo,
+                tr("mapping %1 could not be cleared: %2")
+                    .arg(m_report.addressFormat->format(step.address), error.message()));
         break;
     case Step::Kind::Previous:
         if (ok && step.part == Step::Part::Enable)
             m_disabled.remove(step.pdo);
         else if (!ok)
-            m_report.notes.append(tr("writing back the previous value of %1 failed: %2")
-                                      .arg(step.address.toString(), error.message()));
+            m_report.notes.append(
+                tr("writing back the previous value of %1 failed: %2")
+                    .arg(m_report.addressFormat->format(step.address), error.message()));
         break;
     }
     advance();
@@ -221,7 +236,8 @@ void ParameterRestore::onReadBackDone(Reply *reply)
         row.outcome = RestoreOutcome::Mismatch;
         row.reason = tr("written, but the read-back failed: %1").arg(error.message());
         if (restore::isFatal(error)) {
-            stopWithError(error.prefixed(tr("reading back %1").arg(step.address.toString())));
+            stopWithError(error.prefixed(
+                tr("reading back %1").arg(m_report.addressFormat->format(step.address))));
             return;
         }
     } else {
@@ -321,8 +337,9 @@ QString RestoreReport::summary() const
         for (const RestoreRow &row : rows) {
             if (row.outcome != o)
                 continue;
-            QString line = QStringLiteral("  %1  %2")
-                               .arg(restoreOutcomeName(o).leftJustified(8), rowLabel(row));
+            QString line =
+                QStringLiteral("  %1  %2")
+                    .arg(restoreOutcomeName(o).leftJustified(8), rowLabel(row, *addressFormat));
             if (!row.reason.isEmpty())
                 line += QStringLiteral(": ") + row.reason;
             lines << line;

@@ -123,6 +123,9 @@ QByteArray ParameterSet::serialize(const QStringList &comments) const
     };
     line(QString::fromLatin1(kMagic));
     line(QStringLiteral("format %1").arg(kFormatVersion));
+    // CANopen sets are written as before the line existed, so that older readers take them.
+    if (addressFormat->key() != AddressFormat::canopen().key())
+        line(QStringLiteral("addresses %1").arg(addressFormat->key()));
     const QString unknown = QStringLiteral("unknown");
     line(QStringLiteral("vendor %1 %2")
              .arg(vendorIdKnown ? hex32(identity.vendorId) : unknown, quoted(identity.vendorName)));
@@ -141,7 +144,7 @@ QByteArray ParameterSet::serialize(const QStringList &comments) const
     for (const ParameterEntry &e : m_entries) {
         const QString value = codec::toText(e.type, e.raw);
         line(QStringLiteral("%1 %2 %3 %4 %5")
-                 .arg(e.address.toString(), quoted(e.name), datatype::name(e.type),
+                 .arg(addressFormat->format(e.address), quoted(e.name), datatype::name(e.type),
                       isTextType(e.type) ? quoted(value) : value, quoted(e.unit)));
     }
     line(QStringLiteral("end"));
@@ -174,6 +177,7 @@ ParameterSet ParameterSet::defaults(const ObjectDictionary &dictionary)
 {
     ParameterSet set;
     set.identity = dictionary.identity;
+    set.addressFormat = &dictionary.addressFormat();
     set.source = QStringLiteral("defaults");
     set.created = QDateTime::currentDateTimeUtc();
     for (const ObjectDef &def : dictionary.objects()) {

@@ -28,6 +28,10 @@ struct ParameterEntry
 //
 //   # drivebench parameter set          <- magic, first line
 //   format 1                            <- format version; newer versions are refused
+//   addresses parameter                 <- how the addresses below are written: "parameter"
+//                                          (decimal NUMBER:DATASET) or "canopen" (hex INDEX:SUB);
+//                                          written for non-CANopen sets only: files without
+//                                          the line are canopen
 //   vendor 0x000002D6 "Fullmo"          <- identity: id + quoted name
 //   product 0x00000001 "MovingCap"      <- "unknown" instead of the number: not read (below)
 //   revision "1.2"
@@ -57,6 +61,10 @@ public:
     bool vendorIdKnown = true;
     bool productCodeKnown = true;
     QString source; // URI or file the values came from ("defaults" for defaults())
+    // How the addresses are written in the file and in messages: the device's format (an
+    // address means a different object in another format, so sets of different formats are
+    // never compared or restored across). Never null.
+    const AddressFormat *addressFormat = &AddressFormat::canopen();
     QDateTime created; // UTC
 
     // Sorted by address, one entry per address.
@@ -127,6 +135,8 @@ struct ParameterComparison
 {
     QStringList sideNames; // as given to compare()
     QList<CompareRow> rows; // sorted by address, the union of all sides' addresses
+    // How the rows' addresses are written: the reference side's format. Never null.
+    const AddressFormat *addressFormat = &AddressFormat::canopen();
 
     int count(CompareStatus status) const;
     int differingCount() const; // rows with differs == true
@@ -142,5 +152,8 @@ struct ParameterComparison
 ParameterComparison compareParameterSets(const QList<ParameterSet> &sides,
                                          const QStringList &sideNames,
                                          const ObjectDictionary *dictionary = nullptr);
+// Sets whose addresses are written in different formats hold different objects under the same
+// address: an InvalidArgument error naming the first side that differs from sides[0].
+Result<void> checkSameAddressFormat(const QList<ParameterSet> &sides, const QStringList &sideNames);
 
 } // namespace db

@@ -2,6 +2,7 @@
 
 #include "parameterset.h"
 
+#include <QCoreApplication>
 #include <QSet>
 
 #include <algorithm>
@@ -52,12 +53,32 @@ QString ParameterComparison::countsText() const
         .arg(count(CompareStatus::Unknown));
 }
 
+Result<void> checkSameAddressFormat(const QList<ParameterSet> &sides, const QStringList &sideNames)
+{
+    for (qsizetype i = 1; i < sides.size(); ++i) {
+        const AddressFormat &a = *sides.first().addressFormat;
+        const AddressFormat &b = *sides.at(i).addressFormat;
+        if (a.key() != b.key())
+            return Error(Error::Kind::InvalidArgument,
+                         QCoreApplication::translate(
+                             "db::ParameterSet",
+                             "%1 has %2 addresses (like %3) but %4 has %5 addresses (like %6): "
+                             "the same address names different objects, so they cannot be "
+                             "compared")
+                             .arg(sideNames.value(0), a.key(), a.example(), sideNames.value(i),
+                                  b.key(), b.example()));
+    }
+    return {};
+}
+
 ParameterComparison compareParameterSets(const QList<ParameterSet> &sides,
                                          const QStringList &sideNames,
                                          const ObjectDictionary *dictionary)
 {
     ParameterComparison out;
     out.sideNames = sideNames;
+    if (!sides.isEmpty())
+        out.addressFormat = sides.first().addressFormat;
     QList<ObjectAddress> all;
     for (const ParameterSet &set : sides)
         all += set.addresses();

@@ -251,6 +251,14 @@ Result<void> Parser::header(const QList<Token> &t)
             (vendor ? id.vendorId : id.productCode) = number.value();
         }
         (key == QLatin1String("vendor") ? id.vendorName : id.productName) = t.at(2).text;
+    } else if (key == QLatin1String("addresses")) {
+        if (auto r = want(2); !r)
+            return r;
+        const AddressFormat *format = AddressFormat::byKey(t.at(1).text);
+        if (!format)
+            return error(QStringLiteral("unknown address format '%1' (canopen or parameter)")
+                             .arg(t.at(1).text));
+        m_set.addressFormat = format;
     } else if (key == QLatin1String("revision")) {
         if (auto r = want(2); !r)
             return r;
@@ -291,11 +299,13 @@ Result<void> Parser::entry(const QList<Token> &t)
                                     "\"UNIT\" (%1 of %2 objects read)")
                          .arg(m_set.size())
                          .arg(m_expected));
-    const auto address = ObjectAddress::parse(t.at(0).text);
+    const AddressFormat &format = *m_set.addressFormat;
+    const auto address = format.parse(t.at(0).text);
     if (!address)
-        return error(QStringLiteral("bad address '%1'").arg(t.at(0).text));
+        return error(QStringLiteral("bad address '%1' (%2 addresses are written like %3)")
+                         .arg(t.at(0).text, format.key(), format.example()));
     if (m_seen.contains(address.value()))
-        return error(QStringLiteral("%1 appears twice").arg(address->toString()));
+        return error(QStringLiteral("%1 appears twice").arg(format.format(*address)));
     const auto type = datatype::fromName(t.at(2).text);
     if (!type)
         return error(QStringLiteral("unknown type '%1'").arg(t.at(2).text));
@@ -307,7 +317,7 @@ Result<void> Parser::entry(const QList<Token> &t)
                 : QStringLiteral("a %1 value must not be quoted").arg(datatype::name(*type)));
     const auto raw = codec::fromText(*type, t.at(3).text);
     if (!raw)
-        return error(QStringLiteral("%1: %2").arg(address->toString(), raw.error().message()));
+        return error(QStringLiteral("%1: %2").arg(format.format(*address), raw.error().message()));
     m_seen.insert(address.value());
     m_set.insert({ address.value(), t.at(1).text, *type, raw.value(), t.at(4).text });
     return {};
