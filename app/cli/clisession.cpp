@@ -88,6 +88,14 @@ Result<void> Session::open(const QString &uriText)
             return mode.error();
         plan.value().uri.setQueryValue(QStringLiteral("sdo"), m_options.sdoMode);
     }
+    if (m_options.ram) {
+        // --ram is the URI's ?ram given on the command line.
+        const ProtocolInfo *protocol = m_registry.find(plan->uri.scheme());
+        if (!protocol || protocol->key != u"vabus")
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("--ram needs a vabus:// URI"));
+        plan.value().uri.setQueryValue(QStringLiteral("ram"), QString());
+    }
     auto created = m_registry.create(plan.value());
     if (!created)
         return created.error();

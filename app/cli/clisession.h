@@ -42,6 +42,7 @@ struct Options
     bool hex = false;
     bool verbose = false;
     QString sdoMode; // --sdo for CANopen connections: auto, expedited, segmented, block
+    bool ram = false; // --ram for VABus connections: writes go to the RAM data sets (DS + 5)
 };
 
 // One connection for the duration of a command: opens it (waiting at most connectTimeoutMs),

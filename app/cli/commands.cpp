@@ -3,6 +3,7 @@
 #include "commands_description.h"
 #include "commands_morse.h"
 #include "commands_motion.h"
+#include "commands_nm17x.h"
 #include "commands_params.h"
 #include "commands_record.h"
 
@@ -118,7 +119,11 @@ int read(Context &c)
     QByteArray bytes = raw.toByteArray();
     while (bytes.endsWith('\0'))
         bytes.chop(1);
-    const QString text = !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
+    // Fixed-point parameters (inverters) print their physical value with its unit: "10.00 Hz".
+    const bool physical = target->def && target->def->decimals >= 0
+        && datatype::isInteger(target->type) && format == codec::TextFormat::Decimal;
+    const QString text = physical ? target->def->displayText(raw, format)
+        : !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
         ? QString::fromUtf8(bytes)
         : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
@@ -205,6 +210,13 @@ const QList<Command> &commands()
           "store|fastscan",
           "CiA 305 layer setting services", 2, 3, lss },
         { "pdo", "URI", "print the node's PDO configuration", 1, 1, pdo },
+        { "nm17x",
+          "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
+          "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
+          "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
+          "WORD | watch [--seconds S]",
+          "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)", 2, 4,
+          nm17x, nm17xOptions },
         { "dcf", "URI -o FILE", "write a DCF of the device's current values (?eds= needed)", 1, 1,
           dcf },
         { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,

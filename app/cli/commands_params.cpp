@@ -1,7 +1,7 @@
 #include "commands_params.h"
 
-#include "core/parameterrunner.h"
 #include "core/printable.h"
+#include "parameters/parameterrunner.h"
 
 #include <QEventLoop>
 #include <QFileInfo>

@@ -38,6 +38,11 @@ struct ObjectDef
     QString unit;
     double factor = 1.0; // physical = raw * factor + offset
     double offset = 0.0;
+    // Fixed decimal places of a fixed-point parameter (inverter parameter lists: raw = value x
+    // 10^decimals, factor = 10^-decimals): its text is the physical value with exactly these
+    // decimals ("10.00"), and text typed for it is a physical value. -1: not a fixed-point
+    // parameter (text is the raw value).
+    int decimals = -1;
     QVariant defaultValue; // raw values; invalid = unknown / no limit
     QVariant minimum;
     QVariant maximum;
@@ -55,7 +60,8 @@ struct ObjectDef
     // object's address as `format` writes it.
     Result<QVariant> validate(const QVariant &value,
                               const AddressFormat &format = AddressFormat::canopen()) const;
-    // User text -> raw, accepting enumeration names as well as numbers.
+    // User text -> raw, accepting enumeration names as well as numbers (physical values for
+    // fixed-point parameters, see decimals).
     Result<QVariant> parseText(const QString &text,
                                const AddressFormat &format = AddressFormat::canopen()) const;
     // "1 (Profile Position)", "0x0427", "1200 mm"

@@ -56,10 +56,6 @@ public:
     // The device's own text for a code, else the CiA 301 error class ("voltage", ...).
     QString errorText(quint32 code) const;
 
-    // Our own JSON device description (resources/devices/*.json, format described there).
-    static Result<ObjectDictionary> loadDescription(const QString &path);
-    static Result<ObjectDictionary> parseDescription(const QByteArray &json, const QString &origin);
-
 private:
     QMap<ObjectAddress, ObjectDef> m_objects;
     QMap<quint32, ErrorCodeDef> m_errors;

@@ -5,7 +5,7 @@
 #include "commands.h"
 #include "commands_params.h"
 #include "commands_record.h"
-#include "core/parameterset.h"
+#include "parameters/parameterset.h"
 #include "core/valuecodec.h"
 #include "fakeconnection.h"
 

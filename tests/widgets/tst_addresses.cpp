@@ -2,15 +2,15 @@
 // whose parameters are decimal NUMBER:DATASET the editor shows "372:2" (not 0174:2), the
 // Read/Write box reads parameter 372 data set 2 for "372:2", the scope takes "372:2", and the
 // parameter comparison shows the set's format.
-#include "core/parameterset.h"
+#include "parameters/parameterset.h"
 #include "fakeconnection.h"
-#include "widgets/objectaccessbox.h"
-#include "widgets/odeditor.h"
-#include "widgets/odeditorbits.h"
-#include "widgets/odeditorfilter.h"
-#include "widgets/odeditormodel.h"
-#include "widgets/paramcomparemodel.h"
-#include "widgets/scopepage.h"
+#include "widgets/odeditor/objectaccessbox.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/odeditor/odeditorbits.h"
+#include "widgets/odeditor/odeditorfilter.h"
+#include "widgets/odeditor/odeditormodel.h"
+#include "widgets/parameters/paramcomparemodel.h"
+#include "widgets/scope/scopepage.h"
 
 #include <QLabel>
 #include <QLineEdit>
