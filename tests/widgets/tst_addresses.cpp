@@ -2,8 +2,8 @@
 // whose parameters are decimal NUMBER:DATASET the editor shows "372:2" (not 0174:2), the
 // Read/Write box reads parameter 372 data set 2 for "372:2", the scope takes "372:2", and the
 // parameter comparison shows the set's format.
-#include "parameters/parameterset.h"
 #include "fakeconnection.h"
+#include "parameters/parameterset.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/odeditor/odeditorbits.h"

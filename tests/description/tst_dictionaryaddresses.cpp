@@ -2,6 +2,7 @@
 // "addresses"), a connection takes its dictionary's format unless it knows better, and the
 // errors a dictionary or connection gives name objects in that format.
 #include "core/objectdictionary.h"
+#include "description/descriptionfile.h"
 #include "fakeconnection.h"
 #include "simulation/objectstore.h"
 
@@ -40,15 +41,15 @@ void TestDictionaryAddresses::dictionariesAreCanopenByDefault()
 {
     const ObjectDictionary empty;
     QCOMPARE(&empty.addressFormat(), &AddressFormat::canopen());
-    const auto dict = ObjectDictionary::parseDescription(description({}), QStringLiteral("d.json"));
+    const auto dict = parseJsonDescription(description({}), QStringLiteral("d.json"));
     QVERIFY2(dict, qPrintable(dict.error().toString()));
     QCOMPARE(&dict->addressFormat(), &AddressFormat::canopen());
 }
 
 void TestDictionaryAddresses::descriptionSaysParameter()
 {
-    const auto dict = ObjectDictionary::parseDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY2(dict, qPrintable(dict.error().toString()));
     QCOMPARE(&dict->addressFormat(), &AddressFormat::parameter());
     QVERIFY(dict->contains({ 372, 2 }));
@@ -59,8 +60,8 @@ void TestDictionaryAddresses::descriptionSaysParameter()
 
 void TestDictionaryAddresses::descriptionWithAnUnknownFormatIsRefused()
 {
-    const auto dict = ObjectDictionary::parseDescription(description(R"("addresses": "octal",)"),
-                                                         QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "octal",)"), QStringLiteral("d.json"));
     QVERIFY(!dict);
     QCOMPARE(dict.error().kind(), Error::Kind::Malformed);
     QVERIFY2(dict.error().message().contains(QLatin1String("d.json")),
@@ -88,8 +89,8 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
     };
     Plain connection;
     QCOMPARE(&connection.addressFormat(), &AddressFormat::canopen());
-    const auto dict = ObjectDictionary::parseDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     connection.setDictionary(*dict);
     QCOMPARE(&connection.addressFormat(), &AddressFormat::parameter());
@@ -97,8 +98,8 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
 
 void TestDictionaryAddresses::valueErrorsNameTheAddressInTheFormat()
 {
-    const auto dict = ObjectDictionary::parseDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     const ObjectDef *def = dict->find({ 372, 2 });
     QVERIFY(def);
@@ -136,8 +137,8 @@ void TestDictionaryAddresses::accessErrorsNameTheAddressInTheFormat()
 
 void TestDictionaryAddresses::simulatedStoreSpeaksItsDictionaryFormat()
 {
-    const auto dict = ObjectDictionary::parseDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     const sim::ObjectStore store(*dict, {});
     const auto missing = store.checkRead({ 373, 0 });
