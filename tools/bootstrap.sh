@@ -30,6 +30,8 @@ packages=(
     fonts-dejavu-core xvfb xauth
     python3 librsvg2-bin                                 # man pages from --help, PNG icons
     desktop-file-utils appstream bash-completion         # tst_packaging's validators
+    python3-can                                          # a third-party CANopen master in tests
+    clang-format                                         # tst_format
 )
 # The .deb: dpkg-shlibdeps (dpkg-dev) and file for its dependencies, lintian to check it.
 if [ "$mode" = deb ]; then
@@ -50,7 +52,7 @@ fi
 
 build_dir=${BUILD_DIR:-build}
 werror=OFF
-[ "${CI:-}" = "true" ] && werror=ON
+[ "${CI:-}" = "true" ] || [ "${DRIVEBENCH_WERROR:-}" = "ON" ] && werror=ON
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEBENCH_WERROR="$werror"
 cmake --build "$build_dir" --parallel "$(nproc)"
 

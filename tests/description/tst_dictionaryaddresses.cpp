@@ -2,6 +2,7 @@
 // "addresses"), a connection takes its dictionary's format unless it knows better, and the
 // errors a dictionary or connection gives name objects in that format.
 #include "core/objectdictionary.h"
+#include "description/descriptionfile.h"
 #include "fakeconnection.h"
 
 #include <QSignalSpy>
@@ -38,14 +39,14 @@ void TestDictionaryAddresses::dictionariesAreCanopenByDefault()
 {
     const ObjectDictionary empty;
     QCOMPARE(&empty.addressFormat(), &AddressFormat::canopen());
-    const auto dict = ObjectDictionary::parseDescription(description({}), QStringLiteral("d.json"));
+    const auto dict = parseJsonDescription(description({}), QStringLiteral("d.json"));
     QVERIFY2(dict, qPrintable(dict.error().toString()));
     QCOMPARE(&dict->addressFormat(), &AddressFormat::canopen());
 }
 
 void TestDictionaryAddresses::descriptionSaysParameter()
 {
-    const auto dict = ObjectDictionary::parseDescription(
+    const auto dict = parseJsonDescription(
         description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY2(dict, qPrintable(dict.error().toString()));
     QCOMPARE(&dict->addressFormat(), &AddressFormat::parameter());
@@ -57,7 +58,7 @@ void TestDictionaryAddresses::descriptionSaysParameter()
 
 void TestDictionaryAddresses::descriptionWithAnUnknownFormatIsRefused()
 {
-    const auto dict = ObjectDictionary::parseDescription(description(R"("addresses": "octal",)"),
+    const auto dict = parseJsonDescription(description(R"("addresses": "octal",)"),
                                                          QStringLiteral("d.json"));
     QVERIFY(!dict);
     QCOMPARE(dict.error().kind(), Error::Kind::Malformed);
@@ -86,7 +87,7 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
     };
     Plain connection;
     QCOMPARE(&connection.addressFormat(), &AddressFormat::canopen());
-    const auto dict = ObjectDictionary::parseDescription(
+    const auto dict = parseJsonDescription(
         description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     connection.setDictionary(*dict);
@@ -95,7 +96,7 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
 
 void TestDictionaryAddresses::valueErrorsNameTheAddressInTheFormat()
 {
-    const auto dict = ObjectDictionary::parseDescription(
+    const auto dict = parseJsonDescription(
         description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     const ObjectDef *def = dict->find({ 372, 2 });
