@@ -1,8 +1,9 @@
 // drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
-//                            [--reject-write INDEX:SUB ...]
+//                            [--reject-write INDEX:SUB ...] [--fault CODE] [--control]
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
 #include "../common/demodrive.h"
+#include "../common/simconsole.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
@@ -15,6 +16,7 @@
 #include <QTextStream>
 
 #include <csignal>
+#include <optional>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -39,6 +41,31 @@ void quitOnSignals(QCoreApplication &app)
     QObject::connect(notifier, &QSocketNotifier::activated, &app, &QCoreApplication::quit);
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
+}
+
+// --control: one console command per line on standard input, answers on standard output.
+void readControlLines(QCoreApplication &app, app::SimConsole *console, QTextStream &out)
+{
+    auto *notifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, &app);
+    QObject::connect(console, &app::SimConsole::answered, &app,
+                     [&out](const QString &line) { out << line << Qt::endl; });
+    QObject::connect(notifier, &QSocketNotifier::activated, console,
+                     [notifier, console, pending = QByteArray()]() mutable {
+                         char buffer[512];
+                         const auto n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+                         if (n <= 0) {
+                             notifier->setEnabled(
+                                 false); // end of input: the simulator keeps serving
+                             return;
+                         }
+                         pending.append(buffer, n);
+                         qsizetype nl;
+                         while ((nl = pending.indexOf('\n')) >= 0) {
+                             const QString line = QString::fromUtf8(pending.left(nl));
+                             pending.remove(0, nl + 1);
+                             console->execute(line);
+                         }
+                     });
 }
 
 } // namespace
@@ -101,7 +128,20 @@ int main(int argc, char *argv[])
                                     "movingcap: writes to this object fail with a device error "
                                     "(failure mode for tests; repeatable)."),
         QStringLiteral("INDEX:SUB"));
-    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite });
+    const QCommandLineOption fault(
+        QStringLiteral("fault"),
+        QCoreApplication::translate("sim",
+                                    "movingcap: the drive starts in fault with this EMCY code "
+                                    "(hexadecimal, e.g. 7121)."),
+        QStringLiteral("CODE"));
+    const QCommandLineOption control(
+        QStringLiteral("control"),
+        QCoreApplication::translate(
+            "sim",
+            "movingcap: read commands from standard input while serving, one a line: state, "
+            "standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on."));
+    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
+                        fault, control });
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
@@ -216,8 +256,19 @@ int main(int argc, char *argv[])
         }
         rejected.insert(*address);
     }
+    std::optional<quint16> startFault;
+    if (parser.isSet(fault)) {
+        const auto code = app::SimConsole::parseFaultCode(parser.value(fault));
+        if (!code) {
+            err << "drivebench-sim: --fault: " << code.error().message() << Qt::endl;
+            return 2;
+        }
+        startFault = *code;
+    }
     app::DemoDrive demo(presets);
     demo.drive().setRejectedWrites(rejected);
+    if (startFault)
+        demo.drive().injectFault(*startFault);
     if (refgo >= 0) {
         if (auto listening = demo.startRefgo(quint16(refgo)); !listening) {
             err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
@@ -234,6 +285,9 @@ int main(int argc, char *argv[])
         out << "movingcap: SLCAN listening on 127.0.0.1:" << demo.slcanPort() << " ("
             << demo.slcanUri() << ")" << Qt::endl;
     }
+    app::SimConsole console(&demo);
+    if (parser.isSet(control))
+        readControlLines(app, &console, out);
     quitOnSignals(app);
     return app.exec();
 }
