@@ -47,7 +47,10 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
             return;
         Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
         if (isConnected())
-            Q_EMIT supervisionLost(QStringLiteral("heartbeat of node %1 lost").arg(node));
+            Q_EMIT supervisionLost(
+                QStringLiteral("heartbeat lost: node %1 silent for more than %2 ms")
+                    .arg(node)
+                    .arg(m_network->monitor()->consumerTime(node)));
     });
 }
 

@@ -31,6 +31,7 @@ Cia402Axis::Cia402Axis(DeviceConnection *connection, QObject *parent)
     m_pollTimer.setSingleShot(true);
     connect(&m_pollTimer, &QTimer::timeout, this, &Cia402Axis::pollStatus);
     connect(connection, &DeviceConnection::stateChanged, this, &Cia402Axis::onConnectionState);
+    connect(connection, &DeviceConnection::supervisionLost, this, &AxisInterface::supervisionLost);
     if (connection->dictionary().contains(obj::ProfileJerk))
         m_features |= Feature::Jerk;
     if (connection->isConnected())

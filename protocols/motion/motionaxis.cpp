@@ -22,6 +22,7 @@ MotionAxis::MotionAxis(AxisInterface *axis, QObject *parent)
     });
     connect(axis, &AxisInterface::statusChanged, this, &MotionAxis::onStatus);
     connect(axis, &AxisInterface::connectionLost, this, &MotionAxis::onConnectionLost);
+    connect(axis, &AxisInterface::supervisionLost, this, &MotionAxis::onSupervisionLost);
 }
 
 MotionAxis::~MotionAxis() = default;
@@ -357,6 +358,15 @@ void MotionAxis::onConnectionLost(const Error &error)
     m_lastError = cause;
     if (m_state != AxisState::Disabled)
         setState(AxisState::ErrorStop);
+}
+
+// The drive may still hear us (only its heartbeat is missing): it is told to stop, and the
+// running command ends with the cause. An axis at rest is left alone.
+void MotionAxis::onSupervisionLost(const QString &reason)
+{
+    if (!m_active && !motionInProgress())
+        return;
+    emergencyStop(Error(Error::Kind::Disconnected, reason), true);
 }
 
 void MotionAxis::abortActive(MotionCommand::Status status, const Error &error)

@@ -79,6 +79,7 @@ private:
     void onStatus();
     void evaluateActive(const AxisInterface::Status &s);
     void onConnectionLost(const Error &error);
+    void onSupervisionLost(const QString &reason);
     void emergencyStop(const Error &cause, bool asError);
     void abortActive(MotionCommand::Status status, const Error &error);
     void setState(AxisState state);

@@ -6,6 +6,7 @@
 // and axis through its control console, so test and pipe latencies are not part of the figures.
 #include "clirun.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
@@ -21,6 +22,7 @@ private Q_SLOTS:
     void cleanupTestCase();
     void jogEndsByItself_data();
     void jogEndsByItself();
+    void moveEndsWithHeartbeatLost();
     void consoleRefusesBadCommands();
 
 private:
@@ -199,6 +201,48 @@ void TestCliFailsafe::jogEndsByItself()
     cli({ QStringLiteral("reset"), u });
     r = cli({ QStringLiteral("disable"), u });
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+}
+
+// The drive beats every 100 ms (1017h), so drivebench-cli watches it with 200 ms; when it falls
+// silent mid-move, the move ends with the cause and the drive is told to stop.
+void TestCliFailsafe::moveEndsWithHeartbeatLost()
+{
+    const QString u = uri(QStringLiteral("canopen"));
+    Run r = cli({ QStringLiteral("write"), u, QStringLiteral("1017:0"), QStringLiteral("100") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    cli({ QStringLiteral("reset"), u });
+    r = cli({ QStringLiteral("enable"), u });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const double from = sample(QStringLiteral("state"), QStringLiteral("state")).position;
+    QProcess move;
+    move.start(QStringLiteral(DRIVEBENCH_CLI),
+               { QStringLiteral("move"), u, QStringLiteral("--abs"), QString::number(from + 500000),
+                 QStringLiteral("--vel"), QStringLiteral("2000"), QStringLiteral("--acc"),
+                 QStringLiteral("20000"), QStringLiteral("--dec"), QStringLiteral("20000") });
+    QVERIFY(move.waitForStarted());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        qAbs(sample(QStringLiteral("state"), QStringLiteral("state")).velocity - 2000) < 20, 10000);
+    QElapsedTimer since;
+    since.start();
+    QCOMPARE(ask(QStringLiteral("heartbeat off"), QStringLiteral("heartbeat")),
+             QStringLiteral("heartbeat off"));
+    QVERIFY(move.waitForFinished(5000));
+    const qint64 endedMs = since.elapsed();
+    const QString err = QString::fromUtf8(move.readAllStandardError());
+    QVERIFY2(move.exitCode() != 0, qPrintable(err));
+    QVERIFY2(err.contains(QLatin1String("heartbeat lost: node 50 silent for more than 200 ms")),
+             qPrintable(err));
+    const Sample stood = sample(QStringLiteral("standstill"), QStringLiteral("standstill"), 5000);
+    QVERIFY2(stood.ok, qPrintable(stood.line));
+    qInfo("move ended %lld ms after the heartbeat stopped (consumer time 200 ms): %s", endedMs,
+          qPrintable(err.trimmed()));
+    QCOMPARE(ask(QStringLiteral("heartbeat on"), QStringLiteral("heartbeat")),
+             QStringLiteral("heartbeat on"));
+    QCOMPARE(
+        cli({ QStringLiteral("write"), u, QStringLiteral("1017:0"), QStringLiteral("0") }).exitCode,
+        0);
+    cli({ QStringLiteral("reset"), u });
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
 }
 
 void TestCliFailsafe::consoleRefusesBadCommands()
