@@ -114,6 +114,16 @@ AxisSnapshot MotionAxis::snapshot() const
     return a;
 }
 
+Plan MotionAxis::preview(CommandKind kind, const MoveParams &params) const
+{
+    const AxisSnapshot axis = snapshot();
+    MoveParams inputs = params;
+    if (usesOverride(kind))
+        inputs.overridePercent *= m_override / 100.0;
+    return planCommand(kind, inputs, m_config, axis,
+                       m_tracker.origin(axis.position, m_config.positionWindow));
+}
+
 void MotionAxis::startMotion(MotionCommand *command)
 {
     const quint64 generation = ++command->m_generation;
