@@ -23,6 +23,7 @@ private Q_SLOTS:
     void jogEndsByItself_data();
     void jogEndsByItself();
     void moveEndsWithHeartbeatLost();
+    void faultsInjectedAtStartAndWhileRunning();
     void consoleRefusesBadCommands();
 
 private:
@@ -243,6 +244,47 @@ void TestCliFailsafe::moveEndsWithHeartbeatLost()
         0);
     cli({ QStringLiteral("reset"), u });
     QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+// --fault CODE starts the drive in fault; "fault CODE" on the console faults it while it runs.
+// 603Fh holds the last EMCY code, and a fault reset clears it from the drive state.
+void TestCliFailsafe::faultsInjectedAtStartAndWhileRunning()
+{
+    QProcess faulted;
+    const QString banner = db::test::startAndReadBanner(
+        faulted, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"), QStringLiteral("0"),
+          QStringLiteral("--fault"), QStringLiteral("4210") },
+        1);
+    const quint16 port = db::test::listeningPort(banner, QStringLiteral("RefGo"));
+    QVERIFY2(port, qPrintable(banner));
+    const QString at = QStringLiteral("refgo://127.0.0.1:%1").arg(port);
+    Run r = cli({ QStringLiteral("read"), at, QStringLiteral("603F:0") });
+    QCOMPARE(r.out.trimmed().toInt(), 0x4210);
+    QCOMPARE(cli({ QStringLiteral("read"), at, QStringLiteral("6041:0") }).out.trimmed().toInt()
+                 & 0x4F,
+             0x08); // Fault
+    faulted.terminate();
+    QVERIFY(faulted.waitForFinished(5000));
+    QCOMPARE(db::test::runProgram(QStringLiteral(DRIVEBENCH_SIM),
+                                  { QStringLiteral("movingcap"), QStringLiteral("--refgo-port"),
+                                    QStringLiteral("0"), QStringLiteral("--fault"),
+                                    QStringLiteral("zz") },
+                                  5000)
+                 .exitCode,
+             2);
+
+    const QString u = uri(QStringLiteral("canopen"));
+    cli({ QStringLiteral("reset"), u });
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    QCOMPARE(ask(QStringLiteral("fault 7121"), QStringLiteral("fault")),
+             QStringLiteral("fault 7121"));
+    QCOMPARE(cli({ QStringLiteral("read"), u, QStringLiteral("603F:0") }).out.trimmed().toInt(),
+             0x7121);
+    QTRY_COMPARE(sample(QStringLiteral("state"), QStringLiteral("state")).statusword & 0x4F, 0x08);
+    r = cli({ QStringLiteral("reset"), u });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(sample(QStringLiteral("state"), QStringLiteral("state")).statusword & 0x4F, 0x40);
 }
 
 void TestCliFailsafe::consoleRefusesBadCommands()
