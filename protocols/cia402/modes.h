@@ -58,10 +58,10 @@ struct PositionSetPoint
     quint32 velocity = 0;
     quint32 acceleration = 0;
     quint32 deceleration = 0;
-    std::optional<ObjectAddress> jerkObject; // written with jerk when set (profileJerk())
-    quint32 jerk = 0;
     bool relative = false; // controlword bit 6
     bool immediate = true; // bit 5: replace the running move (63) instead of queueing (31)
+    std::optional<ObjectAddress> jerkObject; // written with jerk when set (profileJerk())
+    quint32 jerk = 0;
 };
 
 struct HomingSetPoint

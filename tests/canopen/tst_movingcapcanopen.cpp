@@ -231,6 +231,11 @@ void TestMovingCapCanopen::lifeGuardingEndsInTheAbortConnectionReaction()
     QVERIFY(exchange("r7321\r", "t73217F\r").endsWith("t73217F\r"));
     QVERIFY(lost.wait(2000));
     QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(), after, 2000);
+    // One EMCY for the event (CiA 301 8130h, error register 11h), whatever the reaction.
+    QByteArray got;
+    QTRY_VERIFY((got += m_client->readAll()).contains("t0B28"));
+    QCOMPARE(got.count("t0B28"), 1);
+    QVERIFY2(got.contains("t0B2830811"), got.constData());
     const quint32 status = quint32(m_drive->read({ 0x1002, 0 }).value().toULongLong());
     QCOMPARE(bool(status & (1u << 5)), after == cia402::State::Fault);
     if (after == cia402::State::Fault)
