@@ -1,7 +1,7 @@
 #include "simconsole.h"
 
 #include "demodrive.h"
-#include "simulation/movingcapdrive.h"
+#include "devices/movingcap/movingcapdrive.h"
 
 namespace db::app {
 

@@ -5,7 +5,7 @@
 #include "canopen/canopenconnection.h"
 #include "canopen/heartbeatproducer.h"
 #include "canopen/sdoclient.h"
-#include "core/parameterrunner.h"
+#include "parameters/parameterrunner.h"
 #include "scriptedcanbus.h"
 #include "transport/qtcanbus.h"
 

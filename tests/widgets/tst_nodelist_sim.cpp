@@ -7,8 +7,8 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "resources/builtindescriptions.h"
-#include "widgets/nodelist.h"
-#include "widgets/nodelistmodel.h"
+#include "widgets/canopen/nodelist.h"
+#include "widgets/canopen/nodelistmodel.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
