@@ -84,6 +84,21 @@ struct RestoreSupervision
     }
 };
 
+// Arms the drive's own watch of this process where the connection offers one (CANopen node
+// guarding or heartbeat with 6007h); null where none exists.
+std::unique_ptr<canopen::DriveSupervision> superviseDrive(Context &c, Axis &axis)
+{
+    DeviceConnection *conn = axis.session.connection();
+    if (canopen::DriveSupervision::modeFor(conn) == canopen::DriveSupervision::Mode::None)
+        return nullptr;
+    auto supervision = std::make_unique<canopen::DriveSupervision>(conn);
+    if (auto armed = Reply::wait(supervision->arm()); !armed)
+        c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
+    else if (c.options.verbose)
+        c.out << "supervision: " << supervision->description() << Qt::endl;
+    return supervision;
+}
+
 Result<double> number(Context &c, const QString &option)
 {
     bool ok = false;
@@ -203,11 +218,14 @@ QList<QCommandLineOption> motionOptions()
                            QStringLiteral("dist")),
         QCommandLineOption(kAdd, tr("move: distance from the last target (MC_MoveAdditive)."),
                            QStringLiteral("dist")),
-        QCommandLineOption(kVel, tr("move, jog, home: velocity (units/s)."), QStringLiteral("v")),
+        QCommandLineOption(kVel, tr("move, jog, velocity, home: velocity (units/s)."),
+                           QStringLiteral("v")),
         QCommandLineOption(kAcc, tr("move, jog, home: acceleration (units/s²)."),
                            QStringLiteral("a")),
-        QCommandLineOption(kDec, tr("move, jog: deceleration (units/s²)."), QStringLiteral("d")),
-        QCommandLineOption(kTime, tr("jog: how long to jog (ms)."), QStringLiteral("ms")),
+        QCommandLineOption(kDec, tr("move, jog, velocity, halt, stop: deceleration (units/s²)."),
+                           QStringLiteral("d")),
+        QCommandLineOption(kTime, tr("jog, velocity: how long to move (ms)."),
+                           QStringLiteral("ms")),
         QCommandLineOption(kWait,
                            tr("motion commands: longest wait for the end (ms, default "
                               "60000)."),
@@ -348,15 +366,7 @@ int jog(Context &c)
     }
     p.jerk = axis.model->config().maxJerk;
     // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
-    DeviceConnection *conn = axis.session.connection();
-    std::unique_ptr<canopen::DriveSupervision> supervision;
-    if (canopen::DriveSupervision::modeFor(conn) != canopen::DriveSupervision::Mode::None) {
-        supervision = std::make_unique<canopen::DriveSupervision>(conn);
-        if (auto armed = Reply::wait(supervision->arm()); !armed)
-            c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
-        else if (c.options.verbose)
-            c.out << "supervision: " << supervision->description() << Qt::endl;
-    }
+    const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
     // In leases renewed while this process runs: killed, frozen or cut off, it leaves a drive
     // that brakes by itself at most LeasedMove::leaseTimeMs() after the last renewal.
@@ -397,6 +407,109 @@ int jog(Context &c)
     }
     printPosition(c, axis);
     return ExitOk;
+}
+
+// MC_MoveVelocity for --time ms, then MC_Halt. Not leased: the drive's velocity mode runs until
+// told otherwise, so only drive-side supervision (CANopen) stops it if this process dies.
+int velocity(Context &c)
+{
+    if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("velocity needs --vel V (signed) and --time MS")));
+    const auto v = number(c, kVel);
+    const auto t = number(c, kTime);
+    if (!v || !t)
+        return fail(c, !v ? v.error() : t.error());
+    if (*t <= 0 || *t > kDefaultWaitMs)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.velocity = *v;
+    p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
+    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    for (const auto &[name, field] :
+         { std::pair { kAcc, &p.acceleration }, { kDec, &p.deceleration } }) {
+        if (!c.parser->isSet(name))
+            continue;
+        const auto x = number(c, name);
+        if (!x)
+            return fail(c, x.error());
+        *field = *x;
+    }
+    p.jerk = axis.model->config().maxJerk;
+    const auto supervision = superviseDrive(c, axis);
+    const RestoreSupervision restore { supervision.get(), c };
+    if (!supervision)
+        c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
+                 "drivebench-cli dies on this connection (jog moves in leases)"
+              << Qt::endl;
+    MotionCommand command(axis.model.get(), CommandKind::MoveVelocity);
+    command.setParams(p);
+    command.setExecute(true);
+    const QDeadlineTimer until { qint64(*t) };
+    waitUntil(
+        axis,
+        [&] {
+            return until.hasExpired() || command.status() == MotionCommand::Status::Error
+                || command.status() == MotionCommand::Status::CommandAborted;
+        },
+        int(*t) + kStopFlushMs);
+    if (command.status() == MotionCommand::Status::Error) {
+        if (command.refusal() != Refusal::None) {
+            c.err << "drivebench-cli: " << command.error().message() << Qt::endl;
+            return ExitDeviceError;
+        }
+        return fail(c, command.error());
+    }
+    MotionCommand halt(axis.model.get(), CommandKind::Halt);
+    halt.setParams(p);
+    if (const int rc = runToEnd(c, axis, halt); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+namespace {
+// MC_Halt / MC_Stop of whatever moves the drive (this or another tool): brakes with --dec or the
+// drive's 6084h and waits for standstill.
+int brake(Context &c, CommandKind kind)
+{
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    if (c.parser->isSet(kDec)) {
+        const auto d = number(c, kDec);
+        if (!d)
+            return fail(c, d.error());
+        p.deceleration = *d;
+    }
+    p.jerk = axis.model->config().maxJerk;
+    MotionCommand command(axis.model.get(), kind);
+    command.setParams(p);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+} // namespace
+
+int halt(Context &c)
+{
+    return brake(c, CommandKind::Halt);
+}
+
+int stop(Context &c)
+{
+    return brake(c, CommandKind::Stop);
 }
 
 } // namespace db::cli

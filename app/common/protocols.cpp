@@ -48,6 +48,8 @@ Result<void> checkCanopen(const ConnectionUri &uri)
 {
     if (auto node = canopen::CanopenConnection::nodeFromUri(uri); !node)
         return node.error();
+    if (auto tool = canopen::CanopenConnection::toolNodeFromUri(uri); !tool)
+        return tool.error();
     if (uri.host().isEmpty())
         return Error(Error::Kind::InvalidArgument,
                      QStringLiteral("%1 names no interface or host").arg(uri.toString()));

@@ -149,7 +149,7 @@ void MovingCapDrive::connectionLost()
         return;
     switch (m_store.integer({ 0x6007, 0 })) {
     case 1:
-        injectFault(faults::Communication);
+        injectFault(faults::AbortConnection);
         return;
     case 2:
         applyControlword(0); // disable voltage

@@ -4,6 +4,7 @@
 #include "cannetwork.h"
 #include "canopenlogging.h"
 #include "emcyconsumer.h"
+#include "heartbeatproducer.h"
 #include "nmtmaster.h"
 #include "nodemonitor.h"
 #include "sdoclient.h"
@@ -22,6 +23,7 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
     , m_blockEnabled(uri.queryValue(QStringLiteral("block")) == u"1")
     , m_nodeResult(nodeFromUri(uri))
     , m_node(m_nodeResult.valueOr(0))
+    , m_toolNodeResult(toolNodeFromUri(uri))
     , m_probe(uri.queryValue(QStringLiteral("probe")) == u"1")
     , m_sdoModeResult(sdoModeFromText(uri.queryValue(QStringLiteral("sdo"))))
     , m_sdoMode(m_sdoModeResult.valueOr(SdoClient::Mode::Auto))
@@ -45,7 +47,10 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
             return;
         Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
         if (isConnected())
-            Q_EMIT supervisionLost(QStringLiteral("heartbeat of node %1 lost").arg(node));
+            Q_EMIT supervisionLost(
+                QStringLiteral("heartbeat lost: node %1 silent for more than %2 ms")
+                    .arg(node)
+                    .arg(m_network->monitor()->consumerTime(node)));
     });
 }
 
@@ -133,6 +138,22 @@ Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
     return NodeId(*node);
 }
 
+Result<NodeId> CanopenConnection::toolNodeFromUri(const ConnectionUri &uri)
+{
+    const QString key = QStringLiteral("toolnode");
+    if (!uri.hasQuery(key))
+        return HeartbeatProducer::kDefaultNodeId;
+    const auto tool = uri.queryInt(key, kMinNodeId, kMaxNodeId);
+    if (!tool)
+        return tool.error();
+    if (const auto node = nodeFromUri(uri); node && *node == *tool)
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("?toolnode=%1 is the drive's own node id (?node=%1); the tool "
+                                    "needs a node id of its own on the bus")
+                         .arg(*tool));
+    return NodeId(*tool);
+}
+
 Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
 {
     if (text.isEmpty() || text == u"auto")
@@ -150,12 +171,15 @@ Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
 
 void CanopenConnection::doOpen()
 {
-    if (!m_nodeResult || !m_sdoModeResult) {
+    if (!m_nodeResult || !m_sdoModeResult || !m_toolNodeResult) {
         setState(State::Disconnected,
-                 !m_nodeResult ? m_nodeResult.error() : m_sdoModeResult.error());
+                 !m_nodeResult          ? m_nodeResult.error()
+                     : !m_sdoModeResult ? m_sdoModeResult.error()
+                                        : m_toolNodeResult.error());
         return;
     }
     m_network->setDictionary(m_node, dictionary());
+    m_network->heartbeat()->setNodeId(*m_toolNodeResult);
     Q_EMIT logLine(QStringLiteral("opening %1 for node %2").arg(m_network->name()).arg(m_node));
     if (!m_acquired) {
         m_acquired = true;

@@ -27,6 +27,15 @@ quint32 supportedModeBit(Mode mode)
     return 0;
 }
 
+std::optional<ObjectAddress> profileJerk(const ObjectDictionary &dictionary)
+{
+    if (dictionary.contains(obj::ProfileJerkArray))
+        return obj::ProfileJerkArray;
+    if (dictionary.contains(obj::ProfileJerkValue))
+        return obj::ProfileJerkValue;
+    return std::nullopt;
+}
+
 namespace {
 QVariant i64(qint64 v)
 {
@@ -46,6 +55,8 @@ Sequence *profilePosition(DeviceConnection *c, const PositionSetPoint &sp, QObje
     s->write(obj::ProfileVelocity, i64(sp.velocity));
     s->write(obj::ProfileAcceleration, i64(sp.acceleration));
     s->write(obj::ProfileDeceleration, i64(sp.deceleration));
+    if (sp.jerkObject)
+        s->write(*sp.jerkObject, i64(sp.jerk));
     s->write(obj::TargetPosition, i64(sp.target));
     const quint16 base = cw::EnableOperationCmd | (sp.relative ? cw::Relative : 0);
     s->controlword(base);

@@ -11,6 +11,7 @@ using namespace cia402;
 
 namespace {
 constexpr quint32 kRawAccelerationMin = 1;
+constexpr double kMaxRawJerk = 0xFFFFFFFFu; // UNSIGNED32
 // Digital inputs 60FDh (CiA 402-2): bit 0 negative, bit 1 positive limit switch.
 constexpr quint32 kNegativeLimitBit = 0x1;
 constexpr quint32 kPositiveLimitBit = 0x2;
@@ -31,7 +32,9 @@ Cia402Axis::Cia402Axis(DeviceConnection *connection, QObject *parent)
     m_pollTimer.setSingleShot(true);
     connect(&m_pollTimer, &QTimer::timeout, this, &Cia402Axis::pollStatus);
     connect(connection, &DeviceConnection::stateChanged, this, &Cia402Axis::onConnectionState);
-    if (connection->dictionary().contains(obj::ProfileJerk))
+    connect(connection, &DeviceConnection::supervisionLost, this, &AxisInterface::supervisionLost);
+    m_jerkObject = profileJerk(connection->dictionary());
+    if (m_jerkObject)
         m_features |= Feature::Jerk;
     if (connection->isConnected())
         m_pollTimer.start(0);
@@ -181,6 +184,11 @@ Reply *Cia402Axis::moveTo(double target, const Profile &profile)
     sp.velocity = quint32(std::llround(std::abs(profile.velocity)));
     sp.acceleration = accelerationRaw(profile.acceleration);
     sp.deceleration = accelerationRaw(profile.deceleration);
+    // A jerk beyond what the object holds means "not limited by us": the drive's own stays.
+    if (m_jerkObject && profile.jerk > 0 && profile.jerk < kMaxRawJerk) {
+        sp.jerkObject = m_jerkObject;
+        sp.jerk = quint32(std::llround(profile.jerk));
+    }
     sp.immediate = true; // a new command aborts the running one (stoeber_motion.md 2.4)
     return runMotion(profilePosition(m_connection, sp, this));
 }

@@ -22,6 +22,7 @@ MotionAxis::MotionAxis(AxisInterface *axis, QObject *parent)
     });
     connect(axis, &AxisInterface::statusChanged, this, &MotionAxis::onStatus);
     connect(axis, &AxisInterface::connectionLost, this, &MotionAxis::onConnectionLost);
+    connect(axis, &AxisInterface::supervisionLost, this, &MotionAxis::onSupervisionLost);
 }
 
 MotionAxis::~MotionAxis() = default;
@@ -111,6 +112,16 @@ AxisSnapshot MotionAxis::snapshot() const
     if (m_config.maxAcceleration > 0)
         a.brakingDistance = a.velocity * a.velocity / (2 * m_config.maxAcceleration);
     return a;
+}
+
+Plan MotionAxis::preview(CommandKind kind, const MoveParams &params) const
+{
+    const AxisSnapshot axis = snapshot();
+    MoveParams inputs = params;
+    if (usesOverride(kind))
+        inputs.overridePercent *= m_override / 100.0;
+    return planCommand(kind, inputs, m_config, axis,
+                       m_tracker.origin(axis.position, m_config.positionWindow));
 }
 
 void MotionAxis::startMotion(MotionCommand *command)
@@ -357,6 +368,15 @@ void MotionAxis::onConnectionLost(const Error &error)
     m_lastError = cause;
     if (m_state != AxisState::Disabled)
         setState(AxisState::ErrorStop);
+}
+
+// The drive may still hear us (only its heartbeat is missing): it is told to stop, and the
+// running command ends with the cause. An axis at rest is left alone.
+void MotionAxis::onSupervisionLost(const QString &reason)
+{
+    if (!m_active && !motionInProgress())
+        return;
+    emergencyStop(Error(Error::Kind::Disconnected, reason), true);
 }
 
 void MotionAxis::abortActive(MotionCommand::Status status, const Error &error)

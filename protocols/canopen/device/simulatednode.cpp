@@ -111,8 +111,10 @@ void SimulatedNode::init()
     m_errorControl.setNodeId(m_node);
     connect(&m_errorControl, &ErrorControlSlave::transmit, this, &SimulatedNode::transmit);
     connect(&m_errorControl, &ErrorControlSlave::lost, this, &SimulatedNode::onCommunicationError);
-    connect(&m_heartbeat, &QTimer::timeout, this,
-            [this] { send(cob::heartbeat(m_node), QByteArray(1, char(m_state))); });
+    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+        if (!m_heartbeatSilenced)
+            send(cob::heartbeat(m_node), QByteArray(1, char(m_state)));
+    });
     for (int n = 0; n < kPdoCount; ++n) {
         auto *timer = new QTimer(this);
         connect(timer, &QTimer::timeout, this, [this, n] { sendTpdo(n); });

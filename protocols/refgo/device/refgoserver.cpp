@@ -78,6 +78,11 @@ quint16 Server::port() const
 void Server::close()
 {
     d->server.close();
+    dropClients();
+}
+
+int Server::dropClients()
+{
     const auto sockets = d->clients.keys();
     d->clients.clear();
     for (QTcpSocket *socket : sockets) {
@@ -85,6 +90,7 @@ void Server::close()
         socket->abort();
         socket->deleteLater();
     }
+    return int(sockets.size());
 }
 
 int Server::clientCount() const

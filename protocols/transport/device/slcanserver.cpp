@@ -92,6 +92,11 @@ bool SlcanServer::isListening() const
 void SlcanServer::close()
 {
     d->server.close();
+    dropClients();
+}
+
+int SlcanServer::dropClients()
+{
     const auto sockets = d->clients.keys();
     d->clients.clear();
     for (QTcpSocket *socket : sockets) {
@@ -99,6 +104,7 @@ void SlcanServer::close()
         socket->abort();
         socket->deleteLater();
     }
+    return int(sockets.size());
 }
 
 int SlcanServer::clientCount() const
