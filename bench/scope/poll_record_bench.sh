@@ -11,10 +11,12 @@
 #              (an interval across a lost sample counts with its full error)
 #   length ms  how long the recording lasted (--duration asks for a whole number of seconds)
 # A first line per link gives its capacity: reads/s of one object at --rate-ms 0.
+# --rt runs the recorder (and the simulator it starts) with real-time priority (chrt -f 20, as
+# root): on a machine busy with other work this stands in for an idle one.
 #
 #   bench/scope/poll_record_bench.sh [--build DIR] [--cli PATH] [--sim PATH] [--uri URI]...
 #                                    [--runs N] [--duration S] [--rates "1 2"]
-#                                    [--objects "2 8"]
+#                                    [--objects "2 8"] [--rt]
 set -euo pipefail
 
 build=build
@@ -25,6 +27,7 @@ runs=5
 duration=3
 rates="1 2"
 counts="2 8"
+rt=()
 objects=(6064:0 6078:0 606C:0 6041:0 6061:0 607A:0 6081:0 6083:0)
 
 while (($#)); do
@@ -37,7 +40,8 @@ while (($#)); do
     --duration) duration=$2; shift 2 ;;
     --rates) rates=$2; shift 2 ;;
     --objects) counts=$2; shift 2 ;;
-    -h | --help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --rt) rt=(chrt -f 20); shift ;;
+    -h | --help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "poll_record_bench: unknown option $1 (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -55,7 +59,7 @@ trap cleanup EXIT
 
 if ((${#uris[@]} == 0)); then
     [[ -x $sim ]] || { echo "poll_record_bench: no drivebench-sim at $sim (--build or --sim)" >&2; exit 2; }
-    "$sim" movingcap --refgo-port 0 --slcan-port 0 >"$work/sim.log" 2>&1 &
+    "${rt[@]}" "$sim" movingcap --refgo-port 0 --slcan-port 0 >"$work/sim.log" 2>&1 &
     sim_pid=$!
     for _ in $(seq 100); do
         (($(grep -c 'listening on 127.0.0.1:' "$work/sim.log") >= 2)) && break
@@ -70,7 +74,7 @@ run_once() {
     local uri=$1 rate=$2 n=$3 csv=$work/run.csv args=()
     for o in "${objects[@]:0:n}"; do args+=(--obj "$o"); done
     local out
-    out=$("$cli" record "$uri" "${args[@]}" --rate-ms "$rate" --duration "$duration" -o "$csv" 2>/dev/null) || true
+    out=$("${rt[@]}" "$cli" record "$uri" "${args[@]}" --rate-ms "$rate" --duration "$duration" -o "$csv" 2>/dev/null) || true
     # "recorded N samples of K objects over T s[, L lost] -> FILE"
     local samples seconds lost
     samples=$(sed -n 's/^recorded \([0-9]*\) samples.*/\1/p' <<<"$out")
@@ -97,10 +101,10 @@ summary() {
         printf "%s (%s..%s)", m, v[1], v[NR] }'
 }
 
-echo "poll_record_bench: $runs runs of ${duration} s per case; median (min..max); $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
+echo "poll_record_bench: $runs runs of ${duration} s per case; median (min..max); $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)${rt:+; real-time priority}"
 printf '%-50s %5s %4s  %-24s %-24s %-24s %s\n' link rate objs "lost %" "p50 err %" "p99 err %" "length ms"
 for uri in "${uris[@]}"; do
-    cap=$("$cli" record "$uri" --obj "${objects[0]}" --rate-ms 0 --duration 1 -o "$work/cap.csv" 2>/dev/null |
+    cap=$("${rt[@]}" "$cli" record "$uri" --obj "${objects[0]}" --rate-ms 0 --duration 1 -o "$work/cap.csv" 2>/dev/null |
         sed -n 's/^recorded \([0-9]*\) samples.* over \([0-9.]*\) s.*/\1 \2/p' | awk '{ printf "%.0f", $1 / $2 }')
     echo "$uri: capacity ${cap:-?} reads/s"
     for rate in $rates; do
