@@ -1,7 +1,6 @@
 #include "pollschedule.h"
 
 #include <algorithm>
-#include <limits>
 
 namespace db::scope {
 
@@ -68,8 +67,9 @@ std::optional<qint64> PollSchedule::nextDueNs() const
     for (const Channel &c : m_channels) {
         if (c.inFlight)
             continue;
-        // A free-running channel without a read in flight is due at once.
-        const qint64 at = c.periodNs == 0 ? std::numeric_limits<qint64>::min() : c.nextSlotNs;
+        // A free-running channel without a read in flight is due at once (its slot stays at
+        // the start, which has passed).
+        const qint64 at = c.nextSlotNs;
         if (!next || at < *next)
             next = at;
     }

@@ -8,6 +8,13 @@ namespace db::scope {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kLongestS = 1e9; // ~31 years: beyond it a time would not fit in qint64 ns
+
+// Seconds on the time base as ns, for the deadline timers.
+qint64 toNs(double seconds)
+{
+    return qint64(std::llround(std::clamp(seconds, 0.0, kLongestS) * 1e9));
+}
 
 QString modeName(Recorder::Mode mode)
 {
@@ -208,7 +215,7 @@ void Recorder::start()
     m_startedAt = QDateTime::currentDateTimeUtc();
     setState(triggered ? State::Armed : State::Recording);
     if (!triggered && m_durationS > 0)
-        m_endTimer.wakeAt(m_clock, qint64(std::llround(m_durationS * 1e9)));
+        m_endTimer.wakeAt(m_clock, toNs(m_durationS));
     for (TraceSource *source : sources()) {
         if (source->isRunning())
             source->stop();
@@ -377,7 +384,7 @@ void Recorder::fire(double time)
     setState(State::Triggered);
     Q_EMIT triggered(time);
     // Ends the capture at triggerTime + post even when no further sample arrives.
-    m_postTimer.wakeAt(m_clock, qint64(std::llround((time + m_trigger.postTriggerS) * 1e9)) + 1);
+    m_postTimer.wakeAt(m_clock, toNs(time + m_trigger.postTriggerS) + 1);
 }
 
 void Recorder::completeCapture()

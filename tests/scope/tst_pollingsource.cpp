@@ -69,7 +69,11 @@ private Q_SLOTS:
         recorder.start();
         QVERIFY(source.isRunning());
         QVERIFY(m_drive->drive().go(20000).ok());
-        QTRY_VERIFY_WITH_TIMEOUT(recorder.buffer(0).size() >= 40, 10000);
+        // A running event loop, not QTRY's (it sleeps 10 ms between passes, and with the drive
+        // in this process every hop of a read would wait for the next pass).
+        QSignalSpy appended(&recorder, &Recorder::dataAppended);
+        while (recorder.buffer(0).size() < 40)
+            QVERIFY(appended.wait(10000));
         recorder.stop();
         QVERIFY(!source.isRunning());
 
