@@ -3,6 +3,7 @@
 #include "commands_description.h"
 #include "commands_morse.h"
 #include "commands_motion.h"
+#include "commands_nm17x.h"
 #include "commands_params.h"
 #include "commands_record.h"
 
@@ -33,6 +34,8 @@ int listProtocols(Context &c)
               << p.uriPattern.leftJustified(patternWidth + 2) << p.title;
         if (p.defaultPort >= 0)
             c.out << " (default port " << p.defaultPort << ")";
+        const AddressFormat &format = p.addressFormat ? *p.addressFormat : AddressFormat::canopen();
+        c.out << ", addresses like " << format.example();
         c.out << Qt::endl;
     }
     return ExitOk;
@@ -63,7 +66,7 @@ struct ObjectTarget
 
 Result<ObjectTarget> openObject(Context &c, Session &session)
 {
-    const auto address = ObjectAddress::parse(c.args.value(1));
+    const auto address = parseAddressFor(c.registry, c.args.value(0), c.args.value(1));
     if (!address)
         return address.error();
     if (auto opened = session.open(c.args.at(0)); !opened)
@@ -101,7 +104,8 @@ int read(Context &c)
     if (!value)
         return fail(
             c,
-            value.error().prefixed(QStringLiteral("reading %1").arg(target->address.toString())));
+            value.error().prefixed(
+                QStringLiteral("reading %1").arg(session.addressFormat().format(target->address))));
     if (!c.file.isEmpty())
         return saveValueToFile(c, target->type, value.value());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
@@ -115,14 +119,18 @@ int read(Context &c)
     QByteArray bytes = raw.toByteArray();
     while (bytes.endsWith('\0'))
         bytes.chop(1);
-    const QString text = !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
+    // Fixed-point parameters (inverters) print their physical value with its unit: "10.00 Hz".
+    const bool physical = target->def && target->def->decimals >= 0
+        && datatype::isInteger(target->type) && format == codec::TextFormat::Decimal;
+    const QString text = physical ? target->def->displayText(raw, format)
+        : !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
         ? QString::fromUtf8(bytes)
         : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
         : raw.toString();
     // Strings come from the device (e.g. 1008h): escaped, so that one value stays one line.
     if (c.options.verbose) {
-        c.out << target->address.toString() << ' '
+        c.out << session.addressFormat().format(target->address) << ' '
               << printable(target->def ? target->def->name : QStringLiteral("(unknown object)"))
               << " = " << printable(target->def ? target->def->displayText(raw, format) : text)
               << Qt::endl;
@@ -151,10 +159,11 @@ int write(Context &c)
     if (auto written = session.write(target->address, raw.value()); !written)
         return fail(
             c,
-            written.error().prefixed(QStringLiteral("writing %1").arg(target->address.toString())));
+            written.error().prefixed(
+                QStringLiteral("writing %1").arg(session.addressFormat().format(target->address))));
     if (c.options.verbose)
-        c.out << target->address.toString() << " <- " << codec::toText(target->type, raw.value())
-              << " ok" << Qt::endl;
+        c.out << session.addressFormat().format(target->address) << " <- "
+              << codec::toText(target->type, raw.value()) << " ok" << Qt::endl;
     return ExitOk;
 }
 
@@ -184,9 +193,11 @@ const QList<Command> &commands()
 {
     static const QList<Command> list = {
         { "list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols },
-        { "read", "URI INDEX:SUB", "read one object, e.g. read refgo://192.168.2.150 6041:0", 2, 2,
-          read },
-        { "write", "URI INDEX:SUB VALUE|--file FILE",
+        { "read", "URI ADDRESS",
+          "read one object, e.g. read refgo://192.168.2.150 6041:0 (ADDRESS as the protocol "
+          "writes it: list-protocols shows an example)",
+          2, 2, read },
+        { "write", "URI ADDRESS VALUE|--file FILE",
           "write one object, e.g. write refgo://HOST 6083:0 2000", 2, 3, write },
         { "refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
           2, refgo },
@@ -199,13 +210,20 @@ const QList<Command> &commands()
           "store|fastscan",
           "CiA 305 layer setting services", 2, 3, lss },
         { "pdo", "URI", "print the node's PDO configuration", 1, 1, pdo },
+        { "nm17x",
+          "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
+          "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
+          "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
+          "WORD | watch [--seconds S]",
+          "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)", 2, 4,
+          nm17x, nm17xOptions },
         { "dcf", "URI -o FILE", "write a DCF of the device's current values (?eds= needed)", 1, 1,
           dcf },
         { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,
           edsCheck },
         { "backup", "URI -o FILE", "save every storable object of the device to a parameter set", 1,
           1, backup, paramsOptions },
-        { "restore", "URI FILE [--only INDEX:SUB,...] [--store] [--no-verify]",
+        { "restore", "URI FILE [--only ADDRESS,...] [--store] [--no-verify]",
           "write a parameter set (or its selected rows) safely, verify, optionally store", 2, 2,
           restore, paramsOptions },
         { "diff", "A B", "compare two parameter sets, each a URI or a file; exit 1 if they differ",

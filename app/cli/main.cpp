@@ -83,10 +83,15 @@ int main(int argc, char *argv[])
                                     "CANopen SDO mode: auto (default), expedited, segmented, "
                                     "block."),
         QStringLiteral("mode"));
+    const QCommandLineOption ram(
+        QStringLiteral("ram"),
+        QCoreApplication::translate("cli",
+                                    "VABus: write the RAM copy of the data set (data set + 5), "
+                                    "sparing the inverter's EEPROM; lost at power-off."));
     const QCommandLineOption all(
         QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
     const QList<QCommandLineOption> common { timeout, connectTimeout, hex, type, verbose,
-                                             file,    output,         sdo, all };
+                                             file,    output,         sdo, ram,  all };
     parser.addOptions(common);
     QStringList taken; // option names in use; each command family may add its own
     for (const QCommandLineOption &o : common)
@@ -140,6 +145,7 @@ int main(int argc, char *argv[])
     options.hex = parser.isSet(hex);
     options.verbose = parser.isSet(verbose);
     options.sdoMode = parser.value(sdo);
+    options.ram = parser.isSet(ram);
     // Errors reach the user as one line from the command itself; the libraries' log lines only
     // with --verbose (QT_LOGGING_RULES still overrides this).
     QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("drivebench.*.debug=false")

@@ -80,10 +80,10 @@ Reply *DeviceConnection::read(ObjectAddress address)
                                    QStringLiteral("not connected to %1").arg(m_uri.toString())));
     const ObjectDef *def = m_dictionary.find(address);
     if (def && !def->readable())
-        return Reply::failed(
-            address,
-            Error(Error::Kind::AccessDenied,
-                  QStringLiteral("%1 %2 is write-only").arg(address.toString(), def->name)));
+        return Reply::failed(address,
+                             Error(Error::Kind::AccessDenied,
+                                   QStringLiteral("%1 %2 is write-only")
+                                       .arg(addressFormat().format(address), def->name)));
     Reply *reply = track(new Reply(address));
     doRead(reply, def);
     return reply;
@@ -99,11 +99,11 @@ Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
     QVariant value = raw;
     if (def) {
         if (!def->writable())
-            return Reply::failed(
-                address,
-                Error(Error::Kind::AccessDenied,
-                      QStringLiteral("%1 %2 is read-only").arg(address.toString(), def->name)));
-        auto checked = def->validate(raw);
+            return Reply::failed(address,
+                                 Error(Error::Kind::AccessDenied,
+                                       QStringLiteral("%1 %2 is read-only")
+                                           .arg(addressFormat().format(address), def->name)));
+        auto checked = def->validate(raw, addressFormat());
         if (!checked)
             return Reply::failed(address, checked.error());
         value = checked.value();
