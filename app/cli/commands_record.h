@@ -8,8 +8,9 @@ namespace db::cli {
 //        [--post S] [--wait S]] [--capacity N] -o FILE.csv
 //
 // Polls the objects from the host (scope::PollingSource, one request in flight per object, each
-// object every R ms on deadlines that do not drift; 0 = as fast as the link allows) and writes the recording as CSV (scope/csv.h:
-// first column time in seconds, one column per object named "INDEX:SUB name").
+// object every R ms on deadlines that do not drift; 0 = as fast as the link allows) and writes the
+// recording as CSV (scope/csv.h: first column time in seconds, one column per object named
+// "INDEX:SUB name").
 // - Without --trigger: records for --duration seconds on the recorder's time base
 //   (Recorder::setDurationS).
 // - With --trigger SPEC (scope::Trigger::parse: "6064:0,rising,100", "6041:0,bit3,set", ...;
