@@ -257,11 +257,12 @@ int record(Context &c)
                          if (state == scope::Recorder::State::Stopped)
                              loop.quit();
                      });
+    // --duration: the recorder ends the recording itself, on its own time base.
     QTimer deadline;
     deadline.setSingleShot(true);
+    deadline.setTimerType(Qt::PreciseTimer);
     if (s.trigger.isEmpty()) {
-        QObject::connect(&deadline, &QTimer::timeout, &recorder, &scope::Recorder::stop);
-        deadline.start(timerMs(s.durationS));
+        recorder.setDurationS(s.durationS);
     } else {
         QObject::connect(&deadline, &QTimer::timeout, &recorder, [&] {
             if (recorder.state() == scope::Recorder::State::Armed) {
@@ -305,11 +306,13 @@ int record(Context &c)
                   << Qt::endl;
         loop.exec();
     }
-    const double elapsedS = recorder.now();
+    const double elapsedS =
+        std::isnan(recorder.stoppedAt()) ? recorder.now() : recorder.stoppedAt();
     if (pdoSource && pdoSource->framesSeen() == 0 && !failure.isError() && stopSignal == 0)
         return fail(
             c,
-            noPdoError(c, session.connection(), plan, std::min(firstPdoMs, deadline.interval())));
+            noPdoError(c, session.connection(), plan,
+                       std::min(firstPdoMs, timerMs(s.trigger.isEmpty() ? s.durationS : s.waitS))));
     return finishRecording(c,
                            { recorder, pollingSource, elapsedS, failure, stopSignal,
                              triggerTimedOut, s.trigger, s.waitS });
