@@ -1,10 +1,10 @@
 #include "protocols.h"
 
-#include "devices/bonfiglioli/acudescription.h"
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
 #include "description/devicedescription.h"
+#include "devices/bonfiglioli/acudescription.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
 #include "vabus/vabusconnection.h"

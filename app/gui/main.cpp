@@ -2,8 +2,8 @@
 // --demo, runs the simulated MovingCap and a line of NM17x displays in-process.
 #include "common/demodrive.h"
 #include "common/protocols.h"
-#include "mainwindow.h"
 #include "devices/nm17x/device/nm17xsim.h"
+#include "mainwindow.h"
 #include "widgets/common/logconsole.h"
 
 #include <QApplication>

@@ -12,9 +12,9 @@
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/morse/morsepanel.h"
 #include "widgets/motion/jogpanel.h"
+#include "widgets/nm17x/nm17xlinepanel.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/scope/scopepage.h"
-#include "widgets/nm17x/nm17xlinepanel.h"
 
 #include <QApplication>
 #include <QCloseEvent>

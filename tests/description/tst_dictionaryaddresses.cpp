@@ -46,8 +46,8 @@ void TestDictionaryAddresses::dictionariesAreCanopenByDefault()
 
 void TestDictionaryAddresses::descriptionSaysParameter()
 {
-    const auto dict = parseJsonDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY2(dict, qPrintable(dict.error().toString()));
     QCOMPARE(&dict->addressFormat(), &AddressFormat::parameter());
     QVERIFY(dict->contains({ 372, 2 }));
@@ -58,8 +58,8 @@ void TestDictionaryAddresses::descriptionSaysParameter()
 
 void TestDictionaryAddresses::descriptionWithAnUnknownFormatIsRefused()
 {
-    const auto dict = parseJsonDescription(description(R"("addresses": "octal",)"),
-                                                         QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "octal",)"), QStringLiteral("d.json"));
     QVERIFY(!dict);
     QCOMPARE(dict.error().kind(), Error::Kind::Malformed);
     QVERIFY2(dict.error().message().contains(QLatin1String("d.json")),
@@ -87,8 +87,8 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
     };
     Plain connection;
     QCOMPARE(&connection.addressFormat(), &AddressFormat::canopen());
-    const auto dict = parseJsonDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     connection.setDictionary(*dict);
     QCOMPARE(&connection.addressFormat(), &AddressFormat::parameter());
@@ -96,8 +96,8 @@ void TestDictionaryAddresses::connectionTakesTheDictionaryFormat()
 
 void TestDictionaryAddresses::valueErrorsNameTheAddressInTheFormat()
 {
-    const auto dict = parseJsonDescription(
-        description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
+    const auto dict =
+        parseJsonDescription(description(R"("addresses": "parameter",)"), QStringLiteral("d.json"));
     QVERIFY(dict);
     const ObjectDef *def = dict->find({ 372, 2 });
     QVERIFY(def);
