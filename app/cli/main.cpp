@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "core/printable.h"
 #include "terminaldevice.h"
+#include "translations/language.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -27,6 +28,9 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    // Before anything is worded: the help texts are translated too.
+    const QString langArgument = i18n::languageArgument(QCoreApplication::arguments());
+    i18n::installTranslations(app, i18n::chooseLanguage(langArgument));
     // Every line a command prints goes through TerminalDevice: no control character from a
     // device or a file reaches the terminal raw, whichever print site it takes.
     cli::TerminalDevice outDevice(stdout);
@@ -85,8 +89,14 @@ int main(int argc, char *argv[])
         QStringLiteral("mode"));
     const QCommandLineOption all(
         QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("cli",
+                                    "Language of the messages: de or en (default: "
+                                    "DRIVEBENCH_LANG, else LC_ALL, LC_MESSAGES, LANG)."),
+        QStringLiteral("language"));
     const QList<QCommandLineOption> common { timeout, connectTimeout, hex, type, verbose,
-                                             file,    output,         sdo, all };
+                                             file,    output,         sdo, all,  lang };
     parser.addOptions(common);
     QStringList taken; // option names in use; each command family may add its own
     for (const QCommandLineOption &o : common)
@@ -105,6 +115,12 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
     parser.process(app);
+    if (parser.isSet(lang) && !i18n::languages().contains(parser.value(lang))) {
+        err << QCoreApplication::translate("cli", "drivebench-cli: --lang takes one of: %1")
+                   .arg(i18n::languages().join(QStringLiteral(", ")))
+            << Qt::endl;
+        return cli::ExitUsage;
+    }
 
     QStringList args = parser.positionalArguments();
     if (args.isEmpty()) {

@@ -7,6 +7,7 @@
 #include "core/objectaddress.h"
 #include "resources/builtindescriptions.h"
 #include "simulation/movingcapdrive.h"
+#include "translations/language.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -48,6 +49,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    i18n::installTranslations(app, i18n::chooseLanguage()); // DRIVEBENCH_LANG, LC_*, LANG
     QTextStream out(stdout);
     QTextStream err(stderr);
 
