@@ -9,6 +9,14 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
+
 using namespace db;
 
 namespace {
@@ -42,9 +50,9 @@ int main(int argc, char *argv[])
     QString description = QCoreApplication::translate(
         "cli", "drivebench command line: read and write drive objects from scripts.\n\nCommands:");
     for (const cli::Command &c : cli::commands())
-        description +=
-            QStringLiteral("\n  %1 %2\n      %3")
-                .arg(QLatin1String(c.name), QLatin1String(c.synopsis), QLatin1String(c.summary));
+        description += QStringLiteral("\n  %1 %2\n      %3")
+                           .arg(QLatin1String(c.name), QLatin1String(c.synopsis),
+                                QCoreApplication::translate("cli", c.summary));
     description += QCoreApplication::translate(
         "cli",
         "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
@@ -124,7 +132,7 @@ int main(int argc, char *argv[])
 
     QStringList args = parser.positionalArguments();
     if (args.isEmpty()) {
-        err << "drivebench-cli: no command given; try drivebench-cli --help" << Qt::endl;
+        err << Tr::tr("drivebench-cli: no command given; try drivebench-cli --help") << Qt::endl;
         return cli::ExitUsage;
     }
     const QString name = args.takeFirst();
@@ -134,12 +142,13 @@ int main(int argc, char *argv[])
             command = &c;
     }
     if (!command) {
-        err << "drivebench-cli: unknown command '" << name << "'; try drivebench-cli --help"
+        err << Tr::tr("drivebench-cli: unknown command '%1'; try drivebench-cli --help").arg(name)
             << Qt::endl;
         return cli::ExitUsage;
     }
     if (args.size() < command->minArgs || args.size() > command->maxArgs) {
-        err << "drivebench-cli: usage: drivebench-cli " << command->name << ' ' << command->synopsis
+        err << Tr::tr("drivebench-cli: usage: drivebench-cli %1 %2")
+                   .arg(QLatin1String(command->name), QLatin1String(command->synopsis))
             << Qt::endl;
         return cli::ExitUsage;
     }
@@ -149,7 +158,8 @@ int main(int argc, char *argv[])
     options.requestTimeoutMs = parser.value(timeout).toInt(&ok1);
     options.connectTimeoutMs = parser.value(connectTimeout).toInt(&ok2);
     if (!ok1 || !ok2 || options.requestTimeoutMs <= 0 || options.connectTimeoutMs <= 0) {
-        err << "drivebench-cli: --timeout and --connect-timeout take a positive number of ms"
+        err << Tr::tr("drivebench-cli: --timeout and --connect-timeout take a positive number "
+                      "of ms")
             << Qt::endl;
         return cli::ExitUsage;
     }

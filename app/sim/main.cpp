@@ -19,6 +19,14 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::sim)
+};
+} // namespace
+
 using namespace db;
 
 namespace {
@@ -200,7 +208,7 @@ int main(int argc, char *argv[])
             ? def->parseText(assignment.mid(eq + 1))
             : Result<QVariant>(
                 Error(Error::Kind::InvalidArgument,
-                      QStringLiteral("the MovingCap has no object %1").arg(address->toString())));
+                      Tr::tr("the MovingCap has no object %1").arg(address->toString())));
         if (!raw) {
             err << "drivebench-sim: --set " << assignment << ": " << raw.error().toString()
                 << Qt::endl;

@@ -1,6 +1,15 @@
 #include "addressformat.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -39,8 +48,8 @@ public:
             m.hasMatch() && !m.captured(2).isEmpty() ? m.captured(2).toUInt(&okSub) : 0;
         if (!m.hasMatch() || !okIndex || !okSub || index > 0xFFFF || sub > 0xFF) {
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("'%1' is not a parameter address; write NUMBER:DATASET "
-                                        "in decimal, e.g. 372:2 (a number alone is data set 0)")
+                         Tr::tr("'%1' is not a parameter address; write NUMBER:DATASET "
+                                "in decimal, e.g. 372:2 (a number alone is data set 0)")
                              .arg(text));
         }
         return ObjectAddress(static_cast<quint16>(index), static_cast<quint8>(sub));

@@ -11,10 +11,19 @@
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
 #include "objectdictionary.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -53,8 +62,7 @@ Result<ObjectDictionary> ObjectDictionary::loadDescription(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseDescription(file.readAll(), path);
 }
 
@@ -65,7 +73,7 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (doc.isNull())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: JSON error at offset %2: %3")
+                     Tr::tr("%1: JSON error at offset %2: %3")
                          .arg(origin)
                          .arg(parseError.offset)
                          .arg(parseError.errorString()));
@@ -73,10 +81,10 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
     if (root.value(QLatin1String("format")).toString()
         != QLatin1String("drivebench-device-description"))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not a drivebench device description").arg(origin));
+                     Tr::tr("%1 is not a drivebench device description").arg(origin));
     if (root.value(QLatin1String("version")).toInt() != 1)
         return Error(Error::Kind::NotSupported,
-                     QStringLiteral("%1: description version %2 is not supported (1 is)")
+                     Tr::tr("%1: description version %2 is not supported (1 is)")
                          .arg(origin)
                          .arg(root.value(QLatin1String("version")).toInt()));
 
@@ -95,7 +103,7 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
         const QJsonObject o = objects.at(i).toObject();
         auto fail = [&](const QString &what) {
             return Error(Error::Kind::Malformed,
-                         QStringLiteral("%1: object #%2: %3").arg(origin).arg(i + 1).arg(what));
+                         Tr::tr("%1: object #%2: %3").arg(origin).arg(i + 1).arg(what));
         };
         quint32 index = 0;
         quint32 sub = 0;

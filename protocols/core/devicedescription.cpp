@@ -3,10 +3,19 @@
 #include "edsloader.h"
 #include "xddloader.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QStringDecoder>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -57,10 +66,9 @@ Result<DescriptionLoad> loadDeviceDescription(const QString &path,
 {
     QFile file(path);
     if (QFileInfo(path).isDir())
-        return Error(Error::Kind::Io, QStringLiteral("%1 is a folder, not a file").arg(path));
+        return Error(Error::Kind::Io, Tr::tr("%1 is a folder, not a file").arg(path));
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseDeviceDescription(file.readAll(), path, options);
 }
 
@@ -68,10 +76,10 @@ Result<DescriptionLoad> parseDeviceDescription(const QByteArray &data, const QSt
                                                const DescriptionOptions &options)
 {
     if (data.trimmed().isEmpty())
-        return Error(Error::Kind::Malformed, QStringLiteral("%1 is empty").arg(origin));
+        return Error(Error::Kind::Malformed, Tr::tr("%1 is empty").arg(origin));
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not a device description").arg(origin));
+                     Tr::tr("%1 holds binary data, not a device description").arg(origin));
     QByteArray head = data.left(256);
     if (head.startsWith("\xEF\xBB\xBF"))
         head = head.mid(3);

@@ -4,10 +4,19 @@
 
 #include "edsinifile.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
 #include <QRegularExpression>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -49,7 +58,7 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
     m_ini = eds::IniFile::parse(description::decodeText(data), &m_load.warnings);
     if (m_ini.sections.isEmpty())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not an EDS/DCF: no [sections] found").arg(m_origin));
+                     Tr::tr("%1 is not an EDS/DCF: no [sections] found").arg(m_origin));
 
     static const QRegularExpression objectRe(QStringLiteral("^[0-9A-F]{4}$"));
     static const QRegularExpression subRe(QStringLiteral("^([0-9A-F]{4})SUB([0-9A-F]{1,2})$"));
@@ -71,8 +80,8 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
     }
     if (objects.isEmpty())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not an EDS/DCF: it has no object sections ([1000], "
-                                    "[1018], ...)")
+                     Tr::tr("%1 is not an EDS/DCF: it has no object sections ([1000], "
+                            "[1018], ...)")
                          .arg(m_origin));
 
     const QString suffix = QFileInfo(m_origin).suffix().toLower();
@@ -93,9 +102,9 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
                  QStringLiteral("sub-index without its object section; ignored"));
     }
     if (m_load.dictionary.isEmpty())
-        return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: none of its object sections describes a usable object")
-                         .arg(m_origin));
+        return Error(
+            Error::Kind::Malformed,
+            Tr::tr("%1: none of its object sections describes a usable object").arg(m_origin));
     return m_load;
 }
 
@@ -382,8 +391,7 @@ Result<DescriptionLoad> loadEds(const QString &path, const DescriptionOptions &o
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseEds(file.readAll(), path, options);
 }
 
@@ -392,7 +400,7 @@ Result<DescriptionLoad> parseEds(const QByteArray &data, const QString &origin,
 {
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not an EDS/DCF").arg(origin));
+                     Tr::tr("%1 holds binary data, not an EDS/DCF").arg(origin));
     return EdsReader(origin, options).read(data);
 }
 

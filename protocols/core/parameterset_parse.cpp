@@ -5,8 +5,17 @@
 
 #include <QSet>
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cctype>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -74,23 +83,21 @@ Result<QList<Token>> tokenize(const QString &line)
                         });
                     const uint code = ok ? hex.toUInt(&ok, 16) : 0;
                     if (!ok)
-                        return Error(
-                            Error::Kind::Malformed,
-                            QStringLiteral("'\\%1' needs %2 hex digits").arg(e).arg(digits));
+                        return Error(Error::Kind::Malformed,
+                                     Tr::tr("'\\%1' needs %2 hex digits").arg(e).arg(digits));
                     token.text += QChar(char16_t(code));
                     i += digits;
                     break;
                 }
                 default:
                     return Error(Error::Kind::Malformed,
-                                 QStringLiteral("unknown escape '\\%1' in a quoted string").arg(e));
+                                 Tr::tr("unknown escape '\\%1' in a quoted string").arg(e));
                 }
             }
             if (!closed)
-                return Error(Error::Kind::Malformed, QStringLiteral("unterminated quoted string"));
+                return Error(Error::Kind::Malformed, Tr::tr("unterminated quoted string"));
             if (i < n && !line.at(i).isSpace())
-                return Error(Error::Kind::Malformed,
-                             QStringLiteral("text right after a closing quote"));
+                return Error(Error::Kind::Malformed, Tr::tr("text right after a closing quote"));
         } else {
             while (i < n && !line.at(i).isSpace())
                 token.text += line.at(i++);
@@ -107,7 +114,7 @@ Result<quint32> parseU32(const QString &text)
         ? text.mid(2).toUInt(&ok, 16)
         : text.toUInt(&ok, 10);
     if (!ok)
-        return Error(Error::Kind::Malformed, QStringLiteral("'%1' is not a number").arg(text));
+        return Error(Error::Kind::Malformed, Tr::tr("'%1' is not a number").arg(text));
     return v;
 }
 
@@ -127,7 +134,7 @@ private:
     Error error(const QString &message) const
     {
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1:%2: %3").arg(m_origin).arg(m_line).arg(message));
+                     Tr::tr("%1:%2: %3").arg(m_origin).arg(m_line).arg(message));
     }
     Result<void> header(const QList<Token> &t);
     Result<void> entry(const QList<Token> &t);
@@ -143,9 +150,8 @@ private:
 Result<ParameterSet> Parser::run(const QByteArray &bytes)
 {
     if (bytes.isEmpty())
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: empty file, not a drivebench parameter set").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: empty file, not a drivebench parameter set").arg(m_origin));
     QString text = QString::fromUtf8(bytes);
     if (text.startsWith(QChar(0xFEFF)))
         text.remove(0, 1);

@@ -4,10 +4,19 @@
 
 #include "xddparameter.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
 #include <QXmlStreamReader>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -72,8 +81,8 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
             if (name != QLatin1String("ISO15745ProfileContainer")
                 && name != QLatin1String("ISO15745Profile"))
                 return Error(Error::Kind::Malformed,
-                             QStringLiteral("%1 is XML but not an XDD/XDC: the root element is "
-                                            "<%2>, not <ISO15745ProfileContainer>")
+                             Tr::tr("%1 is XML but not an XDD/XDC: the root element is "
+                                    "<%2>, not <ISO15745ProfileContainer>")
                                  .arg(m_origin, name));
         }
         if (name == QLatin1String("ProfileBody") && id.descriptionVersion.isEmpty()) {
@@ -131,15 +140,14 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
     }
     if (m_xml.hasError())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: XML error at line %2, column %3: %4")
+                     Tr::tr("%1: XML error at line %2, column %3: %4")
                          .arg(m_origin)
                          .arg(m_xml.lineNumber())
                          .arg(m_xml.columnNumber())
                          .arg(m_xml.errorString()));
     if (!m_haveObjectList)
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: no CANopenObjectList; not a CANopen XDD/XDC").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: no CANopenObjectList; not a CANopen XDD/XDC").arg(m_origin));
     id.descriptionFile = m_origin;
     if (id.vendorName.isEmpty())
         warn(QStringLiteral("DeviceIdentity"), QStringLiteral("no vendorName"));
@@ -153,9 +161,8 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
     for (const ObjectRecord &record : std::as_const(m_objects))
         readObject(record);
     if (m_load.dictionary.isEmpty())
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: the CANopenObjectList holds no usable object").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: the CANopenObjectList holds no usable object").arg(m_origin));
     return m_load;
 }
 
@@ -321,8 +328,7 @@ Result<DescriptionLoad> loadXdd(const QString &path, const DescriptionOptions &o
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseXdd(file.readAll(), path, options);
 }
 
@@ -331,7 +337,7 @@ Result<DescriptionLoad> parseXdd(const QByteArray &data, const QString &origin,
 {
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not an XDD/XDC").arg(origin));
+                     Tr::tr("%1 holds binary data, not an XDD/XDC").arg(origin));
     return XddReader(origin, options).read(data);
 }
 

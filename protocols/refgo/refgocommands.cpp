@@ -2,6 +2,15 @@
 // turn result lines into values. The engine lives in refgoclient.cpp.
 
 #include "refgoclient.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -9,7 +18,7 @@ namespace {
 
 Error malformed(const QString &command, const QString &what)
 {
-    return Error(Error::Kind::Malformed, QStringLiteral("answer to '%1' %2").arg(command, what));
+    return Error(Error::Kind::Malformed, Tr::tr("answer to '%1' %2").arg(command, what));
 }
 
 // Integer, Hex32 and ObjectRead answers have exactly one result line (spec 3.3).
@@ -210,7 +219,7 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
             // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
             if (lines.isEmpty())
                 return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive gave no value for '%1'").arg(text));
+                             Tr::tr("drive gave no value for '%1'").arg(text));
             const auto line = singleLine(text, lines);
             if (!line)
                 return line.error();
@@ -218,9 +227,9 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
             if (!value && isBrokenNumber(line.value()))
                 return malformed(text, value.error().message());
             if (!value)
-                return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive gave no value for '%1': %2")
-                                 .arg(text, value.error().message()));
+                return Error(
+                    Error::Kind::DeviceError,
+                    Tr::tr("drive gave no value for '%1': %2").arg(text, value.error().message()));
             if (value->address != address)
                 return malformed(text,
                                  QStringLiteral("names object %1: '%2'")
@@ -249,7 +258,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
     default:
         return Reply::failed(address,
                              Error(Error::Kind::InvalidArgument,
-                                   QStringLiteral("OW writes integers only, not %1 '%2'")
+                                   Tr::tr("OW writes integers only, not %1 '%2'")
                                        .arg(QLatin1String(value.typeName()), value.toString())));
     }
     const QString text = formatWrite(address, value);
@@ -263,7 +272,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
                    });
             if (!acknowledged)
                 return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive did not acknowledge '%1' with ',OK': %2")
+                             Tr::tr("drive did not acknowledge '%1' with ',OK': %2")
                                  .arg(text,
                                       lines.isEmpty() ? QStringLiteral("(no result)")
                                                       : lines.join(QLatin1String(" / "))));
