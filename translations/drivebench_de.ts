@@ -1105,6 +1105,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>object %1 does not exist</source>
         <translation>Objekt %1 existiert nicht</translation>
     </message>
+    <message>
+        <source>node %1 did not answer %2 within %3 ms</source>
+        <translation>Knoten %1 hat auf %2 nicht innerhalb von %3 ms geantwortet</translation>
+    </message>
 </context>
 <context>
     <name>db::cia402</name>
@@ -1119,6 +1123,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1: %2 (statusword 0x%3)</source>
         <translation>%1: %2 (Statuswort 0x%3)</translation>
+    </message>
+    <message>
+        <source>the drive went to fault</source>
+        <translation>der Antrieb ist in Störung gegangen</translation>
+    </message>
+    <message>
+        <source>no transition from this state</source>
+        <translation>kein Übergang aus diesem Zustand</translation>
+    </message>
+    <message>
+        <source>homing error</source>
+        <translation>Referenzfahrtfehler</translation>
     </message>
 </context>
 <context>
@@ -1390,6 +1406,246 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1 holds binary data, not an XDD/XDC</source>
         <translation>%1 enthält Binärdaten, keine XDD/XDC</translation>
     </message>
+    <message>
+        <source>bad index</source>
+        <translation>ungültiger Index</translation>
+    </message>
+    <message>
+        <source>bad sub-index</source>
+        <translation>ungültiger Subindex</translation>
+    </message>
+    <message>
+        <source>unknown type &apos;%1&apos;</source>
+        <translation>unbekannter Typ „%1“</translation>
+    </message>
+    <message>
+        <source>unknown access &apos;%1&apos;</source>
+        <translation>unbekannter Zugriff „%1“</translation>
+    </message>
+    <message>
+        <source>cannot evaluate &apos;%1&apos;</source>
+        <translation>„%1“ kann nicht ausgewertet werden</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; with node id %2: %3</source>
+        <translation>„%1“ mit Knoten-ID %2: %3</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>broken section header &apos;%1&apos;; skipped</source>
+        <translation>fehlerhafter Abschnittskopf „%1“; übersprungen</translation>
+    </message>
+    <message>
+        <source>section [%1] appears again; merged</source>
+        <translation>Abschnitt [%1] kommt erneut vor; zusammengeführt</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a key=value line in a section; ignored</source>
+        <translation>„%1“ ist keine Schlüssel=Wert-Zeile in einem Abschnitt; ignoriert</translation>
+    </message>
+    <message>
+        <source>[%1] %2 given twice; the last one is used</source>
+        <translation>[%1] %2 doppelt angegeben; die letzte Angabe gilt</translation>
+    </message>
+    <message>
+        <source>entry %1=%2 is not an index</source>
+        <translation>Eintrag %1=%2 ist kein Index</translation>
+    </message>
+    <message>
+        <source>lists %1 but there is no [%2] section</source>
+        <translation>listet %1, aber es gibt keinen Abschnitt [%2]</translation>
+    </message>
+    <message>
+        <source>SupportedObjects=%1 but %2 entries are listed</source>
+        <translation>SupportedObjects=%1, aber %2 Einträge sind aufgeführt</translation>
+    </message>
+    <message>
+        <source>object lists</source>
+        <translation>Objektlisten</translation>
+    </message>
+    <message>
+        <source>ObjectType &apos;%1&apos; is not a number; object skipped</source>
+        <translation>ObjectType „%1“ ist keine Zahl; Objekt übersprungen</translation>
+    </message>
+    <message>
+        <source>NULL object skipped</source>
+        <translation>NULL-Objekt übersprungen</translation>
+    </message>
+    <message>
+        <source>a VAR/DOMAIN with sub-index sections; those are ignored</source>
+        <translation>ein VAR/DOMAIN mit Subindex-Abschnitten; diese werden ignoriert</translation>
+    </message>
+    <message>
+        <source>unknown ObjectType %1; read as %2</source>
+        <translation>unbekannter ObjectType %1; gelesen als %2</translation>
+    </message>
+    <message>
+        <source>ARRAY/RECORD without sub-index sections; skipped</source>
+        <translation>ARRAY/RECORD ohne Subindex-Abschnitte; übersprungen</translation>
+    </message>
+    <message>
+        <source>SubNumber=%1 but %2 sub-index sections are present</source>
+        <translation>SubNumber=%1, aber %2 Subindex-Abschnitte sind vorhanden</translation>
+    </message>
+    <message>
+        <source>no sub-index 0; made one (UNSIGNED8, ro, %1)</source>
+        <translation>kein Subindex 0; einer wurde angelegt (UNSIGNED8, ro, %1)</translation>
+    </message>
+    <message>
+        <source>sub-index 0 should be UNSIGNED8 (number of entries), is %1</source>
+        <translation>Subindex 0 sollte UNSIGNED8 sein (Anzahl Einträge), ist %1</translation>
+    </message>
+    <message>
+        <source>default %1 is below the highest sub-index present (%2)</source>
+        <translation>Standardwert %1 liegt unter dem höchsten vorhandenen Subindex (%2)</translation>
+    </message>
+    <message>
+        <source>no ParameterName; called &apos;%1&apos;</source>
+        <translation>kein ParameterName; benannt „%1“</translation>
+    </message>
+    <message>
+        <source>no DataType; read as DOMAIN</source>
+        <translation>kein DataType; gelesen als DOMAIN</translation>
+    </message>
+    <message>
+        <source>DataType %1 is not a basic type; read as DOMAIN</source>
+        <translation>DataType %1 ist kein Basistyp; gelesen als DOMAIN</translation>
+    </message>
+    <message>
+        <source>PDOMapping &apos;%1&apos; is not 0/1</source>
+        <translation>PDOMapping „%1“ ist nicht 0/1</translation>
+    </message>
+    <message>
+        <source>ObjFlags &apos;%1&apos; is not a number</source>
+        <translation>ObjFlags „%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>Factor &apos;%1&apos; is not a number</source>
+        <translation>Factor „%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>LowLimit %1 is above HighLimit %2</source>
+        <translation>LowLimit %1 liegt über HighLimit %2</translation>
+    </message>
+    <message>
+        <source>%1 ignored: %2</source>
+        <translation>%1 ignoriert: %2</translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; needs a node id; ignored</source>
+        <translation>%1 „%2“ braucht eine Knoten-ID; ignoriert</translation>
+    </message>
+    <message>
+        <source>not a drivebench parameter set (expected &apos;%1&apos; as the first line)</source>
+        <translation>kein drivebench-Parametersatz (erwartet „%1“ als erste Zeile)</translation>
+    </message>
+    <message>
+        <source>the line is not valid UTF-8</source>
+        <translation>die Zeile ist kein gültiges UTF-8</translation>
+    </message>
+    <message>
+        <source>expected &apos;format %1&apos;</source>
+        <translation>erwartet „format %1“</translation>
+    </message>
+    <message>
+        <source>bad format version &apos;%1&apos;</source>
+        <translation>ungültige Formatversion „%1“</translation>
+    </message>
+    <message>
+        <source>format %1 is newer than this drivebench reads (%2)</source>
+        <translation>Format %1 ist neuer, als dieses drivebench lesen kann (%2)</translation>
+    </message>
+    <message>
+        <source>expected &apos;end&apos; after %1 objects</source>
+        <translation>erwartet „end“ nach %1 Objekten</translation>
+    </message>
+    <message>
+        <source>text after &apos;end&apos;</source>
+        <translation>Text nach „end“</translation>
+    </message>
+    <message>
+        <source>truncated: no &apos;format&apos; line</source>
+        <translation>abgeschnitten: keine „format“-Zeile</translation>
+    </message>
+    <message>
+        <source>truncated: no &apos;entries&apos; line</source>
+        <translation>abgeschnitten: keine „entries“-Zeile</translation>
+    </message>
+    <message>
+        <source>truncated: &apos;entries %1&apos; but only %2 object lines</source>
+        <translation>abgeschnitten: „entries %1“, aber nur %2 Objektzeilen</translation>
+    </message>
+    <message>
+        <source>truncated: no &apos;end&apos; line</source>
+        <translation>abgeschnitten: keine „end“-Zeile</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; takes %2 values</source>
+        <translation>„%1“ erwartet %2 Werte</translation>
+    </message>
+    <message>
+        <source>bad time &apos;%1&apos;</source>
+        <translation>ungültige Zeit „%1“</translation>
+    </message>
+    <message>
+        <source>bad object count &apos;%1&apos;</source>
+        <translation>ungültige Objektanzahl „%1“</translation>
+    </message>
+    <message>
+        <source>unknown header line &apos;%1&apos;</source>
+        <translation>unbekannte Kopfzeile „%1“</translation>
+    </message>
+    <message>
+        <source>expected an object line: ADDRESS &quot;NAME&quot; TYPE VALUE &quot;UNIT&quot; (%1 of %2 objects read)</source>
+        <translation>erwartet eine Objektzeile: ADRESSE &quot;NAME&quot; TYP WERT &quot;EINHEIT&quot; (%1 von %2 Objekten gelesen)</translation>
+    </message>
+    <message>
+        <source>bad address &apos;%1&apos;</source>
+        <translation>ungültige Adresse „%1“</translation>
+    </message>
+    <message>
+        <source>%1 appears twice</source>
+        <translation>%1 kommt doppelt vor</translation>
+    </message>
+    <message>
+        <source>index &apos;%1&apos; is not a hex index; skipped</source>
+        <translation>Index „%1“ ist kein Hex-Index; übersprungen</translation>
+    </message>
+    <message>
+        <source>no objectType; read as %1</source>
+        <translation>kein objectType; gelesen als %1</translation>
+    </message>
+    <message>
+        <source>ARRAY/RECORD without CANopenSubObjects; skipped</source>
+        <translation>ARRAY/RECORD ohne CANopenSubObjects; übersprungen</translation>
+    </message>
+    <message>
+        <source>VAR with CANopenSubObjects; those are ignored</source>
+        <translation>VAR mit CANopenSubObjects; diese werden ignoriert</translation>
+    </message>
+    <message>
+        <source>subNumber=%1 but %2 CANopenSubObjects are present</source>
+        <translation>subNumber=%1, aber %2 CANopenSubObjects sind vorhanden</translation>
+    </message>
+    <message>
+        <source>subIndex &apos;%1&apos; is not hex; skipped</source>
+        <translation>subIndex „%1“ ist nicht hexadezimal; übersprungen</translation>
+    </message>
+    <message>
+        <source>no sub-index 0 (number of entries)</source>
+        <translation>kein Subindex 0 (Anzahl Einträge)</translation>
+    </message>
+    <message>
+        <source>uniqueIDRef &apos;%1&apos; names no parameter</source>
+        <translation>uniqueIDRef „%1“ nennt keinen Parameter</translation>
+    </message>
+    <message>
+        <source>no name; called &apos;%1&apos;</source>
+        <translation>kein Name; benannt „%1“</translation>
+    </message>
 </context>
 <context>
     <name>db::gui::MainWindow</name>
@@ -1521,6 +1777,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>&amp;Parameters</source>
         <translation>&amp;Parameter</translation>
     </message>
+    <message>
+        <source>%1 (%2)[*]</source>
+        <translation>%1 (%2)[*]</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh Objects</source>
+        <translation>Objekte &amp;aktualisieren</translation>
+    </message>
+    <message>
+        <source>&amp;Filter Objects</source>
+        <translation>Objekte &amp;filtern</translation>
+    </message>
 </context>
 <context>
     <name>db::morse</name>
@@ -1638,6 +1906,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>power switched off</source>
         <translation>Leistung abgeschaltet</translation>
     </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 abgelehnt: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::refgo</name>
@@ -1712,6 +1984,102 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>RefGo server cannot listen on %1:%2: %3</source>
         <translation>RefGo-Server kann nicht auf %1:%2 lauschen: %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>„%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large</source>
+        <translation>„%1“ ist zu groß</translation>
+    </message>
+    <message>
+        <source>missing %1</source>
+        <translation>%1 fehlt</translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; is not hexadecimal</source>
+        <translation>%1 „%2“ ist nicht hexadezimal</translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; is too large</source>
+        <translation>%1 „%2“ ist zu groß</translation>
+    </message>
+    <message>
+        <source>value &apos;%1&apos; is too small</source>
+        <translation>Wert „%1“ ist zu klein</translation>
+    </message>
+    <message>
+        <source>third OR field must be &apos;h&apos; (hex output), not &apos;%1&apos;</source>
+        <translation>drittes OR-Feld muss „h“ (Hex-Ausgabe) sein, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>empty request</source>
+        <translation>leere Anfrage</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not start with a command</source>
+        <translation>„%1“ beginnt nicht mit einem Befehl</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl „%1“</translation>
+    </message>
+    <message>
+        <source>%1 takes no parameter, got &apos;%2&apos;</source>
+        <translation>%1 nimmt keinen Parameter, erhalten „%2“</translation>
+    </message>
+    <message>
+        <source>%1 needs a numeric parameter</source>
+        <translation>%1 braucht einen numerischen Parameter</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too small</source>
+        <translation>„%1“ ist zu klein</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an OR result line</source>
+        <translation>„%1“ ist keine OR-Ergebniszeile</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no value field</source>
+        <translation>„%1“ hat kein Wertfeld</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has more than three fields</source>
+        <translation>„%1“ hat mehr als drei Felder</translation>
+    </message>
+    <message>
+        <source>TPSR answer &apos;%1&apos; is not 8 hex digits</source>
+        <translation>TPSR-Antwort „%1“ hat nicht 8 Hex-Ziffern</translation>
+    </message>
+    <message>
+        <source>TS answer &apos;%1&apos; is not 0, 1, 2 or 9</source>
+        <translation>TS-Antwort „%1“ ist nicht 0, 1, 2 oder 9</translation>
+    </message>
+    <message>
+        <source>has %1 result lines, expected one: %2</source>
+        <translation>hat %1 Ergebniszeilen, erwartet eine: %2</translation>
+    </message>
+    <message>
+        <source>is not a number: %1</source>
+        <translation>ist keine Zahl: %1</translation>
+    </message>
+    <message>
+        <source>use objectRead()/objectWrite() for %1</source>
+        <translation>für %1 objectRead()/objectWrite() verwenden</translation>
+    </message>
+    <message>
+        <source>%1 takes no parameter</source>
+        <translation>%1 nimmt keinen Parameter</translation>
+    </message>
+    <message>
+        <source>%1 needs a parameter</source>
+        <translation>%1 braucht einen Parameter</translation>
+    </message>
+    <message>
+        <source>names object %1: &apos;%2&apos;</source>
+        <translation>nennt Objekt %1: „%2“</translation>
     </message>
 </context>
 <context>
@@ -2165,6 +2533,50 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: receive queue overflow: %2 frames dropped (%3 in all)</source>
+        <translation>%1: Überlauf der Empfangswarteschlange: %2 Frames verworfen (insgesamt %3)</translation>
+    </message>
+    <message>
+        <source>dropping client %1:%2: it has not read its answers for %3 ms (%4 bytes queued)</source>
+        <translation>trenne Client %1:%2: er hat seine Antworten seit %3 ms nicht gelesen (%4 Bytes in der Warteschlange)</translation>
+    </message>
+    <message>
+        <source>%1: frame %2 not sent: %3</source>
+        <translation>%1: Frame %2 nicht gesendet: %3</translation>
+    </message>
+    <message>
+        <source>%1: connection error: %2</source>
+        <translation>%1: Verbindungsfehler: %2</translation>
+    </message>
+    <message>
+        <source>%1: configuration not applied (bit rate %2): %3</source>
+        <translation>%1: Konfiguration nicht übernommen (Bitrate %2): %3</translation>
+    </message>
+    <message>
+        <source>%1: error frame: %2</source>
+        <translation>%1: Error-Frame: %2</translation>
+    </message>
+    <message>
+        <source>no answer to &apos;%1&apos; from %2 within %3 ms</source>
+        <translation>keine Antwort auf „%1“ von %2 innerhalb von %3 ms</translation>
+    </message>
+    <message>
+        <source> (sent %1 times)</source>
+        <translation> (%1-mal gesendet)</translation>
+    </message>
+    <message>
+        <source>%1: cannot send frame %2 over slcan (FD, error frame or more than 8 bytes)</source>
+        <translation>%1: Frame %2 kann nicht über SLCAN gesendet werden (FD, Error-Frame oder mehr als 8 Bytes)</translation>
+    </message>
+    <message>
+        <source>%1: the adapter answered BEL (command or frame refused)</source>
+        <translation>%1: der Adapter hat mit BEL geantwortet (Befehl oder Frame abgelehnt)</translation>
+    </message>
+    <message>
+        <source>%1: skipped a line that is not slcan: &apos;%2&apos;</source>
+        <translation>%1: Zeile übersprungen, die kein SLCAN ist: „%2“</translation>
     </message>
 </context>
 <context>
@@ -3107,6 +3519,46 @@ Letzter Fehler: %1</translation>
         <source>Send NMT commands to every node (node id 0)</source>
         <translation>NMT-Befehle an alle Knoten senden (Knoten-ID 0)</translation>
     </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>NMT start: operational</source>
+        <translation>NMT Start: operational</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>NMT stop: stopped</source>
+        <translation>NMT Stopp: gestoppt</translation>
+    </message>
+    <message>
+        <source>Pre-op</source>
+        <translation>Pre-op</translation>
+    </message>
+    <message>
+        <source>NMT enter pre-operational</source>
+        <translation>NMT nach pre-operational</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>NMT reset node (application)</source>
+        <translation>NMT Reset Node (Anwendung)</translation>
+    </message>
+    <message>
+        <source>Reset comm</source>
+        <translation>Reset Komm.</translation>
+    </message>
+    <message>
+        <source>NMT reset communication</source>
+        <translation>NMT Reset Communication</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeListModel</name>
@@ -3227,6 +3679,90 @@ Letzter Fehler: %1</translation>
     <message>
         <source>, storable</source>
         <translation>, speicherbar</translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation>Einschalten</translation>
+    </message>
+    <message>
+        <source>Enable voltage</source>
+        <translation>Spannung freigeben</translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation>Schnellhalt</translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation>Betrieb freigeben</translation>
+    </message>
+    <message>
+        <source>Operation mode specific</source>
+        <translation>Betriebsartabhängig</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation>Störung quittieren</translation>
+    </message>
+    <message>
+        <source>Halt</source>
+        <translation>Halt</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Voltage enabled</source>
+        <translation>Spannung freigegeben</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Internal limit active</source>
+        <translation>Interne Begrenzung aktiv</translation>
+    </message>
+    <message>
+        <source>Negative limit switch</source>
+        <translation>Negativer Endschalter</translation>
+    </message>
+    <message>
+        <source>Positive limit switch</source>
+        <translation>Positiver Endschalter</translation>
+    </message>
+    <message>
+        <source>Home switch</source>
+        <translation>Referenzschalter</translation>
+    </message>
+    <message>
+        <source>Interlock</source>
+        <translation>Verriegelung</translation>
     </message>
 </context>
 <context>

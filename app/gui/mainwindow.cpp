@@ -189,6 +189,8 @@ void MainWindow::createMenus()
     quit->setMenuRole(QAction::QuitRole);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
+    createShortcuts(view);
+    view->addSeparator();
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         view->addAction(dock->toggleViewAction());
 
@@ -229,6 +231,10 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
 
 void MainWindow::watch(DeviceConnection *connection)
 {
+    connect(connection, &DeviceConnection::objectWritten, this, [this, connection] {
+        m_unstored.insert(connection);
+        updateWindowTitle();
+    });
     const QString name = connection->uri().toString();
     connect(connection, &DeviceConnection::logLine, m_log, [this, name](const QString &line) {
         m_log->traffic(name + QStringLiteral(": ") + line);
@@ -302,6 +308,7 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     if (connection == m_canopen)
         attachCanopen(nullptr);
     m_deviceList->removeConnection(connection);
+    m_unstored.remove(connection);
     m_log->info(tr("Removed %1").arg(connection->uri().toString()));
     connection->close();
     // Deleted from the event loop, not inside the click that asked for it.
@@ -352,6 +359,21 @@ void MainWindow::updateStatusBar()
     widgets::style::setTextColor(m_connectionState,
                                  c ? widgets::style::connectionStateColor(state) : QColor());
     m_disconnectAction->setEnabled(c && state != DeviceConnection::State::Disconnected);
+    updateWindowTitle();
+}
+
+bool MainWindow::hasUnstoredWrites(const DeviceConnection *connection) const
+{
+    return m_unstored.contains(connection);
+}
+
+void MainWindow::updateWindowTitle()
+{
+    // The platform appends the application's display name ("— drivebench").
+    DeviceConnection *c = currentConnection();
+    setWindowTitle(c ? tr("%1 (%2)[*]").arg(c->uri().toString(), stateName(c->state()))
+                     : tr("drivebench"));
+    setWindowModified(c && m_unstored.contains(c));
 }
 
 void MainWindow::closeAllConnections(int timeoutMs)

@@ -4,6 +4,7 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <QSet>
 
 #include <memory>
 #include <vector>
@@ -78,6 +79,8 @@ public:
     widgets::ParameterSetActions *parameterActions() const { return m_paramActions; }
     // The "Scope" page, recording from the current connection.
     widgets::ScopePage *scopePage() const { return m_scopePage; }
+    // Connections written to since they were last stored permanently (the window title's "*").
+    bool hasUnstoredWrites(const DeviceConnection *connection) const;
 
 public Q_SLOTS:
     void showConnectDialog();
@@ -95,6 +98,9 @@ private:
     void watch(DeviceConnection *connection);
     void setCurrent(DeviceConnection *connection);
     void removeConnection(DeviceConnection *connection);
+    // "URI (state)[*]": the current connection and whether it has values not stored permanently.
+    void updateWindowTitle();
+    void createShortcuts(QMenu *view);
     // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
     // else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
@@ -126,6 +132,7 @@ private:
     widgets::ScopePage *m_scopePage = nullptr;
     QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
+    QSet<const DeviceConnection *> m_unstored; // written, not stored permanently
     QTabWidget *m_pages = nullptr;
     QAction *m_disconnectAction = nullptr;
 };

@@ -237,7 +237,7 @@ void SdoClient::onTimeout(Channel &ch)
     if (!ch.active)
         return;
     const SdoTransfer &t = *ch.active->transfer;
-    const QString what = QStringLiteral("node %1 did not answer %2 within %3 ms")
+    const QString what = Tr::tr("node %1 did not answer %2 within %3 ms")
                              .arg(ch.node)
                              .arg(t.describe())
                              .arg(ch.active->timeoutMs);

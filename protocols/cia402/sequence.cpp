@@ -178,7 +178,7 @@ Sequence::Check bitsCheck(quint16 mask, bool set, bool failOnFault)
 {
     return [=](quint16 word, QString &why) {
         if (failOnFault && (word & sw::Fault)) {
-            why = QStringLiteral("the drive went to fault");
+            why = Tr::tr("the drive went to fault");
             return WaitVerdict::Failed;
         }
         const bool match = set ? (word & mask) == mask : (word & mask) == 0;

@@ -108,23 +108,22 @@ Result<ObjectDictionary> ObjectDictionary::parseDescription(const QByteArray &js
         quint32 index = 0;
         quint32 sub = 0;
         if (!toUInt(o.value(QLatin1String("index")), &index) || index > 0xFFFF)
-            return fail(QStringLiteral("bad index"));
+            return fail(Tr::tr("bad index"));
         if (!toUInt(o.value(QLatin1String("sub")), &sub) || sub > 0xFF)
-            return fail(QStringLiteral("bad sub-index"));
+            return fail(Tr::tr("bad sub-index"));
         ObjectDef def;
         def.address = ObjectAddress(quint16(index), quint8(sub));
         def.name = o.value(QLatin1String("name")).toString();
         def.objectName = o.value(QLatin1String("object")).toString();
         const auto type = datatype::fromName(o.value(QLatin1String("type")).toString());
         if (!type)
-            return fail(
-                QStringLiteral("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
+            return fail(Tr::tr("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
         def.type = *type;
         const auto acc =
             access::fromName(o.value(QLatin1String("access")).toString(QStringLiteral("rw")));
         if (!acc)
-            return fail(QStringLiteral("unknown access '%1'")
-                            .arg(o.value(QLatin1String("access")).toString()));
+            return fail(
+                Tr::tr("unknown access '%1'").arg(o.value(QLatin1String("access")).toString()));
         def.access = *acc;
         def.unit = o.value(QLatin1String("unit")).toString();
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);

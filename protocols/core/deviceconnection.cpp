@@ -116,6 +116,10 @@ Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
         value = checked.value();
     }
     Reply *reply = track(new Reply(address));
+    connect(reply, &Reply::finished, this, [this, reply] {
+        if (reply->ok())
+            Q_EMIT objectWritten(reply->address());
+    });
     doWrite(reply, value, def);
     return reply;
 }

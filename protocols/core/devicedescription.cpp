@@ -161,7 +161,7 @@ ParsedValue parseValue(DataType type, const QString &input, std::optional<quint8
     if (text.contains(QLatin1String("$NODEID"), Qt::CaseInsensitive)) {
         const auto offset = nodeIdOffset(text, allowOctal);
         if (!offset || !datatype::isInteger(type)) {
-            out.error = QStringLiteral("cannot evaluate '%1'").arg(text);
+            out.error = Tr::tr("cannot evaluate '%1'").arg(text);
             return out;
         }
         if (!nodeId) {
@@ -171,7 +171,7 @@ ParsedValue parseValue(DataType type, const QString &input, std::optional<quint8
         }
         auto raw = codec::normalize(type, QVariant::fromValue(*offset + *nodeId));
         if (!raw)
-            out.error = QStringLiteral("'%1' with node id %2: %3")
+            out.error = Tr::tr("'%1' with node id %2: %3")
                             .arg(text)
                             .arg(*nodeId)
                             .arg(raw.error().message());

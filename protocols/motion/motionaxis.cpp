@@ -193,9 +193,8 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
 
 void MotionAxis::refuse(MotionCommand *command, const Plan &plan)
 {
-    const Error error(
-        Error::Kind::InvalidArgument,
-        QStringLiteral("%1 refused: %2").arg(command->name(), refusalText(plan.refusal)));
+    const Error error(Error::Kind::InvalidArgument,
+                      Tr::tr("%1 refused: %2").arg(command->name(), refusalText(plan.refusal)));
     QPointer<MotionCommand> guard(command);
     auto later = [guard](MotionCommand::Status status, Error e, Refusal refusal) {
         // After Busy, from the event loop: every start shows a fresh edge (S-30).

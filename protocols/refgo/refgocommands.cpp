@@ -26,7 +26,7 @@ Result<QString> singleLine(const QString &command, const QStringList &lines)
 {
     if (lines.size() != 1)
         return malformed(command,
-                         QStringLiteral("has %1 result lines, expected one: %2")
+                         Tr::tr("has %1 result lines, expected one: %2")
                              .arg(lines.size())
                              .arg(lines.join(QLatin1String(" / "))));
     return lines.first();
@@ -61,7 +61,7 @@ Result<QVariant> decodeInteger(const QString &command, const QStringList &lines,
         return line.error();
     const auto n = parseNumber(line.value());
     if (!n)
-        return malformed(command, QStringLiteral("is not a number: %1").arg(n.error().message()));
+        return malformed(command, Tr::tr("is not a number: %1").arg(n.error().message()));
     if (asBool) // TI: 0 or 1 (spec 3.3)
         return QVariant(n.value() != 0);
     return QVariant::fromValue<qlonglong>(n.value());
@@ -75,11 +75,11 @@ Reply *RefgoClient::send(Command command, std::optional<qint64> argument)
     const QString name = QLatin1String(ci.mnemonic);
     QString problem;
     if (ci.parameter == Parameter::Object)
-        problem = QStringLiteral("use objectRead()/objectWrite() for %1").arg(name);
+        problem = Tr::tr("use objectRead()/objectWrite() for %1").arg(name);
     else if (ci.parameter == Parameter::None && argument)
-        problem = QStringLiteral("%1 takes no parameter").arg(name);
+        problem = Tr::tr("%1 takes no parameter").arg(name);
     else if (ci.parameter == Parameter::Required && !argument)
-        problem = QStringLiteral("%1 needs a parameter").arg(name);
+        problem = Tr::tr("%1 needs a parameter").arg(name);
     if (!problem.isEmpty())
         return Reply::failed({}, Error(Error::Kind::InvalidArgument, problem));
 
@@ -231,9 +231,9 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
                     Error::Kind::DeviceError,
                     Tr::tr("drive gave no value for '%1': %2").arg(text, value.error().message()));
             if (value->address != address)
-                return malformed(text,
-                                 QStringLiteral("names object %1: '%2'")
-                                     .arg(value->address.toString(), line.value()));
+                return malformed(
+                    text,
+                    Tr::tr("names object %1: '%2'").arg(value->address.toString(), line.value()));
             return QVariant::fromValue<qlonglong>(value->value);
         },
         address);

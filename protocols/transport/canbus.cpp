@@ -96,7 +96,7 @@ void CanBus::flushDropReport()
         return;
     m_lastReportMs = QDeadlineTimer::current().deadline();
     const qint64 frames = std::exchange(m_droppedUnreported, 0);
-    Q_EMIT warning(QStringLiteral("%1: receive queue overflow: %2 frames dropped (%3 in all)")
+    Q_EMIT warning(Tr::tr("%1: receive queue overflow: %2 frames dropped (%3 in all)")
                        .arg(name())
                        .arg(frames)
                        .arg(m_dropped));

@@ -135,7 +135,7 @@ void QtCanBus::doSend(const QCanBusFrame &frame)
     if (!m_device)
         return;
     if (!m_device->writeFrame(frame)) {
-        Q_EMIT warning(QStringLiteral("%1: frame %2 not sent: %3")
+        Q_EMIT warning(Tr::tr("%1: frame %2 not sent: %3")
                            .arg(name(), frame.toString(), m_device->errorString()));
         return;
     }
@@ -172,10 +172,10 @@ void QtCanBus::onError(QCanBusDevice::CanBusError error)
                 Tr::tr("cannot open %1 interface '%2': %3").arg(m_plugin, m_interface, text)));
             return;
         }
-        Q_EMIT warning(QStringLiteral("%1: connection error: %2").arg(name(), text));
+        Q_EMIT warning(Tr::tr("%1: connection error: %2").arg(name(), text));
         return;
     case QCanBusDevice::ConfigurationError:
-        Q_EMIT warning(QStringLiteral("%1: configuration not applied (bit rate %2): %3")
+        Q_EMIT warning(Tr::tr("%1: configuration not applied (bit rate %2): %3")
                            .arg(name())
                            .arg(m_bitrate)
                            .arg(text));
@@ -199,8 +199,8 @@ void QtCanBus::onFramesReceived()
     for (int i = 0; i < kReceiveSliceFrames && m_device && m_device->framesAvailable() > 0; ++i) {
         const QCanBusFrame frame = m_device->readFrame();
         if (frame.frameType() == QCanBusFrame::ErrorFrame) {
-            Q_EMIT warning(QStringLiteral("%1: error frame: %2")
-                               .arg(name(), m_device->interpretErrorFrame(frame)));
+            Q_EMIT warning(
+                Tr::tr("%1: error frame: %2").arg(name(), m_device->interpretErrorFrame(frame)));
             continue;
         }
         qCDebug(lcQtCanRaw).noquote() << name() << "rx" << frame.toString();

@@ -163,11 +163,11 @@ Error RequestEngineBase::notConnected(const QString &label) const
 
 Error RequestEngineBase::timedOut(const QString &label, int transmissions) const
 {
-    QString message = QStringLiteral("no answer to '%1' from %2 within %3 ms")
+    QString message = Tr::tr("no answer to '%1' from %2 within %3 ms")
                           .arg(label, m_stream->peerName())
                           .arg(m_timeoutMs);
     if (transmissions > 1)
-        message += QStringLiteral(" (sent %1 times)").arg(transmissions);
+        message += Tr::tr(" (sent %1 times)").arg(transmissions);
     return Error(Error::Kind::Timeout, message);
 }
 
