@@ -1789,6 +1789,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>&amp;Filter Objects</source>
         <translation>Objekte &amp;filtern</translation>
     </message>
+    <message>
+        <source>&amp;User Manual</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>User Manual</source>
+        <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>The manual is missing from this build.</source>
+        <translation>Das Handbuch fehlt in dieser Version.</translation>
+    </message>
 </context>
 <context>
     <name>db::morse</name>

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+class QDialog;
 class QLabel;
 class QTabWidget;
 
@@ -88,6 +89,8 @@ public Q_SLOTS:
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
     void showAbout();
+    // The README, built into the program, in a window of its own (Help → User Manual, F1).
+    void showManual();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -132,6 +135,7 @@ private:
     widgets::ScopePage *m_scopePage = nullptr;
     QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
+    QPointer<QDialog> m_manual; // made on first use
     QSet<const DeviceConnection *> m_unstored; // written, not stored permanently
     QTabWidget *m_pages = nullptr;
     QAction *m_disconnectAction = nullptr;

@@ -1,6 +1,7 @@
 // The main window's title names the current connection and its state, and marks ("*") a
 // connection that was written to since it last stored its parameters permanently; the standard
-// keys: Ctrl+O connect, Ctrl+S store permanently, F5 re-read the objects, Ctrl+F filter them.
+// keys: Ctrl+O connect, Ctrl+S store permanently, F5 re-read the objects, Ctrl+F filter them,
+// F1 the user manual.
 #include "fakeconnection.h"
 #include "mainwindow.h"
 #include "resources/builtindescriptions.h"
@@ -14,6 +15,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QTimer>
 
 using namespace db;
@@ -160,6 +162,17 @@ private Q_SLOTS:
         auto *edit = window.odEditor()->findChild<QLineEdit *>(QStringLiteral("filter"));
         QVERIFY(edit);
         QTRY_VERIFY(edit->hasFocus());
+
+        // F1: the user manual (the README) in a window of its own.
+        QAction *manual = actionNamed(window, QStringLiteral("manualAction"));
+        QVERIFY(manual);
+        QCOMPARE(manual->shortcut(), QKeySequence(QKeySequence::HelpContents));
+        manual->trigger();
+        auto *text = window.findChild<QTextBrowser *>(QStringLiteral("manualText"));
+        QVERIFY(text);
+        QTRY_VERIFY(text->isVisible());
+        QVERIFY2(text->toPlainText().contains(QStringLiteral("How the code is organised")),
+                 qPrintable(text->toPlainText().left(200)));
     }
 };
 
