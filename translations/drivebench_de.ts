@@ -1109,6 +1109,161 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>node %1 did not answer %2 within %3 ms</source>
         <translation>Knoten %1 hat auf %2 nicht innerhalb von %3 ms geantwortet</translation>
     </message>
+    <message>
+        <source>6007h = 3, quick stop</source>
+        <translation>6007h = 3, Schnellhalt</translation>
+    </message>
+    <message>
+        <source>no 6007h: the drive&apos;s own reaction</source>
+        <translation>kein 6007h: die eigene Reaktion des Antriebs</translation>
+    </message>
+    <message>
+        <source>drive stops within %1 ms if drivebench stops (our heartbeat from node %2 every %3 ms, watched by the drive&apos;s 1016h; %4)</source>
+        <translation>Antrieb hält innerhalb von %1 ms an, wenn drivebench ausfällt (unser Heartbeat von Knoten %2 alle %3 ms, überwacht durch 1016h des Antriebs; %4)</translation>
+    </message>
+    <message>
+        <source>drive stops within %1 ms if drivebench stops (node guarding every %2 ms, life time %1 ms; %3)</source>
+        <translation>Antrieb hält innerhalb von %1 ms an, wenn drivebench ausfällt (Node Guarding alle %2 ms, Lebensdauer %1 ms; %3)</translation>
+    </message>
+    <message>
+        <source>no drive-side supervision: node %1 describes neither 1016h nor 100Ch/100Dh; only the motion lease bounds a jog</source>
+        <translation>keine antriebsseitige Überwachung: Knoten %1 beschreibt weder 1016h noch 100Ch/100Dh; nur die Bewegungsfreigabe begrenzt das Tippen</translation>
+    </message>
+    <message>
+        <source>no drive-side supervision on this connection; only the motion lease bounds a jog</source>
+        <translation>keine antriebsseitige Überwachung auf dieser Verbindung; nur die Bewegungsfreigabe begrenzt das Tippen</translation>
+    </message>
+</context>
+<context>
+    <name>db::canopen::SdoAbort</name>
+    <message>
+        <source>toggle bit not alternated</source>
+        <translation>Toggle-Bit nicht gewechselt</translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation>Zeitüberschreitung im SDO-Protokoll</translation>
+    </message>
+    <message>
+        <source>client/server command specifier not valid or unknown</source>
+        <translation>Client/Server-Befehlskennung ungültig oder unbekannt</translation>
+    </message>
+    <message>
+        <source>invalid block size (block mode only)</source>
+        <translation>ungültige Blockgröße (nur Blockmodus)</translation>
+    </message>
+    <message>
+        <source>invalid sequence number (block mode only)</source>
+        <translation>ungültige Sequenznummer (nur Blockmodus)</translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation>CRC-Fehler (nur Blockmodus)</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>Speicher erschöpft</translation>
+    </message>
+    <message>
+        <source>unsupported access to an object</source>
+        <translation>nicht unterstützter Zugriff auf ein Objekt</translation>
+    </message>
+    <message>
+        <source>attempt to read a write only object</source>
+        <translation>Versuch, ein nur schreibbares Objekt zu lesen</translation>
+    </message>
+    <message>
+        <source>attempt to write a read only object</source>
+        <translation>Versuch, ein nur lesbares Objekt zu schreiben</translation>
+    </message>
+    <message>
+        <source>object does not exist in the object dictionary</source>
+        <translation>Objekt existiert nicht im Objektverzeichnis</translation>
+    </message>
+    <message>
+        <source>object cannot be mapped to the PDO</source>
+        <translation>Objekt kann nicht auf das PDO gemappt werden</translation>
+    </message>
+    <message>
+        <source>the number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation>Anzahl und Länge der zu mappenden Objekte würden die PDO-Länge überschreiten</translation>
+    </message>
+    <message>
+        <source>general parameter incompatibility</source>
+        <translation>allgemeine Parameter-Inkompatibilität</translation>
+    </message>
+    <message>
+        <source>general internal incompatibility in the device</source>
+        <translation>allgemeine interne Inkompatibilität im Gerät</translation>
+    </message>
+    <message>
+        <source>access failed due to a hardware error</source>
+        <translation>Zugriff wegen eines Hardwarefehlers fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>data type does not match, length of service parameter does not match</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters passt nicht</translation>
+    </message>
+    <message>
+        <source>data type does not match, length of service parameter too high</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters zu groß</translation>
+    </message>
+    <message>
+        <source>data type does not match, length of service parameter too low</source>
+        <translation>Datentyp passt nicht, Länge des Dienstparameters zu klein</translation>
+    </message>
+    <message>
+        <source>sub-index does not exist</source>
+        <translation>Subindex existiert nicht</translation>
+    </message>
+    <message>
+        <source>invalid value for parameter (download only)</source>
+        <translation>ungültiger Wert für den Parameter (nur Download)</translation>
+    </message>
+    <message>
+        <source>value of parameter written too high (download only)</source>
+        <translation>geschriebener Parameterwert zu groß (nur Download)</translation>
+    </message>
+    <message>
+        <source>value of parameter written too low (download only)</source>
+        <translation>geschriebener Parameterwert zu klein (nur Download)</translation>
+    </message>
+    <message>
+        <source>maximum value is less than minimum value</source>
+        <translation>Maximalwert ist kleiner als Minimalwert</translation>
+    </message>
+    <message>
+        <source>resource not available: SDO connection</source>
+        <translation>Ressource nicht verfügbar: SDO-Verbindung</translation>
+    </message>
+    <message>
+        <source>general error</source>
+        <translation>allgemeiner Fehler</translation>
+    </message>
+    <message>
+        <source>data cannot be transferred or stored to the application</source>
+        <translation>Daten können nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <source>data cannot be transferred or stored to the application because of local control</source>
+        <translation>Daten können wegen lokaler Steuerung nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <source>data cannot be transferred or stored to the application because of the present device state</source>
+        <translation>Daten können im aktuellen Gerätezustand nicht an die Anwendung übertragen oder dort gespeichert werden</translation>
+    </message>
+    <message>
+        <source>object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation>dynamische Erzeugung des Objektverzeichnisses fehlgeschlagen oder kein Objektverzeichnis vorhanden</translation>
+    </message>
+    <message>
+        <source>no data available</source>
+        <translation>keine Daten verfügbar</translation>
+    </message>
+    <message>
+        <source>unknown abort code 0x%1</source>
+        <translation>unbekannter Abbruchcode 0x%1</translation>
+    </message>
 </context>
 <context>
     <name>db::cia402</name>
@@ -1921,6 +2076,50 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>target outside the software limit switches</source>
+        <translation>Ziel außerhalb der Software-Endschalter</translation>
+    </message>
+    <message>
+        <source>travel direction not permitted</source>
+        <translation>Fahrtrichtung nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>target outside the cycle length</source>
+        <translation>Ziel außerhalb der Zykluslänge</translation>
+    </message>
+    <message>
+        <source>hardware limit switch active in the travel direction</source>
+        <translation>Hardware-Endschalter in Fahrtrichtung aktiv</translation>
+    </message>
+    <message>
+        <source>velocity, acceleration, deceleration or jerk is zero</source>
+        <translation>Geschwindigkeit, Beschleunigung, Verzögerung oder Ruck ist null</translation>
+    </message>
+    <message>
+        <source>maximum acceleration or maximum jerk of the axis is zero</source>
+        <translation>maximale Beschleunigung oder maximaler Ruck der Achse ist null</translation>
+    </message>
+    <message>
+        <source>axis not referenced</source>
+        <translation>Achse nicht referenziert</translation>
+    </message>
+    <message>
+        <source>axis not at standstill</source>
+        <translation>Achse nicht im Stillstand</translation>
+    </message>
+    <message>
+        <source>homing method inactive</source>
+        <translation>Referenzfahrtmethode inaktiv</translation>
+    </message>
+    <message>
+        <source>MC_Stop is active</source>
+        <translation>MC_Stop ist aktiv</translation>
+    </message>
+    <message>
+        <source>axis not enabled or in ErrorStop</source>
+        <translation>Achse nicht freigegeben oder in ErrorStop</translation>
     </message>
 </context>
 <context>
