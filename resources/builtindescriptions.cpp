@@ -1,12 +1,14 @@
 #include "builtindescriptions.h"
 
+#include "description/descriptionfile.h"
+
 #include <QDir>
 
 namespace db::resources {
 
 Result<ObjectDictionary> builtinDescription(const QString &name)
 {
-    return ObjectDictionary::loadDescription(QStringLiteral(":/devices/%1.json").arg(name));
+    return loadJsonDescription(QStringLiteral(":/devices/%1.json").arg(name));
 }
 
 QStringList builtinDescriptionNames()

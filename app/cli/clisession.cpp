@@ -41,6 +41,26 @@ int exitCodeFor(const Error &error)
     }
 }
 
+Result<const AddressFormat *> addressFormatFor(const ProtocolRegistry &registry,
+                                               const QString &uriText)
+{
+    const auto uri = registry.parseUri(uriText);
+    if (!uri)
+        return uri.error();
+    const ProtocolInfo *protocol = registry.find(uri->scheme());
+    return protocol && protocol->addressFormat ? protocol->addressFormat
+                                               : &AddressFormat::canopen();
+}
+
+Result<ObjectAddress> parseAddressFor(const ProtocolRegistry &registry, const QString &uriText,
+                                      const QString &addressText)
+{
+    const auto format = addressFormatFor(registry, uriText);
+    if (!format)
+        return format.error();
+    return (*format)->parse(addressText);
+}
+
 Session::Session(const ProtocolRegistry &registry, const Options &options)
     : m_registry(registry)
     , m_options(options)
@@ -76,12 +96,25 @@ Result<void> Session::open(const QString &uriText)
             return mode.error();
         plan.value().uri.setQueryValue(QStringLiteral("sdo"), m_options.sdoMode);
     }
+    if (m_options.ram) {
+        // --ram is the URI's ?ram given on the command line.
+        const ProtocolInfo *protocol = m_registry.find(plan->uri.scheme());
+        if (!protocol || protocol->key != u"vabus")
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("--ram needs a vabus:// URI"));
+        plan.value().uri.setQueryValue(QStringLiteral("ram"), QString());
+    }
     auto created = m_registry.create(plan.value());
     if (!created)
         return created.error();
     m_connection = created.value();
 
     return m_connection->openAndWait(m_options.connectTimeoutMs);
+}
+
+const AddressFormat &Session::addressFormat() const
+{
+    return m_connection ? m_connection->addressFormat() : AddressFormat::canopen();
 }
 
 Result<QVariant> Session::read(ObjectAddress address)

@@ -23,6 +23,17 @@ enum ExitCode {
 
 int exitCodeFor(const Error &error);
 
+// How the device at uriText writes its object addresses, known before anything is opened: the
+// protocol's format (hex INDEX:SUB for CANopen and RefGo, decimal NUMBER:DATASET for inverter
+// parameters). A URI that does not parse gives its own error: it is the real cause when an
+// address in the wrong format would fail too.
+Result<const AddressFormat *> addressFormatFor(const ProtocolRegistry &registry,
+                                               const QString &uriText);
+
+// An address typed on the command line, in the format of the device at uriText.
+Result<ObjectAddress> parseAddressFor(const ProtocolRegistry &registry, const QString &uriText,
+                                      const QString &addressText);
+
 // Options shared by every command.
 struct Options
 {
@@ -31,6 +42,7 @@ struct Options
     bool hex = false;
     bool verbose = false;
     QString sdoMode; // --sdo for CANopen connections: auto, expedited, segmented, block
+    bool ram = false; // --ram for VABus connections: writes go to the RAM data sets (DS + 5)
 };
 
 // One connection for the duration of a command: opens it (waiting at most connectTimeoutMs),
@@ -43,6 +55,9 @@ public:
 
     Result<void> open(const QString &uriText);
     DeviceConnection *connection() const { return m_connection.get(); }
+    // The open connection's address format (CANopen's before open()): every address printed
+    // for this session goes through it.
+    const AddressFormat &addressFormat() const;
     Result<QVariant> read(ObjectAddress address);
     Result<void> write(ObjectAddress address, const QVariant &raw);
 

@@ -3,6 +3,7 @@
 #include "commands_description.h"
 #include "commands_morse.h"
 #include "commands_motion.h"
+#include "commands_nm17x.h"
 #include "commands_params.h"
 #include "commands_record.h"
 
@@ -42,6 +43,8 @@ int listProtocols(Context &c)
               << p.uriPattern.leftJustified(patternWidth + 2) << p.title;
         if (p.defaultPort >= 0)
             c.out << Tr::tr(" (default port %1)").arg(p.defaultPort);
+        const AddressFormat &format = p.addressFormat ? *p.addressFormat : AddressFormat::canopen();
+        c.out << Tr::tr(", addresses like %1").arg(format.example());
         c.out << Qt::endl;
     }
     return ExitOk;
@@ -71,7 +74,7 @@ struct ObjectTarget
 
 Result<ObjectTarget> openObject(Context &c, Session &session)
 {
-    const auto address = ObjectAddress::parse(c.args.value(1));
+    const auto address = parseAddressFor(c.registry, c.args.value(0), c.args.value(1));
     if (!address)
         return address.error();
     if (auto opened = session.open(c.args.at(0)); !opened)
@@ -107,8 +110,10 @@ int read(Context &c)
         return fail(c, target.error());
     const auto value = session.read(target->address);
     if (!value)
-        return fail(c,
-                    value.error().prefixed(Tr::tr("reading %1").arg(target->address.toString())));
+        return fail(
+            c,
+            value.error().prefixed(
+                QStringLiteral("reading %1").arg(session.addressFormat().format(target->address))));
     if (!c.file.isEmpty())
         return saveValueToFile(c, target->type, value.value());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
@@ -122,14 +127,18 @@ int read(Context &c)
     QByteArray bytes = raw.toByteArray();
     while (bytes.endsWith('\0'))
         bytes.chop(1);
-    const QString text = !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
+    // Fixed-point parameters (inverters) print their physical value with its unit: "10.00 Hz".
+    const bool physical = target->def && target->def->decimals >= 0
+        && datatype::isInteger(target->type) && format == codec::TextFormat::Decimal;
+    const QString text = physical ? target->def->displayText(raw, format)
+        : !target->def && c.type.isEmpty() && raw.typeId() == QMetaType::QByteArray
         ? QString::fromUtf8(bytes)
         : datatype::isNumeric(target->type) || target->def
         ? codec::toText(target->type, raw, format)
         : raw.toString();
     // Strings come from the device (e.g. 1008h): escaped, so that one value stays one line.
     if (c.options.verbose) {
-        c.out << target->address.toString() << ' '
+        c.out << session.addressFormat().format(target->address) << ' '
               << printable(target->def ? target->def->name : Tr::tr("(unknown object)")) << " = "
               << printable(target->def ? target->def->displayText(raw, format) : text) << Qt::endl;
     } else {
@@ -155,11 +164,13 @@ int write(Context &c)
     if (!raw)
         return fail(c, raw.error());
     if (auto written = session.write(target->address, raw.value()); !written)
-        return fail(c,
-                    written.error().prefixed(Tr::tr("writing %1").arg(target->address.toString())));
+        return fail(
+            c,
+            written.error().prefixed(
+                QStringLiteral("writing %1").arg(session.addressFormat().format(target->address))));
     if (c.options.verbose)
-        c.out << target->address.toString() << " <- " << codec::toText(target->type, raw.value())
-              << " ok" << Qt::endl;
+        c.out << session.addressFormat().format(target->address) << " <- "
+              << codec::toText(target->type, raw.value()) << " ok" << Qt::endl;
     return ExitOk;
 }
 
@@ -189,10 +200,13 @@ const QList<Command> &commands()
     static const QList<Command> list = {
         { "list-protocols", "", QT_TRANSLATE_NOOP("cli", "list the protocols and their URI forms"),
           0, 0, listProtocols },
-        { "read", "URI INDEX:SUB",
-          QT_TRANSLATE_NOOP("cli", "read one object, e.g. read refgo://192.168.2.150 6041:0"), 2, 2,
-          read },
-        { "write", "URI INDEX:SUB VALUE|--file FILE",
+        { "read", "URI ADDRESS",
+          QT_TRANSLATE_NOOP(
+              "cli",
+              "read one object, e.g. read refgo://192.168.2.150 6041:0 (ADDRESS as the protocol "
+              "writes it: list-protocols shows an example)"),
+          2, 2, read },
+        { "write", "URI ADDRESS VALUE|--file FILE",
           QT_TRANSLATE_NOOP("cli", "write one object, e.g. write refgo://HOST 6083:0 2000"), 2, 3,
           write },
         { "refgo", "URI COMMAND",
@@ -209,6 +223,14 @@ const QList<Command> &commands()
           "store|fastscan",
           QT_TRANSLATE_NOOP("cli", "CiA 305 layer setting services"), 2, 3, lss },
         { "pdo", "URI", QT_TRANSLATE_NOOP("cli", "print the node's PDO configuration"), 1, 1, pdo },
+        { "nm17x",
+          "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
+          "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
+          "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
+          "WORD | watch [--seconds S]",
+          QT_TRANSLATE_NOOP(
+              "cli", "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)"),
+          2, 4, nm17x, nm17xOptions },
         { "dcf", "URI -o FILE",
           QT_TRANSLATE_NOOP("cli", "write a DCF of the device's current values (?eds= needed)"), 1,
           1, dcf },
@@ -218,7 +240,7 @@ const QList<Command> &commands()
         { "backup", "URI -o FILE",
           QT_TRANSLATE_NOOP("cli", "save every storable object of the device to a parameter set"),
           1, 1, backup, paramsOptions },
-        { "restore", "URI FILE [--only INDEX:SUB,...] [--store] [--no-verify]",
+        { "restore", "URI FILE [--only ADDRESS,...] [--store] [--no-verify]",
           QT_TRANSLATE_NOOP(
               "cli",
               "write a parameter set (or its selected rows) safely, verify, optionally store"),

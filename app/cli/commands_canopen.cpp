@@ -1,5 +1,7 @@
 #include "commands_canopen.h"
 
+#include "networksession.h"
+
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
@@ -9,8 +11,8 @@
 #include "canopen/nodescanner.h"
 #include "canopen/pdoclient.h"
 #include "canopen/sdoclient.h"
-#include "core/dcfwriter.h"
 #include "core/printable.h"
+#include "description/dcfwriter.h"
 #include "transport/canbus.h"
 
 #include <QElapsedTimer>
@@ -35,62 +37,6 @@ namespace db::cli {
 namespace {
 
 using namespace db::canopen;
-
-// The CANopen network of a URI's bus, for the commands that work on the bus (no ?node= needed).
-// Closing waits for the bus to close, so that queued frames leave before the process ends.
-class NetworkSession
-{
-public:
-    ~NetworkSession()
-    {
-        if (!m_network)
-            return;
-        CanBus *bus = m_network->bus();
-        if (bus->state() == CanBus::State::Closed)
-            return;
-        QEventLoop loop;
-        QObject::connect(bus, &CanBus::closed, &loop, &QEventLoop::quit);
-        QTimer::singleShot(1000, &loop, &QEventLoop::quit);
-        m_network->release();
-        if (bus->state() != CanBus::State::Closed)
-            loop.exec();
-    }
-
-    Result<void> open(const QString &text, int timeoutMs)
-    {
-        const auto uri = ConnectionUri::parse(text);
-        if (!uri)
-            return uri.error();
-        auto network = m_pool.networkFor(*uri);
-        if (!network)
-            return network.error();
-        m_network = network.value();
-        QObject::connect(m_network->bus(), &CanBus::frameSent, m_network.get(),
-                         [this] { ++m_sent; });
-        return m_network->acquireAndWait(timeoutMs);
-    }
-    CanNetwork *network() const { return m_network.get(); }
-    CanBus *bus() const { return m_network->bus(); }
-
-    // Waits until `frames` frames in all have gone out since open (frameSent), at most ms.
-    void flush(int frames, int ms)
-    {
-        if (m_sent >= frames)
-            return;
-        QEventLoop loop;
-        QObject::connect(m_network->bus(), &CanBus::frameSent, &loop, [&] {
-            if (m_sent >= frames)
-                loop.quit();
-        });
-        QTimer::singleShot(ms, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-
-private:
-    CanNetworkPool m_pool;
-    std::shared_ptr<CanNetwork> m_network;
-    int m_sent = 0;
-};
 
 Error usage(const QString &text)
 {
@@ -328,7 +274,7 @@ int pdo(Context &c)
         c.out << config.toString() << Qt::endl;
         for (const PdoMappingEntry &e : config.entries) {
             const ObjectDef *def = conn->dictionary().find(e.address);
-            c.out << "    " << e.address.toString() << " " << e.bits << " bits"
+            c.out << "    " << conn->addressFormat().format(e.address) << " " << e.bits << " bits"
                   << (def ? QStringLiteral("  %1").arg(printable(def->name)) : QString())
                   << Qt::endl;
         }
@@ -362,11 +308,14 @@ int dcf(Context &c)
         }
         const auto kind = value.error().kind();
         if (kind == Error::Kind::Timeout || kind == Error::Kind::Disconnected)
-            return fail(c,
-                        value.error().prefixed(Tr::tr("reading %1").arg(def.address.toString())));
+            return fail(
+                c,
+                value.error().prefixed(
+                    QStringLiteral("reading %1").arg(session.addressFormat().format(def.address))));
         ++skipped;
         if (c.options.verbose)
-            c.err << Tr::tr("warning: %1: %2").arg(def.address.toString(), value.error().message())
+            c.err << Tr::tr("warning: %1: %2")
+                         .arg(session.addressFormat().format(def.address), value.error().message())
                   << Qt::endl;
     }
     DcfCommissioning commissioning;

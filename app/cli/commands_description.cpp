@@ -1,7 +1,7 @@
 #include "commands_description.h"
 
-#include "core/devicedescription.h"
 #include "core/printable.h"
+#include "description/devicedescription.h"
 
 #include <QCoreApplication>
 #include <QSet>

@@ -1,7 +1,7 @@
 #include "commands_morse.h"
 
-#include "morse/decoder.h"
-#include "morse/morseinput.h"
+#include "morse/decode/decoder.h"
+#include "morse/input/morseinput.h"
 #include <QCoreApplication>
 
 namespace {

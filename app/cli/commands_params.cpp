@@ -1,7 +1,7 @@
 #include "commands_params.h"
 
-#include "core/parameterrunner.h"
 #include "core/printable.h"
+#include "parameters/parameterrunner.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -126,6 +126,14 @@ Result<void> checkIdentity(Context &c, Session &session, const ParameterSet &set
     return {};
 }
 
+// An empty set that stands for the addresses of a device (for checkSameAddressFormat()).
+ParameterSet addressSet(const AddressFormat &format)
+{
+    ParameterSet set;
+    set.addressFormat = &format;
+    return set;
+}
+
 // A diff side is a URI when it names a scheme ("refgo://..."); anything else is a file.
 bool isUri(const QString &text)
 {
@@ -137,8 +145,10 @@ bool isUri(const QString &text)
 QList<QCommandLineOption> paramsOptions()
 {
     return {
-        QCommandLineOption(kOnly, Tr::tr("restore: only these objects, e.g. 6083:0,6084:0."),
-                           QStringLiteral("INDEX:SUB,...")),
+        QCommandLineOption(kOnly,
+                           Tr::tr("restore: only these objects, as the protocol writes "
+                                  "addresses, e.g. 6083:0,6084:0."),
+                           QStringLiteral("ADDRESS,...")),
         QCommandLineOption(kStore,
                            Tr::tr("restore: store to non-volatile memory afterwards "
                                   "(1010h sub 1 = \"save\") when every row verified.")),
@@ -189,21 +199,30 @@ int restore(Context &c)
         return failFile(c, set.error());
     if (set->isEmpty())
         return fail(c, usage(Tr::tr("%1 holds no object: nothing to restore").arg(c.args.at(1))));
+    // The set's addresses must be written as the device at the URI writes them, and --only
+    // names objects in that format too; both are checked before anything is connected.
+    const auto format = addressFormatFor(c.registry, c.args.at(0));
+    if (!format)
+        return fail(c, format.error());
+    if (auto same =
+            checkSameAddressFormat({ *set, addressSet(**format) }, { c.args.at(1), c.args.at(0) });
+        !same)
+        return fail(c, same.error());
     QList<ObjectAddress> only;
     if (c.parser && c.parser->isSet(kOnly)) {
         for (const QString &part : c.parser->value(kOnly).split(u',', Qt::SkipEmptyParts)) {
-            const auto address = ObjectAddress::parse(part.trimmed());
+            const auto address = (*format)->parse(part.trimmed());
             if (!address)
                 return fail(c, usage(QStringLiteral("--only: %1").arg(address.error().message())));
             if (!set->contains(*address))
-                return fail(
-                    c,
-                    usage(
-                        Tr::tr("--only: %1 is not in %2").arg(address->toString(), c.args.at(1))));
+                return fail(c,
+                            usage(Tr::tr("--only: %1 is not in %2")
+                                      .arg((*format)->format(*address), c.args.at(1))));
             only.append(*address);
         }
         if (only.isEmpty())
-            return fail(c, usage(Tr::tr("--only needs INDEX:SUB,...")));
+            return fail(
+                c, usage(Tr::tr("--only needs addresses like %1,...").arg((*format)->example())));
     }
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
@@ -261,13 +280,16 @@ int diff(Context &c)
             dictionary = std::make_unique<ObjectDictionary>(session.connection()->dictionary());
         sides.append(run->read);
     }
+    if (auto same = checkSameAddressFormat(sides, c.args); !same)
+        return fail(c, same.error());
     const ParameterComparison comparison = compareParameterSets(sides, c.args, dictionary.get());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     for (const CompareRow &row : comparison.rows) {
         if (!row.differs)
             continue;
-        c.out << compareStatusName(row.status).leftJustified(8) << row.address.toString() << "  "
-              << printable(row.name) << ": " << printable(row.valueText(0, format)) << " | "
+        c.out << compareStatusName(row.status).leftJustified(8)
+              << comparison.addressFormat->format(row.address) << "  " << printable(row.name)
+              << ": " << printable(row.valueText(0, format)) << " | "
               << printable(row.valueText(1, format));
         if (!row.unit.isEmpty())
             c.out << ' ' << printable(row.unit);
@@ -286,14 +308,15 @@ int dump(Context &c)
     if (!run)
         return fail(c, run.error());
     const ObjectDictionary &dict = session.connection()->dictionary();
+    const AddressFormat &addressFormat = session.connection()->addressFormat();
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     qsizetype width = 0;
     for (const ParameterEntry &e : run->read.entries())
         width = qMax(width, printable(e.name).size());
     for (const ParameterEntry &e : run->read.entries()) {
         const ObjectDef *def = dict.find(e.address);
-        c.out << e.address.toString().leftJustified(8) << printable(e.name).leftJustified(width)
-              << " = "
+        c.out << addressFormat.format(e.address).leftJustified(8)
+              << printable(e.name).leftJustified(width) << " = "
               << printable(def ? def->displayText(e.raw, format)
                                : codec::toText(e.type, e.raw, format))
               << Qt::endl;

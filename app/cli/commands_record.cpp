@@ -82,18 +82,23 @@ Result<int> integer(Context &c, const QString &name, int min, int max, const QSt
 Result<Settings> parseSettings(Context &c)
 {
     Settings s;
+    // --obj names objects of the device at the URI, in its protocol's address format.
+    const auto format = addressFormatFor(c.registry, c.args.at(0));
+    if (!format)
+        return format.error();
     for (const QString &text : c.parser->values(QStringLiteral("obj"))) {
         for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-            const auto address = ObjectAddress::parse(item.trimmed());
+            const auto address = (*format)->parse(item.trimmed());
             if (!address)
                 return address.error();
             if (s.objects.contains(*address))
-                return usage(Tr::tr("--obj %1 given twice").arg(address->toString()));
+                return usage(Tr::tr("--obj %1 given twice").arg((*format)->format(*address)));
             s.objects.append(*address);
         }
     }
     if (s.objects.isEmpty())
-        return usage(Tr::tr("record needs at least one --obj INDEX:SUB"));
+        return usage(Tr::tr("record needs at least one --obj ADDRESS (e.g. --obj %1)")
+                         .arg((*format)->example()));
     if (c.output.isEmpty())
         return usage(Tr::tr("record needs -o FILE.csv"));
     if (c.parser->isSet(QStringLiteral("rate-ms"))) {
@@ -164,8 +169,10 @@ int timerMs(double seconds)
 QList<QCommandLineOption> recordOptions()
 {
     return {
-        { QStringLiteral("obj"), Tr::tr("record: an object to record (repeatable)."),
-          QStringLiteral("index:sub") },
+        { QStringLiteral("obj"),
+          Tr::tr("record: an object to record, as the protocol writes addresses "
+                 "(repeatable)."),
+          QStringLiteral("address") },
         { QStringLiteral("rate-ms"),
           Tr::tr("record: sample period per object in ms (default 10; 0 = as fast as "
                  "the link allows)."),

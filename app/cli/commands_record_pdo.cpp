@@ -71,8 +71,8 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
         return added.error();
     for (const scope::PdoChannelPlanEntry &e : std::as_const(plan.found)) {
         const int size = datatype::byteSize(e.mapping.type);
-        c.out << "pdo: " << e.address.toString() << " from " << pdoName(e) << " bytes "
-              << e.mapping.byteOffset << ".." << e.mapping.byteOffset + size - 1;
+        c.out << "pdo: " << connection->addressFormat().format(e.address) << " from " << pdoName(e)
+              << " bytes " << e.mapping.byteOffset << ".." << e.mapping.byteOffset + size - 1;
         if (e.mapping.expectedPeriodMs > 0)
             c.out << ", every " << e.mapping.expectedPeriodMs << " ms";
         c.out << Qt::endl;

@@ -95,6 +95,11 @@ int main(int argc, char *argv[])
                                     "CANopen SDO mode: auto (default), expedited, segmented, "
                                     "block."),
         QStringLiteral("mode"));
+    const QCommandLineOption ram(
+        QStringLiteral("ram"),
+        QCoreApplication::translate("cli",
+                                    "VABus: write the RAM copy of the data set (data set + 5), "
+                                    "sparing the inverter's EEPROM; lost at power-off."));
     const QCommandLineOption all(
         QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
     const QCommandLineOption lang(
@@ -104,7 +109,8 @@ int main(int argc, char *argv[])
                                     "DRIVEBENCH_LANG, else LC_ALL, LC_MESSAGES, LANG)."),
         QStringLiteral("language"));
     const QList<QCommandLineOption> common { timeout, connectTimeout, hex, type, verbose,
-                                             file,    output,         sdo, all,  lang };
+                                             file,    output,         sdo, ram,  all,
+                                             lang };
     parser.addOptions(common);
     QStringList taken; // option names in use; each command family may add its own
     for (const QCommandLineOption &o : common)
@@ -166,6 +172,7 @@ int main(int argc, char *argv[])
     options.hex = parser.isSet(hex);
     options.verbose = parser.isSet(verbose);
     options.sdoMode = parser.value(sdo);
+    options.ram = parser.isSet(ram);
     // Errors reach the user as one line from the command itself; the libraries' log lines only
     // with --verbose (QT_LOGGING_RULES still overrides this).
     QLoggingCategory::setFilterRules(options.verbose ? QStringLiteral("drivebench.*.debug=false")

@@ -1,11 +1,11 @@
 #include "demodrive.h"
 
-#include "canopen/movingcapcanopen.h"
-#include "refgo/movingcaprefgohandler.h"
-#include "refgo/refgoserver.h"
+#include "devices/movingcap/movingcapcanopen.h"
+#include "devices/movingcap/movingcapdrive.h"
+#include "devices/movingcap/movingcaprefgohandler.h"
+#include "refgo/device/refgoserver.h"
 #include "resources/builtindescriptions.h"
-#include "simulation/movingcapdrive.h"
-#include "transport/slcanserver.h"
+#include "transport/device/slcanserver.h"
 
 namespace db::app {
 

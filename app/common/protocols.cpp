@@ -3,9 +3,11 @@
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
-#include "core/devicedescription.h"
+#include "description/devicedescription.h"
+#include "devices/bonfiglioli/acudescription.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
+#include "vabus/vabusconnection.h"
 
 #include <QCanBus>
 #include <QCoreApplication>
@@ -115,6 +117,22 @@ ProtocolRegistry makeRegistry()
         },
         {},
         {},
+    });
+    registry.add({
+        .scheme = QStringLiteral("vabus"),
+        .key = QStringLiteral("vabus"),
+        .title = Tr::tr("Bonfiglioli ACTIVE Cube over VABus/TCP"),
+        .uriPattern = QStringLiteral("vabus://HOST[:PORT][?sys=N][&ram]"),
+        .defaultPort = vabus::VabusConnection::kDefaultPort,
+        .create = [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
+            auto connection = std::make_unique<vabus::VabusConnection>(plan.uri);
+            connection->setDictionary(plan.hasDictionary ? plan.dictionary
+                                                         : bonfiglioli::acuDictionary());
+            return std::unique_ptr<DeviceConnection>(std::move(connection));
+        },
+        .check = vabus::VabusConnection::checkUri,
+        .prepare = {},
+        .addressFormat = &AddressFormat::parameter(),
     });
     registry.add(canopenProtocol(QStringLiteral("slcan"),
                                  Tr::tr("CANopen over SLCAN in TCP (MovingCap ETH: node 50)"),

@@ -1,10 +1,10 @@
 #include "simnodes.h"
 
-#include "canopen/simulatednode.h"
-#include "core/devicedescription.h"
+#include "canopen/device/simulatednode.h"
+#include "description/devicedescription.h"
 #include "resources/builtindescriptions.h"
+#include "transport/device/slcanserver.h"
 #include "transport/qtcanbus.h"
-#include "transport/slcanserver.h"
 #include <QCoreApplication>
 
 namespace {

@@ -1,7 +1,7 @@
 #include "cameralivesource.h"
 
-#include "morse/camerasource.h"
-#include "morse/morseinput.h"
+#include "morse/input/camerasource.h"
+#include "morse/input/morseinput.h"
 
 #include <QMediaDevices>
 

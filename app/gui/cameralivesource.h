@@ -1,6 +1,6 @@
 #pragma once
 
-#include "widgets/morselivesource.h"
+#include "widgets/morse/morselivesource.h"
 
 #include <QCameraDevice>
 #include <QList>

@@ -1,10 +1,11 @@
 // drivebench: the GUI's composition root. It picks the real protocols (app/common) and, with
-// --demo, runs the simulated MovingCap in-process.
+// --demo, runs the simulated MovingCap and a line of NM17x displays in-process.
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/nm17x/device/nm17xsim.h"
 #include "mainwindow.h"
 #include "translations/language.h"
-#include "widgets/logconsole.h"
+#include "widgets/common/logconsole.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -59,6 +60,7 @@ int main(int argc, char *argv[])
 
     const db::ProtocolRegistry &registry = db::app::protocolRegistry();
     std::unique_ptr<db::app::DemoDrive> demo; // outlives the window and its connections
+    std::unique_ptr<db::nm17x::Nm17xSim> displays; // the demo's line of NM17x displays
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
 
@@ -83,6 +85,17 @@ int main(int argc, char *argv[])
             window.openConnection(demo->slcanUri());
             window.showCanMonitor();
         }
+        // A line of three NM17x displays on a bus of their own, for the NM17x Line dock.
+        displays = std::make_unique<db::nm17x::Nm17xSim>();
+        displays->create(
+            db::nm17x::Nm17xSim::parseDevices(QStringLiteral("nm172@2,nm172@3,nm174@4"))
+                .valueOr({}));
+        if (auto started = displays->startSlcan(0); started)
+            window.logConsole()->info(
+                QApplication::translate("main",
+                                        "Demo NM17x displays (nodes 2, 3, 4) at "
+                                        "canopen+slcan://127.0.0.1:%1?node=2")
+                    .arg(displays->slcanPort()));
     }
     if (parser.isSet(connectOption)) {
         if (auto opened = window.openConnection(parser.value(connectOption)); !opened) {

@@ -2,18 +2,19 @@
 
 #include "cameralivesource.h"
 #include "canopen/canopenconnection.h"
-#include "morse/morseinput.h"
-#include "widgets/canmonitor.h"
-#include "widgets/connectiondialog.h"
-#include "widgets/devicelist.h"
-#include "widgets/drivestatuspanel.h"
-#include "widgets/jogpanel.h"
-#include "widgets/logconsole.h"
-#include "widgets/morsepanel.h"
-#include "widgets/nodelist.h"
-#include "widgets/objectaccessbox.h"
-#include "widgets/scopepage.h"
-#include "widgets/widgetstyle.h"
+#include "morse/input/morseinput.h"
+#include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/nodelist.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/common/widgetstyle.h"
+#include "widgets/connection/connectiondialog.h"
+#include "widgets/connection/devicelist.h"
+#include "widgets/connection/drivestatuspanel.h"
+#include "widgets/morse/morsepanel.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/odeditor/objectaccessbox.h"
+#include "widgets/scope/scopepage.h"
+#include "widgets/nm17x/nm17xlinepanel.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -65,6 +66,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     , m_log(new widgets::LogConsole(this))
     , m_canMonitor(new widgets::CanMonitor(this))
     , m_nodeList(new widgets::NodeList(this))
+    , m_nm17xPanel(new widgets::Nm17xLinePanel(this))
     , m_connectionState(new QLabel(this))
 {
     setWindowTitle(tr("drivebench"));
@@ -162,6 +164,13 @@ void MainWindow::createDocks()
     QDockWidget *morseDock =
         addDock(morseScroll, tr("Morse IP"), QStringLiteral("morseDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(log, morseDock);
+    auto *nm17xScroll = new QScrollArea(this); // its two rows of buttons stay usable when narrow
+    nm17xScroll->setWidget(m_nm17xPanel);
+    nm17xScroll->setWidgetResizable(true);
+    nm17xScroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget *nm17x = addDock(nm17xScroll, tr("NM17x Line"), QStringLiteral("nm17xDock"),
+                                 Qt::BottomDockWidgetArea);
+    tabifyDockWidget(log, nm17x);
     // Live camera input (Qt Multimedia): listing cameras loads the media backend, so it is
     // attached when the tab is first shown, not at start-up.
     connect(morseDock, &QDockWidget::visibilityChanged, morse, [morse](bool visible) {
@@ -289,6 +298,7 @@ void MainWindow::attachCanopen(DeviceConnection *connection)
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
+    m_nm17xPanel->setNetwork(canopen ? canopen->network() : nullptr);
 }
 
 void MainWindow::showCanMonitor()

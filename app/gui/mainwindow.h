@@ -24,6 +24,7 @@ class DriveStatusPanel;
 class JogPanel;
 class LogConsole;
 class NodeList;
+class Nm17xLinePanel;
 class ObjectAccessBox;
 class OdEditor;
 class ParamCompareView;
@@ -68,6 +69,7 @@ public:
     // CAN monitor and node list: attached to the current connection while it is a CANopen one.
     widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
     widgets::NodeList *nodeList() const { return m_nodeList; }
+    widgets::Nm17xLinePanel *nm17xPanel() const { return m_nm17xPanel; }
     // The central pages (tabs): "Drive Status" first, then the larger tools.
     QTabWidget *pages() const { return m_pages; }
     // Brings the CAN monitor's tab to the front.
@@ -128,6 +130,7 @@ private:
     widgets::LogConsole *m_log = nullptr;
     widgets::CanMonitor *m_canMonitor = nullptr;
     widgets::NodeList *m_nodeList = nullptr;
+    widgets::Nm17xLinePanel *m_nm17xPanel = nullptr; // Baumer NM17x displays on the bus
     widgets::JogPanel *m_jogPanel = nullptr;
     widgets::OdEditor *m_odEditor = nullptr;
     widgets::ParamCompareView *m_compareView = nullptr;

@@ -1,8 +1,8 @@
 // MainWindow: the "Motion" dock and the stops that must work whatever has the focus.
 #include "mainwindow.h"
 
-#include "widgets/jogpanel.h"
-#include "widgets/logconsole.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/motion/jogpanel.h"
 
 #include <QApplication>
 #include <QDockWidget>

@@ -3,10 +3,10 @@
 
 #include "mainwindow.h"
 
-#include "widgets/logconsole.h"
-#include "widgets/odeditor.h"
-#include "widgets/paramcompareview.h"
-#include "widgets/parametersetactions.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/parameters/paramcompareview.h"
+#include "widgets/parameters/parametersetactions.h"
 
 #include <QMenuBar>
 #include <QStatusBar>

@@ -2,11 +2,16 @@
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
 //                            [--reject-write INDEX:SUB ...]
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
+//   drivebench-sim nm17x [--slcan-port PORT] [--virtualcan IFACE] [--control-port PORT]
+//                        --devices nm172@127,nm172@127,nm174@5
+//   drivebench-sim acu --vabus-port PORT [--watchdog-ms MS] [--fail MODE] [--slave ID ...]
 #include "../common/demodrive.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "resources/builtindescriptions.h"
-#include "simulation/movingcapdrive.h"
+#include "sim_nm17x.h"
+#include "simacu.h"
 #include "translations/language.h"
 
 #include <QCommandLineParser>
@@ -32,6 +37,7 @@ using namespace db;
 namespace {
 
 int signalPipe[2] = { -1, -1 };
+QCoreApplication *theApp = nullptr;
 
 void onSignal(int)
 {
@@ -50,11 +56,17 @@ void quitOnSignals(QCoreApplication &app)
     std::signal(SIGTERM, onSignal);
 }
 
+void quitOnSignalsOfApp()
+{
+    quitOnSignals(*theApp);
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
+    theApp = &app;
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
     i18n::installTranslations(app, i18n::chooseLanguage()); // DRIVEBENCH_LANG, LC_*, LANG
@@ -67,7 +79,10 @@ int main(int argc, char *argv[])
         "Simulated drives on 127.0.0.1.\n\nDevices:\n  movingcap   a MovingCap ETH drive "
         "(RefGo and SLCAN doors)\n  canopen     CANopen nodes driven by a device description "
         "(SLCAN "
-        "and/or virtualcan doors)"));
+        "and/or virtualcan doors)\n  nm17x       a line of Baumer NM170/NM172/NM174 displays "
+        "(SLCAN and/or virtualcan doors, control socket)\n  acu         a Bonfiglioli ACTIVE Cube "
+        "with CM-VABus/TCP (PLC "
+        "port)"));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption refgoPort(
@@ -111,12 +126,40 @@ int main(int argc, char *argv[])
                                     "movingcap: writes to this object fail with a device error "
                                     "(failure mode for tests; repeatable)."),
         QStringLiteral("INDEX:SUB"));
-    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite });
+    const QCommandLineOption devices(
+        QStringLiteral("devices"),
+        QCoreApplication::translate("sim",
+                                    "nm17x: the displays on the bus, VARIANT@NODE, e.g. "
+                                    "nm172@127,nm172@127,nm174@5 (each its own serial number)."),
+        QStringLiteral("list"), QStringLiteral("nm172@127"));
+    const QCommandLineOption controlPort(
+        QStringLiteral("control-port"),
+        QCoreApplication::translate("sim",
+                                    "nm17x: line-based control socket on this TCP port (turn a "
+                                    "shaft, press a key; 0 = chosen by the OS)."),
+        QStringLiteral("port"));
+    parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
+                        devices, controlPort });
+    app::addAcuOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
+    if (args.size() == 1 && args.first() == QLatin1String("acu")) {
+        if (const int code = app::runAcu(parser, out, err); code >= 0)
+            return code;
+        quitOnSignals(app);
+        return app.exec();
+    }
+    if (args.size() == 1 && args.first() == QLatin1String("nm17x")) {
+        const auto valueOf = [&parser](const QCommandLineOption &o) {
+            return parser.isSet(o) ? std::optional<QString>(parser.value(o)) : std::nullopt;
+        };
+        return sim::runNm17x({ parser.value(devices), valueOf(slcanPort), valueOf(virtualCan),
+                               valueOf(controlPort) },
+                             quitOnSignalsOfApp);
+    }
     if (args.size() == 1 && args.first() == QLatin1String("canopen")) {
         app::SimNodesOptions options;
         const auto ids = app::SimNodes::parseNodeList(parser.value(nodes));

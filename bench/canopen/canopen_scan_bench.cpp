@@ -3,13 +3,13 @@
 // SLCAN-over-TCP on loopback, both in this process. The scan ends when the probes of the absent
 // ids time out, so its time is about one SDO timeout; the figure shows how far above it we are.
 //   canopen_scan_bench [--nodes 1,2,5,10,64] [--timeout MS] [--repeat N]
+#include "canopen/device/simulatednode.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/nodescanner.h"
 #include "canopen/sdoclient.h"
-#include "canopen/simulatednode.h"
 #include "resources/builtindescriptions.h"
+#include "transport/device/slcanserver.h"
 #include "transport/slcanbus.h"
-#include "transport/slcanserver.h"
 #include "transport/tcpstream.h"
 
 #include <QCoreApplication>

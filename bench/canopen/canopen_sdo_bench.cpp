@@ -5,10 +5,10 @@
 //
 //   canopen_sdo_bench [--count N] [--size BYTES]
 
+#include "canopen/device/simulatednode.h"
 #include "canopen/sdoclient.h"
-#include "canopen/simulatednode.h"
+#include "transport/device/slcanserver.h"
 #include "transport/slcanbus.h"
-#include "transport/slcanserver.h"
 #include "transport/tcpstream.h"
 
 #include <QCoreApplication>

@@ -10,7 +10,7 @@
 // start of the first complete message to the first confident IP in message periods as sent
 // (median, 95th percentile, max, share within 2; in brackets the share within 2 nominal
 // periods, which jitter can make unreachable), plus exact rate per sample rate.
-#include "morse/corpus.h"
+#include "morse/synth/corpus.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -6,8 +6,8 @@
 // pause between messages (3: back to back, the whole recording one stretch), and feeds it to
 // one Decoder frame by frame, as the live camera does. Prints the total decoding time, the
 // slowest frame and the result.
-#include "morse/decoder.h"
-#include "morse/signalgenerator.h"
+#include "morse/decode/decoder.h"
+#include "morse/synth/signalgenerator.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

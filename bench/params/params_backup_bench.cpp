@@ -5,7 +5,7 @@
 // --all reads every readable object (the CLI's dump) instead of the storable ones.
 #include "common/demodrive.h"
 #include "common/protocols.h"
-#include "core/parameterrunner.h"
+#include "parameters/parameterrunner.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

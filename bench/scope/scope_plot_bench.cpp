@@ -4,7 +4,7 @@
 //
 //   QT_QPA_PLATFORM=offscreen build/bench/scope/scope_plot_bench [frames]
 #include "scope/recorder.h"
-#include "widgets/scopeplot.h"
+#include "widgets/scope/scopeplot.h"
 
 #include <qcustomplot.h>
 

@@ -41,15 +41,23 @@ public:
         static const QRegularExpression re(
             QStringLiteral(R"(^\s*([0-9]{1,5})\s*(?:[:.,]\s*([0-9]{1,3}))?\s*$)"));
         const auto m = re.match(text);
-        bool okIndex = false;
-        bool okSub = true;
-        const uint index = m.hasMatch() ? m.captured(1).toUInt(&okIndex) : 0;
-        const uint sub =
-            m.hasMatch() && !m.captured(2).isEmpty() ? m.captured(2).toUInt(&okSub) : 0;
-        if (!m.hasMatch() || !okIndex || !okSub || index > 0xFFFF || sub > 0xFF) {
+        if (!m.hasMatch()) {
             return Error(Error::Kind::InvalidArgument,
-                         Tr::tr("'%1' is not a parameter address; write NUMBER:DATASET "
-                                "in decimal, e.g. 372:2 (a number alone is data set 0)")
+                         QCoreApplication::translate("db::AddressFormat",
+                                                     "'%1' is not a parameter address; write "
+                                                     "NUMBER:DATASET in decimal, e.g. 372:2 (a "
+                                                     "number alone is data set 0)")
+                             .arg(text));
+        }
+        const uint index = m.captured(1).toUInt();
+        const uint sub = m.captured(2).isEmpty() ? 0 : m.captured(2).toUInt();
+        if (index > 0xFFFF || sub > 0xFF) {
+            return Error(Error::Kind::OutOfRange,
+                         QCoreApplication::translate("db::AddressFormat",
+                                                     "'%1' is not a parameter address: "
+                                                     "NUMBER:DATASET takes a parameter number "
+                                                     "of 0-65535 and a data set of 0-255, e.g. "
+                                                     "372:2")
                              .arg(text));
         }
         return ObjectAddress(static_cast<quint16>(index), static_cast<quint8>(sub));

@@ -90,7 +90,7 @@ Reply *DeviceConnection::read(ObjectAddress address)
         return Reply::failed(
             address,
             Error(Error::Kind::AccessDenied,
-                  Tr::tr("%1 %2 is write-only").arg(address.toString(), def->name)));
+                  Tr::tr("%1 %2 is write-only").arg(addressFormat().format(address), def->name)));
     Reply *reply = track(new Reply(address));
     doRead(reply, def);
     return reply;
@@ -108,9 +108,10 @@ Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
         if (!def->writable())
             return Reply::failed(
                 address,
-                Error(Error::Kind::AccessDenied,
-                      Tr::tr("%1 %2 is read-only").arg(address.toString(), def->name)));
-        auto checked = def->validate(raw);
+                Error(
+                    Error::Kind::AccessDenied,
+                    Tr::tr("%1 %2 is read-only").arg(addressFormat().format(address), def->name)));
+        auto checked = def->validate(raw, addressFormat());
         if (!checked)
             return Reply::failed(address, checked.error());
         value = checked.value();

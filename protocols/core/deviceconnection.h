@@ -95,7 +95,8 @@ public:
     // How addresses of this device are written and read (hex INDEX:SUB for CANopen and RefGo,
     // decimal NUMBER:DATASET for inverter parameters). Everything that shows or parses an
     // address for this connection goes through it.
-    virtual const AddressFormat &addressFormat() const { return AddressFormat::canopen(); }
+    // The default is the dictionary's (CANopen's unless its description says otherwise).
+    virtual const AddressFormat &addressFormat() const { return m_dictionary.addressFormat(); }
 
 Q_SIGNALS:
     void stateChanged(db::DeviceConnection::State state);

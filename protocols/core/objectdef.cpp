@@ -1,5 +1,7 @@
 #include "objectdef.h"
 
+#include <cmath>
+
 namespace db {
 
 QString access::name(Access access)
@@ -31,27 +33,44 @@ std::optional<Access> access::fromName(const QString &text)
     return std::nullopt;
 }
 
-Result<QVariant> ObjectDef::validate(const QVariant &value) const
+Result<QVariant> ObjectDef::validate(const QVariant &value, const AddressFormat &format) const
 {
     auto raw = codec::normalize(type, value);
     if (!raw)
-        return raw.error().prefixed(address.toString());
+        return raw.error().prefixed(format.format(address));
     if (auto limits = codec::checkLimits(type, raw.value(), minimum, maximum); !limits)
-        return limits.error().prefixed(address.toString());
+        return limits.error().prefixed(format.format(address));
     return raw;
 }
 
-Result<QVariant> ObjectDef::parseText(const QString &text) const
+Result<QVariant> ObjectDef::parseText(const QString &text, const AddressFormat &format) const
 {
     const QString t = text.trimmed();
     for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it) {
         if (it.value().compare(t, Qt::CaseInsensitive) == 0)
-            return validate(QVariant::fromValue<qlonglong>(it.key()));
+            return validate(QVariant::fromValue<qlonglong>(it.key()), format);
+    }
+    if (decimals > 0 && datatype::isInteger(type)) {
+        bool ok = false;
+        const double physical = t.toDouble(&ok);
+        if (!ok)
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("'%1' is not a number").arg(text))
+                .prefixed(format.format(address));
+        const double scaled = (physical - offset) / factor;
+        if (std::abs(scaled - std::round(scaled)) > 1e-6)
+            return Error(Error::Kind::InvalidArgument,
+                         QStringLiteral("%1 has more than %2 decimal places").arg(t).arg(decimals))
+                .prefixed(format.format(address));
+        auto raw = codec::fromPhysical(type, physical, factor, offset);
+        if (!raw)
+            return raw.error().prefixed(format.format(address));
+        return validate(raw.value(), format);
     }
     auto raw = codec::fromText(type, text);
     if (!raw)
-        return raw.error().prefixed(address.toString());
-    return validate(raw.value());
+        return raw.error().prefixed(format.format(address));
+    return validate(raw.value(), format);
 }
 
 QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const
@@ -63,6 +82,8 @@ QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) co
         const auto it = enumeration.constFind(raw.toLongLong());
         if (it != enumeration.cend())
             text += QStringLiteral(" (%1)").arg(*it);
+    } else if (decimals > 0 && datatype::isInteger(type) && format == codec::TextFormat::Decimal) {
+        text = QString::number(codec::toPhysical(raw, factor, offset), 'f', decimals);
     } else if (datatype::isNumeric(type) && (factor != 1.0 || offset != 0.0)) {
         text = QString::number(codec::toPhysical(raw, factor, offset), 'g', 10);
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "addressformat.h"
 #include "datatype.h"
 #include "objectaddress.h"
 #include "valuecodec.h"
@@ -37,6 +38,11 @@ struct ObjectDef
     QString unit;
     double factor = 1.0; // physical = raw * factor + offset
     double offset = 0.0;
+    // Fixed decimal places of a fixed-point parameter (inverter parameter lists: raw = value x
+    // 10^decimals, factor = 10^-decimals): its text is the physical value with exactly these
+    // decimals ("10.00"), and text typed for it is a physical value. -1: not a fixed-point
+    // parameter (text is the raw value).
+    int decimals = -1;
     QVariant defaultValue; // raw values; invalid = unknown / no limit
     QVariant minimum;
     QVariant maximum;
@@ -50,10 +56,14 @@ struct ObjectDef
     bool readable() const { return access != Access::WriteOnly; }
     bool writable() const { return access == Access::ReadWrite || access == Access::WriteOnly; }
 
-    // Type conversion, type range and the object's own min/max in one step.
-    Result<QVariant> validate(const QVariant &value) const;
-    // User text -> raw, accepting enumeration names as well as numbers.
-    Result<QVariant> parseText(const QString &text) const;
+    // Type conversion, type range and the object's own min/max in one step. Errors name the
+    // object's address as `format` writes it.
+    Result<QVariant> validate(const QVariant &value,
+                              const AddressFormat &format = AddressFormat::canopen()) const;
+    // User text -> raw, accepting enumeration names as well as numbers (physical values for
+    // fixed-point parameters, see decimals).
+    Result<QVariant> parseText(const QString &text,
+                               const AddressFormat &format = AddressFormat::canopen()) const;
     // "1 (Profile Position)", "0x0427", "1200 mm"
     QString displayText(const QVariant &raw,
                         codec::TextFormat format = codec::TextFormat::Decimal) const;

@@ -35,6 +35,14 @@ class ObjectDictionary
 public:
     DeviceIdentity identity;
 
+    // How the objects' addresses are written: CANopen's hex INDEX:SUB unless the description
+    // says otherwise (an inverter's parameter list is decimal NUMBER:DATASET). Never null.
+    const AddressFormat &addressFormat() const
+    {
+        return m_addressFormat ? *m_addressFormat : AddressFormat::canopen();
+    }
+    void setAddressFormat(const AddressFormat &format) { m_addressFormat = &format; }
+
     void insert(const ObjectDef &def);
     const ObjectDef *find(ObjectAddress address) const;
     bool contains(ObjectAddress address) const { return m_objects.contains(address); }
@@ -48,13 +56,10 @@ public:
     // The device's own text for a code, else the CiA 301 error class ("voltage", ...).
     QString errorText(quint32 code) const;
 
-    // Our own JSON device description (resources/devices/*.json, format described there).
-    static Result<ObjectDictionary> loadDescription(const QString &path);
-    static Result<ObjectDictionary> parseDescription(const QByteArray &json, const QString &origin);
-
 private:
     QMap<ObjectAddress, ObjectDef> m_objects;
     QMap<quint32, ErrorCodeDef> m_errors;
+    const AddressFormat *m_addressFormat = nullptr; // null: canopen
 };
 
 // CiA 301 table 21: the error class of an emergency error code, e.g. 0x3221 -> "voltage".

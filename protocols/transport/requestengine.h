@@ -25,7 +25,8 @@
 //   in flight's is dropped and logged, or, with setForeignAnswerFails(true), fails the request
 //   in flight as Malformed (for protocols where any answer after a request is that request's).
 //   With lateGraceMs() > 0 nothing is sent for that long after a timeout, so a late answer
-//   arrives while the link is quiet.
+//   arrives while the link is quiet; answers still missing when it ends are taken as lost and
+//   their requests forgotten, so that an identical request sent next gets its own answer.
 // - Every Reply finishes exactly once: value, Timeout, Malformed, DeviceError, Disconnected
 //   (link closed: the stream's close error), or Cancelled (engine deleted). Requests made while
 //   the stream is not open fail at once with Disconnected. Replies deleted by their requester
@@ -103,6 +104,11 @@ public:
     void setLateGraceMs(int ms) { m_quiet.setInterval(qMax(0, ms)); }
     bool foreignAnswerFails() const { return m_foreignAnswerFails; }
     void setForeignAnswerFails(bool fails) { m_foreignAnswerFails = fails; }
+    // With true, a partial answer the framer holds when a transmission times out is dropped
+    // before the request is sent again, so the retransmission's answer is framed from its first
+    // byte (for binary protocols whose framer cannot resynchronise on its own). Default false.
+    bool dropsPartialAnswerOnTimeout() const { return m_dropPartialOnTimeout; }
+    void setDropsPartialAnswerOnTimeout(bool drops) { m_dropPartialOnTimeout = drops; }
 
     // 0 when keep-alive is off.
     int keepAliveIdleMs() const { return m_keepAliveIdleMs; }
@@ -161,6 +167,7 @@ private:
     int m_maxTransmissions = kDefaultMaxTransmissions;
     int m_keepAliveIdleMs = 0;
     bool m_foreignAnswerFails = false;
+    bool m_dropPartialOnTimeout = false;
 };
 
 template<typename Protocol>
@@ -349,13 +356,7 @@ private:
             }
             return;
         }
-        if (!m_abandoned.isEmpty()) {
-            QStringList labels;
-            for (const Abandoned &a : std::as_const(m_abandoned))
-                labels.append(a.label);
-            logForgotten(labels);
-            m_abandoned.clear();
-        }
+        forgetAbandoned();
         ++m_inFlight->answered;
         logAnswer(Protocol::summary(answer), m_inFlight->keepAlive);
         if (verdict->kind == Verdict::Kind::Retry && mayResend()) {
@@ -370,6 +371,8 @@ private:
     {
         if (!m_inFlight)
             return;
+        if (dropsPartialAnswerOnTimeout())
+            m_framer.reset();
         if (mayResend()) {
             logRetry(m_inFlight->label, timedOut(m_inFlight->label, 1).message(),
                      m_inFlight->sent + 1);
@@ -381,7 +384,22 @@ private:
         complete(error);
     }
 
-    void onQuietOver() override { sendNext(); }
+    void onQuietOver() override
+    {
+        forgetAbandoned();
+        sendNext();
+    }
+
+    void forgetAbandoned()
+    {
+        if (m_abandoned.isEmpty())
+            return;
+        QStringList labels;
+        for (const Abandoned &a : std::as_const(m_abandoned))
+            labels.append(a.label);
+        logForgotten(labels);
+        m_abandoned.clear();
+    }
 
     void onKeepAliveDue() override
     {

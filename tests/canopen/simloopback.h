@@ -3,7 +3,7 @@
 // Test helper: simulated nodes on a ScriptedCanBus. Every frame the master sends reaches every
 // node at once; node frames come back to the master from the event loop (as from a real bus).
 
-#include "canopen/simulatednode.h"
+#include "canopen/device/simulatednode.h"
 #include "resources/builtindescriptions.h"
 #include "scriptedcanbus.h"
 

@@ -4,11 +4,11 @@
 #include "canopen/cannetwork.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
+#include "canopen/device/simulatednode.h"
 #include "canopen/nmtmaster.h"
-#include "canopen/simulatednode.h"
 #include "resources/builtindescriptions.h"
 #include "transport/canbus.h"
-#include "transport/slcanserver.h"
+#include "transport/device/slcanserver.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -4,7 +4,7 @@
 #include "canopen/canbusfactory.h"
 #include "canopen/canopenconnection.h"
 #include "canopen/sdoclient.h"
-#include "core/parameterrunner.h"
+#include "parameters/parameterrunner.h"
 #include "scriptedcanbus.h"
 #include "transport/qtcanbus.h"
 

@@ -1,8 +1,8 @@
 // LSS (CiA 305): the byte-exact example of nm170_canopen.md 2.4 from both sides (master frames
 // against a script, slave answers to the manual's requests), then master and the simulated
 // node's slave together: inquire, configure node id, store, bit timing, fastscan, failures.
+#include "canopen/device/lssslave.h"
 #include "canopen/lssmaster.h"
-#include "canopen/lssslave.h"
 #include "canopen/nmtmaster.h"
 #include "simloopback.h"
 

@@ -2,12 +2,12 @@
 // over Qt's virtualcan (LOCK virtualcan): expedited, a 1 kB string segmented, a 100 kB domain by
 // segmented and by block transfer, and an abort from the node.
 
+#include "canopen/device/simulatednode.h"
 #include "canopen/sdoabort.h"
 #include "canopen/sdoclient.h"
-#include "canopen/simulatednode.h"
+#include "transport/device/slcanserver.h"
 #include "transport/qtcanbus.h"
 #include "transport/slcanbus.h"
-#include "transport/slcanserver.h"
 #include "transport/tcpstream.h"
 
 #include <QtTest>

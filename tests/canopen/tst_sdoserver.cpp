@@ -1,9 +1,9 @@
 // Level 2: SdoServer byte-exact against hand-built client frames (CiA 301 7.2.4): expedited,
 // segmented and block transfers, CRC, toggle and sequence errors, abort codes, timeout.
+#include "canopen/device/sdoserver.h"
+#include "canopen/device/simulatednode.h"
 #include "canopen/sdoabort.h"
 #include "canopen/sdocodec.h"
-#include "canopen/sdoserver.h"
-#include "canopen/simulatednode.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -1,7 +1,7 @@
 // Level 2: SimulatedNode (CiA 301 device side): boot-up, NMT, heartbeat, EMCY, TPDO/RPDO and
 // the SDO failure modes, frame by frame.
+#include "canopen/device/simulatednode.h"
 #include "canopen/sdoabort.h"
-#include "canopen/simulatednode.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>

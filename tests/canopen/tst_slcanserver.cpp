@@ -2,8 +2,8 @@
 // SlcanBus over TcpStream against it, and both under floods: a client that never reads, a peer
 // that sends frames as fast as it can.
 #include "canopen/sdoclient.h"
+#include "transport/device/slcanserver.h"
 #include "transport/slcanbus.h"
-#include "transport/slcanserver.h"
 #include "transport/tcpstream.h"
 
 #include <QElapsedTimer>

@@ -5,7 +5,7 @@
 // but ignored, so the drive never changes state) and goAway() (the link breaks).
 
 #include "core/deviceconnection.h"
-#include "simulation/movingcapdrive.h"
+#include "devices/movingcap/movingcapdrive.h"
 
 namespace db::test {
 

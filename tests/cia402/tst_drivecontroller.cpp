@@ -3,8 +3,8 @@
 #include "cia402/drivecontroller.h"
 #include "cia402/modes.h"
 #include "cia402/statusword.h"
+#include "devices/movingcap/movingcapfaults.h"
 #include "rig.h"
-#include "simulation/movingcapfaults.h"
 
 #include <QTest>
 

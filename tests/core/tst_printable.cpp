@@ -1,7 +1,7 @@
 // printable(): text quoted from devices and files, escaped for terminals, consoles and reports.
 #include "core/error.h"
-#include "core/parameterrunner.h"
 #include "core/printable.h"
+#include "parameters/parameterrunner.h"
 
 #include <QTest>
 

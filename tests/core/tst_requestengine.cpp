@@ -127,6 +127,7 @@ private Q_SLOTS:
     void lateAnswerAfterTimeoutIsDroppedNotGivenToNextRequest();
     void lateAnswerWithSameTagIsDroppedNotGivenToNextRequest();
     void nextRequestWaitsOutLateGraceAfterTimeout();
+    void answerMissingAfterLateGraceIsTakenAsLost();
     void timeoutResendsUntilMaxTransmissionsThenFails();
     void duplicateAnswerToResentRequestIsDropped();
     void retryVerdictResendsThenFailsWithItsReason();
@@ -290,6 +291,20 @@ void TstRequestEngine::nextRequestWaitsOutLateGraceAfterTimeout()
     QCOMPARE(m_stream->writes().last(), QByteArray("b\n"));
     m_stream->feed("b=2\n");
     QCOMPARE(await(b).value(), QVariant(QStringLiteral("2")));
+}
+
+// A device that stayed silent (e.g. still starting) and then answers: the identical request
+// sent after the grace time gets its own answer, not dropped as the first one's late one.
+void TstRequestEngine::answerMissingAfterLateGraceIsTakenAsLost()
+{
+    m_engine->setTimeoutMs(kShortTimeoutMs);
+    m_engine->setLateGraceMs(50);
+    QCOMPARE(await(submit("a")).error().kind(), Error::Kind::Timeout);
+    m_engine->setTimeoutMs(kWaitMs);
+    Reply *again = submit("a");
+    QTRY_COMPARE(m_stream->writes().size(), 2);
+    m_stream->feed("a=new\n");
+    QCOMPARE(await(again).value(), QVariant(QStringLiteral("new")));
 }
 
 void TstRequestEngine::timeoutResendsUntilMaxTransmissionsThenFails()

@@ -3,8 +3,8 @@
 // Renders a video of a simulated LED for the Morse tests: a bright round blob that blinks with
 // a generated Morse signal (protocols/morse signalgenerator, exposure blur and frame times
 // included) on a textured, noisy grey background. Deterministic per seed.
-#include "morse/signalgenerator.h"
-#include "morse/videowriter.h"
+#include "morse/input/videowriter.h"
+#include "morse/synth/signalgenerator.h"
 
 #include <QPoint>
 #include <QString>

@@ -3,8 +3,8 @@
 // be found where it is, its samples must decode to the sent IP, static scenes must give nothing,
 // a lost LED must be found again where it went, and broken frames must not crash.
 #include "ledvideo.h"
-#include "morse/camerasource.h"
-#include "morse/decoder.h"
+#include "morse/decode/decoder.h"
+#include "morse/input/camerasource.h"
 
 #include <QSignalSpy>
 #include <QTest>

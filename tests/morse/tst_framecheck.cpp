@@ -1,8 +1,8 @@
 // The frame-level check of a reading (framecheck.h) on samples rendered here: a dah whose first
 // frame noise darkened, which the lengths between threshold crossings read as a dit.
-#include "morse/framecheck.h"
-#include "morse/levelslicer.h"
-#include "morse/morsecode.h"
+#include "morse/decode/framecheck.h"
+#include "morse/decode/levelslicer.h"
+#include "morse/decode/morsecode.h"
 
 #include <QTest>
 

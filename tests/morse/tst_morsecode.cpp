@@ -1,8 +1,8 @@
 // Level 1: Morse table (ITU-R M.1677-1, movingcap.md 2.4), element classification and the
 // "MC+IP...:" parser and voter.
-#include "morse/ipvoter.h"
-#include "morse/morsecode.h"
-#include "morse/symbolizer.h"
+#include "morse/decode/ipvoter.h"
+#include "morse/decode/morsecode.h"
+#include "morse/decode/symbolizer.h"
 
 #include <QTest>
 

@@ -16,7 +16,7 @@
 // from its gaps (at 15 fps a 60 ms dit is 0.9 frames), so the corpus draws dits of at least
 // 2 sample periods on clean signals (15 fps: 133 ms and up) and 3 with jitter or noise (15 fps:
 // 200 ms and up). bench/morse measures 1.2 and 2 sample periods too.
-#include "morse/corpus.h"
+#include "morse/synth/corpus.h"
 
 #include <QTest>
 

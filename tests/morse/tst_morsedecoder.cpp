@@ -1,11 +1,11 @@
 // The decoder on generated signals: the spec example (movingcap.md 2.2), streaming partial
 // results and events, and the reasons given when nothing can be decoded.
-#include "morse/corpus.h"
-#include "morse/decoder.h"
-#include "morse/levelslicer.h"
-#include "morse/messageparser.h"
-#include "morse/morsecode.h"
-#include "morse/signalgenerator.h"
+#include "morse/decode/decoder.h"
+#include "morse/decode/levelslicer.h"
+#include "morse/decode/messageparser.h"
+#include "morse/decode/morsecode.h"
+#include "morse/synth/corpus.h"
+#include "morse/synth/signalgenerator.h"
 
 #include <QTest>
 

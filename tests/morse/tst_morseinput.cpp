@@ -3,9 +3,9 @@
 // the decoder must return the IP; CSV files; and a clear reason for each undecodable input.
 // The CLI `drivebench-cli morse` is run on the same files.
 #include "ledvideo.h"
-#include "morse/corpus.h"
-#include "morse/decoder.h"
-#include "morse/morseinput.h"
+#include "morse/decode/decoder.h"
+#include "morse/input/morseinput.h"
+#include "morse/synth/corpus.h"
 
 #include <QFile>
 #include <QProcess>

@@ -1,8 +1,8 @@
 // The sequence decoder (messageparser.h) on stretches of given lengths: repairs of lost, merged
 // and inserted elements, Salvage, soft costs, cut starts, several messages in one stretch, and
 // how a timeline is split into stretches.
-#include "morse/messageparser.h"
-#include "morse/morsecode.h"
+#include "morse/decode/messageparser.h"
+#include "morse/decode/morsecode.h"
 
 #include <QTest>
 

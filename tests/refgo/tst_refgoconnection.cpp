@@ -2,7 +2,7 @@
 // unsupported types, raw commands, store, connect errors, lost link, auto-reconnect.
 
 #include "awaitreply.h"
-#include "core/parameterrunner.h"
+#include "parameters/parameterrunner.h"
 #include "refgo/refgoconnection.h"
 #include "scriptedstream.h"
 

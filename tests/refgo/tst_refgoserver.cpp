@@ -4,9 +4,9 @@
 // answers, and a peer whose answer never ends.
 
 #include "awaitreply.h"
+#include "refgo/device/refgoserver.h"
 #include "refgo/refgoclient.h"
 #include "refgo/refgoconnection.h"
-#include "refgo/refgoserver.h"
 #include "transport/tcpstream.h"
 
 #include <QElapsedTimer>

@@ -3,9 +3,9 @@
 // count as lost samples with a gap, a lost connection stops the source with an error.
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
-#include "simulation/movingcapdrive.h"
 
 #include <QSignalSpy>
 #include <QTcpServer>

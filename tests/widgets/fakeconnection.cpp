@@ -52,8 +52,9 @@ void FakeConnection::doRead(Reply *reply, const ObjectDef *)
         if (m_failures.contains(address))
             r->fail(m_failures.value(address));
         else if (!m_objects.contains(address))
-            r->fail(Error(Error::Kind::DeviceError,
-                          QStringLiteral("ERROR %1 does not exist").arg(address.toString())));
+            r->fail(Error(
+                Error::Kind::DeviceError,
+                QStringLiteral("ERROR %1 does not exist").arg(addressFormat().format(address))));
         else
             r->finish(m_objects.value(address));
     });

@@ -18,6 +18,9 @@ public:
                             QObject *parent = nullptr);
 
     QString protocolKey() const override { return QStringLiteral("fake"); }
+    // CANopen's hex INDEX:SUB unless a test gives another format (e.g. parameter numbers).
+    const AddressFormat &addressFormat() const override { return *m_addressFormat; }
+    void setAddressFormat(const AddressFormat &format) { m_addressFormat = &format; }
 
     // The object table (raw values).
     void setValue(ObjectAddress address, const QVariant &raw) { m_objects.insert(address, raw); }
@@ -51,6 +54,7 @@ private:
     QHash<ObjectAddress, QVariant> m_objects;
     QHash<ObjectAddress, Error> m_failures;
     Error m_refusal;
+    const AddressFormat *m_addressFormat = &AddressFormat::canopen();
 };
 
 } // namespace db::test

@@ -4,8 +4,8 @@
 #include "core/reply.h"
 #include "resources/builtindescriptions.h"
 #include "scriptedcanbus.h"
-#include "widgets/canmonitor.h"
-#include "widgets/canmonitorlog.h"
+#include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/canmonitorlog.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,5 +1,5 @@
 #include "fakeconnection.h"
-#include "widgets/connectiondialog.h"
+#include "widgets/connection/connectiondialog.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

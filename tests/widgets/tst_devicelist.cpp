@@ -1,5 +1,5 @@
 #include "fakeconnection.h"
-#include "widgets/devicelist.h"
+#include "widgets/connection/devicelist.h"
 
 #include <QListWidget>
 #include <QSignalSpy>

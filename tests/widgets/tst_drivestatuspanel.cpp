@@ -1,7 +1,7 @@
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
-#include "widgets/drivestatuspanel.h"
-#include "widgets/lamp.h"
+#include "widgets/common/lamp.h"
+#include "widgets/connection/drivestatuspanel.h"
 
 #include <QLabel>
 #include <QSignalSpy>

@@ -7,13 +7,13 @@
 #include "canopen/nodemonitor.h"
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "mainwindow.h"
-#include "simulation/movingcapdrive.h"
 #include "transport/canbus.h"
-#include "widgets/jogpanel.h"
-#include "widgets/lamp.h"
-#include "widgets/logconsole.h"
-#include "widgets/motionform.h"
+#include "widgets/common/lamp.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/motion/motionform.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

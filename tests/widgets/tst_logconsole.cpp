@@ -1,4 +1,4 @@
-#include "widgets/logconsole.h"
+#include "widgets/common/logconsole.h"
 
 #include <QApplication>
 #include <QClipboard>

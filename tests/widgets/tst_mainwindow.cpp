@@ -1,11 +1,11 @@
 #include "fakeconnection.h"
 #include "mainwindow.h"
 #include "resources/builtindescriptions.h"
-#include "widgets/devicelist.h"
-#include "widgets/drivestatuspanel.h"
-#include "widgets/logconsole.h"
-#include "widgets/morsepanel.h"
-#include "widgets/objectaccessbox.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/connection/devicelist.h"
+#include "widgets/connection/drivestatuspanel.h"
+#include "widgets/morse/morsepanel.h"
+#include "widgets/odeditor/objectaccessbox.h"
 
 #include <QDockWidget>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "mainwindow.h"
-#include "widgets/drivestatuspanel.h"
+#include "widgets/connection/drivestatuspanel.h"
 
 #include <QLabel>
 #include <QSettings>

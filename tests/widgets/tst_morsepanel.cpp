@@ -3,8 +3,8 @@
 // the frame, the plot with threshold and timeline, the text and the IP; "Connect" asks for
 // refgo://IP and its menu for canopen+slcan://IP?node=50. Undecodable input shows its reason.
 #include "../morse/ledvideo.h"
-#include "morse/morseinput.h"
-#include "widgets/morsepanel.h"
+#include "morse/input/morseinput.h"
+#include "widgets/morse/morsepanel.h"
 
 #include <QLabel>
 #include <QMenu>

@@ -4,8 +4,8 @@
 // the result; no devices disable the camera controls with the reason; errors are shown.
 // With DRIVEBENCH_SCREENSHOT_DIR set, the live panel is saved there as morse-live.png.
 #include "../morse/ledvideo.h"
-#include "widgets/morselivesource.h"
-#include "widgets/morsepanel.h"
+#include "widgets/morse/morselivesource.h"
+#include "widgets/morse/morsepanel.h"
 
 #include <QComboBox>
 #include <QLabel>

@@ -2,8 +2,8 @@
 #include "canopen/nmtmaster.h"
 #include "canopen/nodemonitor.h"
 #include "scriptedcanbus.h"
-#include "widgets/nodelist.h"
-#include "widgets/nodelistmodel.h"
+#include "widgets/canopen/nodelist.h"
+#include "widgets/canopen/nodelistmodel.h"
 
 #include <QCheckBox>
 #include <QTableView>

@@ -1,6 +1,6 @@
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
-#include "widgets/objectaccessbox.h"
+#include "widgets/odeditor/objectaccessbox.h"
 
 #include <QLineEdit>
 #include <QPushButton>

@@ -1,14 +1,14 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
-#include "simulation/movingcapdrive.h"
-#include "widgets/lamp.h"
-#include "widgets/odeditor.h"
-#include "widgets/odeditorbits.h"
-#include "widgets/odeditorfilter.h"
-#include "widgets/odeditormodel.h"
-#include "widgets/odeditorpoller.h"
+#include "widgets/common/lamp.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/odeditor/odeditorbits.h"
+#include "widgets/odeditor/odeditorfilter.h"
+#include "widgets/odeditor/odeditormodel.h"
+#include "widgets/odeditor/odeditorpoller.h"
 
 #include <QElapsedTimer>
 #include <QLineEdit>

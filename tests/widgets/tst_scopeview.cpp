@@ -10,12 +10,12 @@
 #include "scope/csv.h"
 #include "scope/recorder.h"
 #include "transport/canbus.h"
-#include "widgets/scopeanalysisdialog.h"
-#include "widgets/scopechannelmodel.h"
-#include "widgets/scopecursors.h"
-#include "widgets/scopemeasurements.h"
-#include "widgets/scopepage.h"
-#include "widgets/scopeplot.h"
+#include "widgets/scope/scopeanalysisdialog.h"
+#include "widgets/scope/scopechannelmodel.h"
+#include "widgets/scope/scopecursors.h"
+#include "widgets/scope/scopemeasurements.h"
+#include "widgets/scope/scopepage.h"
+#include "widgets/scope/scopeplot.h"
 
 #include <qcustomplot.h>
 

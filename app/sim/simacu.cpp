@@ -1,0 +1,152 @@
+#include "simacu.h"
+
+#include "devices/bonfiglioli/simulatedacu.h"
+
+#include <QCoreApplication>
+
+namespace db::app {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(sim)
+};
+
+const QCommandLineOption &vabusPort()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("vabus-port"),
+        Tr::tr("acu: serve VABus/TCP (the PLC port) on this TCP port (0 = chosen by the OS)."),
+        QStringLiteral("port"));
+    return o;
+}
+const QCommandLineOption &watchdogMs()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("watchdog-ms"),
+        Tr::tr("acu: time without exchange before the reaction of parameter 388 (default 10000)."),
+        QStringLiteral("ms"));
+    return o;
+}
+const QCommandLineOption &fail()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("fail"),
+        Tr::tr("acu: failure mode for tests: silent, garbage, slow, drop-after or split (every "
+               "answer in 1-byte TCP segments)."),
+        QStringLiteral("mode"));
+    return o;
+}
+const QCommandLineOption &slowMs()
+{
+    static const QCommandLineOption o(QStringLiteral("slow-ms"),
+                                      Tr::tr("acu: --fail slow delays every answer this long "
+                                             "(default 2000)."),
+                                      QStringLiteral("ms"), QStringLiteral("2000"));
+    return o;
+}
+const QCommandLineOption &dropAfter()
+{
+    static const QCommandLineOption o(QStringLiteral("drop-after"),
+                                      Tr::tr("acu: --fail drop-after closes the connection after "
+                                             "this many answers (default 1)."),
+                                      QStringLiteral("n"), QStringLiteral("1"));
+    return o;
+}
+const QCommandLineOption &startupDelay()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("startup-delay-ms"),
+        Tr::tr("acu: answer nothing for this long after start, as the module initialising after "
+               "power-on (up to 20000)."),
+        QStringLiteral("ms"), QStringLiteral("0"));
+    return o;
+}
+const QCommandLineOption &slave()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("slave"),
+        Tr::tr("acu: a system bus slave with this node id (1-63) behind the "
+               "module (repeatable)."),
+        QStringLiteral("id"));
+    return o;
+}
+
+// A non-negative integer option, or -1 when it is not one.
+int number(const QCommandLineParser &parser, const QCommandLineOption &option, int max)
+{
+    bool ok = false;
+    const int v = parser.value(option).toInt(&ok);
+    return ok && v >= 0 && v <= max ? v : -1;
+}
+
+} // namespace
+
+void addAcuOptions(QCommandLineParser &parser)
+{
+    parser.addOptions(
+        { vabusPort(), watchdogMs(), fail(), slowMs(), dropAfter(), startupDelay(), slave() });
+}
+
+int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
+{
+    if (!parser.isSet(vabusPort())) {
+        err << "drivebench-sim: acu needs --vabus-port PORT (0 = any free port)" << Qt::endl;
+        return 2;
+    }
+    const int port = number(parser, vabusPort(), 65535);
+    const int watchdog = parser.isSet(watchdogMs()) ? number(parser, watchdogMs(), 3600000)
+                                                    : bonfiglioli::SimulatedAcu::kWatchdogMs;
+    const int slow = number(parser, slowMs(), 600000);
+    const int drop = number(parser, dropAfter(), 1000000);
+    const int startup = number(parser, startupDelay(), 600000);
+    if (port < 0 || watchdog < 1 || slow < 0 || drop < 0 || startup < 0) {
+        err << "drivebench-sim: "
+            << (port < 0           ? "--vabus-port takes a port number 0..65535"
+                    : watchdog < 1 ? "--watchdog-ms takes a time in ms (1 or more)"
+                                   : "--slow-ms, --drop-after and --startup-delay-ms take a number")
+            << Qt::endl;
+        return 2;
+    }
+    vabus::Server::FailureMode mode;
+    if (parser.isSet(fail())) {
+        const auto failure = vabus::Server::failureFromName(parser.value(fail()));
+        if (!failure) {
+            err << "drivebench-sim: --fail takes silent, garbage, slow, drop-after or split, not '"
+                << parser.value(fail()) << "'" << Qt::endl;
+            return 2;
+        }
+        mode.failure = *failure;
+    }
+    mode.slowMs = slow;
+    mode.dropAfter = drop;
+
+    auto *acu = new bonfiglioli::SimulatedAcu(QCoreApplication::instance());
+    for (const QString &id : parser.values(slave())) {
+        bool ok = false;
+        const int node = id.toInt(&ok);
+        if (!ok || node < 1 || node > 63) {
+            err << "drivebench-sim: --slave takes a node id 1..63, not '" << id << "'" << Qt::endl;
+            return 2;
+        }
+        acu->addSystemBusSlave(quint8(node));
+    }
+    acu->setWatchdogMs(watchdog);
+    acu->setStartupDelayMs(startup);
+    acu->server().setFailure(mode);
+    QObject::connect(acu, &bonfiglioli::SimulatedAcu::logLine, acu,
+                     [&err](const QString &line) { err << "acu: " << line << Qt::endl; });
+    if (auto listening = acu->listen(quint16(port)); !listening) {
+        err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
+        return 3;
+    }
+    out << "acu: VABus/TCP listening on 127.0.0.1:" << acu->port()
+        << " (vabus://127.0.0.1:" << acu->port() << ")" << Qt::endl;
+    QObject::connect(
+        QCoreApplication::instance(), &QCoreApplication::aboutToQuit, acu,
+        [acu, &out] { out << "acu: " << acu->eepromWrites() << " EEPROM writes" << Qt::endl; });
+    return -1; // serve: the caller runs the event loop
+}
+
+} // namespace db::app

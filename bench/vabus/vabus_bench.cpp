@@ -1,0 +1,131 @@
+// VABus/TCP against the simulated ACU (bonfiglioli::SimulatedAcu in this process, loopback):
+// parameter reads per second (one telegram in flight, as the protocol requires) and the time of
+// a full backup (every data set of every storable parameter). Median of --repeat runs.
+//   vabus_bench [--repeat N] [--reads N] [--port P]
+// --port P measures a simulator already running there (drivebench-sim acu --vabus-port P)
+// instead of the in-process one.
+#include "devices/bonfiglioli/simulatedacu.h"
+#include "common/protocols.h"
+#include "parameters/parameterrunner.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QLoggingCategory>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+using namespace db;
+
+namespace {
+
+double median(QList<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values.at(values.size() / 2);
+}
+
+// Milliseconds for `count` reads of 372:2 queued at once, or -1 on a failure.
+double timeReads(DeviceConnection *connection, int count)
+{
+    QList<Reply *> replies;
+    int done = 0;
+    bool failed = false;
+    QEventLoop loop;
+    QElapsedTimer clock;
+    clock.start();
+    for (int i = 0; i < count; ++i) {
+        Reply *reply = connection->read(ObjectAddress(372, 2));
+        QObject::connect(reply, &Reply::finished, &loop, [&, reply] {
+            failed |= !reply->ok();
+            if (++done == count)
+                loop.quit();
+        });
+        replies.append(reply);
+    }
+    loop.exec();
+    const double ms = double(clock.nsecsElapsed()) / 1e6;
+    qDeleteAll(replies);
+    return failed ? -1 : ms;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QLoggingCategory::setFilterRules(QStringLiteral("drivebench.*=false")); // figures only
+    int repeat = 7;
+    int reads = 2000;
+    int port = -1;
+    const QStringList args = app.arguments();
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        if (args.at(i) == u"--repeat" && i + 1 < args.size())
+            repeat = qMax(1, args.at(++i).toInt());
+        else if (args.at(i) == u"--reads" && i + 1 < args.size())
+            reads = qMax(1, args.at(++i).toInt());
+        else if (args.at(i) == u"--port" && i + 1 < args.size())
+            port = args.at(++i).toInt();
+    }
+    std::unique_ptr<bonfiglioli::SimulatedAcu> acu;
+    if (port < 0) {
+        acu = std::make_unique<bonfiglioli::SimulatedAcu>();
+        if (auto ok = acu->listen(0); !ok) {
+            std::fprintf(stderr, "%s\n", qPrintable(ok.error().toString()));
+            return 1;
+        }
+        port = acu->port();
+    }
+    const QString uri = QStringLiteral("vabus://127.0.0.1:%1").arg(port);
+    auto created = app::protocolRegistry().create(uri);
+    if (!created) {
+        std::fprintf(stderr, "%s\n", qPrintable(created.error().toString()));
+        return 1;
+    }
+    const auto connection = created.value();
+    if (auto opened = connection->openAndWait(5000); !opened) {
+        std::fprintf(stderr, "%s\n", qPrintable(opened.error().toString()));
+        return 1;
+    }
+    std::printf("VABus/TCP against the simulated ACU (%s), %d runs each, loopback\n",
+                acu ? "in this process" : qPrintable(uri), repeat);
+
+    QList<double> rates;
+    for (int i = 0; i < repeat; ++i) {
+        const double ms = timeReads(connection.get(), reads);
+        if (ms < 0) {
+            std::fprintf(stderr, "a read failed\n");
+            return 1;
+        }
+        rates.append(reads * 1000.0 / ms);
+    }
+    std::sort(rates.begin(), rates.end());
+    std::printf("reads of 372:2        %5d per run  median %8.0f reads/s  min %8.0f  max %8.0f\n",
+                reads, median(rates), rates.first(), rates.last());
+
+    QList<double> backups;
+    int objects = 0;
+    for (int i = 0; i < repeat; ++i) {
+        ParameterBackup backup(connection.get());
+        QEventLoop loop;
+        QObject::connect(&backup, &ParameterBackup::finished, &loop, &QEventLoop::quit);
+        QElapsedTimer clock;
+        clock.start();
+        backup.start();
+        loop.exec();
+        backups.append(double(clock.nsecsElapsed()) / 1e6);
+        const auto set = backup.result();
+        if (!set) {
+            std::fprintf(stderr, "backup: %s\n", qPrintable(set.error().toString()));
+            return 1;
+        }
+        objects = set->size();
+    }
+    std::sort(backups.begin(), backups.end());
+    std::printf("full backup           %5d values   median %8.1f ms       min %8.1f  max %8.1f\n",
+                objects, median(backups), backups.first(), backups.last());
+    connection->close();
+    return 0;
+}

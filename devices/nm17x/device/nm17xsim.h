@@ -1,0 +1,67 @@
+#pragma once
+
+// A line of simulated NM17x displays on one CAN bus, for `drivebench-sim nm17x`, the demo and
+// the tests: served as SLCAN over TCP (127.0.0.1) and/or on a Qt virtualcan interface, with a
+// line-based control socket on which a test or the demo plays the operator:
+//   list                      one line per display: index, variant, serial, node, position,
+//                             status, errors, addressing state; then "ok"
+//   turn INDEX DELTA          turn the shaft of display INDEX (1-based) by DELTA 1/100 mm
+//   key INDEX left|right [MS] press a key for MS ms (default 100)
+//   fault INDEX motor|sensor|none   motor fault (Er 4 on the next drive command), sensor fault
+//                             (NM174: Er C, motor off), or none
+// Every command is answered with "ok" or "error: <cause>" on its own line.
+
+#include "devices/nm17x/nm17xdescription.h"
+
+#include "core/result.h"
+
+#include <QList>
+#include <QObject>
+
+#include <memory>
+
+namespace db::nm17x {
+
+class SimulatedNm17x;
+
+struct SimDeviceSpec
+{
+    Variant variant = Variant::Nm172;
+    canopen::NodeId node = kDeliveryNodeId;
+};
+
+class Nm17xSim : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr quint32 kFirstSerial = 0x4D52F567;
+
+    explicit Nm17xSim(QObject *parent = nullptr);
+    ~Nm17xSim() override;
+
+    // "nm172@127,nm172@127,nm174@5"; InvalidArgument names the bad item.
+    static Result<QList<SimDeviceSpec>> parseDevices(const QString &text);
+
+    // Builds the displays; serial numbers count up from kFirstSerial in list order.
+    void create(const QList<SimDeviceSpec> &devices);
+    QList<SimulatedNm17x *> devices() const;
+
+    Result<void> startSlcan(quint16 port = 0);
+    quint16 slcanPort() const;
+    Result<void> startVirtualCan(const QString &interfaceName);
+    Result<void> startControl(quint16 port = 0);
+    quint16 controlPort() const;
+
+    // One control command (see above); the reply lines without the final newline.
+    QString execute(const QString &line);
+    // "NM172 node 127, NM172 node 127, NM174 node 5"
+    QString describe() const;
+
+private:
+    void startDevices();
+
+    struct Private;
+    std::unique_ptr<Private> d;
+};
+
+} // namespace db::nm17x

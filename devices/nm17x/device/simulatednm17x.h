@@ -1,0 +1,131 @@
+#pragma once
+
+// One simulated NM170/NM172/NM174 display on a CAN bus: the CANopen slave as the device
+// implements it (SDO server with its abort codes, NMT with boot-up, heartbeat producer and
+// consumer, EMCY with the sub-code in byte 7, TxPDO1/TxPDO2 on change with inhibit time, on SYNC
+// or cyclic, RxPDO1 broadcast on 201h, RxPDO2 with the control-word check, LSS with the
+// device's broadcast addressing) and its application: the spindle model (spindle.h) stepped by
+// the 10 ms internal cycle, and SDO writes whose effects reach the application one per cycle
+// through a 50-entry queue, as the device's two controllers do.
+//
+// Bus-agnostic: frames in through receive(), out through transmit(). The operator's hand is
+// turnShaft() and pressKey(); in broadcast addressing either one takes the offered node id.
+
+#include "devices/nm17x/nm17xdescription.h"
+#include "spindle.h"
+
+#include "canopen/device/errorcontrolslave.h"
+#include "canopen/device/lssslave.h"
+#include "canopen/device/sdoserver.h"
+#include "canopen/device/simulatednode.h"
+
+#include <QCanBusFrame>
+#include <QHash>
+#include <QObject>
+#include <QQueue>
+#include <QTimer>
+
+#include <memory>
+
+namespace db::nm17x {
+
+class SimulatedNm17x : public QObject, public canopen::ObjectAccess
+{
+    Q_OBJECT
+public:
+    static constexpr int kCycleMs = 10;
+    static constexpr int kWriteQueueSize = 50;
+
+    SimulatedNm17x(Variant variant, quint32 serial, canopen::NodeId node = kDeliveryNodeId,
+                   QObject *parent = nullptr);
+    ~SimulatedNm17x() override;
+
+    Variant variant() const { return m_variant; }
+    quint32 serial() const { return m_serial; }
+    canopen::NodeId nodeId() const { return m_node; }
+    canopen::NmtState nmtState() const { return m_state; }
+    Spindle &spindle() { return m_spindle; }
+    bool inAddressingMode() const { return m_addressing; }
+    // The node id offered by broadcast addressing and shown on the display (0 = none).
+    quint8 offeredNodeId() const { return m_offered; }
+    qint32 position() const; // 6004h
+    quint16 statusWord() const; // 204Eh:01
+    quint16 errorWord() const; // 204Eh:02
+
+    // Power on: boot-up, Pre-operational (Operational with 1F80h = 8), the 10 ms cycle starts.
+    void start();
+    void receive(const QCanBusFrame &frame);
+
+    // The operator's hand (1/100 mm of travel); selects the device in broadcast addressing.
+    void turnShaft(double delta);
+    // A device key (right = +1 counting up, left = -1); short presses jog one step, a key during
+    // an automatic positioning aborts it. Selects the device in broadcast addressing.
+    void pressKey(int direction, int ms = 100);
+
+    // ---- ObjectAccess (the SDO server's view) ----
+    const ObjectDictionary &dictionary() const override { return m_serverView; }
+    Result<QVariant> read(ObjectAddress address) override;
+    Result<void> write(ObjectAddress address, const QVariant &raw) override;
+
+Q_SIGNALS:
+    void transmit(const QCanBusFrame &frame);
+    void nodeIdChanged(db::canopen::NodeId node);
+
+private:
+    // ---- communication (simulatednm17x.cpp) ----
+    void bootUp();
+    void resetNode(bool application);
+    void setState(canopen::NmtState state);
+    void handleNmt(const QByteArray &d);
+    void handleLss(const QCanBusFrame &frame);
+    bool selectForAddressing();
+    void lssAnswer(quint8 cs, quint8 code);
+    void cycle();
+    void sendTpdos(bool sync);
+    void raiseEmergency(quint16 code, quint8 subCode);
+    void send(quint32 id, const QByteArray &data);
+    quint32 u32(ObjectAddress address) const;
+    void setValue(ObjectAddress address, const QVariant &raw);
+    void applyNodeId(canopen::NodeId node);
+
+    // ---- application (simulatednm17x_app.cpp) ----
+    Result<void> checkWrite(ObjectAddress address, const QVariant &raw);
+    void applyWrite(ObjectAddress address, const QVariant &raw);
+    void handleBroadcast(const QByteArray &d);
+    void handleRpdo2(const QByteArray &d);
+    void startSetpoint(qint32 target, bool release, bool loop, std::optional<Speed> speed);
+    void setCorrection(qint16 correction);
+    SpindleSettings settings() const;
+
+    Variant m_variant;
+    quint32 m_serial;
+    canopen::NodeId m_node;
+    ObjectDictionary m_dictionary; // with ranges: the device checks them itself
+    ObjectDictionary m_serverView; // without ranges, so that the server leaves them to us
+    std::unique_ptr<canopen::ObjectValueStore> m_store;
+    QHash<ObjectAddress, QVariant> m_flash; // communication objects saved by 1010h
+    bool m_restorePending = false; // 1011h "load": defaults at the next reset
+    canopen::SdoServer m_sdo;
+    canopen::LssSlave m_lss;
+    canopen::ErrorControlSlave m_errorControl;
+    canopen::NmtState m_state = canopen::NmtState::BootUp;
+    bool m_started = false;
+    QTimer m_cycle;
+    QTimer m_heartbeat;
+    Spindle m_spindle;
+    double m_presetOffset = 0; // 6004h = spindle position + preset offset
+    QQueue<std::pair<ObjectAddress, QVariant>> m_writes; // effects waiting for the cycle
+    // TxPDO state per PDO (0 = TxPDO1, 1 = TxPDO2)
+    QByteArray m_lastTpdo[2];
+    int m_sinceTpdoMs[2] = { 1 << 20, 1 << 20 };
+    int m_syncCount[2] = { 0, 0 };
+    int m_sinceStartMs = 0;
+    // LSS broadcast addressing
+    int m_broadcastStep = 0; // 40h EC, 41h/42h/43h FFFFFFFF seen in order
+    bool m_addressing = false;
+    bool m_addressedByBroadcast = false; // took its id; ignores further node ids
+    quint8 m_offered = 0;
+    bool m_showNodeId = false; // 2008h
+};
+
+} // namespace db::nm17x

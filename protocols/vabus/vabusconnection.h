@@ -1,0 +1,68 @@
+#pragma once
+
+// A Bonfiglioli ACTIVE Cube with a CM-VABus/TCP module as a DeviceConnection.
+//
+// Addresses are parameter number and data set (ObjectAddress index and sub, written 372:2 by
+// AddressFormat::parameter()). Data set 0 is a single parameter, or all four data sets of a
+// data-set parameter; 1-4 are the EEPROM data sets, 5-9 their RAM copies (0-4 + 5).
+// URI: vabus://HOST[:PORT][?sys=N][&ram]
+//   sys=N  a system bus slave with node id N (1-63) behind the module (SYS byte 0x40 + N);
+//          0 or absent: the inverter carrying the module (SYS 0x00)
+//   ram    writes to data sets 0-4 go to their RAM copies (5-9), sparing the EEPROM
+
+#include "core/deviceconnection.h"
+#include "vabusclient.h"
+
+namespace db {
+class ByteStream;
+}
+
+namespace db::vabus {
+
+class VabusConnection : public DeviceConnection
+{
+    Q_OBJECT
+public:
+    static constexpr int kDefaultPort = 17220; // the PLC port of the module
+
+    // Makes its own TcpStream to uri.host():uri.portOr(17220).
+    explicit VabusConnection(const ConnectionUri &uri, QObject *parent = nullptr);
+    // For tests: an injected stream, not owned, that must outlive the connection.
+    VabusConnection(const ConnectionUri &uri, ByteStream *stream, QObject *parent = nullptr);
+    ~VabusConnection() override;
+
+    QString protocolKey() const override { return QStringLiteral("vabus"); }
+    const AddressFormat &addressFormat() const override { return AddressFormat::parameter(); }
+
+    // Refuses a bad ?sys= (cheap; for the protocol registry's check).
+    static Result<void> checkUri(const ConnectionUri &uri);
+    // The SYS byte ?sys= asks for.
+    static Result<quint8> sysFromUri(const ConnectionUri &uri);
+
+    // True when writes to data sets 0-4 go to RAM (?ram).
+    bool writesToRam() const { return m_ram; }
+    void setWritesToRam(bool ram) { m_ram = ram; }
+
+    // The engine, for block access and diagnostics. Owned by the connection.
+    VabusClient *client() const { return m_client; }
+
+protected:
+    void doOpen() override;
+    void doClose() override;
+    void doRead(Reply *reply, const ObjectDef *def) override;
+    void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
+
+private:
+    void init();
+    void onOpened();
+    void onClosed(const Error &error);
+    // The description of a parameter at this address: the address's own, else that of the
+    // EEPROM data set a RAM data set copies, else data set 0's.
+    const ObjectDef *describe(ObjectAddress address) const;
+
+    ByteStream *m_stream = nullptr;
+    VabusClient *m_client = nullptr;
+    bool m_ram = false;
+};
+
+} // namespace db::vabus

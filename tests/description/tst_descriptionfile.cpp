@@ -1,0 +1,105 @@
+// Our JSON device descriptions: the built-in MovingCap one, and clear errors for broken files.
+#include "core/objectdictionary.h"
+#include "description/descriptionfile.h"
+#include "resources/builtindescriptions.h"
+
+#include <QTest>
+
+using namespace db;
+
+class TestDescriptionFile : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void movingCapDescriptionLoads();
+    void movingCapObjectsFollowTheSpec();
+    void movingCapErrorTexts();
+    void brokenFilesGiveClearErrors_data();
+    void brokenFilesGiveClearErrors();
+    void missingFileNamesThePath();
+};
+
+void TestDescriptionFile::movingCapDescriptionLoads()
+{
+    const auto dict = resources::builtinDescription(QStringLiteral("movingcap_eth"));
+    QVERIFY2(dict.ok(), qPrintable(dict.error().toString()));
+    QVERIFY(dict->size() > 240);
+    QCOMPARE(dict->identity.vendorId, 0x053Bu);
+    QVERIFY(resources::builtinDescriptionNames().contains(QStringLiteral("movingcap_eth")));
+    QCOMPARE(resources::movingCapDictionary().size(), dict->size());
+}
+
+void TestDescriptionFile::movingCapObjectsFollowTheSpec()
+{
+    const ObjectDictionary &dict = resources::movingCapDictionary();
+    const ObjectDef *sw = dict.find(ObjectAddress(0x6041, 0));
+    QVERIFY(sw);
+    QCOMPARE(sw->type, DataType::Unsigned16);
+    QCOMPARE(sw->access, Access::ReadOnly);
+    QVERIFY(sw->bitFields.size() >= 11);
+    // errata 12: 60FDh and 60FEh.1 hold bits 16+, so UNSIGNED32
+    QCOMPARE(dict.find(ObjectAddress(0x60FD, 0))->type, DataType::Unsigned32);
+    QCOMPARE(dict.find(ObjectAddress(0x60FE, 1))->type, DataType::Unsigned32);
+    // errata 8/9: typo objects are not separate objects
+    QVERIFY(!dict.contains(ObjectAddress(0x3403, 3)));
+    QVERIFY(!dict.contains(ObjectAddress(0x3101, 4)));
+    // all ten input function objects
+    for (int in = 0; in < 10; ++in)
+        QCOMPARE(dict.subObjects(quint16(0x3511 + in)).size(), 10);
+    QCOMPARE(dict.find(ObjectAddress(0x6060, 0))->displayText(QVariant::fromValue(1LL)),
+             QStringLiteral("1 (Profile position)"));
+    QCOMPARE(dict.find(ObjectAddress(0x6060, 0))->parseText(QStringLiteral("homing")).value(),
+             QVariant::fromValue(6LL));
+    QCOMPARE(dict.find(ObjectAddress(0x6078, 0))->displayText(QVariant::fromValue(902LL)),
+             QStringLiteral("90.2 %"));
+    QVERIFY(!dict.find(ObjectAddress(0x3300, 5))->validate(181).ok());
+    QVERIFY(dict.find(ObjectAddress(0x6083, 0))->storable);
+    QVERIFY(!dict.find(ObjectAddress(0x6040, 0))->storable);
+}
+
+void TestDescriptionFile::movingCapErrorTexts()
+{
+    const ObjectDictionary &dict = resources::movingCapDictionary();
+    QVERIFY(dict.errorText(0x3221).contains(QLatin1String("Under-voltage")));
+    QCOMPARE(dict.errorCode(0x2220)->name, QStringLiteral("ERROR_OVER_CURRENT"));
+    QCOMPARE(dict.errorText(0x8130), QStringLiteral("life guard or heartbeat error"));
+    QCOMPARE(dict.errorText(0x3299), QStringLiteral("voltage inside the device"));
+}
+
+void TestDescriptionFile::brokenFilesGiveClearErrors_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("mentions");
+    const QByteArray head = R"({"format":"drivebench-device-description","version":1,)";
+    QTest::newRow("not json") << QByteArray("{ nope") << "JSON error";
+    QTest::newRow("foreign json") << QByteArray(R"({"hello":1})") << "not a drivebench";
+    QTest::newRow("future version")
+        << QByteArray(R"({"format":"drivebench-device-description","version":7})") << "version 7";
+    QTest::newRow("bad index") << head + R"("objects":[{"index":"0x1FFFF","sub":0,"type":"U8"}]})"
+                               << "bad index";
+    QTest::newRow("bad type") << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U9"}]})"
+                              << "unknown type 'U9'";
+    QTest::newRow("default out of range")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","default":300}]})"
+        << "default";
+}
+
+void TestDescriptionFile::brokenFilesGiveClearErrors()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, mentions);
+    const auto dict = parseJsonDescription(json, QStringLiteral("test.json"));
+    QVERIFY(!dict.ok());
+    QVERIFY2(dict.error().message().contains(mentions), qPrintable(dict.error().message()));
+    QVERIFY(dict.error().message().contains(QLatin1String("test.json")));
+}
+
+void TestDescriptionFile::missingFileNamesThePath()
+{
+    const auto dict = loadJsonDescription(QStringLiteral("/nonexistent/x.json"));
+    QCOMPARE(dict.error().kind(), Error::Kind::Io);
+    QVERIFY(dict.error().message().contains(QLatin1String("/nonexistent/x.json")));
+}
+
+QTEST_GUILESS_MAIN(TestDescriptionFile)
+#include "tst_descriptionfile.moc"

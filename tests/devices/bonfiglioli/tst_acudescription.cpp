@@ -1,0 +1,99 @@
+// The ACU parameter description: loads, describes the parameters the way the inverter carries
+// them over VABus/TCP, shows and takes physical values with the parameter's decimals.
+
+#include "devices/bonfiglioli/acudescription.h"
+#include "vabus/vabuscodec.h"
+
+#include <QRegularExpression>
+#include <QtTest>
+
+using namespace db;
+
+class TstAcuDescription : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void loads()
+    {
+        const auto loaded = bonfiglioli::loadAcuDictionary();
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().toString()));
+        QVERIFY(loaded.value().size() > 150);
+    }
+
+    void everyParameterCanTravelOverVabus()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        static const QRegularExpression reference(
+            QStringLiteral(R"(manual|\(\d+(\.\d+)+\)|seed|§|inferred)"),
+            QRegularExpression::CaseInsensitiveOption);
+        for (const ObjectDef &def : d.objects()) {
+            QVERIFY2(vabus::isCarried(def.type), qPrintable(def.name));
+            QVERIFY(def.address.index <= vabus::kMaxParameter);
+            QVERIFY(def.address.sub <= vabus::kMaxReadDataSet);
+            QVERIFY2(!reference.match(def.description).hasMatch(), qPrintable(def.description));
+        }
+    }
+
+    void exampleParameters()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        const ObjectDef *rated = d.find(ObjectAddress(372, 2));
+        QVERIFY(rated);
+        QCOMPARE(rated->type, DataType::Unsigned16);
+        QCOMPARE(rated->displayText(qulonglong(1390)), QStringLiteral("1390 rpm"));
+        QVERIFY(bonfiglioli::hasDataSets(d, 372));
+
+        const ObjectDef *ff2 = d.find(ObjectAddress(481, 1));
+        QVERIFY(ff2);
+        QCOMPARE(ff2->type, DataType::Integer32);
+        QCOMPARE(ff2->decimals, 2);
+        QCOMPARE(ff2->displayText(qlonglong(1000)), QStringLiteral("10.00 Hz"));
+        QCOMPARE(ff2->parseText(QStringLiteral("10.5")).value(), QVariant(qlonglong(1050)));
+        QCOMPARE(ff2->parseText(QStringLiteral("-0.01")).value(), QVariant(qlonglong(-1)));
+        QVERIFY(!ff2->parseText(QStringLiteral("10.005")).ok());
+
+        const ObjectDef *power = d.find(ObjectAddress(376, 4));
+        QVERIFY(power);
+        QCOMPARE(power->parseText(QStringLiteral("1.5")).value(), QVariant(qulonglong(15)));
+        QVERIFY(power->storable);
+        QVERIFY(!d.find(ObjectAddress(376, 0))->storable); // the four data sets are stored
+
+        const ObjectDef *version = d.find(ObjectAddress(12, 0));
+        QVERIFY(version);
+        QCOMPARE(version->type, DataType::VisibleString);
+        QVERIFY(!version->writable());
+        QVERIFY(!bonfiglioli::hasDataSets(d, 12));
+
+        const ObjectDef *status = d.find(ObjectAddress(411, 0));
+        QVERIFY(status && !status->writable() && status->traceable);
+        QCOMPARE(status->parseText(QStringLiteral("0x0237")).value(), QVariant(qulonglong(0x237)));
+        const ObjectDef *control = d.find(ObjectAddress(410, 0));
+        QVERIFY(control && control->writable() && !control->storable);
+
+        const ObjectDef *behaviour = d.find(ObjectAddress(388, 0));
+        QVERIFY(behaviour);
+        QCOMPARE(behaviour->enumeration.value(1), QStringLiteral("fault"));
+        QCOMPARE(behaviour->parseText(QStringLiteral("quick stop")).value(),
+                 QVariant(qulonglong(3)));
+        QVERIFY(!behaviour->parseText(QStringLiteral("6")).ok());
+
+        QCOMPARE(d.find(ObjectAddress(1432, 1))->defaultValue, QVariant(qulonglong(172)));
+        // Contradictory limits, as recommended: 414 takes 5, 1165 ends at 2^20 - 1.
+        QVERIFY(d.find(ObjectAddress(414, 0))->parseText(QStringLiteral("5")).ok());
+        QVERIFY(!d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048576")).ok());
+        QVERIFY(d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048575")).ok());
+        QCOMPARE(d.find(ObjectAddress(1459, 0))->type, DataType::Integer16);
+    }
+
+    void faultCodes()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        const auto loss = d.errorCode(0x2714);
+        QVERIFY(loss);
+        QCOMPARE(loss->name, QStringLiteral("F2714"));
+        QVERIFY(loss->text.contains(QLatin1String("PLC"), Qt::CaseInsensitive));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstAcuDescription)
+#include "tst_acudescription.moc"

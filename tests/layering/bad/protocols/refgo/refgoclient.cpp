@@ -1,0 +1,2 @@
+#include "devices/movingcap/movingcapdrive.h"
+#include "vabus/vabusclient.h"

@@ -1,0 +1,1 @@
+#include "canopen/sdoclient.h"

@@ -1,0 +1,3 @@
+#include "morse/decode/decoder.h"
+#include "widgets/scope/scopeplot.h"
+#include <QWidget>

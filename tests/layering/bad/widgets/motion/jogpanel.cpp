@@ -1,0 +1,3 @@
+#include "app/gui/mainwindow.h"
+#include "canopen/device/sdoserver.h"
+#include "simulation/simulatedaxis.h"

@@ -1,0 +1,165 @@
+// The NM17x line panel offscreen against simulated displays on a scripted bus: finding the
+// displays, live positions from TxPDO2, a setpoint with release, jog and stop, broadcasts.
+#include "devices/nm17x/device/simulatednm17x.h"
+#include "devices/nm17x/nm17xcodes.h"
+#include "scriptedcanbus.h"
+#include "widgets/nm17x/nm17xlinemodel.h"
+#include "widgets/nm17x/nm17xlinepanel.h"
+
+#include "canopen/cannetwork.h"
+#include "canopen/sdoclient.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QTableView>
+#include <QTest>
+
+using namespace db;
+using namespace db::nm17x;
+
+class TstNm17xLinePanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void findsTheDisplays();
+    void setpointWithReleaseReachesInPosition();
+    void jogAndStop();
+    void broadcastsReachEveryDisplay();
+    void withoutNetworkNothingIsEnabled();
+    void screenshotOfARunningLine();
+
+private:
+    QPushButton *button(const char *name) { return m_panel->findChild<QPushButton *>(name); }
+    QString cell(int row, int column)
+    {
+        return m_panel->model()->index(row, column).data().toString();
+    }
+
+    test::ScriptedCanBus *m_bus = nullptr;
+    std::unique_ptr<canopen::CanNetwork> m_network;
+    QList<SimulatedNm17x *> m_displays;
+    std::unique_ptr<widgets::Nm17xLinePanel> m_panel;
+};
+
+void TstNm17xLinePanel::init()
+{
+    m_bus = new test::ScriptedCanBus;
+    m_network = std::make_unique<canopen::CanNetwork>(m_bus);
+    m_network->acquire();
+    m_network->sdo()->setTimeoutMs(200);
+    const QList<std::pair<Variant, canopen::NodeId>> line = { { Variant::Nm172, 3 },
+                                                              { Variant::Nm174, 2 } };
+    quint32 serial = 0x100;
+    for (const auto &[variant, node] : line) {
+        auto *d = new SimulatedNm17x(variant, serial++, node);
+        connect(m_bus, &test::ScriptedCanBus::frameWritten, d, &SimulatedNm17x::receive);
+        connect(d, &SimulatedNm17x::transmit, m_bus,
+                [this](const QCanBusFrame &f) { m_bus->feedLater(f); });
+        d->start();
+        m_displays.append(d);
+    }
+    m_panel = std::make_unique<widgets::Nm17xLinePanel>();
+    m_panel->setNetwork(m_network.get());
+    m_panel->show();
+}
+
+void TstNm17xLinePanel::cleanup()
+{
+    m_panel.reset();
+    qDeleteAll(m_displays);
+    m_displays.clear();
+    m_network.reset();
+}
+
+void TstNm17xLinePanel::findsTheDisplays()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    QCOMPARE(cell(0, widgets::Nm17xLineModel::Node), QStringLiteral("2"));
+    QCOMPARE(cell(0, widgets::Nm17xLineModel::Variant), QStringLiteral("NM174"));
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Serial), QStringLiteral("0x00000100"));
+    QCOMPARE(m_panel->selectedNode(), canopen::NodeId(2));
+    QVERIFY(m_panel->message().contains(QLatin1String("2 display")));
+}
+
+void TstNm17xLinePanel::setpointWithReleaseReachesInPosition()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(12.5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Position), QStringLiteral("12.50 mm"));
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Setpoint), QStringLiteral("12.50 mm"));
+    QCOMPARE(m_displays.at(0)->position(), 1250);
+}
+
+void TstNm17xLinePanel::jogAndStop()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(2);
+    m_panel->findChild<QComboBox *>("speed")->setCurrentIndex(2); // fast
+    QTest::mouseClick(button("jogLeft"), Qt::LeftButton);
+    QTRY_VERIFY(m_displays.at(1)->position() < -300);
+    QTRY_VERIFY(cell(0, widgets::Nm17xLineModel::Status).contains(QLatin1String("Moving")));
+    QVERIFY(cell(0, widgets::Nm17xLineModel::Status).endsWith(QLatin1String("(left)")));
+    QTest::mouseClick(button("stop"), Qt::LeftButton);
+    QTRY_VERIFY(!m_displays.at(1)->spindle().isMoving());
+    QTRY_COMPARE(cell(0, widgets::Nm17xLineModel::Position),
+                 formatPosition(m_displays.at(1)->position(), false));
+}
+
+void TstNm17xLinePanel::broadcastsReachEveryDisplay()
+{
+    m_panel->findChild<QDoubleSpinBox *>("preset")->setValue(250);
+    QTest::mouseClick(button("presetAll"), Qt::LeftButton);
+    QTRY_COMPARE(m_displays.at(0)->position(), 25000);
+    QTRY_COMPARE(m_displays.at(1)->position(), 25000);
+    auto *unit = m_panel->findChild<QComboBox *>("unit");
+    unit->setCurrentIndex(1);
+    Q_EMIT unit->activated(1);
+    QTRY_COMPARE(m_displays.at(0)->read({ 0x2001, 0 }).value().toUInt(), 1u);
+    QCOMPARE(m_displays.at(1)->read({ 0x2001, 0 }).value().toUInt(), 1u);
+    QVERIFY(m_panel->message().contains(QLatin1String("inch")));
+}
+
+void TstNm17xLinePanel::withoutNetworkNothingIsEnabled()
+{
+    m_panel->setNetwork(nullptr);
+    QVERIFY(!button("find")->isEnabled());
+    QVERIFY(!button("send")->isEnabled());
+    QVERIFY(!button("stopAll")->isEnabled());
+    QCOMPARE(m_panel->model()->rowCount(), 0);
+}
+
+// For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-nm17x.png of the panel
+// while one display positions and another jogs.
+void TstNm17xLinePanel::screenshotOfARunningLine()
+{
+    const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+    if (dir.isEmpty())
+        QSKIP("DRIVEBENCH_SCREENSHOT_DIR not set");
+    m_panel->resize(980, 300);
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(2);
+    m_panel->findChild<QComboBox *>("speed")->setCurrentIndex(1);
+    QTest::mouseClick(button("jogRight"), Qt::LeftButton);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(125.5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY(m_displays.at(0)->position() > 3000 && m_displays.at(1)->position() > 1000);
+    QTRY_VERIFY(cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("Moving")));
+    QVERIFY(m_panel->grab().save(dir + QStringLiteral("/screenshot-nm17x.png")));
+}
+
+QTEST_MAIN(TstNm17xLinePanel)
+#include "tst_nm17xlinepanel.moc"

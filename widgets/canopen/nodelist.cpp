@@ -1,0 +1,168 @@
+#include "nodelist.h"
+
+#include "canopen/cannetwork.h"
+#include "canopen/canopenconnection.h"
+#include "canopen/nmtmaster.h"
+#include "nodelistmodel.h"
+#include "transport/canbus.h"
+#include "widgets/common/widgetstyle.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QTableView>
+#include <QToolButton>
+
+namespace db::widgets {
+
+using canopen::NmtCommand;
+
+NodeList::NodeList(QWidget *parent)
+    : QWidget(parent)
+    , m_model(new NodeListModel(this))
+    , m_view(new QTableView(this))
+    , m_broadcast(new QCheckBox(tr("All nodes"), this))
+{
+    m_view->setObjectName(QStringLiteral("nodes"));
+    m_view->setModel(m_model);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->setShowGrid(false);
+    m_view->setWordWrap(false);
+    m_view->verticalHeader()->hide();
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_view->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setHighlightSections(false);
+    m_view->horizontalHeader()->setDefaultAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    const auto width = [this](const char *sample) {
+        return fontMetrics().horizontalAdvance(QString::fromLatin1(sample)) + 12;
+    };
+    QFont bold = style::monospaceFont();
+    bold.setBold(true);
+    m_view->horizontalHeader()->resizeSection(
+        NodeListModel::Node,
+        QFontMetrics(bold).horizontalAdvance(QStringLiteral("127 (0x7F)")) + 12);
+    m_view->horizontalHeader()->resizeSection(NodeListModel::State, width("pre-operational"));
+    m_view->horizontalHeader()->setMinimumSectionSize(40);
+    m_view->horizontalHeader()->resizeSection(NodeListModel::Heartbeat, width("00.0 s ago"));
+
+    m_broadcast->setObjectName(QStringLiteral("broadcast"));
+    m_broadcast->setToolTip(tr("Send NMT commands to every node (node id 0)"));
+    auto *buttons = new QHBoxLayout;
+    buttons->setContentsMargins(0, 0, 0, 0);
+    buttons->setSpacing(2);
+    const struct
+    {
+        NmtCommand command;
+        const char *name;
+        const char *text;
+        const char *toolTip;
+    } commands[] = {
+        { NmtCommand::Start, "start", QT_TR_NOOP("Start"), QT_TR_NOOP("NMT start: operational") },
+        { NmtCommand::Stop, "stop", QT_TR_NOOP("Stop"), QT_TR_NOOP("NMT stop: stopped") },
+        { NmtCommand::EnterPreOperational, "preop", QT_TR_NOOP("Pre-op"),
+          QT_TR_NOOP("NMT enter pre-operational") },
+        { NmtCommand::ResetNode, "reset", QT_TR_NOOP("Reset"),
+          QT_TR_NOOP("NMT reset node (application)") },
+        { NmtCommand::ResetCommunication, "resetComm", QT_TR_NOOP("Reset comm"),
+          QT_TR_NOOP("NMT reset communication") },
+    };
+    for (const auto &c : commands) {
+        auto *button = new QToolButton(this);
+        button->setObjectName(QString::fromLatin1(c.name));
+        button->setText(tr(c.text));
+        button->setToolTip(tr(c.toolTip));
+        const NmtCommand command = c.command;
+        connect(button, &QToolButton::clicked, this, [this, command] { sendCommand(command); });
+        buttons->addWidget(button);
+        m_commandButtons.append(button);
+    }
+    buttons->addStretch(1);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
+    layout->addWidget(m_view, 1);
+    layout->addLayout(buttons);
+    layout->addWidget(m_broadcast); // own row: the dock stays narrow on a laptop screen
+
+    connect(m_broadcast, &QCheckBox::toggled, this, &NodeList::updateActions);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &NodeList::updateActions);
+    connect(m_model, &QAbstractItemModel::rowsInserted, this, [this] {
+        if (!m_view->selectionModel()->hasSelection() && m_model->rowCount() > 0)
+            m_view->selectRow(0);
+    });
+    updateActions();
+}
+
+NodeList::~NodeList() = default;
+
+void NodeList::setConnection(canopen::CanopenConnection *connection)
+{
+    if (!connection) {
+        setNetwork(nullptr);
+        return;
+    }
+    const DeviceIdentity &id = connection->dictionary().identity;
+    setNetwork(connection->network(), connection->node(),
+               id.productName.isEmpty() ? id.vendorName : id.productName);
+}
+
+void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,
+                          const QString &ownName)
+{
+    m_nmt = network ? network->nmt() : nullptr;
+    m_model->setOwnNode(0);
+    m_model->setSources(nullptr, nullptr); // forgets the previous bus's nodes
+    m_model->setOwnNode(ownNode, ownName);
+    m_model->setSources(network ? network->bus() : nullptr, network ? network->monitor() : nullptr);
+    if (m_model->rowCount() > 0)
+        m_view->selectRow(0);
+    updateActions();
+}
+
+int NodeList::targetNode() const
+{
+    if (broadcast())
+        return 0;
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    return rows.isEmpty() ? -1 : int(m_model->nodeAt(rows.first().row()));
+}
+
+void NodeList::selectNode(canopen::NodeId node)
+{
+    if (const int row = m_model->rowOf(node); row >= 0)
+        m_view->selectRow(row);
+}
+
+bool NodeList::broadcast() const
+{
+    return m_broadcast->isChecked();
+}
+
+void NodeList::setBroadcast(bool on)
+{
+    m_broadcast->setChecked(on);
+}
+
+bool NodeList::sendCommand(canopen::NmtCommand command)
+{
+    const int node = targetNode();
+    if (!m_nmt || node < 0)
+        return false;
+    if (!m_nmt->send(command, canopen::NodeId(node)))
+        return false;
+    m_model->noteCommand(canopen::NmtMaster::commandName(command), canopen::NodeId(node));
+    return true;
+}
+
+void NodeList::updateActions()
+{
+    const bool enabled = m_nmt && targetNode() >= 0;
+    for (QToolButton *button : std::as_const(m_commandButtons))
+        button->setEnabled(enabled);
+}
+
+} // namespace db::widgets

@@ -1,0 +1,238 @@
+#include "nodelistmodel.h"
+
+#include "canopen/nmtmaster.h"
+#include "canopen/nodemonitor.h"
+#include "transport/canbus.h"
+#include "widgets/common/widgetstyle.h"
+
+#include <QCanBusFrame>
+
+namespace db::widgets {
+
+using canopen::NmtState;
+using canopen::NodeId;
+
+NodeListModel::NodeListModel(QObject *parent)
+    : QAbstractTableModel(parent)
+{
+    m_clock.start();
+    m_ageTimer.setInterval(kAgeRefreshMs);
+    connect(&m_ageTimer, &QTimer::timeout, this, &NodeListModel::refreshAges);
+}
+
+NodeListModel::~NodeListModel() = default;
+
+void NodeListModel::setSources(CanBus *bus, canopen::NodeMonitor *monitor)
+{
+    for (const auto &c : std::as_const(m_connections))
+        disconnect(c);
+    m_connections.clear();
+    m_bus = bus;
+    m_monitor = monitor;
+    beginResetModel();
+    m_rows.removeIf([this](const Row &r) { return r.node != m_own; });
+    for (Row &r : m_rows)
+        r = Row { r.node, NmtState::Unknown, -1, false, r.name, {} };
+    endResetModel();
+    if (!bus || !monitor) {
+        m_ageTimer.stop();
+        return;
+    }
+    // The monitor watches the bus from before this model, so its state is current when our
+    // frame slot runs; its signals cover nodes going silent.
+    m_connections.append(connect(bus, &CanBus::frameReceived, this, &NodeListModel::onFrame));
+    m_connections.append(connect(monitor, &canopen::NodeMonitor::stateChanged, this,
+                                 [this](NodeId node, NmtState state) {
+                                     ensure(node).state = state;
+                                     changed(node);
+                                 }));
+    m_connections.append(
+        connect(monitor, &canopen::NodeMonitor::heartbeatLost, this, [this](NodeId node) {
+            ensure(node).lost = true;
+            changed(node);
+        }));
+    m_connections.append(
+        connect(monitor, &canopen::NodeMonitor::heartbeatResumed, this, [this](NodeId node) {
+            ensure(node).lost = false;
+            changed(node);
+        }));
+    for (NodeId node : monitor->nodes()) {
+        Row &r = ensure(node);
+        r.state = monitor->state(node);
+        r.lost = !monitor->isAlive(node);
+    }
+    m_ageTimer.start();
+}
+
+void NodeListModel::setOwnNode(NodeId node, const QString &name)
+{
+    m_own = node;
+    if (node != 0)
+        setNodeName(node, name);
+}
+
+void NodeListModel::setNodeName(NodeId node, const QString &name)
+{
+    ensure(node).name = name;
+    changed(node);
+}
+
+void NodeListModel::noteCommand(const QString &command, NodeId node)
+{
+    for (Row &r : m_rows) {
+        if (node == 0 || r.node == node)
+            r.lastCommand = command;
+    }
+    if (!m_rows.isEmpty())
+        Q_EMIT dataChanged(index(0, State), index(rowCount() - 1, State));
+}
+
+NodeListModel::Row &NodeListModel::ensure(NodeId node)
+{
+    auto it = std::lower_bound(m_rows.begin(), m_rows.end(), node,
+                               [](const Row &r, NodeId n) { return r.node < n; });
+    if (it != m_rows.end() && it->node == node)
+        return *it;
+    const int row = int(it - m_rows.begin());
+    beginInsertRows({}, row, row);
+    Row r;
+    r.node = node;
+    m_rows.insert(row, r);
+    endInsertRows();
+    return m_rows[row];
+}
+
+void NodeListModel::changed(NodeId node)
+{
+    if (const int row = rowOf(node); row >= 0)
+        Q_EMIT dataChanged(index(row, 0), index(row, ColumnCount - 1));
+}
+
+void NodeListModel::onFrame(const QCanBusFrame &frame)
+{
+    const quint32 id = frame.frameId();
+    if (frame.frameType() != QCanBusFrame::DataFrame || frame.hasExtendedFrameFormat()
+        || id <= canopen::cob::Heartbeat || id > canopen::cob::Heartbeat + canopen::kMaxNodeId
+        || frame.payload().isEmpty())
+        return;
+    const auto node = NodeId(id - canopen::cob::Heartbeat);
+    Row &r = ensure(node);
+    r.heardMs = m_clock.elapsed();
+    if (m_monitor)
+        r.state = m_monitor->state(node);
+    r.lost = false;
+    changed(node);
+}
+
+void NodeListModel::refreshAges()
+{
+    if (!m_rows.isEmpty())
+        Q_EMIT dataChanged(index(0, Heartbeat), index(rowCount() - 1, Heartbeat));
+}
+
+int NodeListModel::rowOf(NodeId node) const
+{
+    for (int row = 0; row < m_rows.size(); ++row) {
+        if (m_rows.at(row).node == node)
+            return row;
+    }
+    return -1;
+}
+
+NodeId NodeListModel::nodeAt(int row) const
+{
+    return row >= 0 && row < m_rows.size() ? m_rows.at(row).node : 0;
+}
+
+NmtState NodeListModel::state(NodeId node) const
+{
+    const int row = rowOf(node);
+    return row < 0 ? NmtState::Unknown : m_rows.at(row).state;
+}
+
+qint64 NodeListModel::heartbeatAgeMs(NodeId node) const
+{
+    const int row = rowOf(node);
+    return row < 0 || m_rows.at(row).heardMs < 0 ? -1 : m_clock.elapsed() - m_rows.at(row).heardMs;
+}
+
+bool NodeListModel::isLost(NodeId node) const
+{
+    const int row = rowOf(node);
+    return row >= 0 && m_rows.at(row).lost;
+}
+
+int NodeListModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int NodeListModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant NodeListModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const Row &r = m_rows.at(index.row());
+    if (role == Qt::DisplayRole) {
+        switch (index.column()) {
+        case Node:
+            return QStringLiteral("%1 (0x%2)").arg(r.node).arg(r.node, 2, 16, QLatin1Char('0'));
+        case State:
+            if (r.lost)
+                return tr("lost (was %1)").arg(canopen::nmtStateName(r.state));
+            if (r.state == NmtState::Unknown && !r.lastCommand.isEmpty())
+                return tr("unknown (sent %1)").arg(r.lastCommand);
+            return canopen::nmtStateName(r.state);
+        case Heartbeat:
+            return r.heardMs < 0
+                ? tr("never")
+                : tr("%1 s ago").arg(double(m_clock.elapsed() - r.heardMs) / 1000.0, 0, 'f', 1);
+        case Name:
+            return r.name;
+        }
+    } else if (role == Qt::ForegroundRole && index.column() == State) {
+        if (r.lost)
+            return style::errorColor();
+        switch (r.state) {
+        case NmtState::Operational:
+            return style::okColor();
+        case NmtState::Stopped:
+        case NmtState::BootUp:
+            return style::warningColor();
+        case NmtState::Unknown:
+            return style::inactiveColor();
+        case NmtState::PreOperational:
+            break;
+        }
+    } else if (role == Qt::FontRole && index.column() == Node) {
+        QFont font = style::monospaceFont();
+        font.setBold(r.node == m_own);
+        return font;
+    } else if (role == Qt::ToolTipRole && index.column() == Node && r.node == m_own) {
+        return tr("The node of this connection");
+    }
+    return {};
+}
+
+QVariant NodeListModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Node:
+        return tr("Node");
+    case State:
+        return tr("NMT state");
+    case Heartbeat:
+        return tr("Heartbeat");
+    case Name:
+        return tr("Name");
+    }
+    return {};
+}
+
+} // namespace db::widgets

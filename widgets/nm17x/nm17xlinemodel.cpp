@@ -1,0 +1,157 @@
+#include "nm17xlinemodel.h"
+
+#include "devices/nm17x/nm17xcodes.h"
+
+namespace db::widgets {
+
+using namespace db::nm17x;
+
+Nm17xLineModel::Nm17xLineModel(QObject *parent)
+    : QAbstractTableModel(parent)
+{ }
+
+void Nm17xLineModel::setLine(Nm17xLine *line)
+{
+    disconnect(m_pdo1);
+    disconnect(m_pdo2);
+    if (!line)
+        return;
+    m_pdo1 = connect(line, &Nm17xLine::tpdo1, this, [this](canopen::NodeId node, const Tpdo1 &p) {
+        update(node, [&p](DisplayState &s) {
+            s.position = p.position;
+            s.status = p.status;
+            s.errors = p.errors;
+        });
+    });
+    m_pdo2 = connect(line, &Nm17xLine::tpdo2, this, [this](canopen::NodeId node, const Tpdo2 &p) {
+        const int row = rowOf(node);
+        if (row >= 0)
+            m_corrections[row] = p.correction;
+        update(node, [&p](DisplayState &s) {
+            s.position = p.position;
+            s.status = p.status;
+        });
+    });
+}
+
+void Nm17xLineModel::setDisplays(const QList<DisplayState> &displays)
+{
+    beginResetModel();
+    m_rows = displays;
+    m_corrections = QList<qint16>(displays.size(), 0);
+    endResetModel();
+}
+
+void Nm17xLineModel::setSetpoint(canopen::NodeId node, qint32 value)
+{
+    m_setpoints.insert(node, value);
+    const int row = rowOf(node);
+    if (row >= 0)
+        Q_EMIT dataChanged(index(row, Setpoint), index(row, Setpoint));
+}
+
+int Nm17xLineModel::rowOf(canopen::NodeId node) const
+{
+    for (int i = 0; i < m_rows.size(); ++i) {
+        if (m_rows.at(i).node == node)
+            return i;
+    }
+    return -1;
+}
+
+void Nm17xLineModel::update(canopen::NodeId node, const std::function<void(DisplayState &)> &change)
+{
+    const int row = rowOf(node);
+    if (row < 0)
+        return;
+    change(m_rows[row]);
+    Q_EMIT dataChanged(index(row, Position), index(row, Errors));
+}
+
+int Nm17xLineModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_rows.size());
+}
+
+int Nm17xLineModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant Nm17xLineModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const DisplayState &s = m_rows.at(index.row());
+    if (role == Qt::ToolTipRole && index.column() == Errors) {
+        QStringList remedies;
+        for (const DisplayError &e : activeErrors(s.errors))
+            remedies.append(QStringLiteral("%1: %2").arg(e.code, e.remedy));
+        return remedies.join(u'\n');
+    }
+    if (role == Qt::TextAlignmentRole
+        && (index.column() == Position || index.column() == Correction))
+        return int(Qt::AlignRight | Qt::AlignVCenter);
+    if (role != Qt::DisplayRole)
+        return {};
+    switch (index.column()) {
+    case Node:
+        return s.node;
+    case Variant:
+        return variantName(s.variant);
+    case Serial:
+        return QStringLiteral("0x%1").arg(
+            QString::number(s.serial, 16).toUpper().rightJustified(8, u'0'));
+    case Setpoint:
+        return m_setpoints.contains(s.node) ? formatPosition(m_setpoints.value(s.node), s.inch)
+                                            : QStringLiteral("-");
+    case Position:
+        return formatPosition(s.position, s.inch);
+    case Correction:
+        return formatPosition(m_corrections.value(index.row()), s.inch);
+    case Status: {
+        // The operator's view: the flags, with the direction instead of the output pins.
+        constexpr quint16 kPins = status::In1Left | status::In2Right | status::In3 | status::In4;
+        QString text = statusText(s.status & ~kPins);
+        if (s.status & status::In2Right)
+            text += tr(" (right)");
+        else if (s.status & status::In1Left)
+            text += tr(" (left)");
+        return text;
+    }
+    case Errors: {
+        const QString text = errorText(s.errors);
+        return text.isEmpty() ? QStringLiteral("-") : text;
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant Nm17xLineModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Node:
+        return tr("Node");
+    case Variant:
+        return tr("Variant");
+    case Serial:
+        return tr("Serial number");
+    case Setpoint:
+        return tr("Setpoint");
+    case Position:
+        return tr("Position");
+    case Correction:
+        return tr("Correction");
+    case Status:
+        return tr("Status");
+    case Errors:
+        return tr("Errors");
+    default:
+        return {};
+    }
+}
+
+} // namespace db::widgets

@@ -1,0 +1,277 @@
+#include "nm17xlinepanel.h"
+
+#include "nm17xlinemodel.h"
+
+#include "canopen/cannetwork.h"
+#include "canopen/nmtmaster.h"
+#include "devices/nm17x/nm17xline.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace db::widgets {
+
+using namespace db::nm17x;
+
+namespace {
+constexpr double kMinMm = -999.99;
+constexpr double kMaxMm = 9999.99;
+
+QDoubleSpinBox *millimetreBox(QWidget *parent)
+{
+    auto *box = new QDoubleSpinBox(parent);
+    box->setRange(kMinMm, kMaxMm);
+    box->setDecimals(2);
+    box->setSuffix(QStringLiteral(" mm"));
+    return box;
+}
+} // namespace
+
+Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
+    : QWidget(parent)
+    , m_model(new Nm17xLineModel(this))
+    , m_view(new QTableView(this))
+    , m_message(new QLabel(this))
+    , m_setpoint(millimetreBox(this))
+    , m_kind(new QComboBox(this))
+    , m_speed(new QComboBox(this))
+    , m_preset(millimetreBox(this))
+    , m_group(new QSpinBox(this))
+    , m_unit(new QComboBox(this))
+{
+    m_view->setModel(m_model);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_view->verticalHeader()->hide();
+    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_kind->addItem(tr("standard"), int(SetpointKind::Standard));
+    m_kind->addItem(tr("with release"), int(SetpointKind::Release));
+    m_kind->addItem(tr("direct (no loop)"), int(SetpointKind::Direct));
+    m_kind->addItem(tr("plunge cut"), int(SetpointKind::Plunge));
+    m_kind->addItem(tr("plunge cut with release"), int(SetpointKind::PlungeRelease));
+    for (const Speed s : { Speed::Slow, Speed::Medium, Speed::Fast })
+        m_speed->addItem(speedName(s), int(s));
+    m_group->setRange(1, 8);
+    m_unit->addItem(QStringLiteral("mm"));
+    m_unit->addItem(QStringLiteral("inch"));
+
+    const auto button = [this](const QString &text, const QString &name, auto slot) {
+        auto *b = new QPushButton(text, this);
+        b->setObjectName(name);
+        connect(b, &QPushButton::clicked, this, slot);
+        return b;
+    };
+    auto *find = button(tr("Find displays"), QStringLiteral("find"), &Nm17xLinePanel::findDisplays);
+    auto *send = button(tr("Send setpoint"), QStringLiteral("send"), &Nm17xLinePanel::sendSetpoint);
+    auto *left = button(tr("Jog left"), QStringLiteral("jogLeft"), [this] { jog(-1); });
+    auto *right = button(tr("Jog right"), QStringLiteral("jogRight"), [this] { jog(1); });
+    auto *stopOne = button(tr("Stop"), QStringLiteral("stop"), &Nm17xLinePanel::stop);
+    auto *ids =
+        button(tr("Show node ids"), QStringLiteral("showIds"), &Nm17xLinePanel::showNodeIds);
+    auto *preset =
+        button(tr("Preset all"), QStringLiteral("presetAll"), &Nm17xLinePanel::presetAll);
+    auto *start =
+        button(tr("Start group"), QStringLiteral("startGroup"), &Nm17xLinePanel::startGroup);
+    auto *stopLine = button(tr("Stop all"), QStringLiteral("stopAll"), &Nm17xLinePanel::stopAll);
+    m_setpoint->setObjectName(QStringLiteral("setpoint"));
+    m_kind->setObjectName(QStringLiteral("kind"));
+    m_speed->setObjectName(QStringLiteral("speed"));
+    m_preset->setObjectName(QStringLiteral("preset"));
+    m_unit->setObjectName(QStringLiteral("unit"));
+    connect(m_unit, &QComboBox::activated, this, [this](int i) { setInch(i == 1); });
+
+    auto *lineRow = new QHBoxLayout;
+    for (QWidget *w :
+         std::initializer_list<QWidget *> { find, new QLabel(tr("Unit:"), this), m_unit, ids,
+                                            m_preset, preset, m_group, start, stopLine })
+        lineRow->addWidget(w);
+    lineRow->addStretch();
+    auto *nodeRow = new QHBoxLayout;
+    for (QWidget *w : std::initializer_list<QWidget *> { m_setpoint, m_kind, send,
+                                                         new QLabel(tr("Speed:"), this), m_speed,
+                                                         left, right, stopOne })
+        nodeRow->addWidget(w);
+    nodeRow->addStretch();
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(lineRow);
+    layout->addWidget(m_view);
+    layout->addLayout(nodeRow);
+    layout->addWidget(m_message);
+    m_nodeButtons = { send, left, right, stopOne };
+    m_lineControls = { find, m_unit, ids, preset, start, stopLine };
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &Nm17xLinePanel::updateActions);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &Nm17xLinePanel::updateActions);
+    updateActions();
+}
+
+Nm17xLinePanel::~Nm17xLinePanel() = default;
+
+void Nm17xLinePanel::setNetwork(canopen::CanNetwork *network)
+{
+    if (network == m_network && (m_line || !network))
+        return;
+    m_model->setLine(nullptr);
+    delete m_line;
+    m_line = nullptr;
+    m_network = network;
+    m_model->setDisplays({});
+    if (network) {
+        m_line = new Nm17xLine(network, this);
+        m_model->setLine(m_line);
+    }
+    updateActions();
+}
+
+canopen::NodeId Nm17xLinePanel::selectedNode() const
+{
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    if (rows.isEmpty() || rows.first().row() >= m_model->displays().size())
+        return 0;
+    return m_model->displays().at(rows.first().row()).node;
+}
+
+void Nm17xLinePanel::selectNode(canopen::NodeId node)
+{
+    const int row = m_model->rowOf(node);
+    if (row >= 0)
+        m_view->selectRow(row);
+}
+
+QString Nm17xLinePanel::message() const
+{
+    return m_message->text();
+}
+
+void Nm17xLinePanel::report(const QString &text)
+{
+    m_message->setText(text);
+}
+
+void Nm17xLinePanel::updateActions()
+{
+    const bool line = m_line != nullptr;
+    for (QWidget *w : std::as_const(m_lineControls))
+        w->setEnabled(line);
+    for (QPushButton *b : std::as_const(m_nodeButtons))
+        b->setEnabled(line && selectedNode() != 0);
+}
+
+void Nm17xLinePanel::startNode(canopen::NodeId node)
+{
+    if (m_network)
+        m_network->nmt()->send(canopen::NmtCommand::Start, node);
+}
+
+void Nm17xLinePanel::findDisplays()
+{
+    if (!m_line)
+        return;
+    report(tr("looking for displays ..."));
+    Reply *reply = m_line->findDisplays();
+    connect(reply, &Reply::finished, this, [this, reply] {
+        reply->deleteLater();
+        const auto displays = reply->value().value<QList<DisplayState>>();
+        m_model->setDisplays(displays);
+        report(tr("%n display(s) found", nullptr, int(displays.size())));
+        if (!displays.isEmpty())
+            m_view->selectRow(0);
+    });
+}
+
+void Nm17xLinePanel::sendSetpoint()
+{
+    const canopen::NodeId node = selectedNode();
+    if (!m_line || node == 0)
+        return;
+    const auto kind = SetpointKind(m_kind->currentData().toInt());
+    const bool plunge = kind == SetpointKind::Plunge || kind == SetpointKind::PlungeRelease;
+    const auto speed = plunge ? std::optional(Speed(m_speed->currentData().toInt())) : std::nullopt;
+    startNode(node);
+    const qint32 value = qint32(qRound(m_setpoint->value() * 100));
+    const auto sent = m_line->setpoint(node, value, kind, {}, speed);
+    if (sent)
+        m_model->setSetpoint(node, value);
+    report(sent ? tr("node %1: setpoint %2 sent").arg(node).arg(formatPosition(value, false))
+                : sent.error().message());
+}
+
+void Nm17xLinePanel::jog(int direction)
+{
+    const canopen::NodeId node = selectedNode();
+    if (!m_line || node == 0)
+        return;
+    startNode(node);
+    const auto sent = m_line->jog(node, direction, Speed(m_speed->currentData().toInt()));
+    report(sent ? tr("node %1: jogging %2").arg(node).arg(direction > 0 ? tr("right") : tr("left"))
+                : sent.error().message());
+}
+
+void Nm17xLinePanel::stop()
+{
+    const canopen::NodeId node = selectedNode();
+    if (!m_line || node == 0)
+        return;
+    startNode(node);
+    const auto sent = m_line->stop(node);
+    report(sent ? tr("node %1: stop sent").arg(node) : sent.error().message());
+}
+
+void Nm17xLinePanel::setInch(bool inch)
+{
+    if (!m_line)
+        return;
+    startNode(0);
+    const auto sent = m_line->setUnit(inch);
+    report(sent ? tr("every display shows %1").arg(inch ? tr("inch") : tr("mm"))
+                : sent.error().message());
+}
+
+void Nm17xLinePanel::showNodeIds()
+{
+    if (!m_line)
+        return;
+    startNode(0);
+    const auto sent = m_line->showNodeIds(true);
+    report(sent ? tr("every display shows its node id") : sent.error().message());
+}
+
+void Nm17xLinePanel::presetAll()
+{
+    if (!m_line)
+        return;
+    startNode(0);
+    const qint32 value = qint32(qRound(m_preset->value() * 100));
+    const auto sent = m_line->presetAll(value);
+    report(sent ? tr("every display preset to %1").arg(formatPosition(value, false))
+                : sent.error().message());
+}
+
+void Nm17xLinePanel::startGroup()
+{
+    if (!m_line)
+        return;
+    startNode(0);
+    const auto sent = m_line->startGroup(m_group->value());
+    report(sent ? tr("group %1 started").arg(m_group->value()) : sent.error().message());
+}
+
+void Nm17xLinePanel::stopAll()
+{
+    if (!m_line)
+        return;
+    startNode(0);
+    const auto sent = m_line->stopAll();
+    report(sent ? tr("every display stopped") : sent.error().message());
+}
+
+} // namespace db::widgets

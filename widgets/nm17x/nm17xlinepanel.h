@@ -1,0 +1,83 @@
+#pragma once
+
+// The NM17x line panel: every NM170/NM172/NM174 display on a CAN network in one table, live from
+// their TxPDOs, with commands for the selected display (setpoint standard / with release /
+// direct / plunge cut, jog left/right at a speed, stop) and for the whole line by broadcast
+// (mm/inch, show node ids, preset all, start group, stop all). Commands are built only from the
+// control words the displays accept; the panel starts a node (NMT) before its first PDO, since
+// the displays execute PDOs in Operational only. It receives the network and never creates a
+// transport.
+
+#include "canopen/canopenids.h"
+
+#include <QPointer>
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTableView;
+
+namespace db::canopen {
+class CanNetwork;
+}
+namespace db::nm17x {
+class Nm17xLine;
+}
+
+namespace db::widgets {
+
+class Nm17xLineModel;
+
+class Nm17xLinePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit Nm17xLinePanel(QWidget *parent = nullptr);
+    ~Nm17xLinePanel() override;
+
+    // Not owned; nullptr detaches.
+    void setNetwork(canopen::CanNetwork *network);
+
+    Nm17xLineModel *model() const { return m_model; }
+    QTableView *view() const { return m_view; }
+    // The node of the selected row, 0 when none.
+    canopen::NodeId selectedNode() const;
+    void selectNode(canopen::NodeId node);
+    // The last command's outcome ("node 3: setpoint sent", or the reason it was refused).
+    QString message() const;
+
+public Q_SLOTS:
+    void findDisplays();
+    void sendSetpoint();
+    void jog(int direction);
+    void stop();
+    void setInch(bool inch);
+    void showNodeIds();
+    void presetAll();
+    void startGroup();
+    void stopAll();
+
+private:
+    void report(const QString &text);
+    void startNode(canopen::NodeId node);
+    void updateActions();
+
+    QPointer<canopen::CanNetwork> m_network;
+    nm17x::Nm17xLine *m_line = nullptr;
+    Nm17xLineModel *m_model;
+    QTableView *m_view;
+    QLabel *m_message;
+    QDoubleSpinBox *m_setpoint;
+    QComboBox *m_kind;
+    QComboBox *m_speed;
+    QDoubleSpinBox *m_preset;
+    QSpinBox *m_group;
+    QComboBox *m_unit;
+    QList<QPushButton *> m_nodeButtons; // need a selected display
+    QList<QWidget *> m_lineControls; // need a network
+};
+
+} // namespace db::widgets

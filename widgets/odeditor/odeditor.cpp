@@ -1,0 +1,384 @@
+#include "odeditor.h"
+
+#include "objectaccessbox.h"
+#include "odeditorbits.h"
+#include "odeditordelegate.h"
+#include "odeditorfilter.h"
+#include "odeditormodel.h"
+#include "odeditorpoller.h"
+#include "widgets/common/widgetstyle.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QToolButton>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace db::widgets {
+
+namespace {
+constexpr int kDefaultPeriodMs = 1000;
+
+QString periodName(int ms)
+{
+    if (ms == 0)
+        return OdEditor::tr("Off");
+    if (ms < 1000)
+        return OdEditor::tr("%1 ms").arg(ms);
+    return OdEditor::tr("%1 s").arg(ms / 1000);
+}
+} // namespace
+
+OdEditor::OdEditor(QWidget *parent)
+    : QWidget(parent)
+    , m_model(new OdEditorModel(this))
+    , m_filter(new OdEditorFilter(this))
+    , m_poller(new OdEditorPoller(m_model, this))
+    , m_delegate(new OdEditorDelegate(m_model, this))
+    , m_filterEdit(new QLineEdit(this))
+    , m_hex(new QCheckBox(tr("He&x"), this))
+    , m_rate(new QComboBox(this))
+    , m_tools(new QHBoxLayout)
+    , m_view(new QTreeView(this))
+    , m_details(new OdBitFieldView(this))
+    , m_counts(new QLabel(this))
+    , m_status(new QLabel(this))
+{
+    m_filterEdit->setObjectName(QStringLiteral("filter"));
+    m_hex->setObjectName(QStringLiteral("hex"));
+    m_rate->setObjectName(QStringLiteral("refreshRate"));
+    m_view->setObjectName(QStringLiteral("objects"));
+    m_status->setObjectName(QStringLiteral("status"));
+    m_counts->setObjectName(QStringLiteral("counts"));
+
+    m_filter->setSourceModel(m_model);
+    m_filterEdit->setPlaceholderText(tr("Filter by index, name or value (e.g. 6041, velocity)"));
+    m_filterEdit->setClearButtonEnabled(true);
+    m_filterEdit->setMinimumWidth(140);
+    for (int ms : OdEditorPoller::kPeriodsMs)
+        m_rate->addItem(periodName(ms), ms);
+    m_rate->setToolTip(tr("Live refresh of the rows on screen"));
+    auto *readAllButton = new QToolButton(this);
+    readAllButton->setObjectName(QStringLiteral("readAll"));
+    readAllButton->setText(tr("Read all"));
+    readAllButton->setToolTip(tr("Read every object of the device once"));
+    auto *byIndexButton = new QToolButton(this);
+    byIndexButton->setObjectName(QStringLiteral("byIndex"));
+    byIndexButton->setText(tr("By index…"));
+    byIndexButton->setToolTip(tr("Read or write an object the device description does not list"));
+
+    m_tools->addWidget(m_filterEdit, 1);
+    m_tools->addWidget(m_hex);
+    m_tools->addSpacing(8);
+    m_tools->addWidget(new QLabel(tr("Refresh:"), this));
+    m_tools->addWidget(m_rate);
+    m_tools->addWidget(readAllButton);
+    m_tools->addWidget(byIndexButton);
+
+    m_view->setModel(m_filter);
+    m_view->setItemDelegateForColumn(OdEditorModel::Value, m_delegate);
+    m_view->setUniformRowHeights(true);
+    m_view->setAlternatingRowColors(true);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                            | QAbstractItemView::SelectedClicked);
+    m_view->setDragEnabled(true);
+    m_view->setDragDropMode(QAbstractItemView::DragOnly);
+    m_view->setAllColumnsShowFocus(true);
+    QHeaderView *header = m_view->header();
+    header->setStretchLastSection(false);
+    // The name takes the room that is left; the other columns keep their widths.
+    header->setSectionResizeMode(OdEditorModel::Name, QHeaderView::Stretch);
+    const QFontMetrics mono(style::monospaceFont());
+    const int ch = mono.horizontalAdvance(QLatin1Char('0'));
+    header->resizeSection(OdEditorModel::Address, ch * 10 + 40);
+    header->resizeSection(OdEditorModel::Name, 260);
+    header->resizeSection(OdEditorModel::Type,
+                          fontMetrics().horizontalAdvance(QStringLiteral("VISIBLE_STRING")) + 16);
+    header->resizeSection(OdEditorModel::AccessColumn,
+                          fontMetrics().horizontalAdvance(QStringLiteral("Access")) + 20);
+    header->resizeSection(OdEditorModel::Value, ch * 28);
+    header->resizeSection(OdEditorModel::Default, ch * 14);
+    header->resizeSection(OdEditorModel::Limits, ch * 22);
+    header->resizeSection(OdEditorModel::Pdo,
+                          fontMetrics().horizontalAdvance(QStringLiteral("PDO")) + 24);
+
+    auto *splitter = new QSplitter(Qt::Vertical, this);
+    splitter->addWidget(m_view);
+    splitter->addWidget(m_details);
+    splitter->setStretchFactor(0, 4);
+    splitter->setStretchFactor(1, 1);
+    splitter->setChildrenCollapsible(false);
+
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_counts->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    style::setTextColor(m_counts, style::inactiveColor());
+    auto *statusRow = new QHBoxLayout;
+    statusRow->addWidget(m_status, 1);
+    statusRow->addWidget(m_counts);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(m_tools);
+    layout->addWidget(splitter, 1);
+    layout->addLayout(statusRow);
+
+    connect(m_filterEdit, &QLineEdit::textChanged, this, [this](const QString &text) {
+        m_filter->setText(text);
+        if (!text.isEmpty())
+            m_view->expandAll();
+        updateCounts();
+    });
+    connect(m_hex, &QCheckBox::toggled, m_model, &OdEditorModel::setHex);
+    connect(m_hex, &QCheckBox::toggled, this, [this] { onCurrentChanged(); });
+    connect(m_rate, &QComboBox::currentIndexChanged, this,
+            [this] { m_poller->setPeriodMs(m_rate->currentData().toInt()); });
+    connect(readAllButton, &QToolButton::clicked, this, &OdEditor::readAll);
+    connect(byIndexButton, &QToolButton::clicked, this, &OdEditor::showAccessByIndex);
+    connect(m_model, &OdEditorModel::writeRequested, this, &OdEditor::onWriteRequested);
+    connect(m_model, &OdEditorModel::editRefused, this,
+            [this](ObjectAddress a, const QString &reason) {
+                showStatus(tr("%1 not written: %2").arg(a.toString(), reason), style::errorColor());
+            });
+    connect(m_delegate, &OdEditorDelegate::inputProblem, this, [this](const QString &problem) {
+        if (!problem.isEmpty())
+            showStatus(problem, style::errorColor());
+    });
+    connect(m_model, &QAbstractItemModel::dataChanged, this, &OdEditor::onModelDataChanged);
+    // Group titles span the whole row; spans are per proxy row, so renew them when rows change.
+    const auto spanGroups = [this] {
+        for (int row = 0; row < m_filter->rowCount(); ++row)
+            m_view->setFirstColumnSpanned(row, QModelIndex(), true);
+    };
+    connect(m_filter, &QAbstractItemModel::modelReset, this, spanGroups);
+    connect(m_filter, &QAbstractItemModel::layoutChanged, this, spanGroups);
+    connect(m_filter, &QAbstractItemModel::rowsInserted, this, spanGroups);
+    connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
+        m_view->expandToDepth(0);
+        onCurrentChanged();
+        updateCounts();
+    });
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &OdEditor::onCurrentChanged);
+    // The rows on screen and the selected object (its bits are in the details pane).
+    m_poller->setVisibleRows([this] {
+        if (!isVisible())
+            return QList<ObjectAddress>();
+        QList<ObjectAddress> rows = visibleAddresses();
+        const auto current = m_model->addressAt(m_filter->mapToSource(m_view->currentIndex()));
+        if (current && !rows.contains(*current))
+            rows.append(*current);
+        return rows;
+    });
+    setRefreshPeriodMs(kDefaultPeriodMs);
+    setConnection(nullptr);
+}
+
+OdEditor::~OdEditor()
+{
+    disconnect(m_stateConnection);
+    // An editor still open is committed while the view dies: that must not write anything.
+    disconnect(m_model, nullptr, this, nullptr);
+    disconnect(m_delegate, nullptr, this, nullptr);
+    m_model->setEditable(false);
+}
+
+void OdEditor::setConnection(DeviceConnection *connection)
+{
+    if (connection && connection == m_connection)
+        return;
+    disconnect(m_stateConnection);
+    ++m_generation;
+    m_poller->setConnection(connection);
+    m_connection = connection;
+    m_model->setDictionary(connection ? connection->dictionary() : ObjectDictionary());
+    if (connection) {
+        m_stateConnection =
+            connect(connection, &DeviceConnection::stateChanged, this, &OdEditor::onStateChanged);
+    }
+    showStatus(connection ? QString() : tr("No device"));
+    onStateChanged();
+}
+
+void OdEditor::onStateChanged()
+{
+    const bool connected = m_connection && m_connection->isConnected();
+    m_model->setEditable(connected);
+    if (!connected) {
+        m_poller->clear();
+        return;
+    }
+    // Descriptions may be swapped by the connection (e.g. after reading the identity).
+    const ObjectDictionary &dict = m_connection->dictionary();
+    if (dict.size() != m_model->dictionary().size()
+        || dict.identity.descriptionFile != m_model->dictionary().identity.descriptionFile)
+        m_model->setDictionary(dict);
+    readAll();
+}
+
+void OdEditor::readAll()
+{
+    m_poller->readNow(visibleAddresses(), true);
+    m_poller->readAll();
+}
+
+void OdEditor::addToolActions(const QString &title, const QList<QAction *> &actions)
+{
+    // One drop-down button, so that the tool row fits a laptop screen next to the docks. A push
+    // button draws its menu arrow beside the text (a tool button's would cover it).
+    auto *button = new QPushButton(title, this);
+    button->setObjectName(QStringLiteral("toolMenu"));
+    auto *menu = new QMenu(button);
+    menu->addActions(actions);
+    button->setMenu(menu);
+    m_tools->addSpacing(8);
+    m_tools->addWidget(button);
+}
+
+void OdEditor::focusFilter()
+{
+    m_filterEdit->setFocus(Qt::ShortcutFocusReason);
+    m_filterEdit->selectAll();
+}
+
+void OdEditor::setFilterText(const QString &text)
+{
+    m_filterEdit->setText(text);
+}
+
+void OdEditor::setHex(bool hex)
+{
+    m_hex->setChecked(hex);
+}
+
+void OdEditor::setRefreshPeriodMs(int ms)
+{
+    int best = 0;
+    for (int i = 0; i < m_rate->count(); ++i) {
+        if (qAbs(m_rate->itemData(i).toInt() - ms) < qAbs(m_rate->itemData(best).toInt() - ms))
+            best = i;
+    }
+    m_rate->setCurrentIndex(best);
+    m_poller->setPeriodMs(m_rate->itemData(best).toInt());
+}
+
+int OdEditor::refreshPeriodMs() const
+{
+    return m_poller->periodMs();
+}
+
+QString OdEditor::statusText() const
+{
+    return m_status->text();
+}
+
+QList<ObjectAddress> OdEditor::visibleAddresses() const
+{
+    QList<ObjectAddress> result;
+    const int bottom = m_view->viewport()->height();
+    for (QModelIndex i = m_view->indexAt(QPoint(1, 1)); i.isValid(); i = m_view->indexBelow(i)) {
+        if (m_view->visualRect(i).top() > bottom)
+            break;
+        if (const auto a = m_model->addressAt(m_filter->mapToSource(i)))
+            result.append(*a);
+    }
+    return result;
+}
+
+void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
+{
+    if (!m_connection || !m_connection->isConnected()) {
+        m_model->setWriteFinished(address, false, tr("not connected"));
+        return;
+    }
+    m_model->setWriting(address, raw);
+    Reply *reply = m_connection->write(address, raw);
+    reply->setParent(this);
+    const quint64 generation = m_generation;
+    const QString shown = m_model->data(m_model->indexOf(address, OdEditorModel::Name)).toString();
+    showStatus(tr("Writing %1 %2…").arg(address.toString(), shown));
+    connect(reply, &Reply::finished, this, [this, reply, generation, address, shown] {
+        reply->deleteLater();
+        if (generation != m_generation)
+            return;
+        const QString message = reply->ok() ? QString() : reply->error().toString();
+        m_model->setWriteFinished(address, reply->ok(), message);
+        if (reply->ok()) {
+            showStatus(tr("%1 %2 written").arg(address.toString(), shown), style::okColor());
+            m_poller->readNow({ address }); // verify: show what the device really holds
+        } else {
+            showStatus(tr("%1 %2: %3").arg(address.toString(), shown, message),
+                       style::errorColor());
+        }
+        Q_EMIT writeFinished(address, reply->ok(), message);
+    });
+}
+
+void OdEditor::onCurrentChanged()
+{
+    const auto a = m_model->addressAt(m_filter->mapToSource(m_view->currentIndex()));
+    const ObjectDef *def = a ? m_model->definition(*a) : nullptr;
+    m_details->setObject(def);
+    if (def)
+        m_details->setValue(m_model->value(*a));
+}
+
+void OdEditor::onModelDataChanged(const QModelIndex &topLeft, const QModelIndex &)
+{
+    const auto a = m_model->addressAt(topLeft);
+    const auto current = m_model->addressAt(m_filter->mapToSource(m_view->currentIndex()));
+    if (a && current && *a == *current)
+        m_details->setValue(m_model->value(*a));
+}
+
+void OdEditor::showStatus(const QString &text, const QColor &color)
+{
+    m_status->setText(text);
+    m_status->setToolTip(text);
+    style::setTextColor(m_status, color);
+}
+
+void OdEditor::updateCounts()
+{
+    const int total = int(m_model->addresses().size());
+    m_counts->setText(m_filter->text().isEmpty() ? tr("%n object(s)", nullptr, total)
+                                                 : tr("filter: %1").arg(m_filter->text()));
+}
+
+void OdEditor::showAccessByIndex()
+{
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Read/Write by Index"));
+    auto *box = new ObjectAccessBox(&dialog);
+    box->setConnection(m_connection);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    auto *layout = new QVBoxLayout(&dialog);
+    layout->addWidget(new QLabel(tr("Objects that the device description does not list are "
+                                    "added to the tree once read or written."),
+                                 &dialog));
+    layout->addWidget(box);
+    layout->addWidget(buttons);
+    connect(box, &ObjectAccessBox::finished, this, [this, box](bool ok) {
+        const auto def = box->currentDefinition();
+        if (!ok || !def || m_model->definition(def->address))
+            return;
+        m_model->addExtraObject(*def);
+        m_poller->readNow({ def->address });
+    });
+    dialog.resize(460, 280);
+    dialog.exec();
+}
+
+} // namespace db::widgets

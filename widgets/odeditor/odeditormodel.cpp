@@ -1,0 +1,355 @@
+#include "odeditormodel.h"
+
+#include "widgets/common/widgetstyle.h"
+
+#include <QMimeData>
+
+namespace db::widgets {
+
+namespace {
+OdEditorModel::Group groupOf(quint16 index)
+{
+    if (index >= 0x1000 && index <= 0x1FFF)
+        return OdEditorModel::Group::Communication;
+    if (index >= 0x2000 && index <= 0x5FFF)
+        return OdEditorModel::Group::Manufacturer;
+    if (index >= 0x6000 && index <= 0x9FFF)
+        return OdEditorModel::Group::Profile;
+    return OdEditorModel::Group::Other;
+}
+
+QString indexText(quint16 index)
+{
+    return QStringLiteral("%1").arg(index, 4, 16, QLatin1Char('0')).toUpper();
+}
+} // namespace
+
+QString groupName(OdEditorModel::Group group)
+{
+    switch (group) {
+    case OdEditorModel::Group::Communication:
+        return OdEditorModel::tr("Communication (1000h–1FFFh)");
+    case OdEditorModel::Group::Manufacturer:
+        return OdEditorModel::tr("Manufacturer (2000h–5FFFh)");
+    case OdEditorModel::Group::Profile:
+        return OdEditorModel::tr("Device profile (6000h–9FFFh)");
+    case OdEditorModel::Group::Other:
+        return OdEditorModel::tr("Other");
+    case OdEditorModel::Group::Extra:
+        return OdEditorModel::tr("Not in the description");
+    }
+    return {};
+}
+
+OdEditorModel::OdEditorModel(QObject *parent)
+    : QAbstractItemModel(parent)
+{
+    rebuild();
+}
+
+void OdEditorModel::setDictionary(const ObjectDictionary &dictionary)
+{
+    m_dictionary = dictionary;
+    m_extra.clear();
+    m_cells.clear();
+    rebuild();
+}
+
+void OdEditorModel::addExtraObject(const ObjectDef &def)
+{
+    if (definition(def.address))
+        return;
+    m_extra.insert(def.address, def);
+    rebuild();
+}
+
+const ObjectDef *OdEditorModel::definition(ObjectAddress address) const
+{
+    if (const ObjectDef *def = m_dictionary.find(address))
+        return def;
+    const auto it = m_extra.constFind(address);
+    return it == m_extra.cend() ? nullptr : &*it;
+}
+
+QList<ObjectAddress> OdEditorModel::addresses() const
+{
+    QList<ObjectAddress> result;
+    for (const Node &node : m_nodes) {
+        if (node.address)
+            result.append(*node.address);
+    }
+    return result;
+}
+
+void OdEditorModel::rebuild()
+{
+    beginResetModel();
+    m_nodes.clear();
+    m_leafNode.clear();
+    m_nodes.append(Node {});
+    // Objects in address order, each object's sub-indices together.
+    const auto addAll = [this](const QList<ObjectDef> &defs, bool extra) {
+        QList<ObjectDef> subs;
+        const auto flush = [&] {
+            if (subs.isEmpty())
+                return;
+            const Group group = extra ? Group::Extra : groupOf(subs.first().address.index);
+            insertObject(groupNode(group), subs);
+            subs.clear();
+        };
+        for (const ObjectDef &def : defs) {
+            if (!subs.isEmpty() && subs.first().address.index != def.address.index)
+                flush();
+            subs.append(def);
+        }
+        flush();
+    };
+    addAll(m_dictionary.objects(), false);
+    addAll(m_extra.values(), true);
+    endResetModel();
+}
+
+int OdEditorModel::addNode(Node node)
+{
+    const int id = int(m_nodes.size());
+    m_nodes[node.parent].children.append(id);
+    if (node.address)
+        m_leafNode.insert(*node.address, id);
+    m_nodes.append(std::move(node));
+    return id;
+}
+
+int OdEditorModel::groupNode(Group group)
+{
+    for (int child : std::as_const(m_nodes[0].children)) {
+        if (m_nodes[child].group == group)
+            return child;
+    }
+    Node node;
+    node.parent = 0;
+    node.group = group;
+    node.title = groupName(group);
+    return addNode(node);
+}
+
+void OdEditorModel::insertObject(int group, const QList<ObjectDef> &subs)
+{
+    Node object;
+    object.parent = group;
+    object.group = m_nodes[group].group;
+    object.index = subs.first().address.index;
+    const ObjectDef &first = subs.first();
+    if (subs.size() == 1 && first.address.sub == 0) {
+        object.address = first.address; // a plain variable: the object row is the value row
+        addNode(object);
+        return;
+    }
+    object.title = first.objectName;
+    if (object.title.isEmpty() || object.title.startsWith(QLatin1Char('\''))) {
+        // No object name (or only its signature): the name of the first real sub-index.
+        const auto named = std::find_if(subs.begin(), subs.end(),
+                                        [](const ObjectDef &d) { return d.address.sub != 0; });
+        object.title = named != subs.end() ? named->name : first.name;
+        if (!first.objectName.isEmpty())
+            object.title += QLatin1Char(' ') + first.objectName;
+    }
+    const int id = addNode(object);
+    for (const ObjectDef &def : subs) {
+        Node leaf;
+        leaf.parent = id;
+        leaf.group = object.group;
+        leaf.index = def.address.index;
+        leaf.address = def.address;
+        addNode(leaf);
+    }
+}
+
+int OdEditorModel::nodeOf(const QModelIndex &index) const
+{
+    return index.isValid() ? int(index.internalId()) : 0;
+}
+
+QModelIndex OdEditorModel::indexOfNode(int node, int column) const
+{
+    if (node <= 0)
+        return {};
+    const int row = int(m_nodes[m_nodes[node].parent].children.indexOf(node));
+    return createIndex(row, column, quintptr(node));
+}
+
+QModelIndex OdEditorModel::index(int row, int column, const QModelIndex &parent) const
+{
+    const int p = nodeOf(parent);
+    if (row < 0 || column < 0 || column >= ColumnCount || row >= m_nodes[p].children.size())
+        return {};
+    return createIndex(row, column, quintptr(m_nodes[p].children[row]));
+}
+
+QModelIndex OdEditorModel::parent(const QModelIndex &child) const
+{
+    return child.isValid() ? indexOfNode(m_nodes[nodeOf(child)].parent, 0) : QModelIndex();
+}
+
+int OdEditorModel::rowCount(const QModelIndex &parent) const
+{
+    if (parent.isValid() && parent.column() != 0)
+        return 0;
+    return int(m_nodes[nodeOf(parent)].children.size());
+}
+
+int OdEditorModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
+
+QModelIndex OdEditorModel::indexOf(ObjectAddress address, int column) const
+{
+    return indexOfNode(m_leafNode.value(address, -1), column);
+}
+
+std::optional<ObjectAddress> OdEditorModel::addressAt(const QModelIndex &index) const
+{
+    return index.isValid() ? m_nodes[nodeOf(index)].address : std::nullopt;
+}
+
+QList<ObjectAddress> OdEditorModel::addressesUnder(const QModelIndexList &indexes) const
+{
+    QList<ObjectAddress> result;
+    for (const QModelIndex &index : indexes) {
+        const Node &node = m_nodes[nodeOf(index)];
+        if (node.address && !result.contains(*node.address))
+            result.append(*node.address);
+        if (node.parent == 0)
+            continue; // a whole group is too much to drag
+        for (int child : node.children) {
+            const auto a = m_nodes[child].address;
+            if (a && !result.contains(*a))
+                result.append(*a);
+        }
+    }
+    return result;
+}
+
+QVariant OdEditorModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid())
+        return {};
+    const Node &node = m_nodes[nodeOf(index)];
+    if (node.address) {
+        if (const ObjectDef *def = definition(*node.address))
+            return leafData(*def, index.column(), role);
+        return {};
+    }
+    return objectData(node, index.column(), role);
+}
+
+QVariant OdEditorModel::objectData(const Node &node, int column, int role) const
+{
+    if (role == Qt::FontRole && node.parent == 0) {
+        QFont font;
+        font.setBold(true);
+        return font;
+    }
+    if (role == Qt::FontRole && column == Address)
+        return style::monospaceFont();
+    if (role == FilterTextRole)
+        return QString(indexText(node.index) + QLatin1Char(' ') + node.title).toLower();
+    if (role != Qt::DisplayRole && role != Qt::ToolTipRole)
+        return {};
+    if (node.parent == 0)
+        return column == Address ? node.title : QVariant();
+    if (column == Address)
+        return indexText(node.index);
+    if (column == Name)
+        return node.title;
+    return {};
+}
+
+QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Address:
+        return tr("Index:Sub");
+    case Name:
+        return tr("Name");
+    case Type:
+        return tr("Type");
+    case AccessColumn:
+        return tr("Access");
+    case Value:
+        return tr("Value");
+    case Default:
+        return tr("Default");
+    case Limits:
+        return tr("Min … Max");
+    case Pdo:
+        return tr("PDO");
+    }
+    return {};
+}
+
+Qt::ItemFlags OdEditorModel::flags(const QModelIndex &index) const
+{
+    if (!index.isValid())
+        return Qt::NoItemFlags;
+    Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
+    const Node &node = m_nodes[nodeOf(index)];
+    if (node.parent != 0)
+        f |= Qt::ItemIsDragEnabled;
+    if (node.address && index.column() == Value && m_editable
+        && state(*node.address) != CellState::Writing) {
+        const ObjectDef *def = definition(*node.address);
+        if (def && def->writable())
+            f |= Qt::ItemIsEditable;
+    }
+    return f;
+}
+
+bool OdEditorModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    const auto address = addressAt(index);
+    const ObjectDef *def = address ? definition(*address) : nullptr;
+    if (role != Qt::EditRole || index.column() != Value || !def)
+        return false;
+    if (!m_editable) {
+        Q_EMIT editRefused(*address, tr("not connected"));
+        return false;
+    }
+    auto raw = odtext::parse(*def, value.toString());
+    if (!raw) {
+        Cell &cell = m_cells[*address];
+        if (cell.state != CellState::Writing) {
+            cell.state = CellState::Refused;
+            cell.message = raw.error().message();
+            cellChanged(*address);
+        }
+        Q_EMIT editRefused(*address, raw.error().message());
+        return false;
+    }
+    Q_EMIT writeRequested(*address, raw.value());
+    return true;
+}
+
+QStringList OdEditorModel::mimeTypes() const
+{
+    return { QString::fromLatin1(kMimeType), QStringLiteral("text/plain") };
+}
+
+QMimeData *OdEditorModel::mimeData(const QModelIndexList &indexes) const
+{
+    const QList<ObjectAddress> list = addressesUnder(indexes);
+    if (list.isEmpty())
+        return nullptr;
+    QStringList lines;
+    for (ObjectAddress a : list)
+        lines.append(a.toString());
+    const QByteArray text = lines.join(QLatin1Char('\n')).toUtf8();
+    auto *mime = new QMimeData;
+    mime->setData(QString::fromLatin1(kMimeType), text);
+    mime->setText(QString::fromUtf8(text));
+    return mime;
+}
+
+} // namespace db::widgets

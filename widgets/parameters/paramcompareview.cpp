@@ -1,0 +1,254 @@
+#include "paramcompareview.h"
+
+#include "paramcomparemodel.h"
+#include "paramcomparereport.h"
+#include "widgets/common/widgetstyle.h"
+
+#include <QCheckBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace db::widgets {
+
+ParamCompareView::ParamCompareView(QWidget *parent)
+    : QWidget(parent)
+    , m_model(new ParamCompareModel(this))
+    , m_filter(new ParamCompareFilter(this))
+    , m_fileLabel(new QLabel(this))
+    , m_counts(new QLabel(this))
+    , m_onlyDiff(new QCheckBox(tr("Only &differences"), this))
+    , m_withDefaults(new QCheckBox(tr("Status includes d&efaults"), this))
+    , m_hex(new QCheckBox(tr("He&x"), this))
+    , m_table(new QTableView(this))
+    , m_progress(new QProgressBar(this))
+    , m_cancel(new QPushButton(tr("Cancel"), this))
+    , m_load(new QPushButton(tr("&Load Set…"), this))
+    , m_reread(new QPushButton(tr("Re-read &Device"), this))
+    , m_selectDiff(new QPushButton(tr("Select Differences"), this))
+    , m_selectNone(new QPushButton(tr("Select None"), this))
+    , m_store(new QCheckBox(tr("Store permanently afterwards (1010h)"), this))
+    , m_restoreButton(new QPushButton(tr("&Restore Selected…"), this))
+    , m_status(new QLabel(this))
+{
+    m_counts->setObjectName(QStringLiteral("counts"));
+    m_onlyDiff->setObjectName(QStringLiteral("onlyDifferences"));
+    m_withDefaults->setObjectName(QStringLiteral("withDefaults"));
+    m_store->setObjectName(QStringLiteral("storeAfterRestore"));
+    m_restoreButton->setObjectName(QStringLiteral("restoreSelected"));
+    m_status->setObjectName(QStringLiteral("status"));
+    m_fileLabel->setObjectName(QStringLiteral("fileLabel"));
+
+    m_filter->setSourceModel(m_model);
+    m_table->setModel(m_filter);
+    m_table->setAlternatingRowColors(true);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
+    m_table->setWordWrap(false);
+    QHeaderView *h = m_table->horizontalHeader();
+    const int ch = QFontMetrics(style::monospaceFont()).horizontalAdvance(QLatin1Char('0'));
+    h->resizeSection(ParamCompareModel::Select, 28);
+    h->resizeSection(ParamCompareModel::Address, ch * 9 + 20);
+    h->resizeSection(ParamCompareModel::Name, 300);
+    h->resizeSection(ParamCompareModel::DeviceValue, ch * 24);
+    h->resizeSection(ParamCompareModel::FileValue, ch * 24);
+    h->resizeSection(ParamCompareModel::DefaultValue, ch * 20);
+    h->setSectionResizeMode(ParamCompareModel::Status, QHeaderView::Stretch);
+
+    m_fileLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_fileLabel->setWordWrap(true);
+    m_counts->setTextFormat(Qt::RichText);
+    m_progress->setMaximumWidth(240);
+    m_progress->setFormat(QStringLiteral("%v / %m"));
+    m_withDefaults->setToolTip(tr("Off: the status compares device and file only. On: a row "
+                                  "also counts as changed or missing when the defaults differ."));
+    m_store->setToolTip(tr("After every row was written and verified, write \"save\" to 1010h "
+                           "so the values survive a power cycle"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_load);
+    top->addWidget(m_reread);
+    top->addSpacing(8);
+    top->addWidget(m_fileLabel, 1);
+    auto *second = new QHBoxLayout;
+    second->addWidget(m_counts, 1);
+    second->addWidget(m_onlyDiff);
+    second->addWidget(m_withDefaults);
+    second->addWidget(m_hex);
+    auto *bottom = new QHBoxLayout;
+    bottom->addWidget(m_selectDiff);
+    bottom->addWidget(m_selectNone);
+    bottom->addSpacing(12);
+    bottom->addWidget(m_progress);
+    bottom->addWidget(m_cancel);
+    bottom->addStretch();
+    bottom->addWidget(m_store);
+    bottom->addWidget(m_restoreButton);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addLayout(second);
+    layout->addWidget(m_table, 1);
+    layout->addLayout(bottom);
+    layout->addWidget(m_status);
+
+    connect(m_load, &QPushButton::clicked, this, &ParamCompareView::chooseFile);
+    connect(m_reread, &QPushButton::clicked, this, &ParamCompareView::refreshDevice);
+    connect(m_selectDiff, &QPushButton::clicked, m_model, &ParamCompareModel::selectDifferences);
+    connect(m_selectNone, &QPushButton::clicked, m_model, &ParamCompareModel::selectNone);
+    connect(m_restoreButton, &QPushButton::clicked, this, &ParamCompareView::restoreSelected);
+    connect(m_cancel, &QPushButton::clicked, this, &ParamCompareView::cancel);
+    connect(m_onlyDiff, &QCheckBox::toggled, m_filter, &ParamCompareFilter::setOnlyDifferences);
+    connect(m_withDefaults, &QCheckBox::toggled, this, &ParamCompareView::compare);
+    connect(m_hex, &QCheckBox::toggled, m_model, &ParamCompareModel::setHex);
+    connect(m_model, &ParamCompareModel::selectionChanged, this, &ParamCompareView::updateActions);
+    setIdle();
+    m_fileLabel->setText(tr("No parameter set loaded. <i>Load Set…</i> reads a file made by "
+                            "<i>Back Up…</i> or <code>drivebench-cli backup</code>; nothing is "
+                            "written to the device until you restore."));
+}
+
+ParamCompareView::~ParamCompareView()
+{
+    disconnect(m_stateConnection);
+    // Runners stop without signalling into a half-destroyed page.
+    if (m_backup)
+        disconnect(m_backup.get(), nullptr, this, nullptr);
+    if (m_restore)
+        disconnect(m_restore.get(), nullptr, this, nullptr);
+}
+
+void ParamCompareView::setConnection(DeviceConnection *connection)
+{
+    if (connection == m_connection)
+        return;
+    cancel();
+    disconnect(m_stateConnection);
+    m_connection = connection;
+    m_device.reset();
+    if (connection) {
+        m_stateConnection =
+            connect(connection, &DeviceConnection::stateChanged, this,
+                    [this](DeviceConnection::State state) {
+                        if (state == DeviceConnection::State::Connected && m_file && !isBusy())
+                            refreshDevice();
+                        updateActions();
+                    });
+    }
+    compare();
+    if (m_file && connection && connection->isConnected())
+        refreshDevice();
+}
+
+void ParamCompareView::chooseFile()
+{
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Load Parameter Set"), QString(),
+                                     tr("Parameter sets (*.dbp *.txt);;All files (*)"));
+    if (!path.isEmpty())
+        loadFile(path);
+}
+
+Result<void> ParamCompareView::loadFile(const QString &path)
+{
+    auto set = ParameterSet::load(path);
+    if (!set) {
+        showStatus(tr("Cannot load %1: %2").arg(QFileInfo(path).fileName(), set.error().toString()),
+                   style::errorColor());
+        return set.error();
+    }
+    setFileSet(set.value(), QFileInfo(path).fileName());
+    return {};
+}
+
+void ParamCompareView::setFileSet(const ParameterSet &set, const QString &origin)
+{
+    m_file = set;
+    m_fileOrigin = origin;
+    const DeviceIdentity &id = set.identity;
+    m_fileLabel->setText(
+        tr("<b>%1</b> — %2 %3, %n object(s), saved %4 from %5", nullptr, set.size())
+            .arg(origin.toHtmlEscaped(), id.vendorName.toHtmlEscaped(),
+                 id.productName.toHtmlEscaped(),
+                 set.created.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+                 set.source.toHtmlEscaped()));
+    showStatus(tr("Loaded %1. Nothing has been written to the device.").arg(origin));
+    compare();
+    refreshDevice();
+}
+
+QString ParamCompareView::countsText() const
+{
+    return m_model->comparison().countsText();
+}
+
+QString ParamCompareView::statusText() const
+{
+    return m_status->text();
+}
+
+bool ParamCompareView::isBusy() const
+{
+    return (m_backup && m_backup->isRunning()) || (m_restore && m_restore->isRunning());
+}
+
+void ParamCompareView::setCompareWithDefaults(bool on)
+{
+    m_withDefaults->setChecked(on);
+}
+
+void ParamCompareView::setOnlyDifferences(bool on)
+{
+    m_onlyDiff->setChecked(on);
+}
+
+void ParamCompareView::setStoreAfterRestore(bool on)
+{
+    m_store->setChecked(on);
+}
+
+void ParamCompareView::restoreSelected()
+{
+    const QList<ObjectAddress> rows = m_model->selection();
+    if (rows.isEmpty() || !m_connection)
+        return;
+    QStringList names;
+    for (ObjectAddress a : rows.mid(0, 12)) {
+        const ObjectDef *def = m_connection->dictionary().find(a);
+        names.append(QStringLiteral("%1  %2").arg(a.toString(), def ? def->name : QString()));
+    }
+    if (rows.size() > names.size())
+        names.append(tr("… and %n more", nullptr, int(rows.size() - names.size())));
+    QMessageBox box(QMessageBox::Question, tr("Restore Parameters"),
+                    tr("Write %n selected value(s) from %1 to %2?", nullptr, int(rows.size()))
+                        .arg(m_fileOrigin, m_connection->uri().toString()),
+                    QMessageBox::Cancel, this);
+    box.setInformativeText((m_store->isChecked()
+                                ? tr("Afterwards the values are stored permanently (1010h).")
+                                : tr("The values are not stored permanently; they are lost at "
+                                     "the next power cycle unless you store them.")));
+    box.setDetailedText(names.join(QLatin1Char('\n')));
+    QPushButton *go = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() == go)
+        startRestore();
+}
+
+void ParamCompareView::showStatus(const QString &text, const QColor &color)
+{
+    m_status->setText(text);
+    style::setTextColor(m_status, color);
+}
+
+} // namespace db::widgets

@@ -1,0 +1,200 @@
+// ParamCompareView, part 2: reading the device, comparing and restoring.
+
+#include "paramcomparemodel.h"
+#include "paramcomparereport.h"
+#include "paramcompareview.h"
+#include "widgets/common/widgetstyle.h"
+
+#include <QCheckBox>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableView>
+
+namespace db::widgets {
+
+void ParamCompareView::refreshDevice()
+{
+    if (!m_file || isBusy())
+        return;
+    if (!m_connection || !m_connection->isConnected()) {
+        showStatus(tr("Not connected: the device column stays empty until a device is "
+                      "connected."),
+                   style::warningColor());
+        return;
+    }
+    // The set's objects and every storable object, so that objects missing from the file show.
+    QList<ObjectAddress> addresses = m_file->addresses();
+    for (const ObjectDef &def : m_connection->dictionary().objects()) {
+        if (def.storable && def.readable() && !addresses.contains(def.address))
+            addresses.append(def.address);
+    }
+    std::sort(addresses.begin(), addresses.end());
+    m_backup = std::make_unique<ParameterBackup>(m_connection);
+    m_backup->setAddresses(addresses);
+    connect(m_backup.get(), &ParameterBackup::progress, m_progress, [this](int done, int total) {
+        m_progress->setRange(0, total);
+        m_progress->setValue(done);
+    });
+    connect(m_backup.get(), &ParameterBackup::finished, this, &ParamCompareView::onBackupFinished);
+    setBusy(tr("Reading %n object(s) from the device…", nullptr, int(addresses.size())));
+    m_backup->start();
+}
+
+void ParamCompareView::onBackupFinished()
+{
+    // A comparison may show a partly read device: the objects that could not be read show as
+    // missing on the device side, and the status names them. A run that stopped shows nothing.
+    const Error stopped = m_backup->error();
+    const QStringList warnings = m_backup->warnings();
+    const ParameterSet read = m_backup->partialSet();
+    setIdle();
+    if (stopped.isError() || read.isEmpty()) {
+        m_restoreOutcome.clear();
+        const Error error = stopped.isError() ? stopped : m_backup->result().error();
+        showStatus(tr("Reading the device failed: %1").arg(error.toString()),
+                   error.kind() == Error::Kind::Cancelled ? style::warningColor()
+                                                          : style::errorColor());
+        return;
+    }
+    m_device = read;
+    compare();
+    if (!m_restoreOutcome.isEmpty()) {
+        showStatus(std::exchange(m_restoreOutcome, {}) + QLatin1Char(' ')
+                       + tr("The comparison shows the device after the restore."),
+                   m_restoreOk ? style::okColor() : style::errorColor());
+    } else if (warnings.isEmpty()) {
+        showStatus(tr("Compared %1 with the device. Nothing has been written.").arg(m_fileOrigin));
+    } else {
+        showStatus(tr("Compared; %n object(s) could not be read: %1", nullptr, int(warnings.size()))
+                       .arg(warnings.mid(0, 3).join(QStringLiteral("; "))),
+                   style::warningColor());
+    }
+}
+
+void ParamCompareView::compare()
+{
+    if (!m_file) {
+        m_model->setComparison({}, {}, {});
+        m_counts->clear();
+        updateActions();
+        return;
+    }
+    const ObjectDictionary dictionary =
+        m_connection ? m_connection->dictionary() : ObjectDictionary();
+    const ParameterSet defaults = ParameterSet::defaults(dictionary);
+    QList<ParameterSet> sides { m_device.value_or(ParameterSet()), *m_file };
+    QStringList names { tr("Device"), tr("File") };
+    if (m_withDefaults->isChecked()) {
+        sides.append(defaults);
+        names.append(tr("Defaults"));
+    }
+    const ParameterComparison comparison =
+        compareParameterSets(sides, names, m_connection ? &dictionary : nullptr);
+    m_model->setComparison(comparison, defaults, dictionary);
+
+    QStringList chips;
+    for (CompareStatus s : { CompareStatus::Changed, CompareStatus::Unchanged,
+                             CompareStatus::Missing, CompareStatus::Unknown }) {
+        chips.append(QStringLiteral("<span style='color:%1'>&#9679;</span> <b>%2</b> %3")
+                         .arg(compareStatusColor(s).name())
+                         .arg(comparison.count(s))
+                         .arg(compareStatusName(s)));
+    }
+    m_counts->setText(chips.join(QStringLiteral(" &nbsp;&nbsp; ")));
+    m_counts->setToolTip(comparison.countsText());
+    updateActions();
+    Q_EMIT comparisonChanged();
+}
+
+void ParamCompareView::startRestore()
+{
+    const QList<ObjectAddress> rows = m_model->selection();
+    if (!m_file || rows.isEmpty() || isBusy() || !m_connection || !m_connection->isConnected())
+        return;
+    m_restore = std::make_unique<ParameterRestore>(m_connection);
+    m_restore->setParameterSet(*m_file);
+    m_restore->setSelection(rows);
+    m_restore->setVerify(true);
+    m_restore->setStoreAfterwards(m_store->isChecked());
+    connect(m_restore.get(), &ParameterRestore::progress, m_progress, [this](int done, int total) {
+        m_progress->setRange(0, total);
+        m_progress->setValue(done);
+    });
+    connect(m_restore.get(), &ParameterRestore::finished, this,
+            &ParamCompareView::onRestoreFinished);
+    setBusy(tr("Writing %n value(s)…", nullptr, int(rows.size())));
+    m_restore->start();
+}
+
+void ParamCompareView::onRestoreFinished()
+{
+    const RestoreReport report = m_restore->report();
+    m_lastReport = report;
+    setIdle();
+    const int failed =
+        report.count(RestoreOutcome::Failed) + report.count(RestoreOutcome::Mismatch);
+    const int written =
+        report.count(RestoreOutcome::Verified) + report.count(RestoreOutcome::Written);
+    m_restoreOk = report.succeeded();
+    m_restoreOutcome = report.succeeded()
+        ? tr("Restored %n value(s)%1.", nullptr, written)
+              .arg(report.stored ? tr(" and stored them permanently") : QString())
+        : tr("Restore incomplete: %1 written, %2 failed, %3 skipped (see the report).")
+              .arg(written)
+              .arg(failed)
+              .arg(report.count(RestoreOutcome::Skipped));
+    showStatus(m_restoreOutcome, m_restoreOk ? style::okColor() : style::errorColor());
+    auto *dialog = new ParamCompareReport(report, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    Q_EMIT restoreFinished(report);
+    refreshDevice();
+}
+
+void ParamCompareView::cancel()
+{
+    if (m_backup && m_backup->isRunning())
+        m_backup->cancel();
+    if (m_restore && m_restore->isRunning())
+        m_restore->cancel();
+}
+
+void ParamCompareView::setBusy(const QString &what)
+{
+    m_progress->setRange(0, 0);
+    m_progress->show();
+    m_cancel->show();
+    if (m_restoreOutcome.isEmpty())
+        showStatus(what);
+    else
+        showStatus(m_restoreOutcome + QLatin1Char(' ') + what,
+                   m_restoreOk ? style::okColor() : style::errorColor());
+    updateActions();
+}
+
+void ParamCompareView::setIdle()
+{
+    m_progress->hide();
+    m_cancel->hide();
+    updateActions();
+}
+
+void ParamCompareView::updateActions()
+{
+    const bool busy = isBusy();
+    const bool connected = m_connection && m_connection->isConnected();
+    const int selected = int(m_model->selection().size());
+    m_load->setEnabled(!busy);
+    m_reread->setEnabled(!busy && connected && m_file);
+    m_selectDiff->setEnabled(!busy && m_file);
+    m_selectNone->setEnabled(!busy && selected > 0);
+    m_restoreButton->setEnabled(!busy && connected && selected > 0 && m_device);
+    m_restoreButton->setText(selected > 0 ? tr("&Restore %n Selected…", nullptr, selected)
+                                          : tr("&Restore Selected…"));
+    m_store->setEnabled(
+        !busy && connected
+        && (m_connection->capabilities() & DeviceConnection::Capability::StoreNonVolatile));
+}
+
+} // namespace db::widgets
