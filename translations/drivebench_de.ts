@@ -1254,7 +1254,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)</source>
-        <translation type="unfinished"></translation>
+        <translation>Baumer-NM170/NM172/NM174-Anzeigen am Bus der URI (S: slow, medium, fast)</translation>
     </message>
     <message>
         <source>restore: only these objects, as the protocol writes addresses, e.g. 6083:0,6084:0.</source>
@@ -1286,7 +1286,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>no NM170/NM172/NM174 display answered on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>keine NM170/NM172/NM174-Anzeige hat auf %1 geantwortet</translation>
     </message>
     <message>
         <source>node %1: %2</source>
@@ -1294,71 +1294,71 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>node %1 did not report In Position within %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 hat nicht innerhalb von %2 s In Position gemeldet</translation>
     </message>
     <message>
         <source>usage: nm17x URI setpoint NODE MM [--release] [--direct] [--plunge SPEED] [--correction MM]</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: nm17x URI setpoint KNOTEN MM [--release] [--direct] [--plunge TEMPO] [--correction MM]</translation>
     </message>
     <message>
         <source>--plunge takes slow, medium or fast, and not with --direct</source>
-        <translation type="unfinished"></translation>
+        <translation>--plunge erwartet slow, medium oder fast, und nicht zusammen mit --direct</translation>
     </message>
     <message>
         <source>node %1, 2010:0</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1, 2010:0</translation>
     </message>
     <message>
         <source>node %1: setpoint %2 set (no release)</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: Sollwert %2 gesetzt (ohne Freigabe)</translation>
     </message>
     <message>
         <source>usage: nm17x URI jog NODE left|right --speed slow|medium|fast</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: nm17x URI jog KNOTEN left|right --speed slow|medium|fast</translation>
     </message>
     <message>
         <source>jog needs --speed slow, medium or fast</source>
-        <translation type="unfinished"></translation>
+        <translation>jog braucht --speed slow, medium oder fast</translation>
     </message>
     <message>
         <source>node %1: jogging %2 at %3 speed until stop or limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: tippt %2 mit Tempo %3 bis Stopp oder Grenze</translation>
     </message>
     <message>
         <source>usage: nm17x URI stop NODE|all</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: nm17x URI stop KNOTEN|all</translation>
     </message>
     <message>
         <source>stop sent to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp an %1 gesendet</translation>
     </message>
     <message>
         <source>usage: nm17x URI broadcast unit mm|inch | show-id [off] | preset MM | start GROUP | stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: nm17x URI broadcast unit mm|inch | show-id [off] | preset MM | start GRUPPE | stop</translation>
     </message>
     <message>
         <source>start takes a group 1..8</source>
-        <translation type="unfinished"></translation>
+        <translation>start erwartet eine Gruppe 1..8</translation>
     </message>
     <message>
         <source>broadcast %1 %2 sent on 201h</source>
-        <translation type="unfinished"></translation>
+        <translation>Broadcast %1 %2 auf 201h gesendet</translation>
     </message>
     <message>
         <source>usage: nm17x URI control NODE WORD [--setpoint MM] [--correction MM]</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufruf: nm17x URI control KNOTEN WORT [--setpoint MM] [--correction MM]</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a 16-bit control word</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist kein 16-Bit-Steuerwort</translation>
     </message>
     <message>
         <source>--correction takes -327.67..327.67 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>--correction erwartet -327.67..327.67 mm</translation>
     </message>
     <message>
         <source>node %1: %2 sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: %2 gesendet</translation>
     </message>
     <message>
         <source>node %1 TxPDO1 position %2 status %3 errors %4</source>
@@ -1374,71 +1374,71 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>watching %1 for %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>beobachte %1 für %2 s</translation>
     </message>
     <message>
         <source>address needs --broadcast FIRST (the first node id)</source>
-        <translation type="unfinished"></translation>
+        <translation>address braucht --broadcast ERSTE (die erste Knoten-ID)</translation>
     </message>
     <message>
         <source>offering node %1: turn the shaft (or press a key) of the display that should become node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>biete Knoten %1 an: die Welle der Anzeige drehen (oder eine Taste drücken), die Knoten %1 werden soll</translation>
     </message>
     <message>
         <source>node %1 assigned</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 zugewiesen</translation>
     </message>
     <message>
         <source>assigned node ids: %1; every node reset</source>
-        <translation type="unfinished"></translation>
+        <translation>zugewiesene Knoten-IDs: %1; jeder Knoten zurückgesetzt</translation>
     </message>
     <message>
         <source>nm17x setpoint: start the motor at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x setpoint: den Motor sofort starten.</translation>
     </message>
     <message>
         <source>nm17x setpoint: with release, without loop.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x setpoint: mit Freigabe, ohne Schleife.</translation>
     </message>
     <message>
         <source>nm17x setpoint: plunge cut at this speed.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x setpoint: Einstich mit diesem Tempo.</translation>
     </message>
     <message>
         <source>nm17x: actual value correction in mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x: Istwertkorrektur in mm.</translation>
     </message>
     <message>
         <source>nm17x control: the setpoint in mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x control: der Sollwert in mm.</translation>
     </message>
     <message>
         <source>nm17x jog: slow, medium or fast.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x jog: slow, medium oder fast.</translation>
     </message>
     <message>
         <source>nm17x address: first node id of the line.</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x address: erste Knoten-ID der Linie.</translation>
     </message>
     <message>
         <source>nm17x address: number of displays (default: until a step times out).</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x address: Anzahl Anzeigen (Standard: bis ein Schritt in eine Zeitüberschreitung läuft).</translation>
     </message>
     <message>
         <source>nm17x address: seconds the operator has per display (default 60).</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x address: Sekunden, die der Bediener je Anzeige hat (Standard 60).</translation>
     </message>
     <message>
         <source>nm17x setpoint: seconds to wait for In Position (default 30).</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x setpoint: Sekunden Wartezeit auf In Position (Standard 30).</translation>
     </message>
     <message>
         <source>nm17x watch: how long to watch (default 5).</source>
-        <translation type="unfinished"></translation>
+        <translation>nm17x watch: wie lange beobachtet wird (Standard 5).</translation>
     </message>
     <message>
         <source>unknown nm17x command &apos;%1&apos; (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter nm17x-Befehl „%1“ (%2)</translation>
     </message>
 </context>
 <context>
@@ -2662,7 +2662,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>NM17x Line</source>
-        <translation type="unfinished"></translation>
+        <translation>NM17x-Linie</translation>
     </message>
 </context>
 <context>
@@ -2834,61 +2834,61 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <name>db::nm17x</name>
     <message>
         <source>&apos;%1&apos; is not a position in mm (-999.99 .. 9999.99)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine Position in mm (-999.99 .. 9999.99)</translation>
     </message>
 </context>
 <context>
     <name>db::nm17x::BroadcastAddressing</name>
     <message>
         <source>broadcast addressing is already running</source>
-        <translation type="unfinished"></translation>
+        <translation>Broadcast-Adressierung läuft bereits</translation>
     </message>
     <message>
         <source>node ids %1.. for %2 displays do not fit into 1..127</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten-IDs %1.. für %2 Anzeigen passen nicht in 1..127</translation>
     </message>
     <message>
         <source>the CAN bus %1 is not open</source>
-        <translation type="unfinished"></translation>
+        <translation>der CAN-Bus %1 ist nicht geöffnet</translation>
     </message>
     <message>
         <source>a display refused node id %1 (LSS error %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Anzeige hat Knoten-ID %1 abgelehnt (LSS-Fehler %2)</translation>
     </message>
     <message>
         <source>no display took node id %1 within %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Anzeige hat Knoten-ID %1 innerhalb von %2 s übernommen</translation>
     </message>
 </context>
 <context>
     <name>db::nm17x::Nm17xLine</name>
     <message>
         <source>the CAN bus %1 is not open</source>
-        <translation type="unfinished"></translation>
+        <translation>der CAN-Bus %1 ist nicht geöffnet</translation>
     </message>
     <message>
         <source>node %1 is not 1..127</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 liegt nicht in 1..127</translation>
     </message>
     <message>
         <source>setpoint %1 is outside -99999..999999 (1/100 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
     </message>
     <message>
         <source>a correction of -32768 would mean &quot;keep 2010h&quot;; leave it out instead</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Korrektur von -32768 hieße „2010h behalten“; stattdessen weglassen</translation>
     </message>
     <message>
         <source>%1 cannot be sent by broadcast; the displays would answer with EMCY 8220h</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht per Broadcast gesendet werden; die Anzeigen würden mit EMCY 8220h antworten</translation>
     </message>
     <message>
         <source>group %1 is not 1..8</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1 liegt nicht in 1..8</translation>
     </message>
     <message>
         <source>preset %1 is outside -99999..999999 (1/100 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Preset %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
     </message>
     <message>
         <source>node %1, %2</source>
@@ -2896,22 +2896,22 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>node %1 is no NM170/NM172/NM174 (vendor 0x%2, product 0x%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 ist keine NM170/NM172/NM174 (Hersteller 0x%2, Produkt 0x%3)</translation>
     </message>
 </context>
 <context>
     <name>db::nm17x::Nm17xSim</name>
     <message>
         <source>&apos;%1&apos; is not VARIANT@NODE (nm170, nm172 or nm174, node 1..127)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist nicht VARIANTE@KNOTEN (nm170, nm172 oder nm174, Knoten 1..127)</translation>
     </message>
     <message>
         <source>no displays given (e.g. nm172@127,nm174@5)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Anzeigen angegeben (z. B. nm172@127,nm174@5)</translation>
     </message>
     <message>
         <source>control port %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Steuer-Port %1: %2</translation>
     </message>
     <message>
         <source>empty command</source>
@@ -2919,11 +2919,11 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>give a display index 1..%1</source>
-        <translation type="unfinished"></translation>
+        <translation>einen Anzeigenindex 1..%1 angeben</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a distance</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine Strecke</translation>
     </message>
     <message>
         <source>key INDEX left|right [MS]</source>
@@ -2931,7 +2931,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>only an NM174 has an external sensor</source>
-        <translation type="unfinished"></translation>
+        <translation>nur eine NM174 hat einen externen Sensor</translation>
     </message>
     <message>
         <source>fault INDEX motor|sensor|none</source>
@@ -2939,7 +2939,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (list, turn, key, fault)</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Befehl „%1“ (list, turn, key, fault)</translation>
     </message>
 </context>
 <context>
@@ -4591,23 +4591,23 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Variant</source>
-        <translation type="unfinished"></translation>
+        <translation>Variante</translation>
     </message>
     <message>
         <source>Serial number</source>
-        <translation type="unfinished"></translation>
+        <translation>Seriennummer</translation>
     </message>
     <message>
         <source>Setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert</translation>
     </message>
     <message>
         <source>Position</source>
-        <translation type="unfinished"></translation>
+        <translation>Position</translation>
     </message>
     <message>
         <source>Correction</source>
-        <translation type="unfinished"></translation>
+        <translation>Korrektur</translation>
     </message>
     <message>
         <source>Status</source>
@@ -4615,7 +4615,7 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Errors</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler</translation>
     </message>
 </context>
 <context>
@@ -4642,19 +4642,19 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Find displays</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzeigen suchen</translation>
     </message>
     <message>
         <source>Send setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert senden</translation>
     </message>
     <message>
         <source>Jog left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links tippen</translation>
     </message>
     <message>
         <source>Jog right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts tippen</translation>
     </message>
     <message>
         <source>Stop</source>
@@ -4662,46 +4662,46 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Show node ids</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten-IDs anzeigen</translation>
     </message>
     <message>
         <source>Preset all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle voreinstellen</translation>
     </message>
     <message>
         <source>Start group</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe starten</translation>
     </message>
     <message>
         <source>Stop all</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle stoppen</translation>
     </message>
     <message>
         <source>Unit:</source>
-        <translation type="unfinished"></translation>
+        <translation>Einheit:</translation>
     </message>
     <message>
         <source>Speed:</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo:</translation>
     </message>
     <message>
         <source>looking for displays ...</source>
-        <translation type="unfinished"></translation>
+        <translation>suche Anzeigen ...</translation>
     </message>
     <message numerus="yes">
         <source>%n display(s) found</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Anzeige gefunden</numerusform>
+            <numerusform>%n Anzeigen gefunden</numerusform>
         </translation>
     </message>
     <message>
         <source>node %1: setpoint %2 sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: Sollwert %2 gesendet</translation>
     </message>
     <message>
         <source>node %1: jogging %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: tippt %2</translation>
     </message>
     <message>
         <source>right</source>
@@ -4713,11 +4713,11 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>node %1: stop sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1: Stopp gesendet</translation>
     </message>
     <message>
         <source>every display shows %1</source>
-        <translation type="unfinished"></translation>
+        <translation>jede Anzeige zeigt %1</translation>
     </message>
     <message>
         <source>inch</source>
@@ -4729,19 +4729,19 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>every display shows its node id</source>
-        <translation type="unfinished"></translation>
+        <translation>jede Anzeige zeigt ihre Knoten-ID</translation>
     </message>
     <message>
         <source>every display preset to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>jede Anzeige auf %1 voreingestellt</translation>
     </message>
     <message>
         <source>group %1 started</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1 gestartet</translation>
     </message>
     <message>
         <source>every display stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>jede Anzeige gestoppt</translation>
     </message>
 </context>
 <context>
