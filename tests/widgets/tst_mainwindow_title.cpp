@@ -5,9 +5,9 @@
 #include "fakeconnection.h"
 #include "mainwindow.h"
 #include "resources/builtindescriptions.h"
-#include "widgets/devicelist.h"
-#include "widgets/odeditor.h"
-#include "widgets/parametersetactions.h"
+#include "widgets/connection/devicelist.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/parameters/parametersetactions.h"
 
 #include <QAction>
 #include <QLineEdit>
