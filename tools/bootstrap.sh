@@ -23,7 +23,8 @@ esac
 # listed and opened by GStreamer's v4l2 plugin from gstreamer1.0-plugins-good.
 packages=(
     cmake ninja-build g++ pkg-config
-    qt6-base-dev qt6-serialbus-dev libqt6serialbus6 qt6-l10n-tools
+    qt6-base-dev qt6-serialbus-dev libqt6serialbus6
+    qt6-l10n-tools qt6-translations-l10n                # lupdate/lrelease; Qt's German texts
     libqcustomplot-dev libeigen3-dev
     libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
     qt6-multimedia-dev gstreamer1.0-plugins-good

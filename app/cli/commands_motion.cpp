@@ -14,6 +14,14 @@
 #include <memory>
 #include <optional>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
+
 namespace db::cli {
 
 using namespace motion;
@@ -80,7 +88,8 @@ struct RestoreSupervision
         if (!supervision || !supervision->isArmed())
             return;
         if (auto restored = Reply::wait(supervision->disarm()); !restored)
-            c.err << "drivebench-cli: warning: " << restored.error().message() << Qt::endl;
+            c.err << Tr::tr("drivebench-cli: warning: %1").arg(restored.error().message())
+                  << Qt::endl;
     }
 };
 
@@ -93,7 +102,7 @@ std::unique_ptr<canopen::DriveSupervision> superviseDrive(Context &c, Axis &axis
         return nullptr;
     auto supervision = std::make_unique<canopen::DriveSupervision>(conn);
     if (auto armed = Reply::wait(supervision->arm()); !armed)
-        c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
+        c.err << Tr::tr("drivebench-cli: warning: %1").arg(armed.error().message()) << Qt::endl;
     else if (c.options.verbose)
         c.out << "supervision: " << supervision->description() << Qt::endl;
     return supervision;
@@ -104,9 +113,8 @@ Result<double> number(Context &c, const QString &option)
     bool ok = false;
     const double v = c.parser->value(option).toDouble(&ok);
     if (!ok)
-        return Error(
-            Error::Kind::InvalidArgument,
-            QStringLiteral("--%1 takes a number, not '%2'").arg(option, c.parser->value(option)));
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("--%1 takes a number, not '%2'").arg(option, c.parser->value(option)));
     return v;
 }
 
@@ -118,7 +126,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     if (c.parser && c.parser->isSet(kWait)) {
         const auto w = number(c, kWait);
         if (!w || *w <= 0)
-            return Error(Error::Kind::InvalidArgument, QStringLiteral("--wait takes ms > 0"));
+            return Error(Error::Kind::InvalidArgument, Tr::tr("--wait takes ms > 0"));
         axis->waitMs = int(*w);
     }
     if (auto opened = axis->session.open(c.args.at(0)); !opened)
@@ -127,7 +135,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     const ObjectDictionary &dict = conn->dictionary();
     if (!dict.contains(cia402::obj::PositionActual))
         return Error(Error::Kind::NotSupported,
-                     QStringLiteral("%1: no CiA 402 drive description (give ?eds=FILE)")
+                     Tr::tr("%1: no CiA 402 drive description (give ?eds=FILE)")
                          .arg(conn->uri().toString()));
     axis->cia = std::make_unique<Cia402Axis>(conn);
     axis->rotary =
@@ -135,7 +143,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     if (axis->rotary)
         axis->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
     if (auto init = Reply::wait(axis->cia->initialize()); !init)
-        return init.error().prefixed(QStringLiteral("reading the scaling"));
+        return init.error().prefixed(Tr::tr("reading the scaling"));
     QHash<ObjectAddress, QVariant> values;
     for (ObjectAddress a : axislimits::objects(dict))
         if (auto v = axis->session.read(a))
@@ -145,7 +153,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
         axislimits::fromValues(values, dict, axis->cia->scaling(), axis->rotary));
     axis->model->setWatchdogTimeout(MotionAxis::kMaxWatchdogMs);
     if (!waitRounds(*axis, kFirstStatusRounds, c.options.requestTimeoutMs * 4))
-        return Error(Error::Kind::Timeout, QStringLiteral("no status from the drive"));
+        return Error(Error::Kind::Timeout, Tr::tr("no status from the drive"));
     return axis;
 }
 
@@ -169,7 +177,7 @@ int runToEnd(Context &c, Axis &axis, MotionCommand &command)
             axis, [&] { return !axis.cia->status().powered; }, kStopFlushMs);
         return fail(c,
                     Error(Error::Kind::Timeout,
-                          QStringLiteral("%1 not done within %2 ms (--wait); axis stopped")
+                          Tr::tr("%1 not done within %2 ms (--wait); axis stopped")
                               .arg(command.name())
                               .arg(axis.waitMs)));
     }
@@ -209,26 +217,25 @@ int power(Context &c, CommandKind kind, bool on)
 
 QList<QCommandLineOption> motionOptions()
 {
-    const auto tr = [](const char *text) {
-        return QCoreApplication::translate("cli", text);
-    };
     return {
-        QCommandLineOption(kAbs, tr("move: absolute target (user units)."), QStringLiteral("pos")),
-        QCommandLineOption(kRel, tr("move: distance from the actual position."),
+        QCommandLineOption(kAbs, Tr::tr("move: absolute target (user units)."),
+                           QStringLiteral("pos")),
+        QCommandLineOption(kRel, Tr::tr("move: distance from the actual position."),
                            QStringLiteral("dist")),
-        QCommandLineOption(kAdd, tr("move: distance from the last target (MC_MoveAdditive)."),
+        QCommandLineOption(kAdd, Tr::tr("move: distance from the last target (MC_MoveAdditive)."),
                            QStringLiteral("dist")),
-        QCommandLineOption(kVel, tr("move, jog, velocity, home: velocity (units/s)."),
+        QCommandLineOption(kVel, Tr::tr("move, jog, velocity, home: velocity (units/s)."),
                            QStringLiteral("v")),
-        QCommandLineOption(kAcc, tr("move, jog, home: acceleration (units/s²)."),
+        QCommandLineOption(kAcc, Tr::tr("move, jog, home: acceleration (units/s²)."),
                            QStringLiteral("a")),
-        QCommandLineOption(kDec, tr("move, jog, velocity, halt, stop: deceleration (units/s²)."),
+        QCommandLineOption(kDec,
+                           Tr::tr("move, jog, velocity, halt, stop: deceleration (units/s²)."),
                            QStringLiteral("d")),
-        QCommandLineOption(kTime, tr("jog, velocity: how long to move (ms)."),
+        QCommandLineOption(kTime, Tr::tr("jog, velocity: how long to move (ms)."),
                            QStringLiteral("ms")),
         QCommandLineOption(kWait,
-                           tr("motion commands: longest wait for the end (ms, default "
-                              "60000)."),
+                           Tr::tr("motion commands: longest wait for the end (ms, default "
+                                  "60000)."),
                            QStringLiteral("ms")),
     };
 }
@@ -253,10 +260,10 @@ int home(Context &c)
     bool ok = false;
     const int method = c.args.at(1).toInt(&ok);
     if (!ok)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("METHOD is a CiA 402 homing method number, not '%1'")
-                              .arg(c.args.at(1))));
+        return fail(
+            c,
+            Error(Error::Kind::InvalidArgument,
+                  Tr::tr("METHOD is a CiA 402 homing method number, not '%1'").arg(c.args.at(1))));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
@@ -301,7 +308,7 @@ int move(Context &c)
     if (given != 1)
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("move takes exactly one of --abs, --rel, --add")));
+                          Tr::tr("move takes exactly one of --abs, --rel, --add")));
     MoveParams p;
     if (const auto v = number(c, option); v)
         p.position = *v;
@@ -339,7 +346,7 @@ int jog(Context &c)
     if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("jog needs --vel V (signed) and --time MS")));
+                          Tr::tr("jog needs --vel V (signed) and --time MS")));
     const auto v = number(c, kVel);
     const auto t = number(c, kTime);
     if (!v || !t)
@@ -347,7 +354,7 @@ int jog(Context &c)
     if (*t <= 0 || *t > kDefaultWaitMs)
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+                          Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
@@ -398,8 +405,8 @@ int jog(Context &c)
             axis.model->stopNow();
             return fail(c,
                         Error(Error::Kind::Timeout,
-                              QStringLiteral("MC_Halt not done within %1 ms (--wait); axis "
-                                             "stopped")
+                              Tr::tr("MC_Halt not done within %1 ms (--wait); axis "
+                                     "stopped")
                                   .arg(axis.waitMs)));
         }
         if (halt.status() != MotionCommand::Status::Done)

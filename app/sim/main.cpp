@@ -13,6 +13,7 @@
 #include "resources/builtindescriptions.h"
 #include "sim_nm17x.h"
 #include "simacu.h"
+#include "translations/language.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -24,6 +25,14 @@
 #include <optional>
 #include <sys/socket.h>
 #include <unistd.h>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::sim)
+};
+} // namespace
 
 using namespace db;
 
@@ -87,6 +96,7 @@ int main(int argc, char *argv[])
     theApp = &app;
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    i18n::installTranslations(app, i18n::chooseLanguage()); // DRIVEBENCH_LANG, LC_*, LANG
     QTextStream out(stdout);
     QTextStream err(stderr);
 
@@ -280,7 +290,7 @@ int main(int argc, char *argv[])
             ? def->parseText(assignment.mid(eq + 1))
             : Result<QVariant>(
                 Error(Error::Kind::InvalidArgument,
-                      QStringLiteral("the MovingCap has no object %1").arg(address->toString())));
+                      Tr::tr("the MovingCap has no object %1").arg(address->toString())));
         if (!raw) {
             err << "drivebench-sim: --set " << assignment << ": " << raw.error().toString()
                 << Qt::endl;

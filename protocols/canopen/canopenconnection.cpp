@@ -12,7 +12,16 @@
 #include "syncproducer.h"
 #include "transport/canbus.h"
 
+#include <QCoreApplication>
 #include <QPointer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -65,8 +74,7 @@ CanopenConnection::~CanopenConnection()
     m_network->disconnect(this);
     m_network->sdo()->disconnect(this);
     m_network->sdo()->cancelNode(
-        m_node,
-        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 deleted").arg(m_node)));
+        m_node, Error(Error::Kind::Cancelled, Tr::tr("connection to node %1 deleted").arg(m_node)));
     releaseNetwork();
     m_network.reset();
 }
@@ -131,7 +139,7 @@ Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
 {
     if (!uri.hasQuery(QStringLiteral("node")))
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1 needs the node id: ?node=N (1..127)").arg(uri.toString()));
+                     Tr::tr("%1 needs the node id: ?node=N (1..127)").arg(uri.toString()));
     const auto node = uri.queryInt(QStringLiteral("node"), kMinNodeId, kMaxNodeId);
     if (!node)
         return node.error();
@@ -164,9 +172,8 @@ Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
         return SdoClient::Mode::Segmented;
     if (text == u"block")
         return SdoClient::Mode::Block;
-    return Error(
-        Error::Kind::InvalidArgument,
-        QStringLiteral("unknown SDO mode '%1' (auto, expedited, segmented or block)").arg(text));
+    return Error(Error::Kind::InvalidArgument,
+                 Tr::tr("unknown SDO mode '%1' (auto, expedited, segmented or block)").arg(text));
 }
 
 void CanopenConnection::doOpen()
@@ -193,8 +200,7 @@ void CanopenConnection::doOpen()
 void CanopenConnection::doClose()
 {
     m_network->sdo()->cancelNode(
-        m_node,
-        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 closed").arg(m_node)));
+        m_node, Error(Error::Kind::Cancelled, Tr::tr("connection to node %1 closed").arg(m_node)));
     releaseNetwork();
     // Other connections may keep the bus open; then this node is done at once.
     if (m_network->users() > 0 || m_network->bus()->state() == CanBus::State::Closed)
@@ -256,8 +262,8 @@ void CanopenConnection::probe()
         }
         const Error why = reply->error().kind() == Error::Kind::Timeout
             ? Error(Error::Kind::Timeout,
-                    QStringLiteral("node %1 does not answer on %2 (no SDO answer to 1000h within "
-                                   "%3 ms)")
+                    Tr::tr("node %1 does not answer on %2 (no SDO answer to 1000h within "
+                           "%3 ms)")
                         .arg(m_node)
                         .arg(m_network->name())
                         .arg(requestTimeoutMs()))
@@ -280,7 +286,7 @@ void CanopenConnection::onBusClosed(const Error &error)
                  previous == State::Closing
                      ? Error()
                      : Error(Error::Kind::Disconnected,
-                             QStringLiteral("CAN bus %1 closed").arg(m_network->name())));
+                             Tr::tr("CAN bus %1 closed").arg(m_network->name())));
         return;
     }
     Q_EMIT logLine(QStringLiteral("! ") + error.message());
@@ -332,8 +338,8 @@ Result<QByteArray> CanopenConnection::bytesFromUnknownValue(const QVariant &valu
     }
     default:
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("cannot write a %1 to an object of unknown type (give its "
-                                    "type)")
+                     Tr::tr("cannot write a %1 to an object of unknown type (give its "
+                            "type)")
                          .arg(QString::fromLatin1(value.typeName())));
     }
     const quint64 bits = value.toULongLong();

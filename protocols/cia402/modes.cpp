@@ -1,6 +1,15 @@
 #include "modes.h"
 
 #include "statusword.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::cia402)
+};
+} // namespace
 
 namespace db::cia402 {
 
@@ -98,7 +107,7 @@ Sequence *homing(DeviceConnection *c, const HomingSetPoint &sp, QObject *parent)
         QStringLiteral("homing attained (6041h bits 12 and 10)"),
         [](quint16 word, QString &why) {
             if (word & (sw::FollowingError | sw::Fault)) {
-                why = QStringLiteral("homing error");
+                why = Tr::tr("homing error");
                 return WaitVerdict::Failed;
             }
             const quint16 done = sw::SetPointAcknowledge | sw::TargetReached;

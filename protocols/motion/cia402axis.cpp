@@ -2,8 +2,17 @@
 
 #include "cia402/statusword.h"
 
+#include <QCoreApplication>
 #include <cmath>
 #include <memory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -59,9 +68,8 @@ void Cia402Axis::onConnectionState(DeviceConnection::State state)
     m_status.valid = false;
     Error error = m_connection->lastError();
     if (!error.isError())
-        error =
-            Error(Error::Kind::Disconnected,
-                  QStringLiteral("connection to %1 closed").arg(m_connection->uri().toString()));
+        error = Error(Error::Kind::Disconnected,
+                      Tr::tr("connection to %1 closed").arg(m_connection->uri().toString()));
     Q_EMIT connectionLost(error);
     Q_EMIT statusChanged();
 }
@@ -168,7 +176,7 @@ Reply *Cia402Axis::runMotion(Sequence *sequence)
 Reply *Cia402Axis::power(bool on)
 {
     if (m_motion)
-        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("power changed")));
+        m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("power changed")));
     return on ? m_controller.enableOperation() : m_controller.disableVoltage();
 }
 
@@ -213,7 +221,7 @@ Reply *Cia402Axis::home(const HomingParams &params)
     if (!(m_features & Feature::Homing))
         return Reply::failed(
             obj::HomingMethod,
-            Error(Error::Kind::NotSupported, QStringLiteral("the drive has no homing mode")));
+            Error(Error::Kind::NotSupported, Tr::tr("the drive has no homing mode")));
     HomingSetPoint sp;
     sp.method = params.method;
     sp.speedFast = quint32(std::llround(params.speedFast));
@@ -228,9 +236,9 @@ Reply *Cia402Axis::home(const HomingParams &params)
 Reply *Cia402Axis::torque(double torquePerMille, double slope)
 {
     if (!(m_features & Feature::Torque))
-        return Reply::failed(obj::TargetTorque,
-                             Error(Error::Kind::NotSupported,
-                                   QStringLiteral("the drive has no profile torque mode")));
+        return Reply::failed(
+            obj::TargetTorque,
+            Error(Error::Kind::NotSupported, Tr::tr("the drive has no profile torque mode")));
     return runMotion(profileTorque(m_connection, qint16(std::lround(torquePerMille)),
                                    quint32(std::llround(std::abs(slope))), this));
 }
@@ -238,7 +246,7 @@ Reply *Cia402Axis::torque(double torquePerMille, double slope)
 Reply *Cia402Axis::stopNow()
 {
     if (m_motion)
-        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("stopped")));
+        m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("stopped")));
     return m_controller.quickStop();
 }
 

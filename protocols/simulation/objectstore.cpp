@@ -1,4 +1,13 @@
 #include "objectstore.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::simulation)
+};
+} // namespace
 
 namespace db::sim {
 
@@ -59,10 +68,9 @@ Result<void> ObjectStore::checkRead(ObjectAddress address) const
     const ObjectDef *def = definition(address);
     if (!def)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()));
+                     Tr::tr("object %1 does not exist").arg(address.toString()));
     if (!def->readable())
-        return Error(Error::Kind::AccessDenied,
-                     QStringLiteral("%1 is write-only").arg(address.toString()));
+        return Error(Error::Kind::AccessDenied, Tr::tr("%1 is write-only").arg(address.toString()));
     return {};
 }
 
@@ -71,10 +79,9 @@ Result<QVariant> ObjectStore::checkWrite(ObjectAddress address, const QVariant &
     const ObjectDef *def = definition(address);
     if (!def)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()));
+                     Tr::tr("object %1 does not exist").arg(address.toString()));
     if (!def->writable())
-        return Error(Error::Kind::AccessDenied,
-                     QStringLiteral("%1 is read-only").arg(address.toString()));
+        return Error(Error::Kind::AccessDenied, Tr::tr("%1 is read-only").arg(address.toString()));
     return def->validate(value);
 }
 
