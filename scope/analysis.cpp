@@ -17,10 +17,10 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr qint64 kMinSpectrumSamples = 8;
 constexpr qint64 kMaxSpectrumPoints = qint64(1) << 22; // keeps a resampled FFT under ~100 MB
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::analysis", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::analysis)
+};
 
 double shown(const TraceBuffer &b, qint64 i, const ChannelInfo &info)
 {
@@ -101,7 +101,7 @@ Result<Spectrum> spectrum(const TraceBuffer &buffer, double t0, double t1, const
     const qint64 n = last - first;
     if (n < kMinSpectrumSamples)
         return Error(Error::Kind::InvalidArgument,
-                     tr("a spectrum needs at least %1 samples in the range (has %2)")
+                     Tr::tr("a spectrum needs at least %1 samples in the range (has %2)")
                          .arg(kMinSpectrumSamples)
                          .arg(n));
     double period = samplePeriodS;
@@ -116,13 +116,13 @@ Result<Spectrum> spectrum(const TraceBuffer &buffer, double t0, double t1, const
     const double tStart = buffer.time(first), tEnd = buffer.time(last - 1);
     if (!(period > 0) || tEnd <= tStart)
         return Error(Error::Kind::InvalidArgument,
-                     tr("the samples in the range have no time spacing"));
+                     Tr::tr("the samples in the range have no time spacing"));
     // The tolerance keeps a grid of exactly N periods from losing its last point to rounding.
     qint64 points = qint64(std::floor((tEnd - tStart) / period + 1e-6)) + 1;
     points = std::min(points, kMaxSpectrumPoints);
     points -= points % 2; // even length: bin N/2 is the Nyquist frequency
     if (points < kMinSpectrumSamples)
-        return Error(Error::Kind::InvalidArgument, tr("the range is too short for a spectrum"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("the range is too short for a spectrum"));
 
     // Uniform resampling by linear interpolation, mean removal, Hann window.
     std::vector<double> x(static_cast<size_t>(points), 0.0);
@@ -180,8 +180,9 @@ Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t
     const qint64 last = bounds.second;
     const qint64 n = last - first;
     if (n < 3)
-        return Error(Error::Kind::InvalidArgument,
-                     tr("a step response needs at least 3 samples in the range (has %1)").arg(n));
+        return Error(
+            Error::Kind::InvalidArgument,
+            Tr::tr("a step response needs at least 3 samples in the range (has %1)").arg(n));
     const double start = std::isinf(t0) ? buffer.time(first) : t0;
     StepResponse r;
     r.initial = shown(buffer, first, info);
@@ -193,7 +194,7 @@ Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t
     const double height = r.final - r.initial;
     if (height == 0 || !std::isfinite(height))
         return Error(Error::Kind::InvalidArgument,
-                     tr("no step in the range (initial and final value are equal)"));
+                     Tr::tr("no step in the range (initial and final value are equal)"));
     const double sign = height > 0 ? 1 : -1;
 
     // Normalised progress p = (v - initial) / height: 0 at the start, 1 at the end.
@@ -213,7 +214,7 @@ Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t
     const double t10 = crossing(0.1), t90 = crossing(0.9);
     if (std::isnan(t10) || std::isnan(t90))
         return Error(Error::Kind::InvalidArgument,
-                     tr("the signal does not rise from 10 % to 90 % of the step in the range"));
+                     Tr::tr("the signal does not rise from 10 % to 90 % of the step in the range"));
     r.riseTime = t90 - t10;
 
     qint64 peak = first;

@@ -15,10 +15,10 @@ namespace {
 
 constexpr char kMagic[] = "# drivebench recording v1";
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::csv", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::csv)
+};
 
 // Times are written with 9 decimals (1 ns, the resolution of the time base) and merged into
 // rows on that integer, so a round trip gives back exactly the same rows.
@@ -192,9 +192,11 @@ Result<void> save(const QString &fileName, const Recording &recording, double t0
 {
     QSaveFile file(fileName);
     if (!file.open(QIODevice::WriteOnly))
-        return Error(Error::Kind::Io, tr("cannot write %1: %2").arg(fileName, file.errorString()));
+        return Error(Error::Kind::Io,
+                     Tr::tr("cannot write %1: %2").arg(fileName, file.errorString()));
     if (!writeCsv(file, recording, t0, t1) || !file.commit())
-        return Error(Error::Kind::Io, tr("cannot write %1: %2").arg(fileName, file.errorString()));
+        return Error(Error::Kind::Io,
+                     Tr::tr("cannot write %1: %2").arg(fileName, file.errorString()));
     return {};
 }
 
@@ -202,7 +204,8 @@ Result<Recording> load(const QString &fileName)
 {
     QFile file(fileName);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, tr("cannot read %1: %2").arg(fileName, file.errorString()));
+        return Error(Error::Kind::Io,
+                     Tr::tr("cannot read %1: %2").arg(fileName, file.errorString()));
     Result<Recording> rec = fromCsv(file.readAll());
     if (!rec)
         return rec.error().prefixed(fileName);

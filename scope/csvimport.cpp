@@ -10,14 +10,14 @@ namespace db::scope::csv {
 
 namespace {
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::csv", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::csv)
+};
 
 Error malformed(int line, const QString &why)
 {
-    return Error(Error::Kind::Malformed, tr("line %1: %2").arg(QString::number(line), why));
+    return Error(Error::Kind::Malformed, Tr::tr("line %1: %2").arg(QString::number(line), why));
 }
 
 // Splits at ';' not escaped by a backslash and removes the escapes (see escape() in csv.cpp).
@@ -125,7 +125,8 @@ Result<void> parseTrigger(Recording &rec, const Pending &p)
         const QStringList words = parts[i].trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
         const auto value = words.size() >= 2 ? number(words[1]) : std::nullopt;
         if (!value)
-            return malformed(p.triggerLine, tr("bad trigger detail '%1'").arg(parts[i].trimmed()));
+            return malformed(p.triggerLine,
+                             Tr::tr("bad trigger detail '%1'").arg(parts[i].trimmed()));
         if (words[0] == QLatin1String("pre"))
             t.preTriggerS = *value;
         else if (words[0] == QLatin1String("post"))
@@ -144,8 +145,8 @@ Result<Recording> fromCsv(const QByteArray &text)
     const QList<QByteArray> lines = text.split('\n');
     if (lines.isEmpty() || !lines[0].trimmed().startsWith("# drivebench recording"))
         return malformed(1,
-                         tr("not a drivebench recording (the first line must be '# "
-                            "drivebench recording v1')"));
+                         Tr::tr("not a drivebench recording (the first line must be '# "
+                                "drivebench recording v1')"));
     Recording rec;
     Pending pending;
     QHash<QString, QString> channelDevice;
@@ -165,7 +166,7 @@ Result<Recording> fromCsv(const QByteArray &text)
         } else if (key == QLatin1String("started")) {
             rec.startedAt = QDateTime::fromString(value, Qt::ISODateWithMs);
             if (!rec.startedAt.isValid())
-                return malformed(n, tr("bad start time '%1'").arg(value));
+                return malformed(n, Tr::tr("bad start time '%1'").arg(value));
         } else if (key == QLatin1String("mode")) {
             rec.mode = unescape(value);
         } else if (key == QLatin1String("trigger")) {
@@ -180,14 +181,14 @@ Result<Recording> fromCsv(const QByteArray &text)
             c.info.addressFormat = AddressFormat::byKey(formatKey);
             if (!c.info.addressFormat)
                 return malformed(n,
-                                 tr("channel %1: unknown address format '%2' (canopen or "
-                                    "parameter)")
+                                 Tr::tr("channel %1: unknown address format '%2' (canopen or "
+                                        "parameter)")
                                      .arg(c.info.id, formatKey));
             const auto address = c.info.addressFormat->parse(c.info.id);
             if (c.info.id.isEmpty() || !address)
                 return malformed(n,
-                                 tr("channel line without a valid id (%1 addresses are written "
-                                    "like %2)")
+                                 Tr::tr("channel line without a valid id (%1 addresses are "
+                                        "written like %2)")
                                      .arg(formatKey, c.info.addressFormat->example()));
             c.info.address = *address;
             c.info.name = map.value(QStringLiteral("name"));
@@ -195,7 +196,7 @@ Result<Recording> fromCsv(const QByteArray &text)
             const auto scale = number(map.value(QStringLiteral("scale"), QStringLiteral("1")));
             const auto offset = number(map.value(QStringLiteral("offset"), QStringLiteral("0")));
             if (!scale || *scale == 0 || !offset)
-                return malformed(n, tr("channel %1: bad scale or offset").arg(c.info.id));
+                return malformed(n, Tr::tr("channel %1: bad scale or offset").arg(c.info.id));
             c.info.scale = *scale;
             c.info.offset = *offset;
             c.info.sourceRateMs = map.value(QStringLiteral("rate-ms")).toInt();
@@ -214,13 +215,13 @@ Result<Recording> fromCsv(const QByteArray &text)
                  value.mid(semi + 1).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
                 const auto ns = parseNanos(word.toLatin1());
                 if (semi < 0 || !ns)
-                    return malformed(n, tr("bad gap time '%1'").arg(word));
+                    return malformed(n, Tr::tr("bad gap time '%1'").arg(word));
                 pending.gaps[id].insert(*ns);
             }
         }
     }
     if (rec.channels.isEmpty())
-        return malformed(lineNo + 1, tr("no '# channel:' lines before the data"));
+        return malformed(lineNo + 1, Tr::tr("no '# channel:' lines before the data"));
     for (RecordedChannel &c : rec.channels)
         c.info.device = channelDevice.value(c.info.id, rec.device);
     if (auto ok = parseTrigger(rec, pending); !ok)
@@ -228,7 +229,7 @@ Result<Recording> fromCsv(const QByteArray &text)
 
     // Column header.
     if (lineNo >= lines.size() || !lines[lineNo].startsWith("time_s"))
-        return malformed(lineNo + 1, tr("missing the column header 'time_s,...'"));
+        return malformed(lineNo + 1, Tr::tr("missing the column header 'time_s,...'"));
     ++lineNo;
 
     const int columns = int(rec.channels.size()) + 1;
@@ -243,16 +244,17 @@ Result<Recording> fromCsv(const QByteArray &text)
         const QList<QByteArray> cells = line.split(',');
         if (cells.size() != columns)
             return malformed(n,
-                             tr("%1 cells, expected %2 (time and one per channel)")
+                             Tr::tr("%1 cells, expected %2 (time and one per channel)")
                                  .arg(cells.size())
                                  .arg(columns));
         const auto ns = parseNanos(cells[0]);
         if (!ns)
-            return malformed(n,
-                             tr("'%1' is not a time in seconds").arg(QString::fromUtf8(cells[0])));
+            return malformed(
+                n, Tr::tr("'%1' is not a time in seconds").arg(QString::fromUtf8(cells[0])));
         if (*ns < previous)
             return malformed(
-                n, tr("time goes back (%1 s after a later row)").arg(QString::fromUtf8(cells[0])));
+                n,
+                Tr::tr("time goes back (%1 s after a later row)").arg(QString::fromUtf8(cells[0])));
         previous = *ns;
         for (int c = 1; c < columns; ++c) {
             if (cells[c].isEmpty())
@@ -262,7 +264,7 @@ Result<Recording> fromCsv(const QByteArray &text)
             RecordedChannel &ch = rec.channels[c - 1];
             if (!ok)
                 return malformed(n,
-                                 tr("column %1 (%2): '%3' is not a number")
+                                 Tr::tr("column %1 (%2): '%3' is not a number")
                                      .arg(c + 1)
                                      .arg(ch.info.id, QString::fromUtf8(cells[c])));
             if (pending.gaps.value(ch.info.id).contains(*ns))

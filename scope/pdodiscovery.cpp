@@ -14,10 +14,10 @@ namespace db::scope {
 
 namespace {
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::PdoDiscovery", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::PdoDiscovery)
+};
 
 constexpr ObjectAddress kSyncPeriod { 0x1006, 0 }; // communication cycle period, us
 constexpr int kFirstPdoMs = 1500; // see firstPdoTimeoutMs()
@@ -63,7 +63,7 @@ QString PdoChannelPlan::missingText(const ObjectDictionary &dictionary) const
         const QString label = def && !def->name.isEmpty()
             ? QStringLiteral("%1 %2").arg(address.toString(), def->name)
             : address.toString();
-        parts.append(tr("%1 is in no TPDO of node %2").arg(label).arg(node));
+        parts.append(Tr::tr("%1 is in no TPDO of node %2").arg(label).arg(node));
     }
     return parts.join(QStringLiteral("; "));
 }
@@ -125,12 +125,12 @@ Reply *discoverPdoChannels(DeviceConnection *connection, const QList<ObjectAddre
     if (!connection || !connection->isConnected())
         return Reply::failed(first,
                              Error(Error::Kind::Disconnected,
-                                   tr("cannot read the PDO configuration: not connected")));
+                                   Tr::tr("cannot read the PDO configuration: not connected")));
     const canopen::NetworkNode at = canopen::networkNodeOf(connection);
     if (!at)
-        return Reply::failed(
-            first,
-            Error(Error::Kind::InvalidArgument, tr("PDOs need a connection to a CANopen node")));
+        return Reply::failed(first,
+                             Error(Error::Kind::InvalidArgument,
+                                   Tr::tr("PDOs need a connection to a CANopen node")));
     auto *outer = new Reply(first);
     // Everything below lives as children of `outer`: deleting the reply early cancels the rest.
     auto *client = new canopen::PdoClient(at.network->sdo(), outer);
@@ -142,8 +142,8 @@ Reply *discoverPdoChannels(DeviceConnection *connection, const QList<ObjectAddre
     QObject::connect(all, &Reply::finished, outer, [=] {
         all->deleteLater();
         if (!all->ok()) {
-            outer->fail(
-                all->error().prefixed(tr("reading the PDO configuration of node %1").arg(node)));
+            outer->fail(all->error().prefixed(
+                Tr::tr("reading the PDO configuration of node %1").arg(node)));
             return;
         }
         const auto configs = all->value().value<QList<canopen::PdoConfig>>();
@@ -192,15 +192,15 @@ QString silentPdoCause(const PdoChannelPlan &plan, canopen::NmtState heard)
                 continue;
             const quint8 type = c.transmissionType;
             if (c.isEventDriven() && c.eventTimer.value_or(0) == 0)
-                own.append(
-                    tr("%1 has no event timer and is sent only on device events").arg(c.name()));
+                own.append(Tr::tr("%1 has no event timer and is sent only on device events")
+                               .arg(c.name()));
             else if (c.isCyclicSync())
-                own.append(tr("%1 is sent on SYNC (transmission type %2) and no SYNC was "
-                              "produced")
+                own.append(Tr::tr("%1 is sent on SYNC (transmission type %2) and no SYNC was "
+                                  "produced")
                                .arg(c.name())
                                .arg(type));
             else if (type == 0 || type == 0xFC || type == 0xFD)
-                own.append(tr("%1 is sent only on events or remote requests (type 0x%2)")
+                own.append(Tr::tr("%1 is sent only on events or remote requests (type 0x%2)")
                                .arg(c.name())
                                .arg(type, 2, 16, QLatin1Char('0')));
         }
@@ -208,23 +208,24 @@ QString silentPdoCause(const PdoChannelPlan &plan, canopen::NmtState heard)
     const QString node = QString::number(plan.node);
     if (heard == canopen::NmtState::Operational)
         return own.isEmpty()
-            ? tr("node %1 is operational (heartbeat), yet its TPDOs did not come").arg(node)
-            : tr("node %1 is operational (heartbeat), but %2").arg(node, own.join(tr("; ")));
+            ? Tr::tr("node %1 is operational (heartbeat), yet its TPDOs did not come").arg(node)
+            : Tr::tr("node %1 is operational (heartbeat), but %2")
+                  .arg(node, own.join(Tr::tr("; ")));
     QString text;
     switch (heard) {
     case canopen::NmtState::PreOperational:
-        text = tr("node %1 is pre-operational (heartbeat), not operational: NMT start it");
+        text = Tr::tr("node %1 is pre-operational (heartbeat), not operational: NMT start it");
         break;
     case canopen::NmtState::Stopped:
-        text = tr("node %1 is stopped (heartbeat), not operational: NMT start it");
+        text = Tr::tr("node %1 is stopped (heartbeat), not operational: NMT start it");
         break;
     default:
-        text = tr("node %1 is probably not operational (no heartbeat heard): NMT start it");
+        text = Tr::tr("node %1 is probably not operational (no heartbeat heard): NMT start it");
         break;
     }
     text = text.arg(node);
     if (heard == canopen::NmtState::Unknown && !own.isEmpty())
-        text += tr("; or %1").arg(own.join(tr("; or ")));
+        text += Tr::tr("; or %1").arg(own.join(Tr::tr("; or ")));
     return text;
 }
 

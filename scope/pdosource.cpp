@@ -12,10 +12,10 @@ namespace db::scope {
 
 namespace {
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::PdoSource", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::PdoSource)
+};
 
 int sizeOf(DataType type)
 {
@@ -53,19 +53,19 @@ PdoSource::~PdoSource() = default;
 Result<int> PdoSource::addChannel(const ChannelInfo &info, const Mapping &mapping)
 {
     if (m_running)
-        return Error(Error::Kind::InvalidArgument, tr("cannot add a channel while sampling"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("cannot add a channel while sampling"));
     const int size = sizeOf(mapping.type);
     if (size == 0)
         return Error(Error::Kind::InvalidArgument,
-                     tr("%1: only numeric types can be sampled from a PDO").arg(info.id));
+                     Tr::tr("%1: only numeric types can be sampled from a PDO").arg(info.id));
     if (mapping.byteOffset < 0 || mapping.byteOffset + size > 8)
         return Error(Error::Kind::InvalidArgument,
-                     tr("%1: bytes %2..%3 do not fit into a CAN frame of 8 bytes")
+                     Tr::tr("%1: bytes %2..%3 do not fit into a CAN frame of 8 bytes")
                          .arg(info.id)
                          .arg(mapping.byteOffset)
                          .arg(mapping.byteOffset + size - 1));
     if (mapping.cobId > 0x1FFFFFFF || mapping.expectedPeriodMs < 0)
-        return Error(Error::Kind::InvalidArgument, tr("%1: bad COB-ID or period").arg(info.id));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("%1: bad COB-ID or period").arg(info.id));
     Entry entry { info, mapping, -1 };
     if (entry.info.device.isEmpty())
         entry.info.device = m_device;
@@ -83,7 +83,7 @@ Result<QList<int>> PdoSource::addPdo(const canopen::PdoConfig &config,
 {
     if (!config.isEnabled())
         return Error(Error::Kind::InvalidArgument,
-                     tr("%1 is not enabled (COB-ID bit 31 set)").arg(config.name()));
+                     Tr::tr("%1 is not enabled (COB-ID bit 31 set)").arg(config.name()));
     QList<int> added;
     int bit = 0;
     for (const canopen::PdoMappingEntry &entry : config.entries) {
@@ -153,8 +153,8 @@ void PdoSource::start(const QElapsedTimer &timeBase)
     Q_EMIT runningChanged(true);
     if (!m_bus || !m_bus->isOpen()) {
         stop();
-        Q_EMIT errorOccurred(
-            Error(Error::Kind::Disconnected, tr("cannot sample PDOs: the CAN bus is not open")));
+        Q_EMIT errorOccurred(Error(Error::Kind::Disconnected,
+                                   Tr::tr("cannot sample PDOs: the CAN bus is not open")));
         return;
     }
     connect(m_bus.data(), &CanBus::frameReceived, this, &PdoSource::onFrame);
@@ -240,10 +240,10 @@ void PdoSource::onBusClosed(const Error &error)
     if (!m_running)
         return;
     stop();
-    Q_EMIT errorOccurred(
-        error.isError()
-            ? error.prefixed(tr("PDO sampling stopped"))
-            : Error(Error::Kind::Disconnected, tr("PDO sampling stopped: the CAN bus was closed")));
+    Q_EMIT errorOccurred(error.isError()
+                             ? error.prefixed(Tr::tr("PDO sampling stopped"))
+                             : Error(Error::Kind::Disconnected,
+                                     Tr::tr("PDO sampling stopped: the CAN bus was closed")));
 }
 
 Result<canopen::PdoConfig> tpdoConfigFor(canopen::NodeId node, int tpdoNumber,
@@ -253,16 +253,16 @@ Result<canopen::PdoConfig> tpdoConfigFor(canopen::NodeId node, int tpdoNumber,
 {
     using canopen::PdoConfig;
     if (tpdoNumber < 0 || tpdoNumber >= PdoConfig::kMaxPerDirection)
-        return Error(Error::Kind::InvalidArgument, tr("TPDO number out of range"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("TPDO number out of range"));
     if (cobId == 0 && tpdoNumber > 3)
         return Error(Error::Kind::InvalidArgument,
-                     tr("TPDO%1 has no predefined COB-ID; give one").arg(tpdoNumber + 1));
+                     Tr::tr("TPDO%1 has no predefined COB-ID; give one").arg(tpdoNumber + 1));
     if (node < canopen::kMinNodeId || node > canopen::kMaxNodeId)
-        return Error(Error::Kind::InvalidArgument, tr("node id must be 1..127"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("node id must be 1..127"));
     if (eventTimerMs < 0 || eventTimerMs > 0xFFFF)
-        return Error(Error::Kind::InvalidArgument, tr("event timer must be 0..65535 ms"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("event timer must be 0..65535 ms"));
     if (objects.isEmpty())
-        return Error(Error::Kind::InvalidArgument, tr("no objects to map"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("no objects to map"));
     PdoConfig config;
     config.direction = canopen::PdoDirection::Transmit;
     config.number = tpdoNumber;
@@ -277,13 +277,13 @@ Result<canopen::PdoConfig> tpdoConfigFor(canopen::NodeId node, int tpdoNumber,
         if (size == 0)
             return Error(
                 Error::Kind::InvalidArgument,
-                tr("%1 is not a numeric object of the description").arg(address.toString()));
+                Tr::tr("%1 is not a numeric object of the description").arg(address.toString()));
         bits += size * 8;
         config.entries.append({ address, quint8(size * 8) });
     }
     if (bits > 64)
         return Error(Error::Kind::InvalidArgument,
-                     tr("the objects need %1 bits; a PDO carries at most 64").arg(bits));
+                     Tr::tr("the objects need %1 bits; a PDO carries at most 64").arg(bits));
     return config;
 }
 
@@ -296,7 +296,7 @@ Reply *configureTpdo(canopen::PdoClient *client, canopen::NodeId node, int tpdoN
     if (!config)
         return Reply::failed(comm, config.error());
     if (!client)
-        return Reply::failed(comm, Error(Error::Kind::InvalidArgument, tr("no PDO client")));
+        return Reply::failed(comm, Error(Error::Kind::InvalidArgument, Tr::tr("no PDO client")));
     auto *outer = new Reply(comm);
     const canopen::PdoConfig written = *config;
     Reply::forward(

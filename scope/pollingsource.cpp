@@ -27,9 +27,7 @@ PollingSource::PollingSource(DeviceConnection *connection, QObject *parent)
     : TraceSource(parent)
     , m_connection(connection)
 {
-    m_wakeup.setSingleShot(true);
-    m_wakeup.setTimerType(Qt::PreciseTimer);
-    connect(&m_wakeup, &QTimer::timeout, this, &PollingSource::pump);
+    connect(&m_wakeup, &WakeupTimer::timeout, this, &PollingSource::pump);
     if (connection) {
         connect(connection, &DeviceConnection::stateChanged, this,
                 &PollingSource::onConnectionState);
@@ -43,7 +41,8 @@ PollingSource::PollingSource(DeviceConnection *connection, QObject *parent)
 
 PollingSource::~PollingSource()
 {
-    delete m_inFlight.data();
+    for (const Entry &e : std::as_const(m_entries))
+        delete e.inFlight.data();
 }
 
 Result<int> PollingSource::addChannel(ObjectAddress address, int rateMs)
@@ -73,7 +72,7 @@ Result<int> PollingSource::addChannel(const ChannelInfo &info)
                     tr("%1 (%2) is not a number and cannot be recorded").arg(info.id, def->name));
         }
     }
-    m_entries.append({ info, 0 });
+    m_entries.append({ info, nullptr, 0 });
     Q_EMIT channelsChanged();
     return int(m_entries.size()) - 1;
 }
@@ -112,7 +111,10 @@ void PollingSource::start(const QElapsedTimer &timeBase)
     m_failed = 0;
     m_lastReadError = Error();
     m_unanswered = {};
-    m_lastServed = -1;
+    m_schedule = PollSchedule();
+    for (const Entry &e : std::as_const(m_entries))
+        m_schedule.addChannel(qint64(e.info.sourceRateMs) * 1000000);
+    m_schedule.start(nowNs());
     m_running = true;
     Q_EMIT runningChanged(true);
     if (!m_connection || !m_connection->isConnected()) {
@@ -121,9 +123,6 @@ void PollingSource::start(const QElapsedTimer &timeBase)
                        .arg(m_connection ? m_connection->uri().toString() : QString())));
         return;
     }
-    const double now = nowS();
-    for (Entry &e : m_entries)
-        e.nextDue = now;
     pump();
 }
 
@@ -133,89 +132,70 @@ void PollingSource::stop()
         return;
     m_running = false;
     m_wakeup.stop();
-    const double now = nowS();
-    m_unanswered =
-        m_inFlight ? Unanswered { m_inFlightChannel, now - m_inFlightSinceS } : Unanswered {};
+    const qint64 now = nowNs();
+    m_unanswered = {};
+    const QList<qint64> lost = m_schedule.lostUntil(now);
     for (int i = 0; i < m_entries.size(); ++i) {
+        countLost(i, lost.at(i));
         Entry &e = m_entries[i];
-        const double period = e.info.sourceRateMs * 1e-3;
-        if (period <= 0 || e.nextDue > now)
+        if (!e.inFlight)
             continue;
-        if (const auto missed = qint64(std::floor((now - e.nextDue) / period)); missed > 0) {
-            m_lost += missed;
-            e.nextDue += double(missed) * period;
-            Q_EMIT samplesLost(i, missed);
-        }
-    }
-    if (m_inFlight) {
+        const double waitedS = double(now - e.sinceNs) * 1e-9;
+        if (m_unanswered.channel < 0 || waitedS > m_unanswered.waitedS)
+            m_unanswered = { i, waitedS };
         // We own the reply; the engine copes with a reply deleted early and drops its answer.
-        m_inFlight->disconnect(this);
-        m_inFlight->deleteLater();
+        e.inFlight->disconnect(this);
+        e.inFlight->deleteLater();
+        e.inFlight = nullptr;
     }
-    m_inFlight = nullptr;
-    m_inFlightChannel = -1;
     Q_EMIT runningChanged(false);
 }
 
-double PollingSource::nowS() const
+qint64 PollingSource::nowNs() const
 {
-    return double(m_timeBase.nsecsElapsed()) * 1e-9;
+    return m_timeBase.nsecsElapsed();
+}
+
+void PollingSource::countLost(int channel, qint64 count)
+{
+    if (count <= 0)
+        return;
+    m_lost += count;
+    Q_EMIT samplesLost(channel, count);
 }
 
 void PollingSource::pump()
 {
-    if (!m_running || m_inFlight || m_entries.isEmpty())
+    if (!m_running || m_entries.isEmpty())
         return;
     if (!m_connection) {
         fail(Error(Error::Kind::Disconnected, tr("the connection was closed")));
         return;
     }
-    const double now = nowS();
-    // Earliest due channel; among equal due times, the first after the last one served.
-    int pick = -1;
-    const int n = int(m_entries.size());
-    for (int k = 1; k <= n; ++k) {
-        const int i = (m_lastServed + k) % n;
-        if (pick < 0 || m_entries[i].nextDue < m_entries[pick].nextDue)
-            pick = i;
+    const qint64 now = nowNs();
+    for (const PollSchedule::Read &read : m_schedule.due(now)) {
+        countLost(read.channel, read.lostBefore);
+        Entry &e = m_entries[read.channel];
+        e.sinceNs = now;
+        e.inFlight = m_connection->read(e.info.address);
+        Reply *reply = e.inFlight.data();
+        const int channel = read.channel;
+        connect(reply, &Reply::finished, this, [this, channel, reply] { onReply(channel, reply); });
     }
-    Entry &e = m_entries[pick];
-    if (e.nextDue > now) {
-        m_wakeup.start(std::max(0, int(std::ceil((e.nextDue - now) * 1000.0))));
-        return;
-    }
-    const double period = e.info.sourceRateMs * 1e-3;
-    if (period > 0) {
-        // Periods that passed completely without a read are lost samples (a gap).
-        const auto missed = qint64(std::floor((now - e.nextDue) / period));
-        if (missed > 0) {
-            m_lost += missed;
-            e.nextDue += double(missed) * period;
-            Q_EMIT samplesLost(pick, missed);
-        }
-        e.nextDue += period;
-    } else {
-        e.nextDue = now;
-    }
-    m_lastServed = pick;
-    m_inFlightChannel = pick;
-    m_inFlightSinceS = now;
-    m_inFlight = m_connection->read(e.info.address);
-    connect(m_inFlight.data(), &Reply::finished, this, &PollingSource::onReply);
+    if (const auto next = m_schedule.nextDueNs())
+        m_wakeup.wakeAt(m_timeBase, *next);
+    else
+        m_wakeup.stop();
 }
 
-void PollingSource::onReply()
+void PollingSource::onReply(int channel, Reply *reply)
 {
-    auto *reply = qobject_cast<Reply *>(sender());
-    if (!reply || reply != m_inFlight)
-        return;
-    const int channel = m_inFlightChannel;
-    m_inFlight = nullptr;
-    m_inFlightChannel = -1;
     reply->deleteLater();
-    if (!m_running)
+    if (!m_running || channel >= m_entries.size() || m_entries[channel].inFlight != reply)
         return;
-    const double t = nowS();
+    m_entries[channel].inFlight = nullptr;
+    m_schedule.finished(channel);
+    const double t = double(nowNs()) * 1e-9;
     if (reply->ok()) {
         if (const auto value = sampleValue(reply->value())) {
             ++m_delivered;
@@ -233,8 +213,7 @@ void PollingSource::onReply()
     m_lastReadError = reply->ok()
         ? Error(Error::Kind::Malformed, tr("%1: the answer is not a number").arg(reading))
         : reply->error().prefixed(reading);
-    ++m_lost;
-    Q_EMIT samplesLost(channel, 1);
+    countLost(channel, 1);
     pump();
 }
 

@@ -1,26 +1,29 @@
 #pragma once
 // Host polling of readable objects through DeviceConnection::read().
 #include "core/deviceconnection.h"
+#include "pollschedule.h"
 #include "tracesource.h"
+#include "wakeuptimer.h"
 #include <QPointer>
-#include <QTimer>
 
 namespace db::scope {
 
 // Samples objects of one DeviceConnection by reading them from the host.
 //
-// Scheduling: at most ONE read in flight on the connection (the protocols answer in order and a
-// second request would only queue behind the first). Each channel has a period (rateMs; 0 = as
-// fast as the link allows); when the link is free, the channel whose next due time is earliest
-// is read (round-robin among equally due channels). A channel that is due again before its
-// previous sample arrived is not queued twice: a read that starts more than one period late
-// counts the missed periods as lost samples (a gap), so "zero lost samples" means every period
-// got its sample. Rate 0 channels never lose samples that way.
+// Scheduling (PollSchedule): each channel has a period (rateMs; 0 = as fast as the link allows)
+// and owns the sample slots start + k * period on the time base. A channel's read starts at its
+// slot's deadline, woken by a timer precise to tens of microseconds; the next deadline is the
+// previous one plus the period, so a late wake-up is caught up instead of carried forward. At
+// most one read per channel is in flight; reads of several channels are handed to the
+// connection together and queue there (the protocols answer in order).
+// Lost samples: a slot counts as lost only when its read could not start before the next slot
+// began (the channel's previous read was still unanswered, or the host woke that late), so
+// "zero lost samples" means every period got its sample. Rate 0 channels never lose samples.
 // Timestamps: the time base's elapsed time when the reply ARRIVES (the value is at most one
 // round trip old).
-// stop() counts the periods that passed completely without a read as lost too (a read that
-// has been waiting for its answer for three periods has cost two samples already), so that a
-// source whose reads never come back does not end with "zero lost".
+// stop() counts the slots that ended without a read as lost too (a read that has been waiting
+// for its answer for three periods has cost two samples already), so that a source whose reads
+// never come back does not end with "zero lost".
 // Errors: a failed read (device error, timeout, malformed answer) counts one lost sample and
 // the channel's next sample starts a gap; failedCount() and lastReadError() keep them apart from
 // periods missed because the link is slow. The connection leaving Connected stops the source with
@@ -62,29 +65,28 @@ public:
         int channel = -1; // -1: no read was in flight at stop()
         double waitedS = 0; // how long it had waited for its answer
     };
-    // The read that was still waiting for its answer when the source last stopped.
+    // The read that had waited longest for its answer when the source last stopped.
     Unanswered unansweredAtStop() const { return m_unanswered; }
 
 private:
     struct Entry
     {
         ChannelInfo info;
-        double nextDue = 0; // seconds on the time base
+        QPointer<Reply> inFlight; // owned; at most one per channel
+        qint64 sinceNs = 0; // when it was sent, on the time base
     };
     void pump();
-    void onReply();
+    void onReply(int channel, Reply *reply);
     void onConnectionState(DeviceConnection::State state);
     void fail(const Error &error);
-    double nowS() const;
+    void countLost(int channel, qint64 count);
+    qint64 nowNs() const;
 
     QPointer<DeviceConnection> m_connection;
     QList<Entry> m_entries;
+    PollSchedule m_schedule;
     QElapsedTimer m_timeBase;
-    QTimer m_wakeup; // fires when the next channel is due and the link is idle
-    QPointer<Reply> m_inFlight;
-    int m_inFlightChannel = -1;
-    double m_inFlightSinceS = 0;
-    int m_lastServed = -1;
+    WakeupTimer m_wakeup; // fires at the next deadline of a channel without a read in flight
     bool m_running = false;
     qint64 m_delivered = 0;
     qint64 m_lost = 0;

@@ -8,6 +8,13 @@ namespace db::scope {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kLongestS = 1e9; // ~31 years: beyond it a time would not fit in qint64 ns
+
+// Seconds on the time base as ns, for the deadline timers.
+qint64 toNs(double seconds)
+{
+    return qint64(std::llround(std::clamp(seconds, 0.0, kLongestS) * 1e9));
+}
 
 QString modeName(Recorder::Mode mode)
 {
@@ -37,10 +44,15 @@ struct Recorder::Slot
 Recorder::Recorder(QObject *parent)
     : QObject(parent)
     , m_triggerTime(kNaN)
+    , m_stoppedAt(kNaN)
 {
-    m_postTimer.setSingleShot(true);
-    m_postTimer.setTimerType(Qt::PreciseTimer);
-    connect(&m_postTimer, &QTimer::timeout, this, &Recorder::completeCapture);
+    connect(&m_postTimer, &WakeupTimer::timeout, this, &Recorder::completeCapture);
+    connect(&m_endTimer, &WakeupTimer::timeout, this, &Recorder::stop);
+}
+
+void Recorder::setDurationS(double seconds)
+{
+    m_durationS = std::isfinite(seconds) && seconds > 0 ? seconds : 0;
 }
 
 Recorder::~Recorder()
@@ -198,9 +210,12 @@ void Recorder::start()
         const ChannelInfo &info = m_channels[m_trigger.channel]->info;
         m_detector = TriggerDetector(m_trigger, info.scale, info.offset);
     }
+    m_stoppedAt = kNaN;
     m_clock.start();
     m_startedAt = QDateTime::currentDateTimeUtc();
     setState(triggered ? State::Armed : State::Recording);
+    if (!triggered && m_durationS > 0)
+        m_endTimer.wakeAt(m_clock, toNs(m_durationS));
     for (TraceSource *source : sources()) {
         if (source->isRunning())
             source->stop();
@@ -287,6 +302,8 @@ QList<TraceSource *> Recorder::sources() const
 
 void Recorder::stopSources()
 {
+    m_endTimer.stop();
+    m_stoppedAt = now();
     for (TraceSource *source : sources())
         source->stop();
 }
@@ -335,7 +352,11 @@ void Recorder::append(int index, const TraceSamples &samples)
     TraceBuffer &live = m_channels[index]->live;
     const bool isTriggerChannel = index == m_trigger.channel;
     bool pastEnd = false;
+    const bool timed = m_durationS > 0 && (m_mode == Mode::Run || m_mode == Mode::Roll);
     for (const TraceSample &s : samples) {
+        if (timed && s.t > m_durationS)
+            break; // stamped after the end, before the end timer's turn came
+
         if (m_state == State::Triggered && s.t > m_triggerTime + m_trigger.postTriggerS) {
             pastEnd = true; // timestamps are arrival times: no later sample can be inside
             break;
@@ -363,8 +384,7 @@ void Recorder::fire(double time)
     setState(State::Triggered);
     Q_EMIT triggered(time);
     // Ends the capture at triggerTime + post even when no further sample arrives.
-    const double remainingS = time + m_trigger.postTriggerS - now();
-    m_postTimer.start(int(std::clamp(std::ceil(remainingS * 1000.0), 0.0, 2.0e9)) + 1);
+    m_postTimer.wakeAt(m_clock, toNs(time + m_trigger.postTriggerS) + 1);
 }
 
 void Recorder::completeCapture()

@@ -2,11 +2,11 @@
 // The recorder: channels from trace sources, one time base, bounded buffers, modes, trigger.
 #include "recording.h"
 #include "tracesource.h"
+#include "wakeuptimer.h"
 #include <QElapsedTimer>
 #include <QList>
 #include <QObject>
 #include <QPointer>
-#include <QTimer>
 
 namespace db::scope {
 
@@ -81,6 +81,11 @@ public:
     void setRollWindowS(double seconds);
     const Trigger &trigger() const { return m_trigger; }
     void setTrigger(const Trigger &trigger);
+    // Run and Roll: the recording stops by itself when the time base reaches this many seconds
+    // (to within the event loop's latency, well under a millisecond on an idle machine) and
+    // keeps no sample stamped later; 0 = until stop(). Single and Normal end by their trigger.
+    double durationS() const { return m_durationS; }
+    void setDurationS(double seconds);
 
     // --- running
     // Clears the buffers, restarts the time base at 0 and starts all sources.
@@ -93,6 +98,8 @@ public:
     bool isRunning() const { return m_state != State::Idle && m_state != State::Stopped; }
     // Seconds since start() on the time base (0 when never started).
     double now() const;
+    // Time on the time base when the recording last stopped; NaN while running or never run.
+    double stoppedAt() const { return m_stoppedAt; }
     // Time of the last trigger on the time base; NaN when none.
     double triggerTime() const { return m_triggerTime; }
     QDateTime startedAt() const { return m_startedAt; }
@@ -135,7 +142,10 @@ private:
     QElapsedTimer m_clock;
     QDateTime m_startedAt;
     double m_triggerTime;
-    QTimer m_postTimer; // ends a capture at triggerTime + post when no later sample arrives
+    double m_stoppedAt;
+    double m_durationS = 0;
+    WakeupTimer m_postTimer; // ends a capture at triggerTime + post when no later sample arrives
+    WakeupTimer m_endTimer; // ends a Run/Roll recording after durationS()
 };
 
 } // namespace db::scope

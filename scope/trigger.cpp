@@ -22,16 +22,16 @@ constexpr KindName kKinds[] = {
     { Trigger::Kind::WindowInside, "inside", 2 }, { Trigger::Kind::WindowOutside, "outside", 2 },
 };
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::scope::Trigger", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::scope::Trigger)
+};
 
 Error invalid(const QString &spec, const QString &why)
 {
     return Error(Error::Kind::InvalidArgument,
-                 tr("trigger '%1': %2 (expected CHANNEL,rising|falling|above|below,LEVEL or "
-                    "CHANNEL,inside|outside,LOW,HIGH or CHANNEL,bitN,set|clear)")
+                 Tr::tr("trigger '%1': %2 (expected CHANNEL,rising|falling|above|below,LEVEL or "
+                        "CHANNEL,inside|outside,LOW,HIGH or CHANNEL,bitN,set|clear)")
                      .arg(spec, why));
 }
 
@@ -73,7 +73,7 @@ Result<Trigger> Trigger::parse(const QString &spec, const QStringList &channelId
 {
     const QStringList parts = spec.trimmed().split(QLatin1Char(','));
     if (parts.size() < 2)
-        return invalid(spec, tr("missing condition"));
+        return invalid(spec, Tr::tr("missing condition"));
     Trigger trigger = base;
     trigger.channel = int(channelIds.indexOf(parts[0].trimmed()));
     if (trigger.channel < 0) {
@@ -87,18 +87,19 @@ Result<Trigger> Trigger::parse(const QString &spec, const QStringList &channelId
         }
     }
     if (trigger.channel < 0)
-        return invalid(spec, tr("%1 is not one of the recorded channels").arg(parts[0].trimmed()));
+        return invalid(spec,
+                       Tr::tr("%1 is not one of the recorded channels").arg(parts[0].trimmed()));
 
     const QString kind = parts[1].trimmed().toLower();
     if (kind.startsWith(QLatin1String("bit"))) {
         bool ok = false;
         trigger.bit = kind.mid(3).toInt(&ok);
         if (!ok || trigger.bit < 0 || trigger.bit > 63)
-            return invalid(spec, tr("bit number must be 0..63"));
+            return invalid(spec, Tr::tr("bit number must be 0..63"));
         const QString state =
             parts.size() > 2 ? parts[2].trimmed().toLower() : QStringLiteral("set");
         if (parts.size() > 3 || (state != QLatin1String("set") && state != QLatin1String("clear")))
-            return invalid(spec, tr("a bit trigger ends in 'set' or 'clear'"));
+            return invalid(spec, Tr::tr("a bit trigger ends in 'set' or 'clear'"));
         trigger.kind = state == QLatin1String("set") ? Kind::BitSet : Kind::BitClear;
         return trigger;
     }
@@ -115,16 +116,16 @@ Result<Trigger> Trigger::parse(const QString &spec, const QStringList &channelId
             bool ok = false;
             levels[i] = parts[2 + i].trimmed().toDouble(&ok);
             if (!ok || !std::isfinite(levels[i]))
-                return invalid(spec, tr("'%1' is not a number").arg(parts[2 + i].trimmed()));
+                return invalid(spec, Tr::tr("'%1' is not a number").arg(parts[2 + i].trimmed()));
         }
         if (k.levels == 2 && levels[0] > levels[1])
-            return invalid(spec, tr("window low bound above the high bound"));
+            return invalid(spec, Tr::tr("window low bound above the high bound"));
         trigger.kind = k.kind;
         trigger.level = levels[0];
         trigger.level2 = levels[1];
         return trigger;
     }
-    return invalid(spec, tr("unknown condition '%1'").arg(kind));
+    return invalid(spec, Tr::tr("unknown condition '%1'").arg(kind));
 }
 
 TriggerDetector::TriggerDetector(const Trigger &trigger, double scale, double offset)

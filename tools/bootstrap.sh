@@ -23,13 +23,16 @@ esac
 # listed and opened by GStreamer's v4l2 plugin from gstreamer1.0-plugins-good.
 packages=(
     cmake ninja-build g++ pkg-config
-    qt6-base-dev qt6-serialbus-dev libqt6serialbus6 qt6-l10n-tools
+    qt6-base-dev qt6-serialbus-dev libqt6serialbus6
+    qt6-l10n-tools qt6-translations-l10n                # lupdate/lrelease; Qt's German texts
     libqcustomplot-dev libeigen3-dev
     libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
     qt6-multimedia-dev gstreamer1.0-plugins-good
     fonts-dejavu-core xvfb xauth
     python3 librsvg2-bin                                 # man pages from --help, PNG icons
     desktop-file-utils appstream bash-completion         # tst_packaging's validators
+    python3-can                                          # a third-party CANopen master in tests
+    clang-format                                         # tst_format
 )
 # The .deb: dpkg-shlibdeps (dpkg-dev) and file for its dependencies, lintian to check it.
 if [ "$mode" = deb ]; then
@@ -50,7 +53,7 @@ fi
 
 build_dir=${BUILD_DIR:-build}
 werror=OFF
-[ "${CI:-}" = "true" ] && werror=ON
+[ "${CI:-}" = "true" ] || [ "${DRIVEBENCH_WERROR:-}" = "ON" ] && werror=ON
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEBENCH_WERROR="$werror"
 cmake --build "$build_dir" --parallel "$(nproc)"
 

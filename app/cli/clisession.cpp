@@ -2,8 +2,17 @@
 
 #include "canopen/canopenconnection.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -82,8 +91,7 @@ Result<void> Session::open(const QString &uriText)
         // --sdo is the URI's ?sdo= given on the command line.
         const ProtocolInfo *protocol = m_registry.find(plan->uri.scheme());
         if (!protocol || protocol->key != u"canopen")
-            return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("--sdo needs a canopen+... URI"));
+            return Error(Error::Kind::InvalidArgument, Tr::tr("--sdo needs a canopen+... URI"));
         if (const auto mode = canopen::CanopenConnection::sdoModeFromText(m_options.sdoMode); !mode)
             return mode.error();
         plan.value().uri.setQueryValue(QStringLiteral("sdo"), m_options.sdoMode);

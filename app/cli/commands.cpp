@@ -9,6 +9,15 @@
 
 #include "core/printable.h"
 #include "core/valuecodec.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -33,9 +42,9 @@ int listProtocols(Context &c)
         c.out << p.scheme.leftJustified(schemeWidth + 2)
               << p.uriPattern.leftJustified(patternWidth + 2) << p.title;
         if (p.defaultPort >= 0)
-            c.out << " (default port " << p.defaultPort << ")";
+            c.out << Tr::tr(" (default port %1)").arg(p.defaultPort);
         const AddressFormat &format = p.addressFormat ? *p.addressFormat : AddressFormat::canopen();
-        c.out << ", addresses like " << format.example();
+        c.out << Tr::tr(", addresses like %1").arg(format.example());
         c.out << Qt::endl;
     }
     return ExitOk;
@@ -50,9 +59,8 @@ Result<DataType> typeFor(Context &c, const ObjectDef *def)
         return DataType::Integer64;
     const auto t = datatype::fromName(c.type);
     if (!t)
-        return Error(
-            Error::Kind::InvalidArgument,
-            QStringLiteral("unknown type '%1' (e.g. u16, i32, UNSIGNED8, REAL32)").arg(c.type));
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("unknown type '%1' (e.g. u16, i32, UNSIGNED8, REAL32)").arg(c.type));
     return *t;
 }
 
@@ -85,7 +93,7 @@ Result<ObjectTarget> openObject(Context &c, Session &session)
         ObjectDictionary dictionary = connection->dictionary();
         ObjectDef def;
         def.address = *address;
-        def.name = QStringLiteral("(not in the description)");
+        def.name = Tr::tr("(not in the description)");
         def.type = *type;
         dictionary.insert(def);
         connection->setDictionary(dictionary);
@@ -131,9 +139,8 @@ int read(Context &c)
     // Strings come from the device (e.g. 1008h): escaped, so that one value stays one line.
     if (c.options.verbose) {
         c.out << session.addressFormat().format(target->address) << ' '
-              << printable(target->def ? target->def->name : QStringLiteral("(unknown object)"))
-              << " = " << printable(target->def ? target->def->displayText(raw, format) : text)
-              << Qt::endl;
+              << printable(target->def ? target->def->name : Tr::tr("(unknown object)")) << " = "
+              << printable(target->def ? target->def->displayText(raw, format) : text) << Qt::endl;
     } else {
         c.out << printable(text) << Qt::endl;
     }
@@ -143,9 +150,9 @@ int read(Context &c)
 int write(Context &c)
 {
     if (c.file.isEmpty() != (c.args.size() == 3))
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("write takes either VALUE or --file FILE")));
+        return fail(
+            c,
+            Error(Error::Kind::InvalidArgument, Tr::tr("write takes either VALUE or --file FILE")));
     Session session(c.registry, c.options);
     const auto target = openObject(c, session);
     if (!target)
@@ -176,9 +183,8 @@ int refgo(Context &c)
     if (!conn->capabilities().testFlag(DeviceConnection::Capability::RawCommands))
         return fail(
             c,
-            Error(
-                Error::Kind::InvalidArgument,
-                QStringLiteral("'refgo' needs a refgo:// URI, not %1").arg(conn->uri().scheme())));
+            Error(Error::Kind::InvalidArgument,
+                  Tr::tr("'refgo' needs a refgo:// URI, not %1").arg(conn->uri().scheme())));
     const auto result = Reply::wait(conn->rawCommand(c.args.at(1)));
     if (!result)
         return fail(c, result.error());
@@ -192,60 +198,97 @@ int refgo(Context &c)
 const QList<Command> &commands()
 {
     static const QList<Command> list = {
-        { "list-protocols", "", "list the protocols and their URI forms", 0, 0, listProtocols },
+        { "list-protocols", "", QT_TRANSLATE_NOOP("cli", "list the protocols and their URI forms"),
+          0, 0, listProtocols },
         { "read", "URI ADDRESS",
-          "read one object, e.g. read refgo://192.168.2.150 6041:0 (ADDRESS as the protocol "
-          "writes it: list-protocols shows an example)",
+          QT_TRANSLATE_NOOP(
+              "cli",
+              "read one object, e.g. read refgo://192.168.2.150 6041:0 (ADDRESS as the protocol "
+              "writes it: list-protocols shows an example)"),
           2, 2, read },
         { "write", "URI ADDRESS VALUE|--file FILE",
-          "write one object, e.g. write refgo://HOST 6083:0 2000", 2, 3, write },
-        { "refgo", "URI COMMAND", "send one RefGo command and print its result lines, e.g. TP", 2,
+          QT_TRANSLATE_NOOP("cli", "write one object, e.g. write refgo://HOST 6083:0 2000"), 2, 3,
+          write },
+        { "refgo", "URI COMMAND",
+          QT_TRANSLATE_NOOP("cli", "send one RefGo command and print its result lines, e.g. TP"), 2,
           2, refgo },
-        { "scan", "URI", "list the CANopen nodes on the bus of URI (no ?node= needed)", 1, 1,
-          scan },
+        { "scan", "URI",
+          QT_TRANSLATE_NOOP("cli", "list the CANopen nodes on the bus of URI (no ?node= needed)"),
+          1, 1, scan },
         { "nmt", "URI start|stop|preop|reset|reset-comm [--all]",
-          "NMT command to the URI's node, or to every node with --all", 2, 2, nmt },
+          QT_TRANSLATE_NOOP("cli", "NMT command to the URI's node, or to every node with --all"), 2,
+          2, nmt },
         { "lss",
           "URI inquire|switch-global|switch-selective V,P,R,S|set-node N|set-bitrate B|"
           "store|fastscan",
-          "CiA 305 layer setting services", 2, 3, lss },
-        { "pdo", "URI", "print the node's PDO configuration", 1, 1, pdo },
+          QT_TRANSLATE_NOOP("cli", "CiA 305 layer setting services"), 2, 3, lss },
+        { "pdo", "URI", QT_TRANSLATE_NOOP("cli", "print the node's PDO configuration"), 1, 1, pdo },
         { "nm17x",
           "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
           "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
           "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
           "WORD | watch [--seconds S]",
-          "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)", 2, 4,
-          nm17x, nm17xOptions },
-        { "dcf", "URI -o FILE", "write a DCF of the device's current values (?eds= needed)", 1, 1,
-          dcf },
-        { "eds-check", "FILE", "check an EDS/DCF/XDD/XDC file: summary and warnings", 1, 1,
+          QT_TRANSLATE_NOOP(
+              "cli", "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)"),
+          2, 4, nm17x, nm17xOptions },
+        { "dcf", "URI -o FILE",
+          QT_TRANSLATE_NOOP("cli", "write a DCF of the device's current values (?eds= needed)"), 1,
+          1, dcf },
+        { "eds-check", "FILE",
+          QT_TRANSLATE_NOOP("cli", "check an EDS/DCF/XDD/XDC file: summary and warnings"), 1, 1,
           edsCheck },
-        { "backup", "URI -o FILE", "save every storable object of the device to a parameter set", 1,
-          1, backup, paramsOptions },
+        { "backup", "URI -o FILE",
+          QT_TRANSLATE_NOOP("cli", "save every storable object of the device to a parameter set"),
+          1, 1, backup, paramsOptions },
         { "restore", "URI FILE [--only ADDRESS,...] [--store] [--no-verify]",
-          "write a parameter set (or its selected rows) safely, verify, optionally store", 2, 2,
-          restore, paramsOptions },
-        { "diff", "A B", "compare two parameter sets, each a URI or a file; exit 1 if they differ",
+          QT_TRANSLATE_NOOP(
+              "cli",
+              "write a parameter set (or its selected rows) safely, verify, optionally store"),
+          2, 2, restore, paramsOptions },
+        { "diff", "A B",
+          QT_TRANSLATE_NOOP(
+              "cli", "compare two parameter sets, each a URI or a file; exit 1 if they differ"),
           2, 2, diff, paramsOptions },
-        { "dump", "URI", "print every readable object with its value", 1, 1, dump, paramsOptions },
-        { "morse", "FILE [X,Y,W,H]", "decode the LED Morse IP from a video or a CSV of samples", 1,
+        { "dump", "URI", QT_TRANSLATE_NOOP("cli", "print every readable object with its value"), 1,
+          1, dump, paramsOptions },
+        { "morse", "FILE [X,Y,W,H]",
+          QT_TRANSLATE_NOOP("cli", "decode the LED Morse IP from a video or a CSV of samples"), 1,
           2, morse },
-        { "enable", "URI", "enable the drive (MC_Power on); prints the axis state", 1, 1, enable,
+        { "enable", "URI",
+          QT_TRANSLATE_NOOP("cli", "enable the drive (MC_Power on); prints the axis state"), 1, 1,
+          enable, motionOptions },
+        { "disable", "URI", QT_TRANSLATE_NOOP("cli", "disable the drive (MC_Power off)"), 1, 1,
+          disable, motionOptions },
+        { "reset", "URI", QT_TRANSLATE_NOOP("cli", "fault reset (MC_Reset)"), 1, 1, reset,
           motionOptions },
-        { "disable", "URI", "disable the drive (MC_Power off)", 1, 1, disable, motionOptions },
-        { "reset", "URI", "fault reset (MC_Reset)", 1, 1, reset, motionOptions },
         { "home", "URI METHOD [--vel V --acc A]",
-          "home with a CiA 402 method, e.g. 35; prints the position", 2, 2, home, motionOptions },
+          QT_TRANSLATE_NOOP("cli", "home with a CiA 402 method, e.g. 35; prints the position"), 2,
+          2, home, motionOptions },
         { "move", "URI --abs|--rel|--add VALUE [--vel V --acc A --dec D]",
-          "move and wait for Done; prints the final actual position", 1, 1, move, motionOptions },
-        { "jog", "URI --vel V --time MS", "jog at V for MS ms, then halt; prints the position", 1,
-          1, jog, motionOptions },
+          QT_TRANSLATE_NOOP("cli", "move and wait for Done; prints the final actual position"), 1,
+          1, move, motionOptions },
+        { "jog", "URI --vel V --time MS",
+          QT_TRANSLATE_NOOP("cli", "jog at V for MS ms, then halt; prints the position"), 1, 1, jog,
+          motionOptions },
+        { "velocity", "URI --vel V --time MS [--acc A --dec D]",
+          QT_TRANSLATE_NOOP("cli",
+                            "run the drive's velocity mode at V for MS ms, then halt; prints the "
+                            "position"),
+          1, 1, velocity, motionOptions },
+        { "halt", "URI [--dec D]",
+          QT_TRANSLATE_NOOP("cli", "brake to standstill (MC_Halt); prints the position"), 1, 1,
+          halt, motionOptions },
+        { "stop", "URI [--dec D]",
+          QT_TRANSLATE_NOOP("cli",
+                            "stop (MC_Stop: nothing else starts until standstill); prints the "
+                            "position"),
+          1, 1, stop, motionOptions },
         { "record",
           "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] "
           "[--pdo | --configure-tpdo N [--event-ms MS]] -o FILE",
-          "record objects (host polling or CANopen PDOs) to CSV, optionally triggered", 1, 1,
-          record, recordOptions },
+          QT_TRANSLATE_NOOP(
+              "cli", "record objects (host polling or CANopen PDOs) to CSV, optionally triggered"),
+          1, 1, record, recordOptions },
     };
     return list;
 }

@@ -21,7 +21,16 @@
 #include <QSaveFile>
 #include <QTimer>
 
+#include <QCoreApplication>
 #include <memory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -41,7 +50,7 @@ Result<quint32> number(const QString &text)
         ? text.mid(2).toUInt(&ok, 16)
         : text.toUInt(&ok, 10);
     if (!ok)
-        return usage(QStringLiteral("'%1' is not a number").arg(text));
+        return usage(Tr::tr("'%1' is not a number").arg(text));
     return v;
 }
 
@@ -78,7 +87,7 @@ int scan(Context &c)
     if (nodes.isEmpty())
         return fail(c,
                     Error(Error::Kind::Timeout,
-                          QStringLiteral("no CANopen node answered on %1 within %2 ms")
+                          Tr::tr("no CANopen node answered on %1 within %2 ms")
                               .arg(session.bus()->name())
                               .arg(c.options.requestTimeoutMs)));
     return ExitOk;
@@ -95,8 +104,8 @@ int nmt(Context &c)
     };
     if (!kCommands.contains(c.args.at(1)))
         return fail(c,
-                    usage(QStringLiteral("unknown NMT command '%1' (start, stop, preop, reset, "
-                                         "reset-comm)")
+                    usage(Tr::tr("unknown NMT command '%1' (start, stop, preop, reset, "
+                                 "reset-comm)")
                               .arg(c.args.at(1))));
     const NmtCommand command = kCommands.value(c.args.at(1));
     NodeId node = NmtMaster::kAllNodes;
@@ -104,7 +113,7 @@ int nmt(Context &c)
         const auto uri = ConnectionUri::parse(c.args.at(0));
         const auto id = uri ? CanopenConnection::nodeFromUri(*uri) : Result<NodeId>(uri.error());
         if (!id)
-            return fail(c, id.error().prefixed(QStringLiteral("nmt (or give --all)")));
+            return fail(c, id.error().prefixed(Tr::tr("nmt (or give --all)")));
         node = *id;
     }
     NetworkSession session;
@@ -132,7 +141,7 @@ int nmt(Context &c)
                              confirmation.quit();
                      });
     if (!master.send(command, node))
-        return fail(c, Error(Error::Kind::Disconnected, QStringLiteral("cannot send NMT")));
+        return fail(c, Error(Error::Kind::Disconnected, Tr::tr("cannot send NMT")));
     if (node == NmtMaster::kAllNodes) {
         session.flush(1, c.options.requestTimeoutMs);
         c.out << "sent " << NmtMaster::commandName(command) << " to all nodes" << Qt::endl;
@@ -160,7 +169,7 @@ int lss(Context &c)
                                         "fastscan" };
     if (!kActions.contains(action))
         return fail(c,
-                    usage(QStringLiteral("unknown LSS action '%1' (%2)")
+                    usage(Tr::tr("unknown LSS action '%1' (%2)")
                               .arg(action, kActions.join(QLatin1String(", ")))));
     // Arguments first: a usage error needs no bus.
     LssAddress address;
@@ -172,8 +181,8 @@ int lss(Context &c)
                               &address.serial };
         if (parts.size() != 4)
             return fail(c,
-                        usage(QStringLiteral("switch-selective takes VENDOR,PRODUCT,REVISION,"
-                                             "SERIAL (e.g. 0xEC,0x71,0x10001,0x4D52F567)")));
+                        usage(Tr::tr("switch-selective takes VENDOR,PRODUCT,REVISION,"
+                                     "SERIAL (e.g. 0xEC,0x71,0x10001,0x4D52F567)")));
         for (int i = 0; i < 4; ++i) {
             const auto v = number(parts.at(i).trimmed());
             if (!v)
@@ -183,7 +192,7 @@ int lss(Context &c)
     } else if (action == u"set-node") {
         const auto v = number(value);
         if (!v || *v < 1 || *v > 127)
-            return fail(c, usage(QStringLiteral("set-node takes a node id 1..127")));
+            return fail(c, usage(Tr::tr("set-node takes a node id 1..127")));
         nodeId = int(*v);
     } else if (action == u"set-bitrate") {
         const bool kilo = value.endsWith(QLatin1Char('k'));
@@ -191,8 +200,8 @@ int lss(Context &c)
         bitTiming = v ? lss::bitTimingIndex(int(*v) * (kilo ? 1000 : 1)) : -1;
         if (bitTiming < 0)
             return fail(c,
-                        usage(QStringLiteral("set-bitrate takes a CiA bit rate: 1000k, 800k, "
-                                             "500k, 250k, 125k, 100k, 50k, 20k or 10k")));
+                        usage(Tr::tr("set-bitrate takes a CiA bit rate: 1000k, 800k, "
+                                     "500k, 250k, 125k, 100k, 50k, 20k or 10k")));
     }
     NetworkSession session;
     if (auto opened = session.open(c.args.at(0), c.options.connectTimeoutMs); !opened)
@@ -202,7 +211,7 @@ int lss(Context &c)
     const auto done = [&](Reply *reply, const QString &what) -> int {
         const auto result = Reply::wait(reply);
         if (!result)
-            return fail(c, result.error().prefixed(QStringLiteral("LSS %1").arg(what)));
+            return fail(c, result.error().prefixed(Tr::tr("LSS %1").arg(what)));
         c.out << what << ": ok" << Qt::endl;
         return ExitOk;
     };
@@ -216,17 +225,16 @@ int lss(Context &c)
     if (action == u"switch-selective")
         return done(master.switchModeSelective(address), QStringLiteral("switch-selective"));
     if (action == u"set-node")
-        return done(master.configureNodeId(NodeId(nodeId)),
-                    QStringLiteral("set-node %1").arg(nodeId));
+        return done(master.configureNodeId(NodeId(nodeId)), Tr::tr("set-node %1").arg(nodeId));
     if (action == u"set-bitrate")
         return done(master.configureBitTiming(quint8(bitTiming)),
-                    QStringLiteral("set-bitrate %1").arg(value));
+                    Tr::tr("set-bitrate %1").arg(value));
     if (action == u"store")
         return done(master.storeConfiguration(), QStringLiteral("store"));
     if (action == u"fastscan") {
         const auto found = Reply::wait(master.fastscan());
         if (!found)
-            return fail(c, found.error().prefixed(QStringLiteral("LSS fastscan")));
+            return fail(c, found.error().prefixed(Tr::tr("LSS fastscan")));
         c.out << "found " << found->value<LssAddress>().toString() << " (now in configuration mode)"
               << Qt::endl;
         return ExitOk;
@@ -236,9 +244,8 @@ int lss(Context &c)
     for (quint8 cs = lss::InquireVendor; cs <= lss::InquireNodeId; ++cs) {
         const auto v = Reply::wait(master.inquire(cs));
         if (!v)
-            return fail(
-                c,
-                v.error().prefixed(QStringLiteral("LSS inquire (is a slave in configuration mode? "
+            return fail(c,
+                        v.error().prefixed(Tr::tr("LSS inquire (is a slave in configuration mode? "
                                                   "use switch-selective or switch-global first)")));
         const quint32 n = quint32(v->toULongLong());
         c.out << kNames[cs - lss::InquireVendor] << ' '
@@ -257,11 +264,11 @@ int pdo(Context &c)
     DeviceConnection *conn = session.connection();
     const NetworkNode at = networkNodeOf(conn);
     if (!at)
-        return fail(c, usage(QStringLiteral("pdo needs a canopen+... URI")));
+        return fail(c, usage(Tr::tr("pdo needs a canopen+... URI")));
     PdoClient client(at.network->sdo());
     const auto read = Reply::wait(client.readAll(at.node, conn->dictionary()));
     if (!read)
-        return fail(c, read.error().prefixed(QStringLiteral("reading the PDO configuration")));
+        return fail(c, read.error().prefixed(Tr::tr("reading the PDO configuration")));
     const auto configs = read->value<QList<PdoConfig>>();
     for (const PdoConfig &config : configs) {
         c.out << config.toString() << Qt::endl;
@@ -280,14 +287,14 @@ int pdo(Context &c)
 int dcf(Context &c)
 {
     if (c.output.isEmpty())
-        return fail(c, usage(QStringLiteral("dcf needs the output file: -o FILE")));
+        return fail(c, usage(Tr::tr("dcf needs the output file: -o FILE")));
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
     const ObjectDictionary &dict = session.connection()->dictionary();
     if (dict.isEmpty())
         return fail(c,
-                    usage(QStringLiteral("no device description for %1: give ?eds=FILE")
+                    usage(Tr::tr("no device description for %1: give ?eds=FILE")
                               .arg(session.connection()->uri().toString())));
     QMap<ObjectAddress, QVariant> values;
     int skipped = 0;
@@ -307,8 +314,9 @@ int dcf(Context &c)
                     QStringLiteral("reading %1").arg(session.addressFormat().format(def.address))));
         ++skipped;
         if (c.options.verbose)
-            c.err << "warning: " << session.addressFormat().format(def.address) << ": "
-                  << value.error().message() << Qt::endl;
+            c.err << Tr::tr("warning: %1: %2")
+                         .arg(session.addressFormat().format(def.address), value.error().message())
+                  << Qt::endl;
     }
     DcfCommissioning commissioning;
     if (const NetworkNode at = networkNodeOf(session.connection()))
@@ -316,8 +324,7 @@ int dcf(Context &c)
     if (auto written = writeDcf(c.output, dict, values, commissioning); !written)
         return fail(c, written.error());
     c.out << "wrote " << c.output << ": " << values.size() << " values"
-          << (skipped ? QStringLiteral(", %1 objects not readable").arg(skipped) : QString())
-          << Qt::endl;
+          << (skipped ? Tr::tr(", %1 objects not readable").arg(skipped) : QString()) << Qt::endl;
     return ExitOk;
 }
 
@@ -334,9 +341,9 @@ int saveValueToFile(Context &c, DataType type, const QVariant &raw)
         return fail(c, encoded.error());
     QSaveFile file(c.file);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        return fail(c,
-                    Error(Error::Kind::Io,
-                          QStringLiteral("cannot write %1: %2").arg(c.file, file.errorString())));
+        return fail(
+            c,
+            Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(c.file, file.errorString())));
     if (c.options.verbose)
         c.out << "wrote " << bytes.size() << " bytes to " << c.file << Qt::endl;
     return ExitOk;
@@ -346,8 +353,7 @@ Result<QVariant> loadValueFromFile(const Context &c, const ObjectDef *def, DataT
 {
     QFile file(c.file);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot read %1: %2").arg(c.file, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot read %1: %2").arg(c.file, file.errorString()));
     const QByteArray bytes = file.readAll();
     if (!def && c.type.isEmpty())
         return QVariant(bytes); // unknown object: the bytes as they are

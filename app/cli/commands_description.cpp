@@ -3,7 +3,16 @@
 #include "core/printable.h"
 #include "description/devicedescription.h"
 
+#include <QCoreApplication>
 #include <QSet>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -70,8 +79,8 @@ int edsCheck(Context &c)
     o << "PDO-mappable: " << pdo << Qt::endl;
     if (!load.nodeIdDefaults.isEmpty())
         o << "$NODEID defaults: " << load.nodeIdDefaults.size()
-          << (load.nodeId ? QStringLiteral(" (resolved for node %1)").arg(*load.nodeId)
-                          : QStringLiteral(" (symbolic, no node id)"))
+          << (load.nodeId ? Tr::tr(" (resolved for node %1)").arg(*load.nodeId)
+                          : Tr::tr(" (symbolic, no node id)"))
           << Qt::endl;
     if (load.nodeId || load.bitrateKbit)
         o << "commissioning: node id " << (load.nodeId ? QString::number(*load.nodeId) : u"-"_qs)

@@ -2,6 +2,15 @@
 
 #include "morse/decode/decoder.h"
 #include "morse/input/morseinput.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -12,8 +21,9 @@ int morse(Context &c)
     if (c.args.size() > 1) {
         region = morseio::parseRegion(c.args.at(1));
         if (!region) {
-            c.err << "drivebench-cli: region must be X,Y,W,H in frame pixels, got \""
-                  << c.args.at(1) << "\"" << Qt::endl;
+            c.err << Tr::tr("drivebench-cli: region must be X,Y,W,H in frame pixels, got \"%1\"")
+                         .arg(c.args.at(1))
+                  << Qt::endl;
             return ExitUsage;
         }
     }
@@ -30,8 +40,9 @@ int morse(Context &c)
         c.out << Qt::endl;
     }
     if (rec->frame.isNull() == false && rec->region.isEmpty()) {
-        c.err << "drivebench-cli: " << path
-              << ": no LED found: no region of the video blinks (give the region as X,Y,W,H)"
+        c.err << Tr::tr("drivebench-cli: %1: no LED found: no region of the video blinks (give "
+                        "the region as X,Y,W,H)")
+                     .arg(path)
               << Qt::endl;
         return ExitFailure;
     }

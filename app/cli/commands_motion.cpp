@@ -14,6 +14,14 @@
 #include <memory>
 #include <optional>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
+
 namespace db::cli {
 
 using namespace motion;
@@ -80,18 +88,33 @@ struct RestoreSupervision
         if (!supervision || !supervision->isArmed())
             return;
         if (auto restored = Reply::wait(supervision->disarm()); !restored)
-            c.err << "drivebench-cli: warning: " << restored.error().message() << Qt::endl;
+            c.err << Tr::tr("drivebench-cli: warning: %1").arg(restored.error().message())
+                  << Qt::endl;
     }
 };
+
+// Arms the drive's own watch of this process where the connection offers one (CANopen node
+// guarding or heartbeat with 6007h); null where none exists.
+std::unique_ptr<canopen::DriveSupervision> superviseDrive(Context &c, Axis &axis)
+{
+    DeviceConnection *conn = axis.session.connection();
+    if (canopen::DriveSupervision::modeFor(conn) == canopen::DriveSupervision::Mode::None)
+        return nullptr;
+    auto supervision = std::make_unique<canopen::DriveSupervision>(conn);
+    if (auto armed = Reply::wait(supervision->arm()); !armed)
+        c.err << Tr::tr("drivebench-cli: warning: %1").arg(armed.error().message()) << Qt::endl;
+    else if (c.options.verbose)
+        c.out << "supervision: " << supervision->description() << Qt::endl;
+    return supervision;
+}
 
 Result<double> number(Context &c, const QString &option)
 {
     bool ok = false;
     const double v = c.parser->value(option).toDouble(&ok);
     if (!ok)
-        return Error(
-            Error::Kind::InvalidArgument,
-            QStringLiteral("--%1 takes a number, not '%2'").arg(option, c.parser->value(option)));
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("--%1 takes a number, not '%2'").arg(option, c.parser->value(option)));
     return v;
 }
 
@@ -103,7 +126,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     if (c.parser && c.parser->isSet(kWait)) {
         const auto w = number(c, kWait);
         if (!w || *w <= 0)
-            return Error(Error::Kind::InvalidArgument, QStringLiteral("--wait takes ms > 0"));
+            return Error(Error::Kind::InvalidArgument, Tr::tr("--wait takes ms > 0"));
         axis->waitMs = int(*w);
     }
     if (auto opened = axis->session.open(c.args.at(0)); !opened)
@@ -112,7 +135,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     const ObjectDictionary &dict = conn->dictionary();
     if (!dict.contains(cia402::obj::PositionActual))
         return Error(Error::Kind::NotSupported,
-                     QStringLiteral("%1: no CiA 402 drive description (give ?eds=FILE)")
+                     Tr::tr("%1: no CiA 402 drive description (give ?eds=FILE)")
                          .arg(conn->uri().toString()));
     axis->cia = std::make_unique<Cia402Axis>(conn);
     axis->rotary =
@@ -120,7 +143,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     if (axis->rotary)
         axis->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
     if (auto init = Reply::wait(axis->cia->initialize()); !init)
-        return init.error().prefixed(QStringLiteral("reading the scaling"));
+        return init.error().prefixed(Tr::tr("reading the scaling"));
     QHash<ObjectAddress, QVariant> values;
     for (ObjectAddress a : axislimits::objects(dict))
         if (auto v = axis->session.read(a))
@@ -130,7 +153,7 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
         axislimits::fromValues(values, dict, axis->cia->scaling(), axis->rotary));
     axis->model->setWatchdogTimeout(MotionAxis::kMaxWatchdogMs);
     if (!waitRounds(*axis, kFirstStatusRounds, c.options.requestTimeoutMs * 4))
-        return Error(Error::Kind::Timeout, QStringLiteral("no status from the drive"));
+        return Error(Error::Kind::Timeout, Tr::tr("no status from the drive"));
     return axis;
 }
 
@@ -154,7 +177,7 @@ int runToEnd(Context &c, Axis &axis, MotionCommand &command)
             axis, [&] { return !axis.cia->status().powered; }, kStopFlushMs);
         return fail(c,
                     Error(Error::Kind::Timeout,
-                          QStringLiteral("%1 not done within %2 ms (--wait); axis stopped")
+                          Tr::tr("%1 not done within %2 ms (--wait); axis stopped")
                               .arg(command.name())
                               .arg(axis.waitMs)));
     }
@@ -194,23 +217,25 @@ int power(Context &c, CommandKind kind, bool on)
 
 QList<QCommandLineOption> motionOptions()
 {
-    const auto tr = [](const char *text) {
-        return QCoreApplication::translate("cli", text);
-    };
     return {
-        QCommandLineOption(kAbs, tr("move: absolute target (user units)."), QStringLiteral("pos")),
-        QCommandLineOption(kRel, tr("move: distance from the actual position."),
+        QCommandLineOption(kAbs, Tr::tr("move: absolute target (user units)."),
+                           QStringLiteral("pos")),
+        QCommandLineOption(kRel, Tr::tr("move: distance from the actual position."),
                            QStringLiteral("dist")),
-        QCommandLineOption(kAdd, tr("move: distance from the last target (MC_MoveAdditive)."),
+        QCommandLineOption(kAdd, Tr::tr("move: distance from the last target (MC_MoveAdditive)."),
                            QStringLiteral("dist")),
-        QCommandLineOption(kVel, tr("move, jog, home: velocity (units/s)."), QStringLiteral("v")),
-        QCommandLineOption(kAcc, tr("move, jog, home: acceleration (units/s²)."),
+        QCommandLineOption(kVel, Tr::tr("move, jog, velocity, home: velocity (units/s)."),
+                           QStringLiteral("v")),
+        QCommandLineOption(kAcc, Tr::tr("move, jog, home: acceleration (units/s²)."),
                            QStringLiteral("a")),
-        QCommandLineOption(kDec, tr("move, jog: deceleration (units/s²)."), QStringLiteral("d")),
-        QCommandLineOption(kTime, tr("jog: how long to jog (ms)."), QStringLiteral("ms")),
+        QCommandLineOption(kDec,
+                           Tr::tr("move, jog, velocity, halt, stop: deceleration (units/s²)."),
+                           QStringLiteral("d")),
+        QCommandLineOption(kTime, Tr::tr("jog, velocity: how long to move (ms)."),
+                           QStringLiteral("ms")),
         QCommandLineOption(kWait,
-                           tr("motion commands: longest wait for the end (ms, default "
-                              "60000)."),
+                           Tr::tr("motion commands: longest wait for the end (ms, default "
+                                  "60000)."),
                            QStringLiteral("ms")),
     };
 }
@@ -235,10 +260,10 @@ int home(Context &c)
     bool ok = false;
     const int method = c.args.at(1).toInt(&ok);
     if (!ok)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("METHOD is a CiA 402 homing method number, not '%1'")
-                              .arg(c.args.at(1))));
+        return fail(
+            c,
+            Error(Error::Kind::InvalidArgument,
+                  Tr::tr("METHOD is a CiA 402 homing method number, not '%1'").arg(c.args.at(1))));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
@@ -283,7 +308,7 @@ int move(Context &c)
     if (given != 1)
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("move takes exactly one of --abs, --rel, --add")));
+                          Tr::tr("move takes exactly one of --abs, --rel, --add")));
     MoveParams p;
     if (const auto v = number(c, option); v)
         p.position = *v;
@@ -321,7 +346,7 @@ int jog(Context &c)
     if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("jog needs --vel V (signed) and --time MS")));
+                          Tr::tr("jog needs --vel V (signed) and --time MS")));
     const auto v = number(c, kVel);
     const auto t = number(c, kTime);
     if (!v || !t)
@@ -329,7 +354,7 @@ int jog(Context &c)
     if (*t <= 0 || *t > kDefaultWaitMs)
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+                          Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
@@ -348,15 +373,7 @@ int jog(Context &c)
     }
     p.jerk = axis.model->config().maxJerk;
     // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
-    DeviceConnection *conn = axis.session.connection();
-    std::unique_ptr<canopen::DriveSupervision> supervision;
-    if (canopen::DriveSupervision::modeFor(conn) != canopen::DriveSupervision::Mode::None) {
-        supervision = std::make_unique<canopen::DriveSupervision>(conn);
-        if (auto armed = Reply::wait(supervision->arm()); !armed)
-            c.err << "drivebench-cli: warning: " << armed.error().message() << Qt::endl;
-        else if (c.options.verbose)
-            c.out << "supervision: " << supervision->description() << Qt::endl;
-    }
+    const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
     // In leases renewed while this process runs: killed, frozen or cut off, it leaves a drive
     // that brakes by itself at most LeasedMove::leaseTimeMs() after the last renewal.
@@ -388,8 +405,8 @@ int jog(Context &c)
             axis.model->stopNow();
             return fail(c,
                         Error(Error::Kind::Timeout,
-                              QStringLiteral("MC_Halt not done within %1 ms (--wait); axis "
-                                             "stopped")
+                              Tr::tr("MC_Halt not done within %1 ms (--wait); axis "
+                                     "stopped")
                                   .arg(axis.waitMs)));
         }
         if (halt.status() != MotionCommand::Status::Done)
@@ -397,6 +414,109 @@ int jog(Context &c)
     }
     printPosition(c, axis);
     return ExitOk;
+}
+
+// MC_MoveVelocity for --time ms, then MC_Halt. Not leased: the drive's velocity mode runs until
+// told otherwise, so only drive-side supervision (CANopen) stops it if this process dies.
+int velocity(Context &c)
+{
+    if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("velocity needs --vel V (signed) and --time MS")));
+    const auto v = number(c, kVel);
+    const auto t = number(c, kTime);
+    if (!v || !t)
+        return fail(c, !v ? v.error() : t.error());
+    if (*t <= 0 || *t > kDefaultWaitMs)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.velocity = *v;
+    p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
+    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    for (const auto &[name, field] :
+         { std::pair { kAcc, &p.acceleration }, { kDec, &p.deceleration } }) {
+        if (!c.parser->isSet(name))
+            continue;
+        const auto x = number(c, name);
+        if (!x)
+            return fail(c, x.error());
+        *field = *x;
+    }
+    p.jerk = axis.model->config().maxJerk;
+    const auto supervision = superviseDrive(c, axis);
+    const RestoreSupervision restore { supervision.get(), c };
+    if (!supervision)
+        c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
+                 "drivebench-cli dies on this connection (jog moves in leases)"
+              << Qt::endl;
+    MotionCommand command(axis.model.get(), CommandKind::MoveVelocity);
+    command.setParams(p);
+    command.setExecute(true);
+    const QDeadlineTimer until { qint64(*t) };
+    waitUntil(
+        axis,
+        [&] {
+            return until.hasExpired() || command.status() == MotionCommand::Status::Error
+                || command.status() == MotionCommand::Status::CommandAborted;
+        },
+        int(*t) + kStopFlushMs);
+    if (command.status() == MotionCommand::Status::Error) {
+        if (command.refusal() != Refusal::None) {
+            c.err << "drivebench-cli: " << command.error().message() << Qt::endl;
+            return ExitDeviceError;
+        }
+        return fail(c, command.error());
+    }
+    MotionCommand halt(axis.model.get(), CommandKind::Halt);
+    halt.setParams(p);
+    if (const int rc = runToEnd(c, axis, halt); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+namespace {
+// MC_Halt / MC_Stop of whatever moves the drive (this or another tool): brakes with --dec or the
+// drive's 6084h and waits for standstill.
+int brake(Context &c, CommandKind kind)
+{
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    if (c.parser->isSet(kDec)) {
+        const auto d = number(c, kDec);
+        if (!d)
+            return fail(c, d.error());
+        p.deceleration = *d;
+    }
+    p.jerk = axis.model->config().maxJerk;
+    MotionCommand command(axis.model.get(), kind);
+    command.setParams(p);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+} // namespace
+
+int halt(Context &c)
+{
+    return brake(c, CommandKind::Halt);
+}
+
+int stop(Context &c)
+{
+    return brake(c, CommandKind::Stop);
 }
 
 } // namespace db::cli

@@ -17,7 +17,12 @@ namespace db::cli {
 //   move URI --abs|--rel|--add VALUE [--vel V --acc A --dec D]
 //                              waits for Done, prints the final actual position; the profile
 //                              defaults to the drive's 6081h/6083h/6084h
-//   jog URI --vel V --time MS  MC_MoveVelocity for MS ms, then MC_Halt; prints the position
+//   jog URI --vel V --time MS  leased moves at V for MS ms, then MC_Halt; prints the position
+//   velocity URI --vel V --time MS
+//                              MC_MoveVelocity (the drive's velocity mode) for MS ms, then
+//                              MC_Halt; prints the position
+//   halt URI [--dec D]         MC_Halt of whatever moves the drive; prints the position
+//   stop URI [--dec D]         MC_Stop (nothing else starts until standstill); prints the position
 constexpr int kDefaultWaitMs = 60000;
 
 int enable(Context &context);
@@ -26,6 +31,9 @@ int reset(Context &context);
 int home(Context &context);
 int move(Context &context);
 int jog(Context &context);
+int velocity(Context &context);
+int halt(Context &context);
+int stop(Context &context);
 QList<QCommandLineOption> motionOptions();
 
 } // namespace db::cli

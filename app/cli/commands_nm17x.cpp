@@ -27,10 +27,10 @@ constexpr int kDefaultWaitS = 30;
 constexpr int kDefaultWatchS = 5;
 constexpr int kDefaultStepS = 60;
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("cli", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
 
 Error usage(const QString &text)
 {
@@ -42,7 +42,7 @@ Result<NodeId> nodeArg(const QString &text)
     bool ok = false;
     const uint node = text.toUInt(&ok);
     if (!ok || node < 1 || node > 127)
-        return usage(tr("'%1' is not a node id 1..127").arg(text));
+        return usage(Tr::tr("'%1' is not a node id 1..127").arg(text));
     return NodeId(node);
 }
 
@@ -53,7 +53,7 @@ Result<int> intOption(const Context &c, const QString &name, int fallback, int m
     bool ok = false;
     const int v = c.parser->value(name).toInt(&ok);
     if (!ok || v < min || v > max)
-        return usage(tr("--%1 takes a number %2..%3").arg(name).arg(min).arg(max));
+        return usage(Tr::tr("--%1 takes a number %2..%3").arg(name).arg(min).arg(max));
     return v;
 }
 
@@ -83,8 +83,9 @@ int list(Context &c, NetworkSession &session, Nm17xLine &line)
     if (displays.isEmpty())
         return fail(
             c,
-            Error(Error::Kind::Timeout,
-                  tr("no NM170/NM172/NM174 display answered on %1").arg(session.bus()->name())));
+            Error(
+                Error::Kind::Timeout,
+                Tr::tr("no NM170/NM172/NM174 display answered on %1").arg(session.bus()->name())));
     return ExitOk;
 }
 
@@ -104,23 +105,24 @@ int waitInPosition(Context &c, Nm17xLine &line, NodeId node, int seconds)
         if (s.errors)
             return fail(c,
                         Error(Error::Kind::DeviceError,
-                              tr("node %1: %2").arg(node).arg(errorText(s.errors))));
+                              Tr::tr("node %1: %2").arg(node).arg(errorText(s.errors))));
         if (s.status & status::InPosition) {
             c.out << printable(s.toString()) << Qt::endl;
             return ExitOk;
         }
     }
-    return fail(c,
-                Error(Error::Kind::Timeout,
-                      tr("node %1 did not report In Position within %2 s").arg(node).arg(seconds)));
+    return fail(
+        c,
+        Error(Error::Kind::Timeout,
+              Tr::tr("node %1 did not report In Position within %2 s").arg(node).arg(seconds)));
 }
 
 int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
 {
     if (c.args.size() != 4)
         return fail(c,
-                    usage(tr("usage: nm17x URI setpoint NODE MM [--release] [--direct] "
-                             "[--plunge SPEED] [--correction MM]")));
+                    usage(Tr::tr("usage: nm17x URI setpoint NODE MM [--release] [--direct] "
+                                 "[--plunge SPEED] [--correction MM]")));
     const auto node = nodeArg(c.args.at(2));
     const auto value = parseMillimetres(c.args.at(3));
     if (!node || !value)
@@ -131,7 +133,8 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
     if (c.parser->isSet(QStringLiteral("plunge"))) {
         speed = parseSpeed(c.parser->value(QStringLiteral("plunge")));
         if (!speed || direct)
-            return fail(c, usage(tr("--plunge takes slow, medium or fast, and not with --direct")));
+            return fail(
+                c, usage(Tr::tr("--plunge takes slow, medium or fast, and not with --direct")));
     }
     // A correction beyond the 16 bits of the PDO goes to 2010h by SDO first; the PDO then
     // carries -32768, "keep 2010h".
@@ -159,14 +162,14 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
         const auto written =
             Reply::wait(session.network()->sdo()->download(*node, { 0x2010, 0 }, data));
         if (!written)
-            return fail(c, written.error().prefixed(tr("node %1, 2010:0").arg(*node)));
+            return fail(c, written.error().prefixed(Tr::tr("node %1, 2010:0").arg(*node)));
     }
     startNode(session, *node);
     if (auto sent = line.setpoint(*node, *value, kind, correction, speed); !sent)
         return fail(c, sent.error());
     if (kind == SetpointKind::Standard || kind == SetpointKind::Plunge) {
         session.flush(wideCorrection ? 3 : 2, kFlushMs);
-        c.out << tr("node %1: setpoint %2 set (no release)")
+        c.out << Tr::tr("node %1: setpoint %2 set (no release)")
                      .arg(*node)
                      .arg(formatPosition(*value, false))
               << Qt::endl;
@@ -178,19 +181,20 @@ int setpoint(Context &c, NetworkSession &session, Nm17xLine &line)
 int jog(Context &c, NetworkSession &session, Nm17xLine &line)
 {
     if (c.args.size() != 4 || (c.args.at(3) != u"left" && c.args.at(3) != u"right"))
-        return fail(c, usage(tr("usage: nm17x URI jog NODE left|right --speed slow|medium|fast")));
+        return fail(c,
+                    usage(Tr::tr("usage: nm17x URI jog NODE left|right --speed slow|medium|fast")));
     const auto node = nodeArg(c.args.at(2));
     if (!node)
         return fail(c, node.error());
     const auto speed = parseSpeed(c.parser->value(QStringLiteral("speed")));
     if (!speed)
-        return fail(c, usage(tr("jog needs --speed slow, medium or fast")));
+        return fail(c, usage(Tr::tr("jog needs --speed slow, medium or fast")));
     startNode(session, *node);
     const int direction = c.args.at(3) == u"right" ? 1 : -1;
     if (auto sent = line.jog(*node, direction, *speed); !sent)
         return fail(c, sent.error());
     session.flush(2, kFlushMs);
-    c.out << tr("node %1: jogging %2 at %3 speed until stop or limit")
+    c.out << Tr::tr("node %1: jogging %2 at %3 speed until stop or limit")
                  .arg(*node)
                  .arg(c.args.at(3), speedName(*speed))
           << Qt::endl;
@@ -200,7 +204,7 @@ int jog(Context &c, NetworkSession &session, Nm17xLine &line)
 int stop(Context &c, NetworkSession &session, Nm17xLine &line)
 {
     if (c.args.size() != 3)
-        return fail(c, usage(tr("usage: nm17x URI stop NODE|all")));
+        return fail(c, usage(Tr::tr("usage: nm17x URI stop NODE|all")));
     if (c.args.at(2) == u"all") {
         startNode(session, 0);
         if (auto sent = line.stopAll(); !sent)
@@ -214,7 +218,7 @@ int stop(Context &c, NetworkSession &session, Nm17xLine &line)
             return fail(c, sent.error());
     }
     session.flush(2, kFlushMs);
-    c.out << tr("stop sent to %1").arg(c.args.at(2)) << Qt::endl;
+    c.out << Tr::tr("stop sent to %1").arg(c.args.at(2)) << Qt::endl;
     return ExitOk;
 }
 
@@ -222,8 +226,8 @@ int broadcast(Context &c, NetworkSession &session, Nm17xLine &line)
 {
     const QString what = c.args.value(2);
     const QString arg = c.args.value(3);
-    Result<void> sent = usage(tr("usage: nm17x URI broadcast unit mm|inch | show-id [off] | "
-                                 "preset MM | start GROUP | stop"));
+    Result<void> sent = usage(Tr::tr("usage: nm17x URI broadcast unit mm|inch | show-id [off] | "
+                                     "preset MM | start GROUP | stop"));
     startNode(session, 0);
     if (what == u"unit" && (arg == u"mm" || arg == u"inch")) {
         sent = line.setUnit(arg == u"inch");
@@ -235,14 +239,15 @@ int broadcast(Context &c, NetworkSession &session, Nm17xLine &line)
     } else if (what == u"start" && !arg.isEmpty()) {
         bool ok = false;
         const int group = arg.toInt(&ok);
-        sent = ok ? line.startGroup(group) : Result<void>(usage(tr("start takes a group 1..8")));
+        sent =
+            ok ? line.startGroup(group) : Result<void>(usage(Tr::tr("start takes a group 1..8")));
     } else if (what == u"stop" && arg.isEmpty()) {
         sent = line.stopAll();
     }
     if (!sent)
         return fail(c, sent.error());
     session.flush(2, kFlushMs);
-    c.out << tr("broadcast %1 %2 sent on 201h").arg(what, arg).trimmed() << Qt::endl;
+    c.out << Tr::tr("broadcast %1 %2 sent on 201h").arg(what, arg).trimmed() << Qt::endl;
     return ExitOk;
 }
 
@@ -250,16 +255,16 @@ int control(Context &c, NetworkSession &session, Nm17xLine &line)
 {
     if (c.args.size() != 4)
         return fail(c,
-                    usage(tr("usage: nm17x URI control NODE WORD [--setpoint MM] "
-                             "[--correction MM]")));
+                    usage(Tr::tr("usage: nm17x URI control NODE WORD [--setpoint MM] "
+                                 "[--correction MM]")));
     const auto node = nodeArg(c.args.at(2));
     bool ok = false;
     const QString w = c.args.at(3);
     const uint word =
         w.startsWith(u"0x", Qt::CaseInsensitive) ? w.mid(2).toUInt(&ok, 16) : w.toUInt(&ok);
     if (!node || !ok || word > 0xFFFF)
-        return fail(c,
-                    !node ? node.error() : usage(tr("'%1' is not a 16-bit control word").arg(w)));
+        return fail(
+            c, !node ? node.error() : usage(Tr::tr("'%1' is not a 16-bit control word").arg(w)));
     PositionCommand command { 0, kKeepCorrection, quint16(word) };
     if (c.parser->isSet(QStringLiteral("setpoint"))) {
         const auto v = parseMillimetres(c.parser->value(QStringLiteral("setpoint")));
@@ -270,7 +275,7 @@ int control(Context &c, NetworkSession &session, Nm17xLine &line)
     if (c.parser->isSet(QStringLiteral("correction"))) {
         const auto v = parseMillimetres(c.parser->value(QStringLiteral("correction")));
         if (!v || *v < -32767 || *v > 32767)
-            return fail(c, usage(tr("--correction takes -327.67..327.67 mm")));
+            return fail(c, usage(Tr::tr("--correction takes -327.67..327.67 mm")));
         command.correction = qint16(*v);
     }
     if (const auto allowed = classify(command.control); !allowed)
@@ -279,7 +284,9 @@ int control(Context &c, NetworkSession &session, Nm17xLine &line)
     if (auto sent = line.send(*node, command); !sent)
         return fail(c, sent.error());
     session.flush(2, kFlushMs);
-    c.out << tr("node %1: %2 sent").arg(*node).arg(commandName(classify(command.control)->command))
+    c.out << Tr::tr("node %1: %2 sent")
+                 .arg(*node)
+                 .arg(commandName(classify(command.control)->command))
           << Qt::endl;
     return ExitOk;
 }
@@ -290,14 +297,14 @@ int watch(Context &c, NetworkSession &session, Nm17xLine &line)
     if (!seconds)
         return fail(c, seconds.error());
     QObject::connect(&line, &Nm17xLine::tpdo1, &line, [&c](NodeId node, const Tpdo1 &p) {
-        c.out << tr("node %1 TxPDO1 position %2 status %3 errors %4")
+        c.out << Tr::tr("node %1 TxPDO1 position %2 status %3 errors %4")
                      .arg(node)
                      .arg(formatPosition(p.position, false), statusText(p.status),
                           p.errors ? errorText(p.errors) : QStringLiteral("-"))
               << Qt::endl;
     });
     QObject::connect(&line, &Nm17xLine::tpdo2, &line, [&c](NodeId node, const Tpdo2 &p) {
-        c.out << tr("node %1 TxPDO2 position %2 correction %3 status %4")
+        c.out << Tr::tr("node %1 TxPDO2 position %2 correction %3 status %4")
                      .arg(node)
                      .arg(formatPosition(p.position, false), formatPosition(p.correction, false),
                           statusText(p.status))
@@ -305,14 +312,14 @@ int watch(Context &c, NetworkSession &session, Nm17xLine &line)
     });
     QObject::connect(&line, &Nm17xLine::emergency, &line,
                      [&c](NodeId node, quint16 code, quint8 sub, const QString &text) {
-                         c.out << tr("node %1 EMCY %2h sub %3: %4")
+                         c.out << Tr::tr("node %1 EMCY %2h sub %3: %4")
                                       .arg(node)
                                       .arg(QString::number(code, 16).toUpper())
                                       .arg(sub, 2, 16, QLatin1Char('0'))
                                       .arg(printable(text))
                                << Qt::endl;
                      });
-    c.out << tr("watching %1 for %2 s").arg(session.bus()->name()).arg(*seconds) << Qt::endl;
+    c.out << Tr::tr("watching %1 for %2 s").arg(session.bus()->name()).arg(*seconds) << Qt::endl;
     spin(*seconds * 1000);
     return ExitOk;
 }
@@ -325,17 +332,18 @@ int address(Context &c, NetworkSession &session)
     if (!first || !count || !step)
         return fail(c, !first ? first.error() : !count ? count.error() : step.error());
     if (*first < 0)
-        return fail(c, usage(tr("address needs --broadcast FIRST (the first node id)")));
+        return fail(c, usage(Tr::tr("address needs --broadcast FIRST (the first node id)")));
     BroadcastAddressing addressing(session.network());
     addressing.setStepTimeoutMs(*step * 1000);
     QObject::connect(&addressing, &BroadcastAddressing::offering, &addressing, [&c](NodeId node) {
-        c.out << tr("offering node %1: turn the shaft (or press a key) of the display that "
-                    "should become node %1")
+        c.out << Tr::tr("offering node %1: turn the shaft (or press a key) of the display that "
+                        "should become node %1")
                      .arg(node)
               << Qt::endl;
     });
-    QObject::connect(&addressing, &BroadcastAddressing::assigned, &addressing,
-                     [&c](NodeId node) { c.out << tr("node %1 assigned").arg(node) << Qt::endl; });
+    QObject::connect(&addressing, &BroadcastAddressing::assigned, &addressing, [&c](NodeId node) {
+        c.out << Tr::tr("node %1 assigned").arg(node) << Qt::endl;
+    });
     QEventLoop loop;
     QObject::connect(&addressing, &BroadcastAddressing::finished, &loop, &QEventLoop::quit);
     if (auto started = addressing.start(NodeId(*first), *count); !started)
@@ -344,7 +352,7 @@ int address(Context &c, NetworkSession &session)
     QStringList ids;
     for (const NodeId id : addressing.assignedIds())
         ids.append(QString::number(id));
-    c.out << tr("assigned node ids: %1; every node reset")
+    c.out << Tr::tr("assigned node ids: %1; every node reset")
                  .arg(ids.isEmpty() ? QStringLiteral("none") : ids.join(QLatin1String(", ")))
           << Qt::endl;
     session.flush(0, kFlushMs);
@@ -358,29 +366,29 @@ int address(Context &c, NetworkSession &session)
 QList<QCommandLineOption> nm17xOptions()
 {
     return {
-        { QStringLiteral("release"), tr("nm17x setpoint: start the motor at once.") },
-        { QStringLiteral("direct"), tr("nm17x setpoint: with release, without loop.") },
-        { QStringLiteral("plunge"), tr("nm17x setpoint: plunge cut at this speed."),
+        { QStringLiteral("release"), Tr::tr("nm17x setpoint: start the motor at once.") },
+        { QStringLiteral("direct"), Tr::tr("nm17x setpoint: with release, without loop.") },
+        { QStringLiteral("plunge"), Tr::tr("nm17x setpoint: plunge cut at this speed."),
           QStringLiteral("speed") },
-        { QStringLiteral("correction"), tr("nm17x: actual value correction in mm."),
+        { QStringLiteral("correction"), Tr::tr("nm17x: actual value correction in mm."),
           QStringLiteral("mm") },
-        { QStringLiteral("setpoint"), tr("nm17x control: the setpoint in mm."),
+        { QStringLiteral("setpoint"), Tr::tr("nm17x control: the setpoint in mm."),
           QStringLiteral("mm") },
-        { QStringLiteral("speed"), tr("nm17x jog: slow, medium or fast."),
+        { QStringLiteral("speed"), Tr::tr("nm17x jog: slow, medium or fast."),
           QStringLiteral("speed") },
-        { QStringLiteral("broadcast"), tr("nm17x address: first node id of the line."),
+        { QStringLiteral("broadcast"), Tr::tr("nm17x address: first node id of the line."),
           QStringLiteral("id") },
         { QStringLiteral("count"),
-          tr("nm17x address: number of displays (default: until a step "
-             "times out)."),
+          Tr::tr("nm17x address: number of displays (default: until a step "
+                 "times out)."),
           QStringLiteral("n") },
         { QStringLiteral("step-timeout"),
-          tr("nm17x address: seconds the operator has per display (default 60)."),
+          Tr::tr("nm17x address: seconds the operator has per display (default 60)."),
           QStringLiteral("s") },
         { QStringLiteral("position-timeout"),
-          tr("nm17x setpoint: seconds to wait for In Position (default 30)."),
+          Tr::tr("nm17x setpoint: seconds to wait for In Position (default 30)."),
           QStringLiteral("s") },
-        { QStringLiteral("seconds"), tr("nm17x watch: how long to watch (default 5)."),
+        { QStringLiteral("seconds"), Tr::tr("nm17x watch: how long to watch (default 5)."),
           QStringLiteral("s") },
     };
 }
@@ -393,7 +401,7 @@ int nm17x(Context &c)
                                        QStringLiteral("broadcast"), QStringLiteral("address"),
                                        QStringLiteral("control"),   QStringLiteral("watch") };
     if (!kSubs.contains(sub))
-        return fail(c, usage(tr("unknown nm17x command '%1' (%2)").arg(sub, kSubs.join(u'|'))));
+        return fail(c, usage(Tr::tr("unknown nm17x command '%1' (%2)").arg(sub, kSubs.join(u'|'))));
     NetworkSession session;
     if (auto opened = session.open(c.args.at(0), c.options.connectTimeoutMs); !opened)
         return fail(c, opened.error());

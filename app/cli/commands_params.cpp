@@ -3,8 +3,17 @@
 #include "core/printable.h"
 #include "parameters/parameterrunner.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QFileInfo>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -48,7 +57,7 @@ Result<BackupRun> backupFrom(Context &c, Session &session, const QString &uri,
         return opened.error();
     DeviceConnection *connection = session.connection();
     if (connection->dictionary().isEmpty())
-        return usage(QStringLiteral("no device description for %1: give ?eds=FILE")
+        return usage(Tr::tr("no device description for %1: give ?eds=FILE")
                          .arg(connection->uri().toString()));
     ParameterBackup backup(connection);
     backup.setScope(scope);
@@ -63,9 +72,9 @@ Result<BackupRun> backupFrom(Context &c, Session &session, const QString &uri,
     backup.start();
     loop.exec();
     for (const QString &warning : backup.warnings())
-        c.err << "warning: " << printable(warning) << Qt::endl;
+        c.err << Tr::tr("warning: %1").arg(printable(warning)) << Qt::endl;
     for (const BackupFailure &skipped : backup.skipped())
-        c.err << "skipped: " << printable(skipped.text()) << Qt::endl;
+        c.err << Tr::tr("skipped: %1").arg(printable(skipped.text())) << Qt::endl;
     const auto result = backup.result();
     return BackupRun { backup.partialSet(), result ? Error() : result.error(), backup.failures(),
                        backup.objectCount() };
@@ -76,7 +85,7 @@ Result<BackupRun> backupFrom(Context &c, Session &session, const QString &uri,
 QStringList partialComments(const BackupRun &run)
 {
     QStringList lines {
-        QStringLiteral("partial backup: %1 of %2 objects could not be read; not a complete set")
+        Tr::tr("partial backup: %1 of %2 objects could not be read; not a complete set")
             .arg(run.failures.size())
             .arg(run.objects),
     };
@@ -96,26 +105,24 @@ Result<void> checkIdentity(Context &c, Session &session, const ParameterSet &set
     const DeviceIdentity &device = session.connection()->dictionary().identity;
     if (!set.identity.productName.isEmpty() && !device.productName.isEmpty()
         && set.identity.productName != device.productName)
-        return usage(QStringLiteral("%1 is a set for '%2', but %3 is a '%4'")
+        return usage(Tr::tr("%1 is a set for '%2', but %3 is a '%4'")
                          .arg(file, set.identity.productName, uri, device.productName));
     if (!set.productCodeKnown)
-        return usage(QStringLiteral("%1 does not record the product code (1018h.2 could not be "
-                                    "read when it was made), so it cannot be checked against "
-                                    "the device; give --ignore-identity to restore it anyway")
+        return usage(Tr::tr("%1 does not record the product code (1018h.2 could not be "
+                            "read when it was made), so it cannot be checked against "
+                            "the device; give --ignore-identity to restore it anyway")
                          .arg(file));
     if (!session.connection()->dictionary().contains(ObjectAddress(0x1018, 2)))
         return {};
     const auto code = session.read({ 0x1018, 2 });
     if (!code)
-        return code.error().prefixed(
-            QStringLiteral("cannot check the device's product code (1018h.2); "
-                           "--ignore-identity restores without the check"));
+        return code.error().prefixed(Tr::tr("cannot check the device's product code (1018h.2); "
+                                            "--ignore-identity restores without the check"));
     if (code->toULongLong() != set.identity.productCode)
-        return usage(
-            QStringLiteral("%1 is a set for product code 0x%2, but the device reports 0x%3")
-                .arg(file)
-                .arg(set.identity.productCode, 8, 16, QLatin1Char('0'))
-                .arg(code->toULongLong(), 8, 16, QLatin1Char('0')));
+        return usage(Tr::tr("%1 is a set for product code 0x%2, but the device reports 0x%3")
+                         .arg(file)
+                         .arg(set.identity.productCode, 8, 16, QLatin1Char('0'))
+                         .arg(code->toULongLong(), 8, 16, QLatin1Char('0')));
     return {};
 }
 
@@ -139,23 +146,23 @@ QList<QCommandLineOption> paramsOptions()
 {
     return {
         QCommandLineOption(kOnly,
-                           QStringLiteral("restore: only these objects, as the protocol writes "
-                                          "addresses, e.g. 6083:0,6084:0."),
+                           Tr::tr("restore: only these objects, as the protocol writes "
+                                  "addresses, e.g. 6083:0,6084:0."),
                            QStringLiteral("ADDRESS,...")),
         QCommandLineOption(kStore,
-                           QStringLiteral("restore: store to non-volatile memory afterwards "
-                                          "(1010h sub 1 = \"save\") when every row verified.")),
-        QCommandLineOption(kNoVerify, QStringLiteral("restore: do not read each object back.")),
+                           Tr::tr("restore: store to non-volatile memory afterwards "
+                                  "(1010h sub 1 = \"save\") when every row verified.")),
+        QCommandLineOption(kNoVerify, Tr::tr("restore: do not read each object back.")),
         QCommandLineOption(kIgnoreIdentity,
-                           QStringLiteral("restore: skip the product check (a set from another "
-                                          "product, or one whose product code is unknown).")),
+                           Tr::tr("restore: skip the product check (a set from another "
+                                  "product, or one whose product code is unknown).")),
     };
 }
 
 int backup(Context &c)
 {
     if (c.output.isEmpty())
-        return fail(c, usage(QStringLiteral("backup needs the output file: -o FILE")));
+        return fail(c, usage(Tr::tr("backup needs the output file: -o FILE")));
     Session session(c.registry, c.options);
     const auto run = backupFrom(c, session, c.args.at(0), ParameterBackup::Scope::Storable);
     if (!run)
@@ -169,19 +176,19 @@ int backup(Context &c)
     }
     // Never replace a file with less than a complete set: the output stays as it was, and what
     // was read goes beside it with the failures listed.
-    QString where = QStringLiteral("nothing was written");
+    QString where = Tr::tr("nothing was written");
     if (!run->failures.isEmpty()) {
         const QString partial = c.output + QStringLiteral(".partial");
         if (auto saved = run->read.save(partial, partialComments(*run)); saved)
-            where = QStringLiteral("the %1 objects read and the failures are in %2")
+            where = Tr::tr("the %1 objects read and the failures are in %2")
                         .arg(run->read.size())
                         .arg(partial);
         else
             where = saved.error().message();
     }
-    return fail(c,
-                run->error.prefixed(
-                    QStringLiteral("backup incomplete, %1 not written (%2)").arg(c.output, where)));
+    return fail(
+        c,
+        run->error.prefixed(Tr::tr("backup incomplete, %1 not written (%2)").arg(c.output, where)));
 }
 
 int restore(Context &c)
@@ -191,8 +198,7 @@ int restore(Context &c)
     if (!set)
         return failFile(c, set.error());
     if (set->isEmpty())
-        return fail(
-            c, usage(QStringLiteral("%1 holds no object: nothing to restore").arg(c.args.at(1))));
+        return fail(c, usage(Tr::tr("%1 holds no object: nothing to restore").arg(c.args.at(1))));
     // The set's addresses must be written as the device at the URI writes them, and --only
     // names objects in that format too; both are checked before anything is connected.
     const auto format = addressFormatFor(c.registry, c.args.at(0));
@@ -210,20 +216,20 @@ int restore(Context &c)
                 return fail(c, usage(QStringLiteral("--only: %1").arg(address.error().message())));
             if (!set->contains(*address))
                 return fail(c,
-                            usage(QStringLiteral("--only: %1 is not in %2")
+                            usage(Tr::tr("--only: %1 is not in %2")
                                       .arg((*format)->format(*address), c.args.at(1))));
             only.append(*address);
         }
         if (only.isEmpty())
-            return fail(c,
-                        usage(QStringLiteral("--only needs addresses like %1,...")
-                                  .arg((*format)->example())));
+            return fail(
+                c, usage(Tr::tr("--only needs addresses like %1,...").arg((*format)->example())));
     }
     Session session(c.registry, c.options);
     if (auto opened = session.open(c.args.at(0)); !opened)
         return fail(c, opened.error());
     if (c.parser && c.parser->isSet(kIgnoreIdentity))
-        c.err << "warning: --ignore-identity: the set's product is not checked against the device"
+        c.err << Tr::tr("warning: --ignore-identity: the set's product is not checked against "
+                        "the device")
               << Qt::endl;
     else if (auto checked = checkIdentity(c, session, *set); !checked)
         return fail(c, checked.error());
@@ -269,7 +275,7 @@ int diff(Context &c)
             return fail(c, run->error);
         // Objects that could not be read would show as missing: compare the rest, then fail.
         if (run->error.isError() && !readError.isError())
-            readError = run->error.prefixed(QStringLiteral("reading %1").arg(side));
+            readError = run->error.prefixed(Tr::tr("reading %1").arg(side));
         if (!dictionary)
             dictionary = std::make_unique<ObjectDictionary>(session.connection()->dictionary());
         sides.append(run->read);

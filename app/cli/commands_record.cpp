@@ -7,12 +7,21 @@
 #include "scope/recorder.h"
 #include "stopsignals.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <utility>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -36,7 +45,7 @@ Result<double> seconds(Context &c, const QString &name, double fallback)
     bool ok = false;
     const double v = c.parser->value(name).toDouble(&ok);
     if (!ok || !std::isfinite(v) || v < 0)
-        return usage(QStringLiteral("--%1 takes a number of seconds >= 0, not '%2'")
+        return usage(Tr::tr("--%1 takes a number of seconds >= 0, not '%2'")
                          .arg(name, c.parser->value(name)));
     return v;
 }
@@ -62,7 +71,7 @@ Result<int> integer(Context &c, const QString &name, int min, int max, const QSt
     bool ok = false;
     const int v = c.parser->value(name).toInt(&ok);
     if (!ok || v < min || v > max)
-        return usage(QStringLiteral("--%1 takes %2 (%3..%4), not '%5'")
+        return usage(Tr::tr("--%1 takes %2 (%3..%4), not '%5'")
                          .arg(name, what)
                          .arg(min)
                          .arg(max)
@@ -83,34 +92,32 @@ Result<Settings> parseSettings(Context &c)
             if (!address)
                 return address.error();
             if (s.objects.contains(*address))
-                return usage(
-                    QStringLiteral("--obj %1 given twice").arg((*format)->format(*address)));
+                return usage(Tr::tr("--obj %1 given twice").arg((*format)->format(*address)));
             s.objects.append(*address);
         }
     }
     if (s.objects.isEmpty())
-        return usage(QStringLiteral("record needs at least one --obj ADDRESS (e.g. --obj %1)")
+        return usage(Tr::tr("record needs at least one --obj ADDRESS (e.g. --obj %1)")
                          .arg((*format)->example()));
     if (c.output.isEmpty())
-        return usage(QStringLiteral("record needs -o FILE.csv"));
+        return usage(Tr::tr("record needs -o FILE.csv"));
     if (c.parser->isSet(QStringLiteral("rate-ms"))) {
         bool ok = false;
         s.rateMs = c.parser->value(QStringLiteral("rate-ms")).toInt(&ok);
         if (!ok || s.rateMs < 0)
-            return usage(QStringLiteral("--rate-ms takes a number of ms >= 0 (0 = as fast as "
-                                        "the link allows)"));
+            return usage(Tr::tr("--rate-ms takes a number of ms >= 0 (0 = as fast as "
+                                "the link allows)"));
     }
     if (c.parser->isSet(QStringLiteral("capacity"))) {
         bool ok = false;
         s.capacity = c.parser->value(QStringLiteral("capacity")).toLongLong(&ok);
         if (!ok || s.capacity < 1)
-            return usage(QStringLiteral("--capacity takes a number of samples >= 1"));
+            return usage(Tr::tr("--capacity takes a number of samples >= 1"));
     }
     s.pdo = c.parser->isSet(QStringLiteral("pdo"));
     if (c.parser->isSet(QStringLiteral("configure-tpdo"))) {
-        const auto n =
-            integer(c, QStringLiteral("configure-tpdo"), 1, canopen::PdoConfig::kMaxPerDirection,
-                    QStringLiteral("a TPDO number"));
+        const auto n = integer(c, QStringLiteral("configure-tpdo"), 1,
+                               canopen::PdoConfig::kMaxPerDirection, Tr::tr("a TPDO number"));
         if (!n)
             return n.error();
         s.configureTpdo = *n - 1;
@@ -120,9 +127,9 @@ Result<Settings> parseSettings(Context &c)
     }
     if (c.parser->isSet(QStringLiteral("event-ms"))) {
         if (s.configureTpdo < 0)
-            return usage(QStringLiteral("--event-ms goes with --configure-tpdo N"));
-        const auto ms = integer(c, QStringLiteral("event-ms"), 1, 0xFFFF,
-                                QStringLiteral("the event timer in ms"));
+            return usage(Tr::tr("--event-ms goes with --configure-tpdo N"));
+        const auto ms =
+            integer(c, QStringLiteral("event-ms"), 1, 0xFFFF, Tr::tr("the event timer in ms"));
         if (!ms)
             return ms.error();
         s.eventMs = *ms;
@@ -134,7 +141,7 @@ Result<Settings> parseSettings(Context &c)
     s.trigger = c.parser->value(QStringLiteral("trigger"));
     if (s.trigger.isEmpty()) {
         if (s.durationS <= 0)
-            return usage(QStringLiteral("record needs --duration S (> 0) or --trigger SPEC"));
+            return usage(Tr::tr("record needs --duration S (> 0) or --trigger SPEC"));
         return s;
     }
     const auto pre = seconds(c, QStringLiteral("pre"), 0);
@@ -163,39 +170,37 @@ QList<QCommandLineOption> recordOptions()
 {
     return {
         { QStringLiteral("obj"),
-          QStringLiteral("record: an object to record, as the protocol writes addresses "
-                         "(repeatable)."),
+          Tr::tr("record: an object to record, as the protocol writes addresses "
+                 "(repeatable)."),
           QStringLiteral("address") },
         { QStringLiteral("rate-ms"),
-          QStringLiteral("record: sample period per object in ms (default 10; 0 = as fast as "
-                         "the link allows)."),
+          Tr::tr("record: sample period per object in ms (default 10; 0 = as fast as "
+                 "the link allows)."),
           QStringLiteral("ms") },
         { QStringLiteral("duration"),
-          QStringLiteral("record: seconds to record (with --trigger: the default --post)."),
+          Tr::tr("record: seconds to record (with --trigger: the default --post)."),
           QStringLiteral("s") },
         { QStringLiteral("trigger"),
-          QStringLiteral("record: CHANNEL,CONDITION, e.g. 6064:0,rising,100 or 6041:0,bit3,set."),
+          Tr::tr("record: CHANNEL,CONDITION, e.g. 6064:0,rising,100 or 6041:0,bit3,set."),
           QStringLiteral("spec") },
-        { QStringLiteral("pre"), QStringLiteral("record: seconds kept before the trigger."),
+        { QStringLiteral("pre"), Tr::tr("record: seconds kept before the trigger."),
           QStringLiteral("s") },
-        { QStringLiteral("post"), QStringLiteral("record: seconds recorded after the trigger."),
+        { QStringLiteral("post"), Tr::tr("record: seconds recorded after the trigger."),
           QStringLiteral("s") },
-        { QStringLiteral("wait"),
-          QStringLiteral("record: longest wait for the trigger in s (default 30)."),
+        { QStringLiteral("wait"), Tr::tr("record: longest wait for the trigger in s (default 30)."),
           QStringLiteral("s") },
         { QStringLiteral("capacity"),
-          QStringLiteral("record: most samples kept per object (default 10000000)."),
-          QStringLiteral("n") },
+          Tr::tr("record: most samples kept per object (default 10000000)."), QStringLiteral("n") },
         { QStringLiteral("pdo"),
-          QStringLiteral("record: CANopen: sample the objects passively from the TPDOs that "
-                         "carry them (writes nothing).") },
+          Tr::tr("record: CANopen: sample the objects passively from the TPDOs that "
+                 "carry them (writes nothing).") },
         { QStringLiteral("configure-tpdo"),
-          QStringLiteral("record: CANopen: first map the objects into TPDO N (CHANGES the "
-                         "device's PDO configuration), then sample it."),
+          Tr::tr("record: CANopen: first map the objects into TPDO N (CHANGES the "
+                 "device's PDO configuration), then sample it."),
           QStringLiteral("n") },
         { QStringLiteral("event-ms"),
-          QStringLiteral("record: event timer of --configure-tpdo in ms (default --rate-ms, "
-                         "else 10)."),
+          Tr::tr("record: event timer of --configure-tpdo in ms (default --rate-ms, "
+                 "else 10)."),
           QStringLiteral("ms") },
     };
 }
@@ -258,11 +263,12 @@ int record(Context &c)
                          if (state == scope::Recorder::State::Stopped)
                              loop.quit();
                      });
+    // --duration: the recorder ends the recording itself, on its own time base.
     QTimer deadline;
     deadline.setSingleShot(true);
+    deadline.setTimerType(Qt::PreciseTimer);
     if (s.trigger.isEmpty()) {
-        QObject::connect(&deadline, &QTimer::timeout, &recorder, &scope::Recorder::stop);
-        deadline.start(timerMs(s.durationS));
+        recorder.setDurationS(s.durationS);
     } else {
         QObject::connect(&deadline, &QTimer::timeout, &recorder, [&] {
             if (recorder.state() == scope::Recorder::State::Armed) {
@@ -296,8 +302,10 @@ int record(Context &c)
     bool arriving = false;
     QObject::connect(source.get(), &scope::TraceSource::samplesReady, &loop, [&] {
         if (!std::exchange(arriving, true))
-            c.err << "recording: samples arriving -> " << c.output
-                  << " (Ctrl-C stops and writes what was recorded)" << Qt::endl;
+            c.err << Tr::tr("recording: samples arriving -> %1 (Ctrl-C stops and writes what "
+                            "was recorded)")
+                         .arg(c.output)
+                  << Qt::endl;
     });
     recorder.start();
     if (recorder.isRunning()) {
@@ -306,11 +314,13 @@ int record(Context &c)
                   << Qt::endl;
         loop.exec();
     }
-    const double elapsedS = recorder.now();
+    const double elapsedS =
+        std::isnan(recorder.stoppedAt()) ? recorder.now() : recorder.stoppedAt();
     if (pdoSource && pdoSource->framesSeen() == 0 && !failure.isError() && stopSignal == 0)
         return fail(
             c,
-            noPdoError(c, session.connection(), plan, std::min(firstPdoMs, deadline.interval())));
+            noPdoError(c, session.connection(), plan,
+                       std::min(firstPdoMs, timerMs(s.trigger.isEmpty() ? s.durationS : s.waitS))));
     return finishRecording(c,
                            { recorder, pollingSource, elapsedS, failure, stopSignal,
                              triggerTimedOut, s.trigger, s.waitS });

@@ -7,10 +7,12 @@ namespace db::cli {
 // record URI --obj INDEX:SUB [--obj ...] [--rate-ms R] --duration S [--trigger SPEC [--pre S]
 //        [--post S] [--wait S]] [--capacity N] -o FILE.csv
 //
-// Polls the objects from the host (scope::PollingSource, one request in flight, each object
-// every R ms; 0 = as fast as the link allows) and writes the recording as CSV (scope/csv.h:
-// first column time in seconds, one column per object named "INDEX:SUB name").
-// - Without --trigger: records for --duration seconds.
+// Polls the objects from the host (scope::PollingSource, one request in flight per object, each
+// object every R ms on deadlines that do not drift; 0 = as fast as the link allows) and writes the
+// recording as CSV (scope/csv.h: first column time in seconds, one column per object named
+// "INDEX:SUB name").
+// - Without --trigger: records for --duration seconds on the recorder's time base
+//   (Recorder::setDurationS).
 // - With --trigger SPEC (scope::Trigger::parse: "6064:0,rising,100", "6041:0,bit3,set", ...;
 //   the channel must be one of the --obj): prints "armed: ..." once sampling runs, waits at most
 //   --wait seconds (default 30) for the trigger, then keeps --pre seconds before it (default 0)

@@ -3,6 +3,15 @@
 #include "canopen/cannetwork.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/pdoclient.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -11,7 +20,7 @@ namespace {
 // "TPDO1 (COB-ID 0x181)"
 QString pdoName(const scope::PdoChannelPlanEntry &e)
 {
-    return QStringLiteral("TPDO%1 (COB-ID 0x%2)")
+    return Tr::tr("TPDO%1 (COB-ID 0x%2)")
         .arg(e.tpdoNumber + 1)
         .arg(e.mapping.cobId, 3, 16, QLatin1Char('0'));
 }
@@ -25,7 +34,7 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
     const canopen::NetworkNode at = canopen::networkNodeOf(connection);
     if (!at)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("--pdo and --configure-tpdo need a canopen+... URI"));
+                     Tr::tr("--pdo and --configure-tpdo need a canopen+... URI"));
     const ObjectDictionary &dictionary = connection->dictionary();
     if (s.configureTpdo >= 0) {
         canopen::PdoClient client(at.network->sdo());
@@ -34,15 +43,17 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
         // InvalidArgument is refused before any write; a device error may come half way.
         if (!written)
             return written.error().prefixed(
-                QStringLiteral("configuring TPDO%1 of node %2%3")
+                Tr::tr("configuring TPDO%1 of node %2%3")
                     .arg(s.configureTpdo + 1)
                     .arg(at.node)
                     .arg(written.error().kind() == Error::Kind::InvalidArgument
                              ? QString()
-                             : QStringLiteral(" (it may be left disabled)")));
-        c.err << "drivebench-cli: the PDO configuration of node " << at.node
-              << " was changed (RAM only, not stored): "
-              << written->value<canopen::PdoConfig>().toString() << Qt::endl;
+                             : Tr::tr(" (it may be left disabled)")));
+        c.err << Tr::tr("drivebench-cli: the PDO configuration of node %1 was changed (RAM "
+                        "only, not stored): %2")
+                     .arg(at.node)
+                     .arg(written->value<canopen::PdoConfig>().toString())
+              << Qt::endl;
     }
     const auto discovered = Reply::wait(scope::discoverPdoChannels(connection, s.objects));
     if (!discovered)
@@ -51,8 +62,8 @@ Result<std::unique_ptr<scope::PdoSource>> makePdoSource(Context &c, DeviceConnec
     if (!plan.isComplete())
         return Error(Error::Kind::InvalidArgument,
                      plan.missingText(dictionary)
-                         + QStringLiteral("; use --configure-tpdo N to map it (this changes the "
-                                          "device's PDO configuration)"));
+                         + Tr::tr("; use --configure-tpdo N to map it (this changes the "
+                                  "device's PDO configuration)"));
     auto source = std::make_unique<scope::PdoSource>(connection);
     if (auto added =
             scope::addPlannedChannels(*source, plan, dictionary, connection->uri().toString());
@@ -80,16 +91,16 @@ Error noPdoError(const Context &c, DeviceConnection *connection, const scope::Pd
     const canopen::NetworkNode at = canopen::networkNodeOf(connection);
     const canopen::NmtState heard =
         at ? at.network->monitor()->state(plan.node) : canopen::NmtState::Unknown;
-    QString text = QStringLiteral("no PDO arrived from node %1 within %2 s (%3): %4")
+    QString text = Tr::tr("no PDO arrived from node %1 within %2 s (%3): %4")
                        .arg(plan.node)
                        .arg(waitedMs / 1000.0)
                        .arg(pdos.join(QStringLiteral(", ")), scope::silentPdoCause(plan, heard));
     if (heard != canopen::NmtState::Operational)
-        text += QStringLiteral(" (drivebench-cli nmt %1 start; record never changes the NMT "
-                               "state)")
+        text += Tr::tr(" (drivebench-cli nmt %1 start; record never changes the NMT "
+                       "state)")
                     .arg(c.args.value(0));
     else
-        text += QStringLiteral(" (--configure-tpdo N --event-ms MS makes it cyclic)");
+        text += Tr::tr(" (--configure-tpdo N --event-ms MS makes it cyclic)");
     return Error(Error::Kind::Timeout, text);
 }
 

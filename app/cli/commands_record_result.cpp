@@ -4,6 +4,15 @@
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
 #include "stopsignals.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 namespace db::cli {
 
@@ -19,7 +28,7 @@ qint64 totalLost(const scope::Recorder &r)
 
 QString interrupted(int signal)
 {
-    return QStringLiteral("interrupted by %1").arg(StopSignals::name(signal));
+    return Tr::tr("interrupted by %1").arg(StopSignals::name(signal));
 }
 
 struct Cause
@@ -37,7 +46,7 @@ Cause whyEmpty(const RecordOutcome &o)
         return { o.failure.toString(), exitCodeFor(o.failure) };
     if (o.polling && o.polling->failedCount() > 0) {
         const Error &e = o.polling->lastReadError();
-        return { QStringLiteral("all %1 reads failed, the last: %2")
+        return { Tr::tr("all %1 reads failed, the last: %2")
                      .arg(o.polling->failedCount())
                      .arg(e.toString()),
                  exitCodeFor(e) };
@@ -45,12 +54,12 @@ Cause whyEmpty(const RecordOutcome &o)
     if (o.polling && o.polling->unansweredAtStop().channel >= 0) {
         const auto unanswered = o.polling->unansweredAtStop();
         const Error e(Error::Kind::Timeout,
-                      QStringLiteral("the read of %1 got no answer in %2 s")
+                      Tr::tr("the read of %1 got no answer in %2 s")
                           .arg(o.recorder.channelInfo(unanswered.channel).id)
                           .arg(unanswered.waitedS, 0, 'f', 2));
         return { e.toString(), exitCodeFor(e) };
     }
-    return { QStringLiteral("no sample arrived"), ExitFailure };
+    return { Tr::tr("no sample arrived"), ExitFailure };
 }
 
 int report(Context &c, const QString &text, int exitCode)
@@ -67,7 +76,7 @@ int finishRecording(Context &c, const RecordOutcome &o)
     if (o.triggerTimedOut && !nothingDelivered)
         return fail(c,
                     Error(Error::Kind::Timeout,
-                          QStringLiteral("trigger %1 did not fire within %2 s; nothing written")
+                          Tr::tr("trigger %1 did not fire within %2 s; nothing written")
                               .arg(o.trigger)
                               .arg(o.waitS)));
     const scope::Recording rec = o.recorder.recording();
@@ -77,7 +86,7 @@ int finishRecording(Context &c, const RecordOutcome &o)
     if (samples == 0 || o.triggerTimedOut) {
         const Cause cause = whyEmpty(o);
         return report(c,
-                      QStringLiteral("no sample recorded in %1 s, nothing written: %2")
+                      Tr::tr("no sample recorded in %1 s, nothing written: %2")
                           .arg(o.elapsedS, 0, 'f', 2)
                           .arg(cause.text),
                       cause.exitCode);
@@ -91,7 +100,7 @@ int finishRecording(Context &c, const RecordOutcome &o)
         c.out << ", triggered at " << QString::number(rec.triggerTime, 'f', 6) << " s";
     c.out << ", " << lost << " lost -> " << c.output << Qt::endl;
 
-    const QString early = QStringLiteral("recording stopped early (%1 written)").arg(c.output);
+    const QString early = Tr::tr("recording stopped early (%1 written)").arg(c.output);
     if (o.signal != 0)
         return report(c, early + QStringLiteral(": ") + interrupted(o.signal),
                       ExitSignalBase + o.signal);
@@ -100,8 +109,8 @@ int finishRecording(Context &c, const RecordOutcome &o)
     if (o.polling && o.polling->failedCount() > 0) {
         const Error &e = o.polling->lastReadError();
         return report(c,
-                      QStringLiteral("%1 of %2 reads failed (%3 samples lost in all, gaps are "
-                                     "marked in %4), the last: %5")
+                      Tr::tr("%1 of %2 reads failed (%3 samples lost in all, gaps are "
+                             "marked in %4), the last: %5")
                           .arg(o.polling->failedCount())
                           .arg(o.polling->failedCount() + o.polling->deliveredCount())
                           .arg(lost)
@@ -109,10 +118,12 @@ int finishRecording(Context &c, const RecordOutcome &o)
                       exitCodeFor(e));
     }
     if (lost > 0) {
-        c.err << "drivebench-cli: " << lost << " samples were lost ("
-              << (o.polling ? "the link is slower than --rate-ms asks"
-                            : "PDOs missed their expected period")
-              << "); gaps are marked in " << c.output << Qt::endl;
+        c.err << Tr::tr("drivebench-cli: %1 samples were lost (%2); gaps are marked in %3")
+                     .arg(lost)
+                     .arg(o.polling ? Tr::tr("the link is slower than --rate-ms asks")
+                                    : Tr::tr("PDOs missed their expected period"),
+                          c.output)
+              << Qt::endl;
         return ExitFailure;
     }
     return ExitOk;

@@ -3,10 +3,19 @@
 #include "commands.h"
 #include "core/printable.h"
 #include "terminaldevice.h"
+#include "translations/language.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QLoggingCategory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(cli)
+};
+} // namespace
 
 using namespace db;
 
@@ -27,6 +36,9 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    // Before anything is worded: the help texts are translated too.
+    const QString langArgument = i18n::languageArgument(QCoreApplication::arguments());
+    i18n::installTranslations(app, i18n::chooseLanguage(langArgument));
     // Every line a command prints goes through TerminalDevice: no control character from a
     // device or a file reaches the terminal raw, whichever print site it takes.
     cli::TerminalDevice outDevice(stdout);
@@ -38,9 +50,9 @@ int main(int argc, char *argv[])
     QString description = QCoreApplication::translate(
         "cli", "drivebench command line: read and write drive objects from scripts.\n\nCommands:");
     for (const cli::Command &c : cli::commands())
-        description +=
-            QStringLiteral("\n  %1 %2\n      %3")
-                .arg(QLatin1String(c.name), QLatin1String(c.synopsis), QLatin1String(c.summary));
+        description += QStringLiteral("\n  %1 %2\n      %3")
+                           .arg(QLatin1String(c.name), QLatin1String(c.synopsis),
+                                QCoreApplication::translate("cli", c.summary));
     description += QCoreApplication::translate(
         "cli",
         "\n\nExit codes: 0 ok, 1 failure, 2 usage, 3 connection, 4 timeout, 5 malformed "
@@ -90,8 +102,15 @@ int main(int argc, char *argv[])
                                     "sparing the inverter's EEPROM; lost at power-off."));
     const QCommandLineOption all(
         QStringLiteral("all"), QCoreApplication::translate("cli", "nmt: every node (broadcast)."));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("cli",
+                                    "Language of the messages: de or en (default: "
+                                    "DRIVEBENCH_LANG, else LC_ALL, LC_MESSAGES, LANG)."),
+        QStringLiteral("language"));
     const QList<QCommandLineOption> common { timeout, connectTimeout, hex, type, verbose,
-                                             file,    output,         sdo, ram,  all };
+                                             file,    output,         sdo, ram,  all,
+                                             lang };
     parser.addOptions(common);
     QStringList taken; // option names in use; each command family may add its own
     for (const QCommandLineOption &o : common)
@@ -110,10 +129,16 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
     parser.process(app);
+    if (parser.isSet(lang) && !i18n::languages().contains(parser.value(lang))) {
+        err << QCoreApplication::translate("cli", "drivebench-cli: --lang takes one of: %1")
+                   .arg(i18n::languages().join(QStringLiteral(", ")))
+            << Qt::endl;
+        return cli::ExitUsage;
+    }
 
     QStringList args = parser.positionalArguments();
     if (args.isEmpty()) {
-        err << "drivebench-cli: no command given; try drivebench-cli --help" << Qt::endl;
+        err << Tr::tr("drivebench-cli: no command given; try drivebench-cli --help") << Qt::endl;
         return cli::ExitUsage;
     }
     const QString name = args.takeFirst();
@@ -123,12 +148,13 @@ int main(int argc, char *argv[])
             command = &c;
     }
     if (!command) {
-        err << "drivebench-cli: unknown command '" << name << "'; try drivebench-cli --help"
+        err << Tr::tr("drivebench-cli: unknown command '%1'; try drivebench-cli --help").arg(name)
             << Qt::endl;
         return cli::ExitUsage;
     }
     if (args.size() < command->minArgs || args.size() > command->maxArgs) {
-        err << "drivebench-cli: usage: drivebench-cli " << command->name << ' ' << command->synopsis
+        err << Tr::tr("drivebench-cli: usage: drivebench-cli %1 %2")
+                   .arg(QLatin1String(command->name), QLatin1String(command->synopsis))
             << Qt::endl;
         return cli::ExitUsage;
     }
@@ -138,7 +164,8 @@ int main(int argc, char *argv[])
     options.requestTimeoutMs = parser.value(timeout).toInt(&ok1);
     options.connectTimeoutMs = parser.value(connectTimeout).toInt(&ok2);
     if (!ok1 || !ok2 || options.requestTimeoutMs <= 0 || options.connectTimeoutMs <= 0) {
-        err << "drivebench-cli: --timeout and --connect-timeout take a positive number of ms"
+        err << Tr::tr("drivebench-cli: --timeout and --connect-timeout take a positive number "
+                      "of ms")
             << Qt::endl;
         return cli::ExitUsage;
     }

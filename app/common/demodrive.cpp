@@ -82,4 +82,14 @@ sim::MovingCapDrive &DemoDrive::drive()
     return d->drive;
 }
 
+int DemoDrive::dropClients()
+{
+    return d->refgoServer.dropClients() + d->slcanServer.dropClients();
+}
+
+void DemoDrive::setHeartbeatSilenced(bool on)
+{
+    d->canopen.node().setHeartbeatSilenced(on);
+}
+
 } // namespace db::app

@@ -41,6 +41,12 @@ public:
 
     sim::MovingCapDrive &drive();
 
+    // ---- failure modes (drivebench-sim --control, tests) ----
+    // Aborts every client of both doors and keeps listening (a cut cable); returns how many.
+    int dropClients();
+    // The CANopen node stops (true) or resumes (false) producing its 1017h heartbeat.
+    void setHeartbeatSilenced(bool on);
+
 private:
     struct Private;
     std::unique_ptr<Private> d;

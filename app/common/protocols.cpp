@@ -1,10 +1,10 @@
 #include "protocols.h"
 
-#include "devices/bonfiglioli/acudescription.h"
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
 #include "description/devicedescription.h"
+#include "devices/bonfiglioli/acudescription.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
 #include "vabus/vabusconnection.h"
@@ -16,10 +16,10 @@ namespace db::app {
 
 namespace {
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("protocols", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(protocols)
+};
 
 // The dictionary a CANopen connection starts with: the file named by ?eds=PATH (EDS, DCF, XDD,
 // XDC or our JSON), else the MovingCap description for node 50 behind SLCAN (the MovingCap ETH
@@ -48,9 +48,11 @@ Result<void> checkCanopen(const ConnectionUri &uri)
 {
     if (auto node = canopen::CanopenConnection::nodeFromUri(uri); !node)
         return node.error();
+    if (auto tool = canopen::CanopenConnection::toolNodeFromUri(uri); !tool)
+        return tool.error();
     if (uri.host().isEmpty())
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1 names no interface or host").arg(uri.toString()));
+                     Tr::tr("%1 names no interface or host").arg(uri.toString()));
     if (auto bitrate = canopen::CanBusFactory::bitrateOf(uri); !bitrate)
         return bitrate.error();
     if (auto mode =
@@ -107,7 +109,7 @@ ProtocolRegistry makeRegistry()
     registry.add({
         QStringLiteral("refgo"),
         QStringLiteral("refgo"),
-        tr("MovingCap RefGo (ASCII over TCP)"),
+        Tr::tr("MovingCap RefGo (ASCII over TCP)"),
         QStringLiteral("refgo://HOST[:PORT]"),
         refgo::RefgoConnection::kDefaultPort,
         [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
@@ -121,7 +123,7 @@ ProtocolRegistry makeRegistry()
     registry.add({
         .scheme = QStringLiteral("vabus"),
         .key = QStringLiteral("vabus"),
-        .title = tr("Bonfiglioli ACTIVE Cube over VABus/TCP"),
+        .title = Tr::tr("Bonfiglioli ACTIVE Cube over VABus/TCP"),
         .uriPattern = QStringLiteral("vabus://HOST[:PORT][?sys=N][&ram]"),
         .defaultPort = vabus::VabusConnection::kDefaultPort,
         .create = [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
@@ -135,13 +137,13 @@ ProtocolRegistry makeRegistry()
         .addressFormat = &AddressFormat::parameter(),
     });
     registry.add(canopenProtocol(QStringLiteral("slcan"),
-                                 tr("CANopen over SLCAN in TCP (MovingCap ETH: node 50)"),
+                                 Tr::tr("CANopen over SLCAN in TCP (MovingCap ETH: node 50)"),
                                  QStringLiteral("canopen+slcan://HOST[:PORT]?node=N[&eds=FILE]"),
                                  canopen::CanBusFactory::kDefaultSlcanPort));
     // Every Qt CAN plugin installed on this machine (socketcan, virtualcan, peakcan, ...).
     for (const QString &plugin : QCanBus::instance()->plugins()) {
         registry.add(canopenProtocol(
-            plugin, tr("CANopen over Qt CAN plugin '%1'").arg(plugin),
+            plugin, Tr::tr("CANopen over Qt CAN plugin '%1'").arg(plugin),
             QStringLiteral("canopen+%1://IFACE?node=N[&bitrate=B][&eds=FILE]").arg(plugin), -1));
     }
     return registry;

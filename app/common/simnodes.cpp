@@ -5,6 +5,15 @@
 #include "resources/builtindescriptions.h"
 #include "transport/device/slcanserver.h"
 #include "transport/qtcanbus.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::common)
+};
+} // namespace
 
 namespace db::app {
 
@@ -39,13 +48,12 @@ Result<QList<quint8>> SimNodes::parseNodeList(const QString &text)
         const uint id = item.trimmed().toUInt(&ok);
         if (!ok || id < 1 || id > 127)
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("'%1' is not a node id 1..127").arg(item.trimmed()));
+                         Tr::tr("'%1' is not a node id 1..127").arg(item.trimmed()));
         if (!ids.contains(quint8(id)))
             ids.append(quint8(id));
     }
     if (ids.isEmpty())
-        return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("no node ids given (e.g. 1,2,5)"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("no node ids given (e.g. 1,2,5)"));
     return ids;
 }
 

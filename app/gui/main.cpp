@@ -2,13 +2,15 @@
 // --demo, runs the simulated MovingCap and a line of NM17x displays in-process.
 #include "common/demodrive.h"
 #include "common/protocols.h"
-#include "mainwindow.h"
 #include "devices/nm17x/device/nm17xsim.h"
+#include "mainwindow.h"
+#include "translations/language.h"
 #include "widgets/common/logconsole.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
+#include <QSettings>
 
 #include <cstdio>
 #include <memory>
@@ -24,6 +26,12 @@ int main(int argc, char *argv[])
     // icon theme has no such icon and the window keeps the platform's default.
     QGuiApplication::setDesktopFileName(QStringLiteral("org.drivebench.drivebench"));
     QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("org.drivebench.drivebench")));
+    // The language: --lang, else DRIVEBENCH_LANG, else the setting "language" (empty: follow
+    // the system; a Settings dialog writes it), else the locale variables.
+    QString language = db::i18n::languageArgument(QApplication::arguments());
+    if (language.isEmpty() && qEnvironmentVariableIsEmpty("DRIVEBENCH_LANG"))
+        language = QSettings().value(QStringLiteral("language")).toString();
+    db::i18n::installTranslations(app, db::i18n::chooseLanguage(language));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
@@ -39,8 +47,15 @@ int main(int argc, char *argv[])
         QStringLiteral("connect"),
         QApplication::translate("main", "Connect to <uri> at start, e.g. refgo://192.168.2.150."),
         QStringLiteral("uri"));
+    const QCommandLineOption langOption(
+        QStringLiteral("lang"),
+        QApplication::translate("main",
+                                "Language of the window: de or en (default: DRIVEBENCH_LANG, "
+                                "the setting, LC_ALL, LC_MESSAGES, LANG)."),
+        QStringLiteral("language"));
     parser.addOption(demoOption);
     parser.addOption(connectOption);
+    parser.addOption(langOption);
     parser.process(app);
 
     const db::ProtocolRegistry &registry = db::app::protocolRegistry();

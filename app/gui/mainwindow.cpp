@@ -12,9 +12,9 @@
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/morse/morsepanel.h"
 #include "widgets/motion/jogpanel.h"
+#include "widgets/nm17x/nm17xlinepanel.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/scope/scopepage.h"
-#include "widgets/nm17x/nm17xlinepanel.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -198,10 +198,15 @@ void MainWindow::createMenus()
     quit->setMenuRole(QAction::QuitRole);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
+    createShortcuts(view);
+    view->addSeparator();
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         view->addAction(dock->toggleViewAction());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *manual = help->addAction(tr("&User Manual"), this, &MainWindow::showManual);
+    manual->setObjectName(QStringLiteral("manualAction"));
+    manual->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About drivebench"), this, &MainWindow::showAbout)
         ->setMenuRole(QAction::AboutRole);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
@@ -238,6 +243,10 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
 
 void MainWindow::watch(DeviceConnection *connection)
 {
+    connect(connection, &DeviceConnection::objectWritten, this, [this, connection] {
+        m_unstored.insert(connection);
+        updateWindowTitle();
+    });
     const QString name = connection->uri().toString();
     connect(connection, &DeviceConnection::logLine, m_log, [this, name](const QString &line) {
         m_log->traffic(name + QStringLiteral(": ") + line);
@@ -312,6 +321,7 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     if (connection == m_canopen)
         attachCanopen(nullptr);
     m_deviceList->removeConnection(connection);
+    m_unstored.remove(connection);
     m_log->info(tr("Removed %1").arg(connection->uri().toString()));
     connection->close();
     // Deleted from the event loop, not inside the click that asked for it.
@@ -362,6 +372,21 @@ void MainWindow::updateStatusBar()
     widgets::style::setTextColor(m_connectionState,
                                  c ? widgets::style::connectionStateColor(state) : QColor());
     m_disconnectAction->setEnabled(c && state != DeviceConnection::State::Disconnected);
+    updateWindowTitle();
+}
+
+bool MainWindow::hasUnstoredWrites(const DeviceConnection *connection) const
+{
+    return m_unstored.contains(connection);
+}
+
+void MainWindow::updateWindowTitle()
+{
+    // The platform appends the application's display name ("— drivebench").
+    DeviceConnection *c = currentConnection();
+    setWindowTitle(c ? tr("%1 (%2)[*]").arg(c->uri().toString(), stateName(c->state()))
+                     : tr("drivebench"));
+    setWindowModified(c && m_unstored.contains(c));
 }
 
 void MainWindow::closeAllConnections(int timeoutMs)

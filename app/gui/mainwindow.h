@@ -4,10 +4,12 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <QSet>
 
 #include <memory>
 #include <vector>
 
+class QDialog;
 class QLabel;
 class QTabWidget;
 
@@ -80,6 +82,8 @@ public:
     widgets::ParameterSetActions *parameterActions() const { return m_paramActions; }
     // The "Scope" page, recording from the current connection.
     widgets::ScopePage *scopePage() const { return m_scopePage; }
+    // Connections written to since they were last stored permanently (the window title's "*").
+    bool hasUnstoredWrites(const DeviceConnection *connection) const;
 
 public Q_SLOTS:
     void showConnectDialog();
@@ -87,6 +91,8 @@ public Q_SLOTS:
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
     void showAbout();
+    // The README, built into the program, in a window of its own (Help → User Manual, F1).
+    void showManual();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -97,6 +103,9 @@ private:
     void watch(DeviceConnection *connection);
     void setCurrent(DeviceConnection *connection);
     void removeConnection(DeviceConnection *connection);
+    // "URI (state)[*]": the current connection and whether it has values not stored permanently.
+    void updateWindowTitle();
+    void createShortcuts(QMenu *view);
     // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
     // else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
@@ -129,6 +138,8 @@ private:
     widgets::ScopePage *m_scopePage = nullptr;
     QPointer<canopen::CanopenConnection> m_canopen;
     QLabel *m_connectionState = nullptr;
+    QPointer<QDialog> m_manual; // made on first use
+    QSet<const DeviceConnection *> m_unstored; // written, not stored permanently
     QTabWidget *m_pages = nullptr;
     QAction *m_disconnectAction = nullptr;
 };

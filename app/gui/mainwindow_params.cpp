@@ -34,6 +34,7 @@ void MainWindow::createParameterPages()
     menu->addAction(m_paramActions->compareAction());
     menu->addSeparator();
     menu->addAction(m_paramActions->storeAction());
+    m_paramActions->storeAction()->setShortcut(QKeySequence::Save); // asks before it stores
     menu->addAction(m_paramActions->factoryDefaultsAction());
     menu->addSeparator();
     menu->addAction(m_paramActions->exportDcfAction());
@@ -53,6 +54,11 @@ void MainWindow::createParameterPages()
                 else
                     m_log->error(text);
             });
+    connect(m_paramActions, &widgets::ParameterSetActions::storedPermanently, this,
+            [this](DeviceConnection *connection) {
+                m_unstored.remove(connection);
+                updateWindowTitle();
+            });
     connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
             [this](const RestoreReport &report) {
                 const QString text = report.summary();
@@ -61,6 +67,24 @@ void MainWindow::createParameterPages()
                 else
                     m_log->error(text);
             });
+}
+
+// Standard keys: Ctrl+O connect (File menu), Ctrl+S store permanently (asks first), F5 re-read
+// the objects, Ctrl+F filter them.
+void MainWindow::createShortcuts(QMenu *view)
+{
+    QAction *refresh = view->addAction(tr("&Refresh Objects"), this, [this] {
+        m_pages->setCurrentWidget(m_odEditor);
+        m_odEditor->readAll();
+    });
+    refresh->setObjectName(QStringLiteral("refreshAction"));
+    refresh->setShortcut(QKeySequence::Refresh);
+    QAction *filter = view->addAction(tr("&Filter Objects"), this, [this] {
+        m_pages->setCurrentWidget(m_odEditor);
+        m_odEditor->focusFilter();
+    });
+    filter->setObjectName(QStringLiteral("filterAction"));
+    filter->setShortcut(QKeySequence::Find);
 }
 
 void MainWindow::attachParameters(DeviceConnection *connection)

@@ -1,17 +1,19 @@
 // drivebench-sim: simulated devices on loopback for demos, tests and scripts (README "Simulator").
 //   drivebench-sim movingcap [--refgo-port PORT] [--slcan-port PORT] [--set INDEX:SUB=VALUE ...]
-//                            [--reject-write INDEX:SUB ...]
+//                            [--reject-write INDEX:SUB ...] [--fault CODE] [--control]
 //   drivebench-sim canopen [--slcan-port PORT] [--virtualcan IFACE] --nodes 1,2,5 [--eds FILE]
 //   drivebench-sim nm17x [--slcan-port PORT] [--virtualcan IFACE] [--control-port PORT]
 //                        --devices nm172@127,nm172@127,nm174@5
 //   drivebench-sim acu --vabus-port PORT [--watchdog-ms MS] [--fail MODE] [--slave ID ...]
 #include "../common/demodrive.h"
+#include "../common/simconsole.h"
 #include "../common/simnodes.h"
 #include "core/objectaddress.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "resources/builtindescriptions.h"
 #include "sim_nm17x.h"
 #include "simacu.h"
+#include "translations/language.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -20,8 +22,17 @@
 #include <QTextStream>
 
 #include <csignal>
+#include <optional>
 #include <sys/socket.h>
 #include <unistd.h>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::sim)
+};
+} // namespace
 
 using namespace db;
 
@@ -47,6 +58,31 @@ void quitOnSignals(QCoreApplication &app)
     std::signal(SIGTERM, onSignal);
 }
 
+// --control: one console command per line on standard input, answers on standard output.
+void readControlLines(QCoreApplication &app, app::SimConsole *console, QTextStream &out)
+{
+    auto *notifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, &app);
+    QObject::connect(console, &app::SimConsole::answered, &app,
+                     [&out](const QString &line) { out << line << Qt::endl; });
+    QObject::connect(notifier, &QSocketNotifier::activated, console,
+                     [notifier, console, pending = QByteArray()]() mutable {
+                         char buffer[512];
+                         const auto n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+                         if (n <= 0) {
+                             notifier->setEnabled(
+                                 false); // end of input: the simulator keeps serving
+                             return;
+                         }
+                         pending.append(buffer, n);
+                         qsizetype nl;
+                         while ((nl = pending.indexOf('\n')) >= 0) {
+                             const QString line = QString::fromUtf8(pending.left(nl));
+                             pending.remove(0, nl + 1);
+                             console->execute(line);
+                         }
+                     });
+}
+
 void quitOnSignalsOfApp()
 {
     quitOnSignals(*theApp);
@@ -60,6 +96,7 @@ int main(int argc, char *argv[])
     theApp = &app;
     QCoreApplication::setApplicationName(QStringLiteral("drivebench-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEBENCH_VERSION));
+    i18n::installTranslations(app, i18n::chooseLanguage()); // DRIVEBENCH_LANG, LC_*, LANG
     QTextStream out(stdout);
     QTextStream err(stderr);
 
@@ -70,7 +107,8 @@ int main(int argc, char *argv[])
         "(RefGo and SLCAN doors)\n  canopen     CANopen nodes driven by a device description "
         "(SLCAN "
         "and/or virtualcan doors)\n  nm17x       a line of Baumer NM170/NM172/NM174 displays "
-        "(SLCAN and/or virtualcan doors, control socket)\n  acu         a Bonfiglioli ACTIVE Cube with CM-VABus/TCP (PLC "
+        "(SLCAN and/or virtualcan doors, control socket)\n  acu         a Bonfiglioli ACTIVE Cube "
+        "with CM-VABus/TCP (PLC "
         "port)"));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -115,6 +153,18 @@ int main(int argc, char *argv[])
                                     "movingcap: writes to this object fail with a device error "
                                     "(failure mode for tests; repeatable)."),
         QStringLiteral("INDEX:SUB"));
+    const QCommandLineOption fault(
+        QStringLiteral("fault"),
+        QCoreApplication::translate("sim",
+                                    "movingcap: the drive starts in fault with this EMCY code "
+                                    "(hexadecimal, e.g. 7121)."),
+        QStringLiteral("CODE"));
+    const QCommandLineOption control(
+        QStringLiteral("control"),
+        QCoreApplication::translate(
+            "sim",
+            "movingcap: read commands from standard input while serving, one a line: state, "
+            "standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on."));
     const QCommandLineOption devices(
         QStringLiteral("devices"),
         QCoreApplication::translate("sim",
@@ -128,7 +178,7 @@ int main(int argc, char *argv[])
                                     "shaft, press a key; 0 = chosen by the OS)."),
         QStringLiteral("port"));
     parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
-                        devices, controlPort });
+                        devices, controlPort, fault, control });
     app::addAcuOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
@@ -240,7 +290,7 @@ int main(int argc, char *argv[])
             ? def->parseText(assignment.mid(eq + 1))
             : Result<QVariant>(
                 Error(Error::Kind::InvalidArgument,
-                      QStringLiteral("the MovingCap has no object %1").arg(address->toString())));
+                      Tr::tr("the MovingCap has no object %1").arg(address->toString())));
         if (!raw) {
             err << "drivebench-sim: --set " << assignment << ": " << raw.error().toString()
                 << Qt::endl;
@@ -258,8 +308,19 @@ int main(int argc, char *argv[])
         }
         rejected.insert(*address);
     }
+    std::optional<quint16> startFault;
+    if (parser.isSet(fault)) {
+        const auto code = app::SimConsole::parseFaultCode(parser.value(fault));
+        if (!code) {
+            err << "drivebench-sim: --fault: " << code.error().message() << Qt::endl;
+            return 2;
+        }
+        startFault = *code;
+    }
     app::DemoDrive demo(presets);
     demo.drive().setRejectedWrites(rejected);
+    if (startFault)
+        demo.drive().injectFault(*startFault);
     if (refgo >= 0) {
         if (auto listening = demo.startRefgo(quint16(refgo)); !listening) {
             err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
@@ -276,6 +337,9 @@ int main(int argc, char *argv[])
         out << "movingcap: SLCAN listening on 127.0.0.1:" << demo.slcanPort() << " ("
             << demo.slcanUri() << ")" << Qt::endl;
     }
+    app::SimConsole console(&demo);
+    if (parser.isSet(control))
+        readControlLines(app, &console, out);
     quitOnSignals(app);
     return app.exec();
 }

@@ -8,16 +8,16 @@ namespace db::app {
 
 namespace {
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("sim", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(sim)
+};
 
 const QCommandLineOption &vabusPort()
 {
     static const QCommandLineOption o(
         QStringLiteral("vabus-port"),
-        tr("acu: serve VABus/TCP (the PLC port) on this TCP port (0 = chosen by the OS)."),
+        Tr::tr("acu: serve VABus/TCP (the PLC port) on this TCP port (0 = chosen by the OS)."),
         QStringLiteral("port"));
     return o;
 }
@@ -25,7 +25,7 @@ const QCommandLineOption &watchdogMs()
 {
     static const QCommandLineOption o(
         QStringLiteral("watchdog-ms"),
-        tr("acu: time without exchange before the reaction of parameter 388 (default 10000)."),
+        Tr::tr("acu: time without exchange before the reaction of parameter 388 (default 10000)."),
         QStringLiteral("ms"));
     return o;
 }
@@ -33,24 +33,24 @@ const QCommandLineOption &fail()
 {
     static const QCommandLineOption o(
         QStringLiteral("fail"),
-        tr("acu: failure mode for tests: silent, garbage, slow, drop-after or split (every "
-           "answer in 1-byte TCP segments)."),
+        Tr::tr("acu: failure mode for tests: silent, garbage, slow, drop-after or split (every "
+               "answer in 1-byte TCP segments)."),
         QStringLiteral("mode"));
     return o;
 }
 const QCommandLineOption &slowMs()
 {
     static const QCommandLineOption o(QStringLiteral("slow-ms"),
-                                      tr("acu: --fail slow delays every answer this long "
-                                         "(default 2000)."),
+                                      Tr::tr("acu: --fail slow delays every answer this long "
+                                             "(default 2000)."),
                                       QStringLiteral("ms"), QStringLiteral("2000"));
     return o;
 }
 const QCommandLineOption &dropAfter()
 {
     static const QCommandLineOption o(QStringLiteral("drop-after"),
-                                      tr("acu: --fail drop-after closes the connection after "
-                                         "this many answers (default 1)."),
+                                      Tr::tr("acu: --fail drop-after closes the connection after "
+                                             "this many answers (default 1)."),
                                       QStringLiteral("n"), QStringLiteral("1"));
     return o;
 }
@@ -58,8 +58,8 @@ const QCommandLineOption &startupDelay()
 {
     static const QCommandLineOption o(
         QStringLiteral("startup-delay-ms"),
-        tr("acu: answer nothing for this long after start, as the module initialising after "
-           "power-on (up to 20000)."),
+        Tr::tr("acu: answer nothing for this long after start, as the module initialising after "
+               "power-on (up to 20000)."),
         QStringLiteral("ms"), QStringLiteral("0"));
     return o;
 }
@@ -67,8 +67,8 @@ const QCommandLineOption &slave()
 {
     static const QCommandLineOption o(
         QStringLiteral("slave"),
-        tr("acu: a system bus slave with this node id (1-63) behind the "
-           "module (repeatable)."),
+        Tr::tr("acu: a system bus slave with this node id (1-63) behind the "
+               "module (repeatable)."),
         QStringLiteral("id"));
     return o;
 }

@@ -1,8 +1,8 @@
 // Scope benchmark: host polling with scope::PollingSource and the Recorder
 // against the simulated MovingCap of `drivebench --demo` (app::DemoDrive), in this process, over
 // RefGo (ASCII over TCP) and over CANopen SDO via SLCAN-over-TCP, both on loopback. Polls 1 and
-// 4 objects as fast as the link allows (rate 0, one request in flight) and at a fixed period,
-// and prints samples/s with the lost-sample count (which must be 0).
+// 4 objects as fast as the link allows (rate 0, one request in flight per object) and at a fixed
+// period, and prints samples/s with the lost-sample count (which must be 0).
 //
 //   scope_poll_bench [--seconds S] [--rate-ms R]
 

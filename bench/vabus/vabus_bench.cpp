@@ -4,8 +4,8 @@
 //   vabus_bench [--repeat N] [--reads N] [--port P]
 // --port P measures a simulator already running there (drivebench-sim acu --vabus-port P)
 // instead of the in-process one.
-#include "devices/bonfiglioli/simulatedacu.h"
 #include "common/protocols.h"
+#include "devices/bonfiglioli/simulatedacu.h"
 #include "parameters/parameterrunner.h"
 
 #include <QCoreApplication>

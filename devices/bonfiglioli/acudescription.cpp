@@ -1,10 +1,12 @@
 #include "acudescription.h"
 
+#include "description/descriptionfile.h"
+
 namespace db::bonfiglioli {
 
 Result<ObjectDictionary> loadAcuDictionary()
 {
-    return ObjectDictionary::loadDescription(QStringLiteral(":/devices/bonfiglioli/acu.json"));
+    return loadJsonDescription(QStringLiteral(":/devices/bonfiglioli/acu.json"));
 }
 
 const ObjectDictionary &acuDictionary()

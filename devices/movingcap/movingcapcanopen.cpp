@@ -2,6 +2,7 @@
 
 #include "canopen/sdoabort.h"
 #include "movingcapdrive.h"
+#include "movingcapfaults.h"
 
 namespace db::canopen {
 
@@ -13,10 +14,17 @@ MovingCapCanopen::MovingCapCanopen(sim::MovingCapDrive *drive, QObject *parent)
     connect(m_node.get(), &SimulatedNode::transmit, this, &MovingCapCanopen::transmit);
     // movingcap.md 7.1 [R]: exactly the drive's 8 bytes (code LE, 1001h, five zeros).
     connect(m_drive, &sim::MovingCapDrive::emergency, this,
-            [this](quint16, quint8, const QByteArray &data8) { m_node->sendEmergency(data8); });
-    // CiA 402 6007h: the drive's reaction when its master stops guarding it.
-    connect(m_node.get(), &SimulatedNode::communicationLost, this,
-            [this] { m_drive->connectionLost(); });
+            [this](quint16 code, quint8, const QByteArray &data8) {
+                if (!m_reportingLoss || code != sim::faults::AbortConnection)
+                    m_node->sendEmergency(data8);
+            });
+    // CiA 402 6007h: the drive's reaction when its master stops guarding it. The node reports
+    // the event itself (EMCY 8130h), so the fault of 6007h = 1 does not send it twice.
+    connect(m_node.get(), &SimulatedNode::communicationLost, this, [this] {
+        m_reportingLoss = true;
+        m_drive->connectionLost();
+        m_reportingLoss = false;
+    });
     m_node->start();
 }
 

@@ -42,6 +42,7 @@ Q_SIGNALS:
 private:
     sim::MovingCapDrive *m_drive;
     std::unique_ptr<SimulatedNode> m_node;
+    bool m_reportingLoss = false; // inside the drive's reaction to a life guarding event
 };
 
 } // namespace db::canopen

@@ -4,7 +4,16 @@
 
 #include <QTimer>
 
+#include <QCoreApplication>
 #include <cmath>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::simulation)
+};
+} // namespace
 
 namespace db::sim {
 
@@ -219,9 +228,9 @@ Result<void> MovingCapDrive::ensureOperational(int mode)
         return {};
     if (m_machine.state() == cia402::State::Fault)
         return Error(Error::Kind::DeviceError,
-                     QStringLiteral("software enable missing (FFF2h), drive in fault state"),
+                     Tr::tr("software enable missing (FFF2h), drive in fault state"),
                      faults::SoftwareEnable);
-    return Error(Error::Kind::DeviceError, QStringLiteral("drive cannot be switched on"));
+    return Error(Error::Kind::DeviceError, Tr::tr("drive cannot be switched on"));
 }
 
 void MovingCapDrive::setMode(int mode)

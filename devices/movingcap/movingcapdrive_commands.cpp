@@ -2,7 +2,16 @@
 #include "movingcapdrive.h"
 #include "movingcapfaults.h"
 
+#include <QCoreApplication>
 #include <cmath>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::simulation)
+};
+} // namespace
 
 namespace db::sim {
 
@@ -17,7 +26,7 @@ Result<void> MovingCapDrive::refuseInFault() const
 {
     const auto state = m_machine.state();
     if (state == cia402::State::Fault || state == cia402::State::FaultReactionActive)
-        return Error(Error::Kind::DeviceError, QStringLiteral("drive in fault state"));
+        return Error(Error::Kind::DeviceError, Tr::tr("drive in fault state"));
     return {};
 }
 
@@ -149,7 +158,7 @@ void MovingCapDrive::connectionLost()
         return;
     switch (m_store.integer({ 0x6007, 0 })) {
     case 1:
-        injectFault(faults::Communication);
+        injectFault(faults::AbortConnection);
         return;
     case 2:
         applyControlword(0); // disable voltage
@@ -171,7 +180,7 @@ Result<void> MovingCapDrive::continueMotion()
     if (m_machine.state() == cia402::State::QuickStopActive)
         applyControlword(cia402::cw::EnableOperationCmd); // 16
     if (m_machine.state() != cia402::State::OperationEnabled)
-        return Error(Error::Kind::DeviceError, QStringLiteral("nothing to continue"));
+        return Error(Error::Kind::DeviceError, Tr::tr("nothing to continue"));
     const Interrupted what = m_interrupted;
     if (what == Interrupted::Position)
         startPositionMove(m_lastTarget, true);
@@ -198,7 +207,7 @@ Result<void> MovingCapDrive::reference(std::optional<int> method)
         return {}; // spec 3.4 *2: REF without a parameter has no function
     if (*method != 35 && *method != 37 && *method != -18 && *method != -19)
         return Error(Error::Kind::NotSupported,
-                     QStringLiteral("homing method %1 is not supported").arg(*method));
+                     Tr::tr("homing method %1 is not supported").arg(*method));
     if (auto ok = ensureOperational(6); !ok)
         return ok;
     m_store.set({ 0x6098, 0 }, *method);

@@ -1,7 +1,16 @@
 // MovingCapDrive: object access, computed objects and writes with side effects (spec 6, 9.9).
 #include "movingcapdrive.h"
 
+#include <QCoreApplication>
 #include <cmath>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::simulation)
+};
+} // namespace
 
 namespace db::sim {
 
@@ -29,10 +38,10 @@ Result<void> MovingCapDrive::write(ObjectAddress address, const QVariant &value)
     if (!raw)
         return raw.error();
     if (m_rejectedWrites.contains(address))
-        return Error(Error::Kind::DeviceError,
-                     QStringLiteral("%1 refused in the present device state (simulated)")
-                         .arg(address.toString()),
-                     0x08000022);
+        return Error(
+            Error::Kind::DeviceError,
+            Tr::tr("%1 refused in the present device state (simulated)").arg(address.toString()),
+            0x08000022);
     bool handled = false;
     if (auto special = writeSpecial(address, raw.value(), handled); !special)
         return special;
@@ -76,14 +85,14 @@ Result<void> MovingCapDrive::writeSpecial(ObjectAddress address, const QVariant 
     if (key == ObjectAddress(0x1010, 1).key()) {
         if (raw.toULongLong() != kSaveMagic)
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("1010:1 expects 1702257011 ('save')"));
+                         Tr::tr("1010:1 expects 1702257011 ('save')"));
         m_store.storeToNvm();
         return {};
     }
     if (key == ObjectAddress(0x1011, 1).key()) {
         if (raw.toULongLong() != kLoadMagic)
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("1011:1 expects 1684107116 ('load')"));
+                         Tr::tr("1011:1 expects 1684107116 ('load')"));
         // Factory reset keeps the RABBIT motor parameters 3300h (spec 9.8).
         m_store.restoreFactory([](ObjectAddress a) { return a.index == 0x3300; });
         return {};
@@ -100,7 +109,7 @@ Result<void> MovingCapDrive::writeSpecial(ObjectAddress address, const QVariant 
         const int input = int(command >> 8);
         if (input < 1 || input > 10)
             return Error(Error::Kind::OutOfRange,
-                         QStringLiteral("3510:2 input number %1 is not 1..10").arg(input));
+                         Tr::tr("3510:2 input number %1 is not 1..10").arg(input));
         runInputFunction(input, int(command & 0xFF), true);
         return {};
     }

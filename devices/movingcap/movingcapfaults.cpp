@@ -7,7 +7,7 @@ namespace db::sim::faults {
 MovingCapFault lookup(quint16 code)
 {
     // movingcap.md 7.1 (error register byte) and 7.2 (1002h bit).
-    static const std::array<MovingCapFault, 12> table { {
+    static const std::array<MovingCapFault, 13> table { {
         { OverCurrent, 11, 0x05, false },
         { OverVoltage, 0, 0x05, false },
         { UnderVoltage, 1, 0x05, false },
@@ -20,6 +20,7 @@ MovingCapFault lookup(quint16 code)
         { SoftwareEnable, 9, 0x10, false },
         { ExternalTorque, 12, 0x10, false },
         { NeedsReset, 13, 0x10, true },
+        { AbortConnection, 5, 0x11, false }, // generic + communication
     } };
     for (const MovingCapFault &f : table) {
         if (f.code == code)

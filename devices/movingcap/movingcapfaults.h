@@ -28,6 +28,9 @@ constexpr quint16 Sensor = 0xFFF1;
 constexpr quint16 SoftwareEnable = 0xFFF2;
 constexpr quint16 ExternalTorque = 0xFFF4;
 constexpr quint16 NeedsReset = 0xFFF5;
+// The master stopped guarding the drive (6007h = 1): the drive names no EMCY code of its own for
+// 1002h bit 5 "Abort connection", so the CiA 301 code for a life guard or heartbeat error.
+constexpr quint16 AbortConnection = 0x8130;
 
 // Known codes as the manual lists them; others get no 1002h bit and error register 01h.
 MovingCapFault lookup(quint16 code);

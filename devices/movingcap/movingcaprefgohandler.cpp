@@ -1,6 +1,15 @@
 #include "movingcaprefgohandler.h"
 
 #include "movingcapdrive.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -137,7 +146,7 @@ QStringList MovingCapRefgoHandler::handle(const Request &r)
                      : errorLine(level.error());
     }
     }
-    return errorLine(Error(Error::Kind::NotSupported, QStringLiteral("command not supported")));
+    return errorLine(Error(Error::Kind::NotSupported, Tr::tr("command not supported")));
 }
 
 } // namespace db::refgo

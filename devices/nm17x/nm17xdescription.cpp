@@ -214,14 +214,14 @@ QVariant number(const char *text, DataType type)
     return ok ? QVariant(v) : QVariant();
 }
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("Nm17x", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(Nm17x)
+};
 
 QMap<qlonglong, QString> upDown()
 {
-    return { { 0, tr("Up") }, { 1, tr("Down") } };
+    return { { 0, Tr::tr("Up") }, { 1, Tr::tr("Down") } };
 }
 
 // Enumerations, bit fields and texts of the objects an operator sets up.
@@ -231,40 +231,42 @@ void describe(ObjectDef &def)
     switch (key) {
     case 0x200001:
         def.enumeration = upDown();
-        def.description = tr("Side from which the target is approached (loop for backlash "
-                             "compensation)");
+        def.description = Tr::tr("Side from which the target is approached (loop for backlash "
+                                 "compensation)");
         break;
     case 0x200002:
         def.enumeration = upDown();
-        def.description = tr("Up: turning the shaft right increases the actual value");
+        def.description = Tr::tr("Up: turning the shaft right increases the actual value");
         break;
     case 0x200003:
-        def.enumeration = { { 0, tr("Up") },  { 1, tr("Down") },     { 2, tr("Uni") },
-                            { 3, tr("Off") }, { 4, tr("Uni-Loop") }, { 5, tr("Off-Loop") } };
-        def.description = tr("Direction arrows; Uni and Off position without loop");
+        def.enumeration = { { 0, Tr::tr("Up") },       { 1, Tr::tr("Down") },
+                            { 2, Tr::tr("Uni") },      { 3, Tr::tr("Off") },
+                            { 4, Tr::tr("Uni-Loop") }, { 5, Tr::tr("Off-Loop") } };
+        def.description = Tr::tr("Direction arrows; Uni and Off position without loop");
         break;
     case 0x200004:
     case 0x200005:
-        def.enumeration = { { 0, tr("Off") }, { 1, tr("On") } };
+        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
         break;
     case 0x200006:
-        def.enumeration = { { 0, tr("Off") }, { 1, tr("On") } };
-        def.description = tr("On: the correction 2010h is added to actual value and setpoint");
+        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
+        def.description = Tr::tr("On: the correction 2010h is added to actual value and setpoint");
         break;
     case 0x200007:
-        def.enumeration = { { 0, tr("On") }, { 1, tr("Off") }, { 2, tr("Ever") } };
+        def.enumeration = { { 0, Tr::tr("On") }, { 1, Tr::tr("Off") }, { 2, Tr::tr("Ever") } };
         break;
     case 0x200008:
-        def.enumeration = {
-            { 0, tr("Key") }, { 1, tr("Slow") }, { 2, tr("Middle") }, { 3, tr("Fast") }
-        };
+        def.enumeration = { { 0, Tr::tr("Key") },
+                            { 1, Tr::tr("Slow") },
+                            { 2, Tr::tr("Middle") },
+                            { 3, Tr::tr("Fast") } };
         break;
     case 0x200100:
         def.enumeration = { { 0, QStringLiteral("mm") }, { 1, QStringLiteral("inch") } };
-        def.description = tr("Display only: values on the bus stay in 1/100 mm");
+        def.description = Tr::tr("Display only: values on the bus stay in 1/100 mm");
         break;
     case 0x202008:
-        def.enumeration = { { 0, tr("slow") }, { 1, tr("medium") }, { 2, tr("fast") } };
+        def.enumeration = { { 0, Tr::tr("slow") }, { 1, Tr::tr("medium") }, { 2, Tr::tr("fast") } };
         break;
     case 0x204001:
     case 0x204002:
@@ -272,39 +274,40 @@ void describe(ObjectDef &def)
         break;
     case 0x204003:
         def.enumeration = {
-            { 0, tr("Up") }, { 1, tr("Down") }, { 2, tr("Ever") }, { 3, tr("Off") }
+            { 0, Tr::tr("Up") }, { 1, Tr::tr("Down") }, { 2, Tr::tr("Ever") }, { 3, Tr::tr("Off") }
         };
         break;
     case 0x204004:
         for (int g = 0; g < 8; ++g)
-            def.enumeration.insert(g, tr("group %1").arg(g + 1));
+            def.enumeration.insert(g, Tr::tr("group %1").arg(g + 1));
         break;
     case 0x204101:
-        def.enumeration = { { 0, tr("On") }, { 1, tr("Off") } };
+        def.enumeration = { { 0, Tr::tr("On") }, { 1, Tr::tr("Off") } };
         break;
     case 0x204102:
-        def.enumeration = { { 0, tr("Off") }, { 1, tr("On") } };
+        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
         break;
     case 0x204103:
-        def.enumeration = { { 0, tr("Standard / Oscillating") },
-                            { 1, tr("Takten") },
-                            { 2, tr("ExternPosi") },
-                            { 3, tr("Off") } };
+        def.enumeration = { { 0, Tr::tr("Standard / Oscillating") },
+                            { 1, Tr::tr("Takten") },
+                            { 2, Tr::tr("ExternPosi") },
+                            { 3, Tr::tr("Off") } };
         break;
     case 0x204104:
-        def.enumeration = {
-            { 0, tr("Standard") }, { 1, tr("Slow") }, { 2, tr("Middle") }, { 3, tr("Fast") }
-        };
+        def.enumeration = { { 0, Tr::tr("Standard") },
+                            { 1, Tr::tr("Slow") },
+                            { 2, Tr::tr("Middle") },
+                            { 3, Tr::tr("Fast") } };
         break;
     case 0x204D01:
-        def.enumeration.insert(0, tr("stop"));
+        def.enumeration.insert(0, Tr::tr("stop"));
         for (int g = 1; g <= 8; ++g)
-            def.enumeration.insert(g, tr("start group %1").arg(g));
+            def.enumeration.insert(g, Tr::tr("start group %1").arg(g));
         break;
     case 0x204D03:
-        def.enumeration = { { 11, tr("right slow") },  { 12, tr("right medium") },
-                            { 13, tr("right fast") },  { 21, tr("left slow") },
-                            { 22, tr("left medium") }, { 23, tr("left fast") } };
+        def.enumeration = { { 11, Tr::tr("right slow") },  { 12, Tr::tr("right medium") },
+                            { 13, Tr::tr("right fast") },  { 21, Tr::tr("left slow") },
+                            { 22, Tr::tr("left medium") }, { 23, Tr::tr("left fast") } };
         break;
     case 0x204E01:
         for (const BitText &b : statusBits())
@@ -324,10 +327,10 @@ void describe(ObjectDef &def)
             { 6, QStringLiteral("500 kbit/s") }, { 7, QStringLiteral("800 kbit/s") },
             { 8, QStringLiteral("1000 kbit/s") }
         };
-        def.description = tr("Takes effect at the next Reset Node");
+        def.description = Tr::tr("Takes effect at the next Reset Node");
         break;
     case 0x210100:
-        def.description = tr("Takes effect at the next Reset Node");
+        def.description = Tr::tr("Takes effect at the next Reset Node");
         break;
     case 0x600400:
         def.traceable = true;

@@ -11,9 +11,18 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
 #include <memory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::morse)
+};
+} // namespace
 
 namespace db::morseio {
 namespace {
@@ -94,7 +103,7 @@ Result<Recording> readCsv(const QString &path)
     static const QRegularExpression sep(QStringLiteral("[,;\\t]"));
     auto invalid = [&path](int line, const QString &what) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1:%2: %3").arg(path).arg(line).arg(what));
+                     Tr::tr("%1:%2: %3").arg(path).arg(line).arg(what));
     };
     auto seconds = [](double t) {
         return QString::number(t, 'g', 10);
@@ -154,7 +163,7 @@ Result<Recording> readCsv(const QString &path)
     if (file.error() != QFileDevice::NoError)
         return ioError(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (rec.samples.empty())
-        return Error(Error::Kind::InvalidArgument, QStringLiteral("%1: no samples").arg(path));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("%1: no samples").arg(path));
     return rec;
 }
 
@@ -418,7 +427,7 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
         r = toAnalysisRegion(*userRegion, rec.frameSize, analysis);
         if (r.isEmpty())
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("region outside the %1x%2 frame").arg(w).arg(h));
+                         Tr::tr("region outside the %1x%2 frame").arg(w).arg(h));
     } else {
         r = findLedRegion(grey);
     }

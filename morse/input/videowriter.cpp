@@ -7,7 +7,16 @@ extern "C" {
 #include <libavformat/avformat.h>
 }
 
+#include <QCoreApplication>
 #include <cstring>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::morse)
+};
+} // namespace
 
 namespace db::morseio {
 namespace {
@@ -16,7 +25,7 @@ constexpr int kQuantiser = 4; // fixed MPEG-4 quantiser: small files, blob edges
 
 Error fail(const QString &what)
 {
-    return Error(Error::Kind::Io, QStringLiteral("video writer: %1").arg(what));
+    return Error(Error::Kind::Io, Tr::tr("video writer: %1").arg(what));
 }
 
 } // namespace

@@ -4,6 +4,15 @@
 
 #include "transport/slcanbus.h"
 #include "transport/tcpstream.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -27,13 +36,13 @@ Result<CanBus *> CanBusFactory::makeBus(const ConnectionUri &uri, QObject *paren
     const QString transport = transportOf(uri);
     if (transport.isEmpty())
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1 is not a CANopen URI (canopen+socketcan://, "
-                                    "canopen+virtualcan://, canopen+slcan://)")
+                     Tr::tr("%1 is not a CANopen URI (canopen+socketcan://, "
+                            "canopen+virtualcan://, canopen+slcan://)")
                          .arg(uri.toString()));
     if (uri.host().isEmpty())
         return Error(
             Error::Kind::InvalidArgument,
-            QStringLiteral("%1 names no %2")
+            Tr::tr("%1 names no %2")
                 .arg(uri.toString(),
                      transport == u"slcan" ? QStringLiteral("host") : QStringLiteral("interface")));
     const auto b = bitrateOf(uri);

@@ -13,8 +13,17 @@
 #include <QEventLoop>
 #include <QTimer>
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <utility>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -104,7 +113,7 @@ Result<void> CanNetwork::acquireAndWait(int timeoutMs)
     return failure.isError()
         ? failure
         : Error(Error::Kind::Timeout,
-                QStringLiteral("%1 did not open within %2 ms").arg(name()).arg(timeoutMs));
+                Tr::tr("%1 did not open within %2 ms").arg(name()).arg(timeoutMs));
 }
 
 bool CanNetwork::send(const QCanBusFrame &frame)

@@ -1,6 +1,15 @@
 #include "cannetworkpool.h"
 
 #include "canbusfactory.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -22,7 +31,7 @@ Result<std::shared_ptr<CanNetwork>> CanNetworkPool::networkFor(const ConnectionU
     if (auto existing = m_networks[key].lock()) {
         if (*bitrate != 0 && existing->bitrate() != 0 && *bitrate != existing->bitrate())
             return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("%1 is already in use at %2 bit/s, not %3 bit/s")
+                         Tr::tr("%1 is already in use at %2 bit/s, not %3 bit/s")
                              .arg(existing->name())
                              .arg(existing->bitrate())
                              .arg(*bitrate));

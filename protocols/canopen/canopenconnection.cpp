@@ -4,6 +4,7 @@
 #include "cannetwork.h"
 #include "canopenlogging.h"
 #include "emcyconsumer.h"
+#include "heartbeatproducer.h"
 #include "nmtmaster.h"
 #include "nodemonitor.h"
 #include "sdoclient.h"
@@ -11,7 +12,16 @@
 #include "syncproducer.h"
 #include "transport/canbus.h"
 
+#include <QCoreApplication>
 #include <QPointer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -22,6 +32,7 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
     , m_blockEnabled(uri.queryValue(QStringLiteral("block")) == u"1")
     , m_nodeResult(nodeFromUri(uri))
     , m_node(m_nodeResult.valueOr(0))
+    , m_toolNodeResult(toolNodeFromUri(uri))
     , m_probe(uri.queryValue(QStringLiteral("probe")) == u"1")
     , m_sdoModeResult(sdoModeFromText(uri.queryValue(QStringLiteral("sdo"))))
     , m_sdoMode(m_sdoModeResult.valueOr(SdoClient::Mode::Auto))
@@ -45,7 +56,10 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
             return;
         Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
         if (isConnected())
-            Q_EMIT supervisionLost(QStringLiteral("heartbeat of node %1 lost").arg(node));
+            Q_EMIT supervisionLost(
+                QStringLiteral("heartbeat lost: node %1 silent for more than %2 ms")
+                    .arg(node)
+                    .arg(m_network->monitor()->consumerTime(node)));
     });
 }
 
@@ -60,8 +74,7 @@ CanopenConnection::~CanopenConnection()
     m_network->disconnect(this);
     m_network->sdo()->disconnect(this);
     m_network->sdo()->cancelNode(
-        m_node,
-        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 deleted").arg(m_node)));
+        m_node, Error(Error::Kind::Cancelled, Tr::tr("connection to node %1 deleted").arg(m_node)));
     releaseNetwork();
     m_network.reset();
 }
@@ -126,11 +139,27 @@ Result<NodeId> CanopenConnection::nodeFromUri(const ConnectionUri &uri)
 {
     if (!uri.hasQuery(QStringLiteral("node")))
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1 needs the node id: ?node=N (1..127)").arg(uri.toString()));
+                     Tr::tr("%1 needs the node id: ?node=N (1..127)").arg(uri.toString()));
     const auto node = uri.queryInt(QStringLiteral("node"), kMinNodeId, kMaxNodeId);
     if (!node)
         return node.error();
     return NodeId(*node);
+}
+
+Result<NodeId> CanopenConnection::toolNodeFromUri(const ConnectionUri &uri)
+{
+    const QString key = QStringLiteral("toolnode");
+    if (!uri.hasQuery(key))
+        return HeartbeatProducer::kDefaultNodeId;
+    const auto tool = uri.queryInt(key, kMinNodeId, kMaxNodeId);
+    if (!tool)
+        return tool.error();
+    if (const auto node = nodeFromUri(uri); node && *node == *tool)
+        return Error(Error::Kind::InvalidArgument,
+                     QStringLiteral("?toolnode=%1 is the drive's own node id (?node=%1); the tool "
+                                    "needs a node id of its own on the bus")
+                         .arg(*tool));
+    return NodeId(*tool);
 }
 
 Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
@@ -143,19 +172,21 @@ Result<SdoClient::Mode> CanopenConnection::sdoModeFromText(const QString &text)
         return SdoClient::Mode::Segmented;
     if (text == u"block")
         return SdoClient::Mode::Block;
-    return Error(
-        Error::Kind::InvalidArgument,
-        QStringLiteral("unknown SDO mode '%1' (auto, expedited, segmented or block)").arg(text));
+    return Error(Error::Kind::InvalidArgument,
+                 Tr::tr("unknown SDO mode '%1' (auto, expedited, segmented or block)").arg(text));
 }
 
 void CanopenConnection::doOpen()
 {
-    if (!m_nodeResult || !m_sdoModeResult) {
+    if (!m_nodeResult || !m_sdoModeResult || !m_toolNodeResult) {
         setState(State::Disconnected,
-                 !m_nodeResult ? m_nodeResult.error() : m_sdoModeResult.error());
+                 !m_nodeResult          ? m_nodeResult.error()
+                     : !m_sdoModeResult ? m_sdoModeResult.error()
+                                        : m_toolNodeResult.error());
         return;
     }
     m_network->setDictionary(m_node, dictionary());
+    m_network->heartbeat()->setNodeId(*m_toolNodeResult);
     Q_EMIT logLine(QStringLiteral("opening %1 for node %2").arg(m_network->name()).arg(m_node));
     if (!m_acquired) {
         m_acquired = true;
@@ -169,8 +200,7 @@ void CanopenConnection::doOpen()
 void CanopenConnection::doClose()
 {
     m_network->sdo()->cancelNode(
-        m_node,
-        Error(Error::Kind::Cancelled, QStringLiteral("connection to node %1 closed").arg(m_node)));
+        m_node, Error(Error::Kind::Cancelled, Tr::tr("connection to node %1 closed").arg(m_node)));
     releaseNetwork();
     // Other connections may keep the bus open; then this node is done at once.
     if (m_network->users() > 0 || m_network->bus()->state() == CanBus::State::Closed)
@@ -232,8 +262,8 @@ void CanopenConnection::probe()
         }
         const Error why = reply->error().kind() == Error::Kind::Timeout
             ? Error(Error::Kind::Timeout,
-                    QStringLiteral("node %1 does not answer on %2 (no SDO answer to 1000h within "
-                                   "%3 ms)")
+                    Tr::tr("node %1 does not answer on %2 (no SDO answer to 1000h within "
+                           "%3 ms)")
                         .arg(m_node)
                         .arg(m_network->name())
                         .arg(requestTimeoutMs()))
@@ -256,7 +286,7 @@ void CanopenConnection::onBusClosed(const Error &error)
                  previous == State::Closing
                      ? Error()
                      : Error(Error::Kind::Disconnected,
-                             QStringLiteral("CAN bus %1 closed").arg(m_network->name())));
+                             Tr::tr("CAN bus %1 closed").arg(m_network->name())));
         return;
     }
     Q_EMIT logLine(QStringLiteral("! ") + error.message());
@@ -308,8 +338,8 @@ Result<QByteArray> CanopenConnection::bytesFromUnknownValue(const QVariant &valu
     }
     default:
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("cannot write a %1 to an object of unknown type (give its "
-                                    "type)")
+                     Tr::tr("cannot write a %1 to an object of unknown type (give its "
+                            "type)")
                          .arg(QString::fromLatin1(value.typeName())));
     }
     const quint64 bits = value.toULongLong();

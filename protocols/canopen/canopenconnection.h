@@ -6,7 +6,9 @@
 //
 // URI query: node=N (1..127, required), probe=1 (on open, read 1000h and fail with "node N does
 // not answer" when it stays silent), block=1 (block SDO for large objects), sdo=auto|expedited|
-// segmented|block (force the SDO mode of every read and write; default auto).
+// segmented|block (force the SDO mode of every read and write; default auto), toolnode=N (1..127,
+// default 127: the node id of the tool's own heartbeat, which drives with 1016h watch; must differ
+// from node=; it applies to the whole bus, the last connection opened sets it).
 // Connected as soon as the bus is open (after the probe when asked for). Opening acquires the
 // network's bus, closing releases it: the bus closes with the last connection that used it.
 
@@ -48,6 +50,9 @@ public:
 
     // The ?node= of a URI, checked (InvalidArgument names the problem).
     static Result<NodeId> nodeFromUri(const ConnectionUri &uri);
+    // The ?toolnode= of a URI (HeartbeatProducer::kDefaultNodeId when absent), checked against
+    // the range and against ?node=.
+    static Result<NodeId> toolNodeFromUri(const ConnectionUri &uri);
 
     QString protocolKey() const override { return QStringLiteral("canopen"); }
     Capabilities capabilities() const override { return Capability::StoreNonVolatile; }
@@ -98,6 +103,7 @@ private:
     bool m_blockEnabled = false;
     Result<NodeId> m_nodeResult;
     NodeId m_node = 0;
+    Result<NodeId> m_toolNodeResult;
     bool m_probe = false;
     Result<SdoClient::Mode> m_sdoModeResult = SdoClient::Mode::Auto;
     SdoClient::Mode m_sdoMode = SdoClient::Mode::Auto;

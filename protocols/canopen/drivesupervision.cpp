@@ -4,7 +4,16 @@
 #include "heartbeatproducer.h"
 #include "nodeguarding.h"
 
+#include <QCoreApplication>
 #include <memory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -49,32 +58,30 @@ bool DriveSupervision::hasAbortOption() const
 
 QString DriveSupervision::description() const
 {
-    const QString reaction = hasAbortOption()
-        ? QStringLiteral("6007h = 3, quick stop")
-        : QStringLiteral("no 6007h: the drive's own reaction");
+    const QString reaction = hasAbortOption() ? Tr::tr("6007h = 3, quick stop")
+                                              : Tr::tr("no 6007h: the drive's own reaction");
     switch (mode()) {
     case Mode::Heartbeat:
-        return QStringLiteral("drive stops within %1 ms if drivebench stops (our heartbeat from "
-                              "node %2 every %3 ms, watched by the drive's 1016h; %4)")
+        return Tr::tr("drive stops within %1 ms if drivebench stops (our heartbeat from "
+                      "node %2 every %3 ms, watched by the drive's 1016h; %4)")
             .arg(kReactionMs)
             .arg(m_network ? m_network->heartbeat()->nodeId() : 0)
             .arg(kPeriodMs)
             .arg(reaction);
     case Mode::Guarding:
-        return QStringLiteral("drive stops within %1 ms if drivebench stops (node guarding every "
-                              "%2 ms, life time %1 ms; %3)")
+        return Tr::tr("drive stops within %1 ms if drivebench stops (node guarding every "
+                      "%2 ms, life time %1 ms; %3)")
             .arg(kReactionMs)
             .arg(kPeriodMs)
             .arg(reaction);
     case Mode::None:
         break;
     }
-    return m_network
-        ? QStringLiteral("no drive-side supervision: node %1 describes neither 1016h "
-                         "nor 100Ch/100Dh; only the motion lease bounds a jog")
-              .arg(m_node)
-        : QStringLiteral("no drive-side supervision on this connection; only the motion "
-                         "lease bounds a jog");
+    return m_network ? Tr::tr("no drive-side supervision: node %1 describes neither 1016h "
+                              "nor 100Ch/100Dh; only the motion lease bounds a jog")
+                           .arg(m_node)
+                     : Tr::tr("no drive-side supervision on this connection; only the motion "
+                              "lease bounds a jog");
 }
 
 Reply *DriveSupervision::arm()

@@ -4,6 +4,15 @@
 #include "transport/canbus.h"
 
 #include <QCanBusFrame>
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -29,7 +38,7 @@ Result<Emergency> decode(NodeId node, const QByteArray &payload, const ObjectDic
 {
     if (payload.size() < 3)
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("EMCY from node %1 has %2 bytes, needs at least 3")
+                     Tr::tr("EMCY from node %1 has %2 bytes, needs at least 3")
                          .arg(node)
                          .arg(payload.size()));
     Emergency e;

@@ -4,7 +4,16 @@
 #include "transport/canbus.h"
 
 #include <QCanBusFrame>
+#include <QCoreApplication>
 #include <QtEndian>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -97,12 +106,12 @@ Reply *LssMaster::begin(Op op, quint8 answerCs)
 {
     auto *reply = new Reply(ObjectAddress(0, 0));
     if (isBusy()) {
-        reply->fail(Error(Error::Kind::Busy, QStringLiteral("another LSS service is running")));
+        reply->fail(Error(Error::Kind::Busy, Tr::tr("another LSS service is running")));
         return reply;
     }
     if (!m_bus->isOpen()) {
-        reply->fail(Error(Error::Kind::Disconnected,
-                          QStringLiteral("CAN bus %1 is not open").arg(m_bus->name())));
+        reply->fail(
+            Error(Error::Kind::Disconnected, Tr::tr("CAN bus %1 is not open").arg(m_bus->name())));
         return reply;
     }
     m_reply = reply;
@@ -125,9 +134,8 @@ Reply *LssMaster::switchModeSelective(const LssAddress &address)
 Reply *LssMaster::configureNodeId(NodeId node)
 {
     if (!((node >= kMinNodeId && node <= kMaxNodeId) || node == lss::kUnconfigured))
-        return Reply::failed({},
-                             Error(Error::Kind::OutOfRange,
-                                   QStringLiteral("LSS node id %1 is not 1..127").arg(node)));
+        return Reply::failed(
+            {}, Error(Error::Kind::OutOfRange, Tr::tr("LSS node id %1 is not 1..127").arg(node)));
     Reply *reply = begin(Op::Confirm, lss::ConfigureNodeId);
     if (m_reply == reply)
         send(lss::ConfigureNodeId, QByteArray(1, char(node)), 2);
@@ -166,10 +174,9 @@ Reply *LssMaster::storeConfiguration()
 Reply *LssMaster::inquire(quint8 cs)
 {
     if (cs < lss::InquireVendor || cs > lss::InquireNodeId)
-        return Reply::failed(
-            {},
-            Error(Error::Kind::InvalidArgument,
-                  QStringLiteral("0x%1 is no LSS inquire service").arg(cs, 0, 16)));
+        return Reply::failed({},
+                             Error(Error::Kind::InvalidArgument,
+                                   Tr::tr("0x%1 is no LSS inquire service").arg(cs, 0, 16)));
     Reply *reply = begin(Op::Inquire, cs);
     if (m_reply == reply)
         send(cs, {}, 1);
@@ -205,12 +212,12 @@ void LssMaster::fastscanStep(bool answered)
     if (m_bit < 0) {
         if (!answered)
             return finish(Error(Error::Kind::Timeout,
-                                QStringLiteral("no unconfigured LSS slave answered the fastscan")));
+                                Tr::tr("no unconfigured LSS slave answered the fastscan")));
         m_bit = 31;
     } else if (m_bit == 32) {
         if (!answered)
             return finish(Error(Error::Kind::Malformed,
-                                QStringLiteral("the LSS slave stopped answering during fastscan")));
+                                Tr::tr("the LSS slave stopped answering during fastscan")));
         if (m_sub == 3) {
             const LssAddress found { m_id[0], m_id[1], m_id[2], m_id[3] };
             return finish({}, QVariant::fromValue(found));
@@ -247,7 +254,7 @@ void LssMaster::onFrame(const QCanBusFrame &frame)
             const quint8 code = quint8(p.at(1));
             return finish(Error(
                 Error::Kind::DeviceError,
-                QStringLiteral("LSS slave refused (error code %1%2)")
+                Tr::tr("LSS slave refused (error code %1%2)")
                     .arg(code)
                     .arg(code == 1 ? QStringLiteral(": out of range / not supported") : QString()),
                 code));
@@ -263,7 +270,7 @@ void LssMaster::onTimeout()
     if (m_op == Op::Fastscan)
         return fastscanStep(false);
     finish(Error(Error::Kind::Timeout,
-                 QStringLiteral("no LSS answer (cs 0x%1) within %2 ms on %3")
+                 Tr::tr("no LSS answer (cs 0x%1) within %2 ms on %3")
                      .arg(m_answerCs, 2, 16, QLatin1Char('0'))
                      .arg(m_timeoutMs)
                      .arg(m_bus->name())));

@@ -5,8 +5,17 @@
 
 #include <QPointer>
 
+#include <QCoreApplication>
 #include <QtEndian>
 #include <algorithm>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -67,7 +76,7 @@ Reply *PdoClient::read(NodeId node, PdoDirection direction, int number)
     config.number = number;
     if (number < 0 || number >= PdoConfig::kMaxPerDirection) {
         outer->fail(Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("PDO number %1 out of range").arg(number + 1)));
+                          Tr::tr("PDO number %1 out of range").arg(number + 1)));
         return outer;
     }
     const quint16 comm = config.communicationIndex();
@@ -208,7 +217,7 @@ Reply *PdoClient::configure(NodeId node, const PdoConfig &config)
     auto *outer = new Reply(ObjectAddress(config.communicationIndex(), 1));
     if (config.entries.size() > PdoConfig::kMaxEntries || config.totalBits() > 64) {
         outer->fail(Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("%1: %2 bits mapped, a CAN frame carries 64")
+                          Tr::tr("%1: %2 bits mapped, a CAN frame carries 64")
                               .arg(config.name())
                               .arg(config.totalBits())));
         return outer;
@@ -227,8 +236,7 @@ void PdoClient::runWrites(NodeId node, Reply *outer, QList<Write> writes)
     Reply *inner = m_sdo->download(node, next.address, next.data, SdoClient::Mode::Auto);
     step(outer, inner, [=, this](const Result<QByteArray> &done) {
         if (!done)
-            return void(
-                outer->fail(done.error().prefixed(QStringLiteral("configuring PDO, writing"))));
+            return void(outer->fail(done.error().prefixed(Tr::tr("configuring PDO, writing"))));
         runWrites(node, outer, writes);
     });
 }

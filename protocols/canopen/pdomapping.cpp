@@ -1,4 +1,13 @@
 #include "pdomapping.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -78,7 +87,7 @@ Result<QList<PdoValue>> decodePdo(const PdoConfig &config, const QByteArray &pay
     const int needed = (config.totalBits() + 7) / 8;
     if (payload.size() < needed)
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 carries %2 bytes, its mapping needs %3")
+                     Tr::tr("%1 carries %2 bytes, its mapping needs %3")
                          .arg(config.name())
                          .arg(payload.size())
                          .arg(needed));
@@ -104,8 +113,7 @@ Result<QList<PdoValue>> decodePdo(const PdoConfig &config, const QByteArray &pay
             sized.resize(size, '\0');
         auto raw = codec::decode(def->type, sized);
         if (!raw)
-            return raw.error().prefixed(
-                QStringLiteral("%1 %2").arg(config.name(), e.address.toString()));
+            return raw.error().prefixed(Tr::tr("%1 %2").arg(config.name(), e.address.toString()));
         values.append({ e.address, raw.value() });
     }
     return values;

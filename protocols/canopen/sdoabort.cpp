@@ -1,58 +1,97 @@
 #include "sdoabort.h"
 
+#include <QCoreApplication>
 #include <QHash>
 
 namespace db::canopen {
 
+// The CiA 301 texts of the abort codes, translated like every other message.
 QString abortText(quint32 code)
 {
     static const QHash<quint32, const char *> texts = {
-        { abort::ToggleNotAlternated, "toggle bit not alternated" },
-        { abort::Timeout, "SDO protocol timed out" },
-        { abort::InvalidCommand, "client/server command specifier not valid or unknown" },
-        { abort::InvalidBlockSize, "invalid block size (block mode only)" },
-        { abort::InvalidSequence, "invalid sequence number (block mode only)" },
-        { abort::CrcError, "CRC error (block mode only)" },
-        { abort::OutOfMemory, "out of memory" },
-        { abort::UnsupportedAccess, "unsupported access to an object" },
-        { abort::WriteOnly, "attempt to read a write only object" },
-        { abort::ReadOnly, "attempt to write a read only object" },
-        { abort::NoSuchObject, "object does not exist in the object dictionary" },
-        { abort::NotMappable, "object cannot be mapped to the PDO" },
+        { abort::ToggleNotAlternated,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "toggle bit not alternated") },
+        { abort::Timeout, QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "SDO protocol timed out") },
+        { abort::InvalidCommand,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "client/server command specifier not valid or unknown") },
+        { abort::InvalidBlockSize,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "invalid block size (block mode only)") },
+        { abort::InvalidSequence,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "invalid sequence number (block mode only)") },
+        { abort::CrcError,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "CRC error (block mode only)") },
+        { abort::OutOfMemory, QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "out of memory") },
+        { abort::UnsupportedAccess,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "unsupported access to an object") },
+        { abort::WriteOnly,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "attempt to read a write only object") },
+        { abort::ReadOnly,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "attempt to write a read only object") },
+        { abort::NoSuchObject,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "object does not exist in the object dictionary") },
+        { abort::NotMappable,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "object cannot be mapped to the PDO") },
         { abort::PdoTooLong,
-          "the number and length of the objects to be mapped would exceed the "
-          "PDO length" },
-        { abort::Incompatible, "general parameter incompatibility" },
-        { abort::InternalIncompatibility, "general internal incompatibility in the device" },
-        { abort::HardwareError, "access failed due to a hardware error" },
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "the number and length of the objects to be mapped would exceed the "
+                            "PDO length") },
+        { abort::Incompatible,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "general parameter incompatibility") },
+        { abort::InternalIncompatibility,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "general internal incompatibility in the device") },
+        { abort::HardwareError,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "access failed due to a hardware error") },
         { abort::LengthMismatch,
-          "data type does not match, length of service parameter does not "
-          "match" },
-        { abort::LengthTooHigh, "data type does not match, length of service parameter too high" },
-        { abort::LengthTooLow, "data type does not match, length of service parameter too low" },
-        { abort::NoSuchSubIndex, "sub-index does not exist" },
-        { abort::InvalidValue, "invalid value for parameter (download only)" },
-        { abort::ValueTooHigh, "value of parameter written too high (download only)" },
-        { abort::ValueTooLow, "value of parameter written too low (download only)" },
-        { abort::MaxBelowMin, "maximum value is less than minimum value" },
-        { abort::ResourceNotAvailable, "resource not available: SDO connection" },
-        { abort::General, "general error" },
-        { abort::CannotStore, "data cannot be transferred or stored to the application" },
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data type does not match, length of service parameter does not "
+                            "match") },
+        { abort::LengthTooHigh,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data type does not match, length of service parameter too high") },
+        { abort::LengthTooLow,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data type does not match, length of service parameter too low") },
+        { abort::NoSuchSubIndex,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "sub-index does not exist") },
+        { abort::InvalidValue,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "invalid value for parameter (download only)") },
+        { abort::ValueTooHigh,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "value of parameter written too high (download only)") },
+        { abort::ValueTooLow,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "value of parameter written too low (download only)") },
+        { abort::MaxBelowMin,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "maximum value is less than minimum value") },
+        { abort::ResourceNotAvailable,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "resource not available: SDO connection") },
+        { abort::General, QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "general error") },
+        { abort::CannotStore,
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data cannot be transferred or stored to the application") },
         { abort::CannotStoreLocal,
-          "data cannot be transferred or stored to the application "
-          "because of local control" },
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data cannot be transferred or stored to the application "
+                            "because of local control") },
         { abort::CannotStoreState,
-          "data cannot be transferred or stored to the application "
-          "because of the present device state" },
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "data cannot be transferred or stored to the application "
+                            "because of the present device state") },
         { abort::NoDictionary,
-          "object dictionary dynamic generation fails or no object "
-          "dictionary is present" },
-        { abort::NoData, "no data available" },
+          QT_TRANSLATE_NOOP("db::canopen::SdoAbort",
+                            "object dictionary dynamic generation fails or no object "
+                            "dictionary is present") },
+        { abort::NoData, QT_TRANSLATE_NOOP("db::canopen::SdoAbort", "no data available") },
     };
     const auto it = texts.constFind(code);
     if (it != texts.cend())
-        return QString::fromLatin1(*it);
-    return QStringLiteral("unknown abort code 0x%1").arg(code, 8, 16, QLatin1Char('0'));
+        return QCoreApplication::translate("db::canopen::SdoAbort", *it);
+    return QCoreApplication::translate("db::canopen::SdoAbort", "unknown abort code 0x%1")
+        .arg(code, 8, 16, QLatin1Char('0'));
 }
 
 } // namespace db::canopen

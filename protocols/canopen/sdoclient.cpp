@@ -9,8 +9,17 @@
 #include <QCanBusFrame>
 #include <QTimer>
 
+#include <QCoreApplication>
 #include <deque>
 #include <optional>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -39,13 +48,13 @@ SdoClient::SdoClient(CanBus *bus, QObject *parent)
     connect(m_bus, &CanBus::closed, this, [this](const Error &error) {
         cancelAll(error.isError() ? error
                                   : Error(Error::Kind::Disconnected,
-                                          QStringLiteral("CAN bus %1 closed").arg(m_bus->name())));
+                                          Tr::tr("CAN bus %1 closed").arg(m_bus->name())));
     });
 }
 
 SdoClient::~SdoClient()
 {
-    cancelAll(Error(Error::Kind::Cancelled, QStringLiteral("SDO client deleted")));
+    cancelAll(Error(Error::Kind::Cancelled, Tr::tr("SDO client deleted")));
 }
 
 void SdoClient::setBlockSize(int segments)
@@ -71,9 +80,9 @@ Reply *SdoClient::download(NodeId node, ObjectAddress address, const QByteArray 
 {
     auto *reply = new Reply(address);
     if (mode == Mode::Expedited && (data.isEmpty() || data.size() > sdocodec::kExpeditedMax)) {
-        reply->fail(Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("expedited SDO download carries 1 to 4 bytes, not %1")
-                              .arg(data.size())));
+        reply->fail(
+            Error(Error::Kind::InvalidArgument,
+                  Tr::tr("expedited SDO download carries 1 to 4 bytes, not %1").arg(data.size())));
         return reply;
     }
     const bool block = mode == Mode::Block
@@ -90,13 +99,13 @@ Reply *SdoClient::enqueue(NodeId node, std::unique_ptr<SdoTransfer> transfer, Re
                           bool upload)
 {
     if (node < kMinNodeId || node > kMaxNodeId) {
-        reply->fail(Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("node id %1 is outside 1..127").arg(node)));
+        reply->fail(
+            Error(Error::Kind::InvalidArgument, Tr::tr("node id %1 is outside 1..127").arg(node)));
         return reply;
     }
     if (!m_bus->isOpen()) {
-        reply->fail(Error(Error::Kind::Disconnected,
-                          QStringLiteral("CAN bus %1 is not open").arg(m_bus->name())));
+        reply->fail(
+            Error(Error::Kind::Disconnected, Tr::tr("CAN bus %1 is not open").arg(m_bus->name())));
         return reply;
     }
     Channel &ch = channel(node);
@@ -201,7 +210,7 @@ bool SdoClient::sendAll(Channel &ch, const QByteArrayList &frames)
         if (!m_bus->send(QCanBusFrame(id, payload))) {
             finishActive(ch,
                          Error(Error::Kind::Disconnected,
-                               QStringLiteral("CAN bus %1 is not open").arg(m_bus->name())));
+                               Tr::tr("CAN bus %1 is not open").arg(m_bus->name())));
             return false;
         }
     }
@@ -228,7 +237,7 @@ void SdoClient::onTimeout(Channel &ch)
     if (!ch.active)
         return;
     const SdoTransfer &t = *ch.active->transfer;
-    const QString what = QStringLiteral("node %1 did not answer %2 within %3 ms")
+    const QString what = Tr::tr("node %1 did not answer %2 within %3 ms")
                              .arg(ch.node)
                              .arg(t.describe())
                              .arg(ch.active->timeoutMs);

@@ -3,6 +3,15 @@
 #include "canopenids.h"
 #include "sdoabort.h"
 #include "sdocodec.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -32,7 +41,7 @@ SdoStep SdoTransfer::abortWith(quint32 code, Error::Kind kind, const QString &me
     step.outcome = SdoStep::Outcome::Failed;
     step.frames = { sdocodec::abort(m_address, code) };
     step.error = Error(kind,
-                       QStringLiteral("%1 in %2 (sent SDO abort 0x%3)")
+                       Tr::tr("%1 in %2 (sent SDO abort 0x%3)")
                            .arg(message, describe())
                            .arg(code, 8, 16, QLatin1Char('0')),
                        code);

@@ -1,4 +1,13 @@
 #include "drivecontroller.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::cia402)
+};
+} // namespace
 
 namespace db::cia402 {
 
@@ -15,7 +24,7 @@ Sequence::Check stateIs(QList<State> wanted)
         if (wanted.contains(s))
             return WaitVerdict::Reached;
         if (s == State::Fault || s == State::FaultReactionActive) {
-            why = QStringLiteral("the drive went to fault");
+            why = Tr::tr("the drive went to fault");
             return WaitVerdict::Failed;
         }
         return WaitVerdict::Pending;
@@ -94,7 +103,7 @@ Reply *DriveController::goTo(State target, const QString &name)
             s->waitFor(
                 QStringLiteral("a state from which %1 can be reached").arg(stateName(target)),
                 [](quint16, QString &why) {
-                    why = QStringLiteral("no transition from this state");
+                    why = Tr::tr("no transition from this state");
                     return WaitVerdict::Failed;
                 });
             return;

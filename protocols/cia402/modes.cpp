@@ -1,6 +1,15 @@
 #include "modes.h"
 
 #include "statusword.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::cia402)
+};
+} // namespace
 
 namespace db::cia402 {
 
@@ -27,6 +36,15 @@ quint32 supportedModeBit(Mode mode)
     return 0;
 }
 
+std::optional<ObjectAddress> profileJerk(const ObjectDictionary &dictionary)
+{
+    if (dictionary.contains(obj::ProfileJerkArray))
+        return obj::ProfileJerkArray;
+    if (dictionary.contains(obj::ProfileJerkValue))
+        return obj::ProfileJerkValue;
+    return std::nullopt;
+}
+
 namespace {
 QVariant i64(qint64 v)
 {
@@ -46,6 +64,8 @@ Sequence *profilePosition(DeviceConnection *c, const PositionSetPoint &sp, QObje
     s->write(obj::ProfileVelocity, i64(sp.velocity));
     s->write(obj::ProfileAcceleration, i64(sp.acceleration));
     s->write(obj::ProfileDeceleration, i64(sp.deceleration));
+    if (sp.jerkObject)
+        s->write(*sp.jerkObject, i64(sp.jerk));
     s->write(obj::TargetPosition, i64(sp.target));
     const quint16 base = cw::EnableOperationCmd | (sp.relative ? cw::Relative : 0);
     s->controlword(base);
@@ -87,7 +107,7 @@ Sequence *homing(DeviceConnection *c, const HomingSetPoint &sp, QObject *parent)
         QStringLiteral("homing attained (6041h bits 12 and 10)"),
         [](quint16 word, QString &why) {
             if (word & (sw::FollowingError | sw::Fault)) {
-                why = QStringLiteral("homing error");
+                why = Tr::tr("homing error");
                 return WaitVerdict::Failed;
             }
             const quint16 done = sw::SetPointAcknowledge | sw::TargetReached;

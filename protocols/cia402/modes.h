@@ -36,7 +36,10 @@ constexpr ObjectAddress HomingMethod { 0x6098, 0 };
 constexpr ObjectAddress HomingSpeedFast { 0x6099, 1 };
 constexpr ObjectAddress HomingSpeedSlow { 0x6099, 2 };
 constexpr ObjectAddress HomingAcceleration { 0x609A, 0 };
-constexpr ObjectAddress ProfileJerk { 0x60A4, 1 };
+// Profile jerk: CiA 402 describes 60A4h as an array (sub 1 = the jerk used), some drives (the
+// MovingCap) as a single value in sub 0. profileJerk() picks what a description has.
+constexpr ObjectAddress ProfileJerkArray { 0x60A4, 1 };
+constexpr ObjectAddress ProfileJerkValue { 0x60A4, 0 };
 constexpr ObjectAddress DigitalInputs { 0x60FD, 0 };
 constexpr ObjectAddress TargetVelocity { 0x60FF, 0 };
 constexpr ObjectAddress SupportedModes { 0x6502, 0 };
@@ -44,6 +47,9 @@ constexpr ObjectAddress SupportedModes { 0x6502, 0 };
 
 // 6502h bit for a mode (CiA 402-2: bit 0 pp, 2 pv, 3 tq, 5 hm, 7 csp, 8 csv, 9 cst).
 quint32 supportedModeBit(Mode mode);
+// The profile jerk object a description has (60A4h.1 of the CiA 402 array, else 60A4h.0 of a
+// drive that describes it as one value), none when it has neither.
+std::optional<ObjectAddress> profileJerk(const ObjectDictionary &dictionary);
 
 // One profile-position set-point in raw drive units.
 struct PositionSetPoint
@@ -54,6 +60,8 @@ struct PositionSetPoint
     quint32 deceleration = 0;
     bool relative = false; // controlword bit 6
     bool immediate = true; // bit 5: replace the running move (63) instead of queueing (31)
+    std::optional<ObjectAddress> jerkObject; // written with jerk when set (profileJerk())
+    quint32 jerk = 0;
 };
 
 struct HomingSetPoint

@@ -1,4 +1,13 @@
 #include "scaling.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::cia402)
+};
+} // namespace
 
 namespace db::cia402 {
 
@@ -33,9 +42,8 @@ Result<Scaling> Scaling::fromValues(const QHash<ObjectAddress, QVariant> &values
         bool ok = false;
         const qulonglong v = values.value(address).toULongLong(&ok);
         if (!ok || v == 0 || v > 0xFFFFFFFFull)
-            return Error(
-                Error::Kind::InvalidArgument,
-                QStringLiteral("scaling object %1 is missing or zero").arg(address.toString()));
+            return Error(Error::Kind::InvalidArgument,
+                         Tr::tr("scaling object %1 is missing or zero").arg(address.toString()));
         *field = quint32(v);
     }
     return s;

@@ -1,6 +1,15 @@
 #include "sequence.h"
 
 #include "statusword.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::cia402)
+};
+} // namespace
 
 namespace db::cia402 {
 
@@ -15,7 +24,7 @@ Sequence::Sequence(DeviceConnection *connection, QString name, QObject *parent)
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         const Step &step = m_steps[m_index];
         fail(Error(Error::Kind::Timeout,
-                   QStringLiteral("%1: %2 did not happen within %3 ms (statusword 0x%4)")
+                   Tr::tr("%1: %2 did not happen within %3 ms (statusword 0x%4)")
                        .arg(m_name, step.what)
                        .arg(step.timeoutMs)
                        .arg(m_statusword, 4, 16, QLatin1Char('0'))));
@@ -132,7 +141,7 @@ void Sequence::onStatus(Reply *reply)
         return;
     case WaitVerdict::Failed:
         fail(Error(Error::Kind::DeviceError,
-                   QStringLiteral("%1: %2 (statusword 0x%3)")
+                   Tr::tr("%1: %2 (statusword 0x%3)")
                        .arg(m_name, why)
                        .arg(m_statusword, 4, 16, QLatin1Char('0'))));
         return;
@@ -169,7 +178,7 @@ Sequence::Check bitsCheck(quint16 mask, bool set, bool failOnFault)
 {
     return [=](quint16 word, QString &why) {
         if (failOnFault && (word & sw::Fault)) {
-            why = QStringLiteral("the drive went to fault");
+            why = Tr::tr("the drive went to fault");
             return WaitVerdict::Failed;
         }
         const bool match = set ? (word & mask) == mask : (word & mask) == 0;

@@ -3,6 +3,14 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
+
 namespace db {
 
 namespace {

@@ -1,8 +1,17 @@
 #include "connectionuri.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 #include <QUrl>
 #include <QUrlQuery>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -14,22 +23,22 @@ Result<ConnectionUri> ConnectionUri::parse(const QString &text)
     const auto m = schemeRe.match(trimmed);
     if (!m.hasMatch()) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' is not a connection URI; write e.g. "
-                                    "refgo://192.168.2.150 or canopen+slcan://HOST?node=50")
+                     Tr::tr("'%1' is not a connection URI; write e.g. "
+                            "refgo://192.168.2.150 or canopen+slcan://HOST?node=50")
                          .arg(text));
     }
     const QUrl url(trimmed, QUrl::StrictMode);
     if (!url.isValid()) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' is not a valid URI (%2)").arg(text, url.errorString()));
+                     Tr::tr("'%1' is not a valid URI (%2)").arg(text, url.errorString()));
     }
     if (url.host().isEmpty()) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' has no valid host or interface").arg(text));
+                     Tr::tr("'%1' has no valid host or interface").arg(text));
     }
     if (!url.path().isEmpty() && url.path() != QLatin1String("/")) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1': unexpected path '%2'").arg(text, url.path()));
+                     Tr::tr("'%1': unexpected path '%2'").arg(text, url.path()));
     }
     ConnectionUri uri;
     uri.m_scheme = url.scheme().toLower();
@@ -50,7 +59,7 @@ Result<int> ConnectionUri::queryInt(const QString &key, int min, int max) const
         : text.toInt(&ok, 10);
     if (!ok || value < min || value > max) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("%1=%2 in %3: expected a number from %4 to %5")
+                     Tr::tr("%1=%2 in %3: expected a number from %4 to %5")
                          .arg(key, text.isEmpty() ? QStringLiteral("(missing)") : text, toString())
                          .arg(min)
                          .arg(max));

@@ -2,8 +2,17 @@
 
 #include "logging.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -17,7 +26,7 @@ DeviceConnection::DeviceConnection(const ConnectionUri &uri, QObject *parent)
 
 DeviceConnection::~DeviceConnection()
 {
-    failPending(Error(Error::Kind::Cancelled, QStringLiteral("connection deleted")));
+    failPending(Error(Error::Kind::Cancelled, Tr::tr("connection deleted")));
 }
 
 void DeviceConnection::open()
@@ -49,14 +58,12 @@ Result<void> DeviceConnection::openAndWait(int timeoutMs)
     if (isConnected())
         return {};
     if (timedOut)
-        return Error(Error::Kind::Timeout,
-                     QStringLiteral("no connection to %1 within %2 ms")
-                         .arg(m_uri.toString())
-                         .arg(timeoutMs));
+        return Error(
+            Error::Kind::Timeout,
+            Tr::tr("no connection to %1 within %2 ms").arg(m_uri.toString()).arg(timeoutMs));
     return m_lastError.isError()
         ? m_lastError
-        : Error(Error::Kind::Disconnected,
-                QStringLiteral("cannot connect to %1").arg(m_uri.toString()));
+        : Error(Error::Kind::Disconnected, Tr::tr("cannot connect to %1").arg(m_uri.toString()));
 }
 
 void DeviceConnection::close()
@@ -67,7 +74,7 @@ void DeviceConnection::close()
     }
     if (m_state == State::Closing)
         return;
-    failPending(Error(Error::Kind::Cancelled, QStringLiteral("connection closed by the user")));
+    failPending(Error(Error::Kind::Cancelled, Tr::tr("connection closed by the user")));
     setState(State::Closing);
     doClose();
 }
@@ -75,15 +82,15 @@ void DeviceConnection::close()
 Reply *DeviceConnection::read(ObjectAddress address)
 {
     if (m_state != State::Connected)
-        return Reply::failed(address,
-                             Error(Error::Kind::Disconnected,
-                                   QStringLiteral("not connected to %1").arg(m_uri.toString())));
+        return Reply::failed(
+            address,
+            Error(Error::Kind::Disconnected, Tr::tr("not connected to %1").arg(m_uri.toString())));
     const ObjectDef *def = m_dictionary.find(address);
     if (def && !def->readable())
-        return Reply::failed(address,
-                             Error(Error::Kind::AccessDenied,
-                                   QStringLiteral("%1 %2 is write-only")
-                                       .arg(addressFormat().format(address), def->name)));
+        return Reply::failed(
+            address,
+            Error(Error::Kind::AccessDenied,
+                  Tr::tr("%1 %2 is write-only").arg(addressFormat().format(address), def->name)));
     Reply *reply = track(new Reply(address));
     doRead(reply, def);
     return reply;
@@ -92,23 +99,28 @@ Reply *DeviceConnection::read(ObjectAddress address)
 Reply *DeviceConnection::write(ObjectAddress address, const QVariant &raw)
 {
     if (m_state != State::Connected)
-        return Reply::failed(address,
-                             Error(Error::Kind::Disconnected,
-                                   QStringLiteral("not connected to %1").arg(m_uri.toString())));
+        return Reply::failed(
+            address,
+            Error(Error::Kind::Disconnected, Tr::tr("not connected to %1").arg(m_uri.toString())));
     const ObjectDef *def = m_dictionary.find(address);
     QVariant value = raw;
     if (def) {
         if (!def->writable())
-            return Reply::failed(address,
-                                 Error(Error::Kind::AccessDenied,
-                                       QStringLiteral("%1 %2 is read-only")
-                                           .arg(addressFormat().format(address), def->name)));
+            return Reply::failed(
+                address,
+                Error(
+                    Error::Kind::AccessDenied,
+                    Tr::tr("%1 %2 is read-only").arg(addressFormat().format(address), def->name)));
         auto checked = def->validate(raw, addressFormat());
         if (!checked)
             return Reply::failed(address, checked.error());
         value = checked.value();
     }
     Reply *reply = track(new Reply(address));
+    connect(reply, &Reply::finished, this, [this, reply] {
+        if (reply->ok())
+            Q_EMIT objectWritten(reply->address());
+    });
     doWrite(reply, value, def);
     return reply;
 }
@@ -123,7 +135,7 @@ void DeviceConnection::setState(State state, const Error &error)
         failPending(error.isError()
                         ? error
                         : Error(Error::Kind::Disconnected,
-                                QStringLiteral("connection to %1 closed").arg(m_uri.toString())));
+                                Tr::tr("connection to %1 closed").arg(m_uri.toString())));
     if (error.isError())
         Q_EMIT errorOccurred(error);
     if (state != m_state) {
@@ -168,24 +180,22 @@ Reply *DeviceConnection::storeNonVolatile()
     return Reply::failed(
         {},
         Error(Error::Kind::NotSupported,
-              QStringLiteral("%1 cannot store parameters permanently").arg(m_uri.toString())));
+              Tr::tr("%1 cannot store parameters permanently").arg(m_uri.toString())));
 }
 
 Reply *DeviceConnection::restoreFactoryDefaults()
 {
-    return Reply::failed(
-        {},
-        Error(Error::Kind::NotSupported,
-              QStringLiteral("%1 cannot restore factory defaults").arg(m_uri.toString())));
+    return Reply::failed({},
+                         Error(Error::Kind::NotSupported,
+                               Tr::tr("%1 cannot restore factory defaults").arg(m_uri.toString())));
 }
 
 Reply *DeviceConnection::rawCommand(const QString &command)
 {
     Q_UNUSED(command)
-    return Reply::failed(
-        {},
-        Error(Error::Kind::NotSupported,
-              QStringLiteral("%1 takes no raw protocol commands").arg(m_uri.toString())));
+    return Reply::failed({},
+                         Error(Error::Kind::NotSupported,
+                               Tr::tr("%1 takes no raw protocol commands").arg(m_uri.toString())));
 }
 
 } // namespace db

@@ -107,6 +107,10 @@ Q_SIGNALS:
     // The device's own supervision says it is gone while the link is still up (a CANopen node
     // whose heartbeat stopped): motion must be treated as out of control.
     void supervisionLost(const QString &why);
+    // A write() the device accepted: its value is in the device's RAM, not yet stored
+    // permanently (storeNonVolatile()). Emitted once per successful write, before the reply's
+    // finished() reaches other receivers connected later.
+    void objectWritten(db::ObjectAddress address);
 
 protected:
     virtual void doOpen() = 0;

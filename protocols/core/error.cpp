@@ -14,35 +14,35 @@ QString Error::kindName(Kind kind)
 {
     switch (kind) {
     case Kind::None:
-        return QStringLiteral("ok");
+        return tr("ok");
     case Kind::InvalidArgument:
-        return QStringLiteral("invalid argument");
+        return tr("invalid argument");
     case Kind::OutOfRange:
-        return QStringLiteral("out of range");
+        return tr("out of range");
     case Kind::AccessDenied:
-        return QStringLiteral("access denied");
+        return tr("access denied");
     case Kind::NotSupported:
-        return QStringLiteral("not supported");
+        return tr("not supported");
     case Kind::ConnectionRefused:
-        return QStringLiteral("connection refused");
+        return tr("connection refused");
     case Kind::HostNotFound:
-        return QStringLiteral("host not found");
+        return tr("host not found");
     case Kind::Timeout:
-        return QStringLiteral("timeout");
+        return tr("timeout");
     case Kind::Disconnected:
-        return QStringLiteral("disconnected");
+        return tr("disconnected");
     case Kind::Malformed:
-        return QStringLiteral("malformed answer");
+        return tr("malformed answer");
     case Kind::DeviceError:
-        return QStringLiteral("device error");
+        return tr("device error");
     case Kind::Cancelled:
-        return QStringLiteral("cancelled");
+        return tr("cancelled");
     case Kind::Io:
-        return QStringLiteral("i/o error");
+        return tr("i/o error");
     case Kind::Busy:
-        return QStringLiteral("busy");
+        return tr("busy");
     }
-    return QStringLiteral("error");
+    return tr("error");
 }
 
 QString Error::toString() const

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QCoreApplication>
 #include <QMetaType>
 #include <QString>
 
@@ -9,6 +10,8 @@ namespace db {
 // Errors are values: they cross the event loop in replies and signals, never as exceptions.
 class Error
 {
+    Q_DECLARE_TR_FUNCTIONS(db::Error)
+
 public:
     enum class Kind {
         None,

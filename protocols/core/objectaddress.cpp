@@ -1,6 +1,15 @@
 #include "objectaddress.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -18,8 +27,8 @@ Result<ObjectAddress> ObjectAddress::parse(const QString &text)
     const auto m = re.match(text);
     if (!m.hasMatch()) {
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' is not an object address; write INDEX:SUB in hex, "
-                                    "e.g. 6041:0")
+                     Tr::tr("'%1' is not an object address; write INDEX:SUB in hex, "
+                            "e.g. 6041:0")
                          .arg(text));
     }
     const quint16 index = static_cast<quint16>(m.captured(1).toUInt(nullptr, 16));

@@ -1,4 +1,13 @@
 #include "protocolregistry.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -28,7 +37,7 @@ Result<ConnectionUri> ProtocolRegistry::parseUri(const QString &text) const
         for (const ProtocolInfo &p : m_protocols)
             known.append(p.scheme);
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("unknown protocol '%1' in %2 (known: %3)")
+                     Tr::tr("unknown protocol '%1' in %2 (known: %3)")
                          .arg(uri->scheme(), text.trimmed(), known.join(QStringLiteral(", "))));
     }
     ConnectionUri result = uri.value();
@@ -36,7 +45,7 @@ Result<ConnectionUri> ProtocolRegistry::parseUri(const QString &text) const
         result.setPort(info->defaultPort);
     if (result.port() > 65535)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("port %1 in %2 is out of range").arg(result.port()).arg(text));
+                     Tr::tr("port %1 in %2 is out of range").arg(result.port()).arg(text));
     if (info->check) {
         if (auto checked = info->check(result); !checked)
             return checked.error();
@@ -66,9 +75,9 @@ Result<std::shared_ptr<DeviceConnection>> ProtocolRegistry::create(const Connect
 {
     const ProtocolInfo *info = find(plan.uri.scheme());
     if (!info || !info->create)
-        return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("unknown protocol '%1' in %2")
-                         .arg(plan.uri.scheme(), plan.uri.toString()));
+        return Error(
+            Error::Kind::InvalidArgument,
+            Tr::tr("unknown protocol '%1' in %2").arg(plan.uri.scheme(), plan.uri.toString()));
     auto made = info->create(plan);
     if (!made)
         return made.error();

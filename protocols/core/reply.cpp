@@ -1,8 +1,17 @@
 #include "reply.h"
 
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QPointer>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -14,7 +23,7 @@ Reply::Reply(ObjectAddress address, QObject *parent)
 Result<QVariant> Reply::result() const
 {
     if (!m_finished)
-        return Error(Error::Kind::Busy, QStringLiteral("request still pending"));
+        return Error(Error::Kind::Busy, Tr::tr("request still pending"));
     if (m_error.isError())
         return m_error;
     return m_value;
@@ -35,7 +44,7 @@ bool Reply::fail(const Error &error)
     if (m_finished)
         return false;
     m_finished = true;
-    m_error = error.isError() ? error : Error(Error::Kind::DeviceError, QStringLiteral("failed"));
+    m_error = error.isError() ? error : Error(Error::Kind::DeviceError, Tr::tr("failed"));
     scheduleFinished();
     return true;
 }
@@ -92,11 +101,11 @@ Result<QVariant> Reply::wait(Reply *reply, int safetyMs)
         loop.exec();
     }
     if (!guard)
-        return Error(Error::Kind::Cancelled, QStringLiteral("request was deleted"));
+        return Error(Error::Kind::Cancelled, Tr::tr("request was deleted"));
     Result<QVariant> result = reply->isFinished()
         ? reply->result()
         : Result<QVariant>(
-            Error(Error::Kind::Timeout, QStringLiteral("no answer within %1 ms").arg(safetyMs)));
+            Error(Error::Kind::Timeout, Tr::tr("no answer within %1 ms").arg(safetyMs)));
     reply->deleteLater();
     return result;
 }

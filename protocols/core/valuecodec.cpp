@@ -3,8 +3,17 @@
 #include <QRegularExpression>
 #include <QtEndian>
 
+#include <QCoreApplication>
 #include <cmath>
 #include <limits>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db::codec {
 
@@ -13,7 +22,7 @@ namespace {
 Error outOfRange(DataType type, const QString &value)
 {
     return Error(Error::Kind::OutOfRange,
-                 QStringLiteral("%1 does not fit %2 (%3 .. %4)")
+                 Tr::tr("%1 does not fit %2 (%3 .. %4)")
                      .arg(value, datatype::name(type), typeMinimum(type).toString(),
                           typeMaximum(type).toString()));
 }
@@ -21,7 +30,7 @@ Error outOfRange(DataType type, const QString &value)
 Error notANumber(DataType type, const QString &text)
 {
     return Error(Error::Kind::InvalidArgument,
-                 QStringLiteral("'%1' is not a valid %2 value").arg(text, datatype::name(type)));
+                 Tr::tr("'%1' is not a valid %2 value").arg(text, datatype::name(type)));
 }
 
 qint64 signedMin(int bytes)
@@ -104,7 +113,7 @@ QVariant typeMaximum(DataType type)
 Result<QVariant> normalize(DataType type, const QVariant &value)
 {
     if (!value.isValid())
-        return Error(Error::Kind::InvalidArgument, QStringLiteral("no value"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("no value"));
     const int size = datatype::byteSize(type);
     const int id = value.typeId();
     if (id == QMetaType::QString && datatype::isNumeric(type))
@@ -185,8 +194,8 @@ Result<QVariant> normalize(DataType type, const QVariant &value)
                 || (c.unicode() < 0x20 && c != QLatin1Char('\t') && c != QLatin1Char('\n')
                     && c != QLatin1Char('\r')))
                 return Error(Error::Kind::InvalidArgument,
-                             QStringLiteral("VISIBLE_STRING allows printable ASCII only; "
-                                            "'%1' is not")
+                             Tr::tr("VISIBLE_STRING allows printable ASCII only; "
+                                    "'%1' is not")
                                  .arg(c));
         }
         return QVariant(s);
@@ -198,8 +207,7 @@ Result<QVariant> normalize(DataType type, const QVariant &value)
         return value;
     if (id == QMetaType::QString)
         return fromText(type, value.toString());
-    return Error(Error::Kind::InvalidArgument,
-                 QStringLiteral("%1 needs bytes").arg(datatype::name(type)));
+    return Error(Error::Kind::InvalidArgument, Tr::tr("%1 needs bytes").arg(datatype::name(type)));
 }
 
 Result<QByteArray> encode(DataType type, const QVariant &raw)
@@ -240,7 +248,7 @@ Result<QVariant> decode(DataType type, const QByteArray &bytes)
     const int size = datatype::byteSize(type);
     if (size > 0 && bytes.size() != size) {
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 needs %2 bytes, got %3")
+                     Tr::tr("%1 needs %2 bytes, got %3")
                          .arg(datatype::name(type))
                          .arg(size)
                          .arg(bytes.size()));
@@ -248,9 +256,9 @@ Result<QVariant> decode(DataType type, const QByteArray &bytes)
     const auto *p = reinterpret_cast<const uchar *>(bytes.constData());
     if (type == DataType::Boolean) {
         if (p[0] > 1)
-            return Error(Error::Kind::Malformed,
-                         QStringLiteral("BOOLEAN byte is 0x%1, not 0 or 1")
-                             .arg(p[0], 2, 16, QLatin1Char('0')));
+            return Error(
+                Error::Kind::Malformed,
+                Tr::tr("BOOLEAN byte is 0x%1, not 0 or 1").arg(p[0], 2, 16, QLatin1Char('0')));
         return QVariant(p[0] == 1);
     }
     if (datatype::isInteger(type)) {
@@ -275,7 +283,7 @@ Result<QVariant> decode(DataType type, const QByteArray &bytes)
         if (bytes.size() % 2 != 0)
             return Error(
                 Error::Kind::Malformed,
-                QStringLiteral("UNICODE_STRING has an odd number of bytes (%1)").arg(bytes.size()));
+                Tr::tr("UNICODE_STRING has an odd number of bytes (%1)").arg(bytes.size()));
         QString s;
         s.reserve(bytes.size() / 2);
         for (qsizetype i = 0; i + 1 < bytes.size(); i += 2) {
@@ -346,7 +354,7 @@ Result<QVariant> fromText(DataType type, const QString &text)
     static const QRegularExpression hexOnly(QStringLiteral("^[0-9a-fA-F]*$"));
     if (hex.size() % 2 != 0 || !hexOnly.match(hex).hasMatch())
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("'%1' is not a list of hex bytes (e.g. 01 02 FF)").arg(text));
+                     Tr::tr("'%1' is not a list of hex bytes (e.g. 01 02 FF)").arg(text));
     return QVariant(QByteArray::fromHex(hex.toLatin1()));
 }
 
@@ -397,7 +405,7 @@ Result<void> checkLimits(DataType type, const QVariant &raw, const QVariant &min
     };
     if ((min.isValid() && below(min)) || (max.isValid() && above(max))) {
         return Error(Error::Kind::OutOfRange,
-                     QStringLiteral("%1 is outside the object's range %2 .. %3")
+                     Tr::tr("%1 is outside the object's range %2 .. %3")
                          .arg(toText(type, raw),
                               min.isValid() ? toText(type, min) : QStringLiteral("-"),
                               max.isValid() ? toText(type, max) : QStringLiteral("-")));
@@ -413,10 +421,10 @@ double toPhysical(const QVariant &raw, double factor, double offset)
 Result<QVariant> fromPhysical(DataType type, double physical, double factor, double offset)
 {
     if (factor == 0.0)
-        return Error(Error::Kind::InvalidArgument, QStringLiteral("scaling factor is 0"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("scaling factor is 0"));
     double raw = (physical - offset) / factor;
     if (!std::isfinite(raw))
-        return Error(Error::Kind::InvalidArgument, QStringLiteral("value is not finite"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("value is not finite"));
     if (datatype::isInteger(type) || type == DataType::Boolean) {
         raw = std::round(raw);
         const double lo = typeMinimum(type).toDouble();
@@ -430,7 +438,7 @@ Result<QVariant> fromPhysical(DataType type, double physical, double factor, dou
     if (datatype::isReal(type))
         return normalize(type, raw);
     return Error(Error::Kind::NotSupported,
-                 QStringLiteral("%1 has no physical value").arg(datatype::name(type)));
+                 Tr::tr("%1 has no physical value").arg(datatype::name(type)));
 }
 
 } // namespace db::codec

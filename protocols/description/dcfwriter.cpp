@@ -2,9 +2,18 @@
 
 #include "devicedescription.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QSaveFile>
 #include <QTextStream>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -160,12 +169,10 @@ Result<void> writeDcf(const QString &path, const ObjectDictionary &dictionary,
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));
     const QByteArray text = dcfText(dictionary, values, commissioning);
     if (file.write(text) != text.size() || !file.commit())
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));
     return {};
 }
 

@@ -16,12 +16,21 @@
 
 #include "core/objectdictionary.h"
 
+#include <QCoreApplication>
 #include <QFile>
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <cmath>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -60,8 +69,7 @@ Result<ObjectDictionary> loadJsonDescription(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseJsonDescription(file.readAll(), path);
 }
 
@@ -71,7 +79,7 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (doc.isNull())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: JSON error at offset %2: %3")
+                     Tr::tr("%1: JSON error at offset %2: %3")
                          .arg(origin)
                          .arg(parseError.offset)
                          .arg(parseError.errorString()));
@@ -79,10 +87,10 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
     if (root.value(QLatin1String("format")).toString()
         != QLatin1String("drivebench-device-description"))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not a drivebench device description").arg(origin));
+                     Tr::tr("%1 is not a drivebench device description").arg(origin));
     if (root.value(QLatin1String("version")).toInt() != 1)
         return Error(Error::Kind::NotSupported,
-                     QStringLiteral("%1: description version %2 is not supported (1 is)")
+                     Tr::tr("%1: description version %2 is not supported (1 is)")
                          .arg(origin)
                          .arg(root.value(QLatin1String("version")).toInt()));
 
@@ -100,7 +108,7 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         const AddressFormat *format = AddressFormat::byKey(addresses.toString());
         if (!format)
             return Error(Error::Kind::Malformed,
-                         QStringLiteral("%1: unknown \"addresses\" '%2' (canopen or parameter)")
+                         Tr::tr("%1: unknown \"addresses\" '%2' (canopen or parameter)")
                              .arg(origin, addresses.toVariant().toString()));
         dict.setAddressFormat(*format);
     }
@@ -110,28 +118,27 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         const QJsonObject o = objects.at(i).toObject();
         auto fail = [&](const QString &what) {
             return Error(Error::Kind::Malformed,
-                         QStringLiteral("%1: object #%2: %3").arg(origin).arg(i + 1).arg(what));
+                         Tr::tr("%1: object #%2: %3").arg(origin).arg(i + 1).arg(what));
         };
         quint32 index = 0;
         quint32 sub = 0;
         if (!toUInt(o.value(QLatin1String("index")), &index) || index > 0xFFFF)
-            return fail(QStringLiteral("bad index"));
+            return fail(Tr::tr("bad index"));
         if (!toUInt(o.value(QLatin1String("sub")), &sub) || sub > 0xFF)
-            return fail(QStringLiteral("bad sub-index"));
+            return fail(Tr::tr("bad sub-index"));
         ObjectDef def;
         def.address = ObjectAddress(quint16(index), quint8(sub));
         def.name = o.value(QLatin1String("name")).toString();
         def.objectName = o.value(QLatin1String("object")).toString();
         const auto type = datatype::fromName(o.value(QLatin1String("type")).toString());
         if (!type)
-            return fail(
-                QStringLiteral("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
+            return fail(Tr::tr("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
         def.type = *type;
         const auto acc =
             access::fromName(o.value(QLatin1String("access")).toString(QStringLiteral("rw")));
         if (!acc)
-            return fail(QStringLiteral("unknown access '%1'")
-                            .arg(o.value(QLatin1String("access")).toString()));
+            return fail(
+                Tr::tr("unknown access '%1'").arg(o.value(QLatin1String("access")).toString()));
         def.access = *acc;
         def.unit = o.value(QLatin1String("unit")).toString();
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);
@@ -139,7 +146,7 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         // Fixed-point parameters give their decimals; the factor follows from them.
         def.decimals = o.value(QLatin1String("decimals")).toInt(-1);
         if (def.decimals > 9)
-            return fail(QStringLiteral("decimals %1 (0-9 allowed)").arg(def.decimals));
+            return fail(Tr::tr("decimals %1 (0-9 allowed)").arg(def.decimals));
         if (def.decimals >= 0)
             def.factor = std::pow(10.0, -def.decimals);
         for (const char *key : { "default", "min", "max" }) {

@@ -4,10 +4,19 @@
 #include "edsloader.h"
 #include "xddloader.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QStringDecoder>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -58,10 +67,9 @@ Result<DescriptionLoad> loadDeviceDescription(const QString &path,
 {
     QFile file(path);
     if (QFileInfo(path).isDir())
-        return Error(Error::Kind::Io, QStringLiteral("%1 is a folder, not a file").arg(path));
+        return Error(Error::Kind::Io, Tr::tr("%1 is a folder, not a file").arg(path));
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseDeviceDescription(file.readAll(), path, options);
 }
 
@@ -69,10 +77,10 @@ Result<DescriptionLoad> parseDeviceDescription(const QByteArray &data, const QSt
                                                const DescriptionOptions &options)
 {
     if (data.trimmed().isEmpty())
-        return Error(Error::Kind::Malformed, QStringLiteral("%1 is empty").arg(origin));
+        return Error(Error::Kind::Malformed, Tr::tr("%1 is empty").arg(origin));
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not a device description").arg(origin));
+                     Tr::tr("%1 holds binary data, not a device description").arg(origin));
     QByteArray head = data.left(256);
     if (head.startsWith("\xEF\xBB\xBF"))
         head = head.mid(3);
@@ -154,7 +162,7 @@ ParsedValue parseValue(DataType type, const QString &input, std::optional<quint8
     if (text.contains(QLatin1String("$NODEID"), Qt::CaseInsensitive)) {
         const auto offset = nodeIdOffset(text, allowOctal);
         if (!offset || !datatype::isInteger(type)) {
-            out.error = QStringLiteral("cannot evaluate '%1'").arg(text);
+            out.error = Tr::tr("cannot evaluate '%1'").arg(text);
             return out;
         }
         if (!nodeId) {
@@ -164,7 +172,7 @@ ParsedValue parseValue(DataType type, const QString &input, std::optional<quint8
         }
         auto raw = codec::normalize(type, QVariant::fromValue(*offset + *nodeId));
         if (!raw)
-            out.error = QStringLiteral("'%1' with node id %2: %3")
+            out.error = Tr::tr("'%1' with node id %2: %3")
                             .arg(text)
                             .arg(*nodeId)
                             .arg(raw.error().message());

@@ -2,7 +2,16 @@
 
 #include "devicedescription.h"
 
+#include <QCoreApplication>
 #include <QSet>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db::eds {
 
@@ -26,21 +35,21 @@ IniFile IniFile::parse(const QString &text, QStringList *warnings)
     const QStringList lines = text.split(QLatin1Char('\n'));
     for (int i = 0; i < lines.size(); ++i) {
         const QString line = lines.at(i).trimmed(); // also drops the CR of CRLF
-        const QString where = QStringLiteral("line %1").arg(i + 1);
+        const QString where = Tr::tr("line %1").arg(i + 1);
         if (line.isEmpty() || line.startsWith(QLatin1Char(';'))
             || line.startsWith(QLatin1Char('#')))
             continue;
         if (line.startsWith(QLatin1Char('['))) {
             const qsizetype close = line.indexOf(QLatin1Char(']'));
             if (close < 0) {
-                warn(where, QStringLiteral("broken section header '%1'; skipped").arg(line));
+                warn(where, Tr::tr("broken section header '%1'; skipped").arg(line));
                 current = nullptr;
                 continue;
             }
             const QString name = line.mid(1, close - 1).trimmed();
             const QString key = name.toUpper();
             if (ini.sections.contains(key))
-                warn(where, QStringLiteral("section [%1] appears again; merged").arg(name));
+                warn(where, Tr::tr("section [%1] appears again; merged").arg(name));
             current = &ini.sections[key];
             if (current->name.isEmpty()) {
                 current->name = name;
@@ -51,14 +60,13 @@ IniFile IniFile::parse(const QString &text, QStringList *warnings)
         const qsizetype eq = line.indexOf(QLatin1Char('='));
         if (eq <= 0 || !current) {
             warn(where,
-                 QStringLiteral("'%1' is not a key=value line in a section; ignored")
-                     .arg(line.left(40)));
+                 Tr::tr("'%1' is not a key=value line in a section; ignored").arg(line.left(40)));
             continue;
         }
         const QString key = line.left(eq).trimmed().toLower();
         if (current->values.contains(key))
             warn(where,
-                 QStringLiteral("[%1] %2 given twice; the last one is used")
+                 Tr::tr("[%1] %2 given twice; the last one is used")
                      .arg(current->name, line.left(eq).trimmed()));
         current->values.insert(key, line.mid(eq + 1).trimmed());
     }
@@ -88,24 +96,24 @@ void checkObjectLists(const IniFile &ini, const QMap<quint16, const Section *> &
             ++entries;
             const auto index = description::parseInteger(it.value(), true);
             if (!index || *index < 0 || *index > 0xFFFF) {
-                warn(where, QStringLiteral("entry %1=%2 is not an index").arg(it.key(), *it));
+                warn(where, Tr::tr("entry %1=%2 is not an index").arg(it.key(), *it));
                 continue;
             }
             listed.insert(quint16(*index));
             if (!objects.contains(quint16(*index)))
                 warn(where,
-                     QStringLiteral("lists %1 but there is no [%2] section")
+                     Tr::tr("lists %1 but there is no [%2] section")
                          .arg(it.value())
                          .arg(*index, 4, 16, QLatin1Char('0')));
         }
         if (stated != entries)
             warn(where,
-                 QStringLiteral("SupportedObjects=%1 but %2 entries are listed")
+                 Tr::tr("SupportedObjects=%1 but %2 entries are listed")
                      .arg(list->value("supportedobjects"))
                      .arg(entries));
     }
     if (!anyList) {
-        warn(QStringLiteral("object lists"),
+        warn(Tr::tr("object lists"),
              QStringLiteral("no [MandatoryObjects]/[OptionalObjects]/[ManufacturerObjects]; "
                             "every object section is loaded"));
         return;
@@ -119,7 +127,7 @@ void checkObjectLists(const IniFile &ini, const QMap<quint16, const Section *> &
         const qsizetype n = unlisted.size();
         if (n > kMaxListedObjects)
             unlisted = unlisted.mid(0, kMaxListedObjects) << QStringLiteral("...");
-        warn(QStringLiteral("object lists"),
+        warn(Tr::tr("object lists"),
              QStringLiteral("%1 object(s) not listed in any object list, loaded anyway: %2")
                  .arg(n)
                  .arg(unlisted.join(QLatin1String(", "))));

@@ -4,10 +4,19 @@
 
 #include "edsinifile.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
 #include <QRegularExpression>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -49,7 +58,7 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
     m_ini = eds::IniFile::parse(description::decodeText(data), &m_load.warnings);
     if (m_ini.sections.isEmpty())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not an EDS/DCF: no [sections] found").arg(m_origin));
+                     Tr::tr("%1 is not an EDS/DCF: no [sections] found").arg(m_origin));
 
     static const QRegularExpression objectRe(QStringLiteral("^[0-9A-F]{4}$"));
     static const QRegularExpression subRe(QStringLiteral("^([0-9A-F]{4})SUB([0-9A-F]{1,2})$"));
@@ -71,8 +80,8 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
     }
     if (objects.isEmpty())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 is not an EDS/DCF: it has no object sections ([1000], "
-                                    "[1018], ...)")
+                     Tr::tr("%1 is not an EDS/DCF: it has no object sections ([1000], "
+                            "[1018], ...)")
                          .arg(m_origin));
 
     const QString suffix = QFileInfo(m_origin).suffix().toLower();
@@ -93,9 +102,9 @@ Result<DescriptionLoad> EdsReader::read(const QByteArray &data)
                  QStringLiteral("sub-index without its object section; ignored"));
     }
     if (m_load.dictionary.isEmpty())
-        return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: none of its object sections describes a usable object")
-                         .arg(m_origin));
+        return Error(
+            Error::Kind::Malformed,
+            Tr::tr("%1: none of its object sections describes a usable object").arg(m_origin));
     return m_load;
 }
 
@@ -158,8 +167,7 @@ void EdsReader::readObject(quint16 index, const Section &s)
         s.has("objecttype") ? description::parseInteger(s.value("objecttype"), true) : 7;
     if (!objectType) {
         warn(where,
-             QStringLiteral("ObjectType '%1' is not a number; object skipped")
-                 .arg(s.value("objecttype")));
+             Tr::tr("ObjectType '%1' is not a number; object skipped").arg(s.value("objecttype")));
         return;
     }
     if (index < 0x1000 || *objectType == 5 || *objectType == 6) {
@@ -169,12 +177,12 @@ void EdsReader::readObject(quint16 index, const Section &s)
     const auto subs = m_subs.value(index);
     switch (*objectType) {
     case 0: // NULL
-        warn(where, QStringLiteral("NULL object skipped"));
+        warn(where, Tr::tr("NULL object skipped"));
         return;
     case 2: // DOMAIN
     case 7: // VAR
         if (!subs.isEmpty())
-            warn(where, QStringLiteral("a VAR/DOMAIN with sub-index sections; those are ignored"));
+            warn(where, Tr::tr("a VAR/DOMAIN with sub-index sections; those are ignored"));
         m_load.dictionary.insert(makeDef(ObjectAddress(index, 0), s, where));
         return;
     case 8: // ARRAY
@@ -182,7 +190,7 @@ void EdsReader::readObject(quint16 index, const Section &s)
         break;
     default:
         warn(where,
-             QStringLiteral("unknown ObjectType %1; read as %2")
+             Tr::tr("unknown ObjectType %1; read as %2")
                  .arg(s.value("objecttype"),
                       subs.isEmpty() ? QStringLiteral("VAR") : QStringLiteral("RECORD")));
         if (subs.isEmpty()) {
@@ -194,19 +202,19 @@ void EdsReader::readObject(quint16 index, const Section &s)
     if (compact > 0 && compact <= 254)
         return readCompact(index, s, compact);
     if (subs.isEmpty()) {
-        warn(where, QStringLiteral("ARRAY/RECORD without sub-index sections; skipped"));
+        warn(where, Tr::tr("ARRAY/RECORD without sub-index sections; skipped"));
         return;
     }
     const QString name = s.value("parametername");
     const int stated = int(description::parseInteger(s.value("subnumber"), true).value_or(-1));
     if (stated != subs.size())
         warn(where,
-             QStringLiteral("SubNumber=%1 but %2 sub-index sections are present")
+             Tr::tr("SubNumber=%1 but %2 sub-index sections are present")
                  .arg(s.has("subnumber") ? s.value("subnumber") : QStringLiteral("(none)"))
                  .arg(subs.size()));
     const quint8 highest = subs.lastKey();
     if (!subs.contains(0)) {
-        warn(where, QStringLiteral("no sub-index 0; made one (UNSIGNED8, ro, %1)").arg(highest));
+        warn(where, Tr::tr("no sub-index 0; made one (UNSIGNED8, ro, %1)").arg(highest));
         ObjectDef def;
         def.address = ObjectAddress(index, 0);
         def.name = QStringLiteral("Highest sub-index supported");
@@ -222,8 +230,8 @@ void EdsReader::readObject(quint16 index, const Section &s)
         def.objectName = name;
         if (it.key() == 0 && def.type != DataType::Unsigned8)
             warn(subWhere,
-                 QStringLiteral("sub-index 0 should be UNSIGNED8 (number of entries), "
-                                "is %1")
+                 Tr::tr("sub-index 0 should be UNSIGNED8 (number of entries), "
+                        "is %1")
                      .arg(datatype::name(def.type)));
         // In 1003h and the PDO mappings sub-index 0 counts entries in use, not the highest one.
         const bool countsInUse = index == 0x1003 || (index >= 0x1600 && index < 0x1800)
@@ -231,7 +239,7 @@ void EdsReader::readObject(quint16 index, const Section &s)
         if (it.key() == 0 && !countsInUse && datatype::isUnsignedInteger(def.type)
             && def.defaultValue.isValid() && def.defaultValue.toULongLong() < highest)
             warn(subWhere,
-                 QStringLiteral("default %1 is below the highest sub-index present (%2)")
+                 Tr::tr("default %1 is below the highest sub-index present (%2)")
                      .arg(def.defaultValue.toULongLong())
                      .arg(highest));
         m_load.dictionary.insert(def);
@@ -286,21 +294,21 @@ ObjectDef EdsReader::makeDef(ObjectAddress address, const Section &s, const QStr
     def.name = s.value("parametername");
     if (def.name.isEmpty()) {
         def.name = QStringLiteral("Object %1").arg(address.toString());
-        warn(where, QStringLiteral("no ParameterName; called '%1'").arg(def.name));
+        warn(where, Tr::tr("no ParameterName; called '%1'").arg(def.name));
     }
     const bool isDomain = description::parseInteger(s.value("objecttype"), true) == 2;
     if (!s.has("datatype")) {
         def.type = DataType::Domain;
         if (!isDomain)
-            warn(where, QStringLiteral("no DataType; read as DOMAIN"));
+            warn(where, Tr::tr("no DataType; read as DOMAIN"));
     } else {
         const auto code = description::parseInteger(s.value("datatype"), true);
         const auto type = code ? datatype::fromCode(quint32(*code)) : std::nullopt;
         def.type = type.value_or(DataType::Domain);
         if (!type)
-            warn(where,
-                 QStringLiteral("DataType %1 is not a basic type; read as DOMAIN")
-                     .arg(s.value("datatype")));
+            warn(
+                where,
+                Tr::tr("DataType %1 is not a basic type; read as DOMAIN").arg(s.value("datatype")));
     }
     const QString acc = s.value("accesstype").toLower();
     if (acc == QLatin1String("ro"))
@@ -319,11 +327,11 @@ ObjectDef EdsReader::makeDef(ObjectAddress address, const Section &s, const QStr
     if (s.has("pdomapping")) {
         const auto pdo = description::parseInteger(s.value("pdomapping"), true);
         if (!pdo)
-            warn(where, QStringLiteral("PDOMapping '%1' is not 0/1").arg(s.value("pdomapping")));
+            warn(where, Tr::tr("PDOMapping '%1' is not 0/1").arg(s.value("pdomapping")));
         def.pdoMappable = pdo.value_or(0) != 0;
     }
     if (s.has("objflags") && !description::parseInteger(s.value("objflags"), true))
-        warn(where, QStringLiteral("ObjFlags '%1' is not a number").arg(s.value("objflags")));
+        warn(where, Tr::tr("ObjFlags '%1' is not a number").arg(s.value("objflags")));
     def.traceable = def.pdoMappable && datatype::isNumeric(def.type);
     def.unit = s.value("unit");
     def.description = s.value("description");
@@ -333,14 +341,14 @@ ObjectDef EdsReader::makeDef(ObjectAddress address, const Section &s, const QStr
         if (ok && factor != 0.0)
             def.factor = factor;
         else
-            warn(where, QStringLiteral("Factor '%1' is not a number").arg(s.value("factor")));
+            warn(where, Tr::tr("Factor '%1' is not a number").arg(s.value("factor")));
     }
     for (const char *key : { "defaultvalue", "lowlimit", "highlimit", "parametervalue" })
         applyValue(def, s, key, where);
     if (datatype::isNumeric(def.type) && def.minimum.isValid() && def.maximum.isValid()
         && !codec::checkLimits(def.type, def.minimum, QVariant(), def.maximum))
         warn(where,
-             QStringLiteral("LowLimit %1 is above HighLimit %2")
+             Tr::tr("LowLimit %1 is above HighLimit %2")
                  .arg(s.value("lowlimit"), s.value("highlimit")));
     return def;
 }
@@ -352,15 +360,14 @@ void EdsReader::applyValue(ObjectDef &def, const Section &s, const char *key, co
     const auto v = description::parseValue(def.type, s.value(key), m_nodeId, true);
     const QString keyName = QString::fromLatin1(key);
     if (!v.error.isEmpty()) {
-        warn(where, QStringLiteral("%1 ignored: %2").arg(keyName, v.error));
+        warn(where, Tr::tr("%1 ignored: %2").arg(keyName, v.error));
         return;
     }
     if (v.nodeIdRelative) {
         if (key[0] == 'd')
             m_load.nodeIdDefaults.insert(def.address, v.offset);
         else
-            warn(where,
-                 QStringLiteral("%1 '%2' needs a node id; ignored").arg(keyName, s.value(key)));
+            warn(where, Tr::tr("%1 '%2' needs a node id; ignored").arg(keyName, s.value(key)));
         return;
     }
     if (key[0] == 'd') {
@@ -382,8 +389,7 @@ Result<DescriptionLoad> loadEds(const QString &path, const DescriptionOptions &o
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseEds(file.readAll(), path, options);
 }
 
@@ -392,7 +398,7 @@ Result<DescriptionLoad> parseEds(const QByteArray &data, const QString &origin,
 {
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not an EDS/DCF").arg(origin));
+                     Tr::tr("%1 holds binary data, not an EDS/DCF").arg(origin));
     return EdsReader(origin, options).read(data);
 }
 

@@ -4,10 +4,19 @@
 
 #include "xddparameter.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
 #include <QXmlStreamReader>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -72,8 +81,8 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
             if (name != QLatin1String("ISO15745ProfileContainer")
                 && name != QLatin1String("ISO15745Profile"))
                 return Error(Error::Kind::Malformed,
-                             QStringLiteral("%1 is XML but not an XDD/XDC: the root element is "
-                                            "<%2>, not <ISO15745ProfileContainer>")
+                             Tr::tr("%1 is XML but not an XDD/XDC: the root element is "
+                                    "<%2>, not <ISO15745ProfileContainer>")
                                  .arg(m_origin, name));
         }
         if (name == QLatin1String("ProfileBody") && id.descriptionVersion.isEmpty()) {
@@ -115,7 +124,7 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
             m_haveActualValues |= a.hasAttribute(QLatin1String("actualValue"));
         } else if (name == QLatin1String("CANopenSubObject")) {
             if (m_objects.isEmpty())
-                warn(QStringLiteral("line %1").arg(m_xml.lineNumber()),
+                warn(Tr::tr("line %1").arg(m_xml.lineNumber()),
                      QStringLiteral("CANopenSubObject outside a CANopenObject; ignored"));
             else
                 m_objects.last().subs.append(a);
@@ -131,15 +140,14 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
     }
     if (m_xml.hasError())
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1: XML error at line %2, column %3: %4")
+                     Tr::tr("%1: XML error at line %2, column %3: %4")
                          .arg(m_origin)
                          .arg(m_xml.lineNumber())
                          .arg(m_xml.columnNumber())
                          .arg(m_xml.errorString()));
     if (!m_haveObjectList)
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: no CANopenObjectList; not a CANopen XDD/XDC").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: no CANopenObjectList; not a CANopen XDD/XDC").arg(m_origin));
     id.descriptionFile = m_origin;
     if (id.vendorName.isEmpty())
         warn(QStringLiteral("DeviceIdentity"), QStringLiteral("no vendorName"));
@@ -153,9 +161,8 @@ Result<DescriptionLoad> XddReader::read(const QByteArray &data)
     for (const ObjectRecord &record : std::as_const(m_objects))
         readObject(record);
     if (m_load.dictionary.isEmpty())
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: the CANopenObjectList holds no usable object").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: the CANopenObjectList holds no usable object").arg(m_origin));
     return m_load;
 }
 
@@ -170,7 +177,7 @@ void XddReader::readObject(const ObjectRecord &record)
     const uint index =
         text(a, "index").remove(QLatin1String("0x"), Qt::CaseInsensitive).toUInt(&ok, 16);
     if (!ok || index > 0xFFFF) {
-        warn(where, QStringLiteral("index '%1' is not a hex index; skipped").arg(text(a, "index")));
+        warn(where, Tr::tr("index '%1' is not a hex index; skipped").arg(text(a, "index")));
         return;
     }
     const QString typeText = text(a, "objectType");
@@ -178,7 +185,7 @@ void XddReader::readObject(const ObjectRecord &record)
         typeText.isEmpty() ? (record.subs.isEmpty() ? 7 : 9) : typeText.toInt(&ok, 16);
     if (typeText.isEmpty())
         warn(where,
-             QStringLiteral("no objectType; read as %1")
+             Tr::tr("no objectType; read as %1")
                  .arg(objectType == 7 ? QStringLiteral("VAR") : QStringLiteral("RECORD")));
     if (index < 0x1000 || objectType == 5 || objectType == 6) {
         ++m_load.typeDefinitions;
@@ -186,11 +193,11 @@ void XddReader::readObject(const ObjectRecord &record)
     }
     if (objectType == 7 || objectType == 2 || record.subs.isEmpty()) {
         if (objectType == 8 || objectType == 9) {
-            warn(where, QStringLiteral("ARRAY/RECORD without CANopenSubObjects; skipped"));
+            warn(where, Tr::tr("ARRAY/RECORD without CANopenSubObjects; skipped"));
             return;
         }
         if (!record.subs.isEmpty())
-            warn(where, QStringLiteral("VAR with CANopenSubObjects; those are ignored"));
+            warn(where, Tr::tr("VAR with CANopenSubObjects; those are ignored"));
         m_load.dictionary.insert(makeDef(ObjectAddress(quint16(index), 0), a, where));
         return;
     }
@@ -198,15 +205,14 @@ void XddReader::readObject(const ObjectRecord &record)
     const QString subNumber = text(a, "subNumber");
     if (!subNumber.isEmpty() && subNumber.toInt() != record.subs.size())
         warn(where,
-             QStringLiteral("subNumber=%1 but %2 CANopenSubObjects are present")
+             Tr::tr("subNumber=%1 but %2 CANopenSubObjects are present")
                  .arg(subNumber)
                  .arg(record.subs.size()));
     bool haveSub0 = false;
     for (const QXmlStreamAttributes &s : record.subs) {
         const uint sub = text(s, "subIndex").toUInt(&ok, 16);
         if (!ok || sub > 0xFF) {
-            warn(where,
-                 QStringLiteral("subIndex '%1' is not hex; skipped").arg(text(s, "subIndex")));
+            warn(where, Tr::tr("subIndex '%1' is not hex; skipped").arg(text(s, "subIndex")));
             continue;
         }
         haveSub0 |= sub == 0;
@@ -217,7 +223,7 @@ void XddReader::readObject(const ObjectRecord &record)
         m_load.dictionary.insert(def);
     }
     if (!haveSub0)
-        warn(where, QStringLiteral("no sub-index 0 (number of entries)"));
+        warn(where, Tr::tr("no sub-index 0 (number of entries)"));
 }
 
 ObjectDef XddReader::makeDef(ObjectAddress address, const QXmlStreamAttributes &a,
@@ -231,14 +237,14 @@ ObjectDef XddReader::makeDef(ObjectAddress address, const QXmlStreamAttributes &
         if (m_parameters.contains(ref))
             param = m_parameters.value(ref);
         else
-            warn(where, QStringLiteral("uniqueIDRef '%1' names no parameter").arg(ref));
+            warn(where, Tr::tr("uniqueIDRef '%1' names no parameter").arg(ref));
     }
     def.name = text(a, "name");
     if (def.name.isEmpty())
         def.name = param.label;
     if (def.name.isEmpty()) {
         def.name = QStringLiteral("Object %1").arg(address.toString());
-        warn(where, QStringLiteral("no name; called '%1'").arg(def.name));
+        warn(where, Tr::tr("no name; called '%1'").arg(def.name));
     }
     bool ok = false;
     const QString typeCode = text(a, "dataType");
@@ -289,13 +295,12 @@ ObjectDef XddReader::makeDef(ObjectAddress address, const QXmlStreamAttributes &
         const QString valueText = given.isEmpty() ? v.fallback : given;
         const auto parsed = description::parseValue(def.type, valueText, m_nodeId, false);
         if (!parsed.error.isEmpty())
-            warn(where,
-                 QStringLiteral("%1 ignored: %2").arg(QLatin1String(v.attribute), parsed.error));
+            warn(where, Tr::tr("%1 ignored: %2").arg(QLatin1String(v.attribute), parsed.error));
         else if (parsed.nodeIdRelative && v.target == &def.defaultValue)
             m_load.nodeIdDefaults.insert(address, parsed.offset);
         else if (parsed.nodeIdRelative)
             warn(where,
-                 QStringLiteral("%1 '%2' needs a node id; ignored")
+                 Tr::tr("%1 '%2' needs a node id; ignored")
                      .arg(QLatin1String(v.attribute), valueText));
         else if (v.target)
             *v.target = parsed.raw;
@@ -321,8 +326,7 @@ Result<DescriptionLoad> loadXdd(const QString &path, const DescriptionOptions &o
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     return parseXdd(file.readAll(), path, options);
 }
 
@@ -331,7 +335,7 @@ Result<DescriptionLoad> parseXdd(const QByteArray &data, const QString &origin,
 {
     if (description::looksBinary(data))
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1 holds binary data, not an XDD/XDC").arg(origin));
+                     Tr::tr("%1 holds binary data, not an XDD/XDC").arg(origin));
     return XddReader(origin, options).read(data);
 }
 

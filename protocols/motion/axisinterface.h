@@ -71,6 +71,9 @@ public:
 Q_SIGNALS:
     void statusChanged();
     void connectionLost(const db::Error &error);
+    // The link is up but the drive's supervision failed (a CANopen heartbeat not heard within its
+    // consumer time): the drive may have died or hung, so whatever runs must end.
+    void supervisionLost(const QString &reason);
 };
 
 Q_DECLARE_OPERATORS_FOR_FLAGS(AxisInterface::Features)

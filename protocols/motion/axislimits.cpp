@@ -14,13 +14,20 @@ constexpr ObjectAddress kMaxAcceleration { 0x60C5, 0 };
 constexpr ObjectAddress kPositionWindow { 0x6067, 0 };
 constexpr ObjectAddress kPositionWindowTime { 0x6068, 0 }; // ms
 constexpr ObjectAddress kVelocityWindow { 0x606D, 0 };
+constexpr ObjectAddress kPositionOptionCode { 0x60F2, 0 };
+// 60F2h bits 6-7 (movingcap.md 6.2): 00 linear; 01 rotary, negative direction only; 10 rotary,
+// positive direction only; 11 rotary, shortest way.
+constexpr quint32 kRotaryMask = 0xC0;
+constexpr quint32 kRotaryNegativeOnly = 0x40;
+constexpr quint32 kRotaryPositiveOnly = 0x80;
 } // namespace
 
 QList<ObjectAddress> objects(const ObjectDictionary &dictionary)
 {
     QList<ObjectAddress> wanted;
-    for (ObjectAddress a : { kSoftLimitMin, kSoftLimitMax, kMaxProfileVelocity, kMaxAcceleration,
-                             kPositionWindow, kPositionWindowTime, kVelocityWindow })
+    for (ObjectAddress a :
+         { kSoftLimitMin, kSoftLimitMax, kMaxProfileVelocity, kMaxAcceleration, kPositionWindow,
+           kPositionWindowTime, kVelocityWindow, kPositionOptionCode })
         if (dictionary.contains(a))
             wanted << a;
     return wanted;
@@ -53,6 +60,20 @@ AxisConfig fromValues(const QHash<ObjectAddress, QVariant> &values,
         c.positionWindow = std::max(1.0, values.value(kPositionWindow).toDouble());
     if (values.contains(kPositionWindowTime))
         c.positionWindowTimeMs = std::max(0, values.value(kPositionWindowTime).toInt());
+    // A rotary axis (60F2h) is endless: 607Dh.1/.2 are the smallest and largest rotary position,
+    // so they give the cycle and bound nothing.
+    const quint32 option = quint32(values.value(kPositionOptionCode, 0).toULongLong());
+    if (option & kRotaryMask) {
+        c.endless = true;
+        const double span = c.softLimitPositive - c.softLimitNegative;
+        if (c.softLimitsUsed && span > 0)
+            c.cycleLength = span;
+        c.softLimitsUsed = false;
+        const quint32 rotary = option & kRotaryMask;
+        c.permitted = rotary == kRotaryNegativeOnly ? PermittedDirection::NegativeOnly
+            : rotary == kRotaryPositiveOnly         ? PermittedDirection::PositiveOnly
+                                                    : PermittedDirection::Both;
+    }
     c.velocityWindow = values.contains(kVelocityWindow)
         ? std::max(1.0, values.value(kVelocityWindow).toDouble())
         : kDefaultVelocityWindow;

@@ -2,8 +2,17 @@
 
 #include "cia402/statusword.h"
 
+#include <QCoreApplication>
 #include <cmath>
 #include <memory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -11,6 +20,7 @@ using namespace cia402;
 
 namespace {
 constexpr quint32 kRawAccelerationMin = 1;
+constexpr double kMaxRawJerk = 0xFFFFFFFFu; // UNSIGNED32
 // Digital inputs 60FDh (CiA 402-2): bit 0 negative, bit 1 positive limit switch.
 constexpr quint32 kNegativeLimitBit = 0x1;
 constexpr quint32 kPositiveLimitBit = 0x2;
@@ -31,7 +41,9 @@ Cia402Axis::Cia402Axis(DeviceConnection *connection, QObject *parent)
     m_pollTimer.setSingleShot(true);
     connect(&m_pollTimer, &QTimer::timeout, this, &Cia402Axis::pollStatus);
     connect(connection, &DeviceConnection::stateChanged, this, &Cia402Axis::onConnectionState);
-    if (connection->dictionary().contains(obj::ProfileJerk))
+    connect(connection, &DeviceConnection::supervisionLost, this, &AxisInterface::supervisionLost);
+    m_jerkObject = profileJerk(connection->dictionary());
+    if (m_jerkObject)
         m_features |= Feature::Jerk;
     if (connection->isConnected())
         m_pollTimer.start(0);
@@ -56,9 +68,8 @@ void Cia402Axis::onConnectionState(DeviceConnection::State state)
     m_status.valid = false;
     Error error = m_connection->lastError();
     if (!error.isError())
-        error =
-            Error(Error::Kind::Disconnected,
-                  QStringLiteral("connection to %1 closed").arg(m_connection->uri().toString()));
+        error = Error(Error::Kind::Disconnected,
+                      Tr::tr("connection to %1 closed").arg(m_connection->uri().toString()));
     Q_EMIT connectionLost(error);
     Q_EMIT statusChanged();
 }
@@ -165,7 +176,7 @@ Reply *Cia402Axis::runMotion(Sequence *sequence)
 Reply *Cia402Axis::power(bool on)
 {
     if (m_motion)
-        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("power changed")));
+        m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("power changed")));
     return on ? m_controller.enableOperation() : m_controller.disableVoltage();
 }
 
@@ -181,6 +192,11 @@ Reply *Cia402Axis::moveTo(double target, const Profile &profile)
     sp.velocity = quint32(std::llround(std::abs(profile.velocity)));
     sp.acceleration = accelerationRaw(profile.acceleration);
     sp.deceleration = accelerationRaw(profile.deceleration);
+    // A jerk beyond what the object holds means "not limited by us": the drive's own stays.
+    if (m_jerkObject && profile.jerk > 0 && profile.jerk < kMaxRawJerk) {
+        sp.jerkObject = m_jerkObject;
+        sp.jerk = quint32(std::llround(profile.jerk));
+    }
     sp.immediate = true; // a new command aborts the running one (stoeber_motion.md 2.4)
     return runMotion(profilePosition(m_connection, sp, this));
 }
@@ -205,7 +221,7 @@ Reply *Cia402Axis::home(const HomingParams &params)
     if (!(m_features & Feature::Homing))
         return Reply::failed(
             obj::HomingMethod,
-            Error(Error::Kind::NotSupported, QStringLiteral("the drive has no homing mode")));
+            Error(Error::Kind::NotSupported, Tr::tr("the drive has no homing mode")));
     HomingSetPoint sp;
     sp.method = params.method;
     sp.speedFast = quint32(std::llround(params.speedFast));
@@ -220,9 +236,9 @@ Reply *Cia402Axis::home(const HomingParams &params)
 Reply *Cia402Axis::torque(double torquePerMille, double slope)
 {
     if (!(m_features & Feature::Torque))
-        return Reply::failed(obj::TargetTorque,
-                             Error(Error::Kind::NotSupported,
-                                   QStringLiteral("the drive has no profile torque mode")));
+        return Reply::failed(
+            obj::TargetTorque,
+            Error(Error::Kind::NotSupported, Tr::tr("the drive has no profile torque mode")));
     return runMotion(profileTorque(m_connection, qint16(std::lround(torquePerMille)),
                                    quint32(std::llround(std::abs(slope))), this));
 }
@@ -230,7 +246,7 @@ Reply *Cia402Axis::torque(double torquePerMille, double slope)
 Reply *Cia402Axis::stopNow()
 {
     if (m_motion)
-        m_motion->cancel(Error(Error::Kind::Cancelled, QStringLiteral("stopped")));
+        m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("stopped")));
     return m_controller.quickStop();
 }
 

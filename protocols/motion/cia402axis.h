@@ -10,6 +10,8 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <optional>
+
 namespace db::motion {
 
 // AxisInterface over any CiA 402 drive reachable through a DeviceConnection (MovingCap over RefGo
@@ -63,6 +65,7 @@ private:
     cia402::Scaling m_scaling;
     AccelerationUnit m_accelerationUnit = AccelerationUnit::UserUnits;
     Features m_features = Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
+    std::optional<ObjectAddress> m_jerkObject; // 60A4h.1 or .0, whichever is described
     Status m_status;
     QTimer m_pollTimer;
     QHash<ObjectAddress, QVariant> m_round; // values of the running status round

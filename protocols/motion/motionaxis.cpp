@@ -1,7 +1,16 @@
 #include "motionaxis.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cmath>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -14,14 +23,14 @@ MotionAxis::MotionAxis(AxisInterface *axis, QObject *parent)
         if (!motionInProgress())
             return;
         Q_EMIT watchdogExpired();
-        emergencyStop(
-            Error(Error::Kind::Timeout,
-                  QStringLiteral("deadman watchdog: no keep-alive for %1 ms, axis stopped")
-                      .arg(m_watchdogMs)),
-            true);
+        emergencyStop(Error(Error::Kind::Timeout,
+                            Tr::tr("deadman watchdog: no keep-alive for %1 ms, axis stopped")
+                                .arg(m_watchdogMs)),
+                      true);
     });
     connect(axis, &AxisInterface::statusChanged, this, &MotionAxis::onStatus);
     connect(axis, &AxisInterface::connectionLost, this, &MotionAxis::onConnectionLost);
+    connect(axis, &AxisInterface::supervisionLost, this, &MotionAxis::onSupervisionLost);
 }
 
 MotionAxis::~MotionAxis() = default;
@@ -45,7 +54,7 @@ void MotionAxis::keepAlive()
 
 void MotionAxis::stopNow()
 {
-    emergencyStop(Error(Error::Kind::Cancelled, QStringLiteral("stopped (stop now)")), false);
+    emergencyStop(Error(Error::Kind::Cancelled, Tr::tr("stopped (stop now)")), false);
 }
 
 void MotionAxis::emergencyStop(const Error &cause, bool asError)
@@ -113,6 +122,16 @@ AxisSnapshot MotionAxis::snapshot() const
     return a;
 }
 
+Plan MotionAxis::preview(CommandKind kind, const MoveParams &params) const
+{
+    const AxisSnapshot axis = snapshot();
+    MoveParams inputs = params;
+    if (usesOverride(kind))
+        inputs.overridePercent *= m_override / 100.0;
+    return planCommand(kind, inputs, m_config, axis,
+                       m_tracker.origin(axis.position, m_config.positionWindow));
+}
+
 void MotionAxis::startMotion(MotionCommand *command)
 {
     const quint64 generation = ++command->m_generation;
@@ -136,7 +155,7 @@ void MotionAxis::startMotion(MotionCommand *command)
     if (m_active && m_active != command && controlsAxis(m_active))
         m_active->setStatus(
             MotionCommand::Status::CommandAborted,
-            Error(Error::Kind::Cancelled, QStringLiteral("aborted by %1").arg(command->name())));
+            Error(Error::Kind::Cancelled, Tr::tr("aborted by %1").arg(command->name())));
     m_active = command;
     m_activeVelocity = plan.profile.velocity;
     m_activeParams = command->m_latched;
@@ -185,9 +204,8 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
 
 void MotionAxis::refuse(MotionCommand *command, const Plan &plan)
 {
-    const Error error(
-        Error::Kind::InvalidArgument,
-        QStringLiteral("%1 refused: %2").arg(command->name(), refusalText(plan.refusal)));
+    const Error error(Error::Kind::InvalidArgument,
+                      Tr::tr("%1 refused: %2").arg(command->name(), refusalText(plan.refusal)));
     QPointer<MotionCommand> guard(command);
     auto later = [guard](MotionCommand::Status status, Error e, Refusal refusal) {
         // After Busy, from the event loop: every start shows a fresh edge (S-30).
@@ -352,11 +370,20 @@ void MotionAxis::forget(MotionCommand *command)
 
 void MotionAxis::onConnectionLost(const Error &error)
 {
-    const Error cause = error.prefixed(QStringLiteral("connection lost"));
+    const Error cause = error.prefixed(Tr::tr("connection lost"));
     abortActive(MotionCommand::Status::Error, cause);
     m_lastError = cause;
     if (m_state != AxisState::Disabled)
         setState(AxisState::ErrorStop);
+}
+
+// The drive may still hear us (only its heartbeat is missing): it is told to stop, and the
+// running command ends with the cause. An axis at rest is left alone.
+void MotionAxis::onSupervisionLost(const QString &reason)
+{
+    if (!m_active && !motionInProgress())
+        return;
+    emergencyStop(Error(Error::Kind::Disconnected, reason), true);
 }
 
 void MotionAxis::abortActive(MotionCommand::Status status, const Error &error)

@@ -45,6 +45,10 @@ public:
     const TargetTracker &targets() const { return m_tracker; }
     MotionCommand *activeCommand() const { return m_active; }
     Error lastError() const { return m_lastError; }
+    // What starting `kind` with these inputs now would do (refusal, target, clamping), without
+    // starting anything: lets a panel refuse bad input before a refusal puts the axis in
+    // ErrorStop (Sec. 2.5).
+    Plan preview(CommandKind kind, const MoveParams &params) const;
 
     // 0 switches the watchdog off; other values are clamped to 1..kMaxWatchdogMs.
     void setWatchdogTimeout(int ms);
@@ -79,6 +83,7 @@ private:
     void onStatus();
     void evaluateActive(const AxisInterface::Status &s);
     void onConnectionLost(const Error &error);
+    void onSupervisionLost(const QString &reason);
     void emergencyStop(const Error &cause, bool asError);
     void abortActive(MotionCommand::Status status, const Error &error);
     void setState(AxisState state);

@@ -1,7 +1,16 @@
 // MotionAxis: the velocity override I230 (stoeber_motion.md Sec. 2.7, 7.2 K408, 8.3 item 11).
 #include "motionaxis.h"
 
+#include <QCoreApplication>
 #include <algorithm>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -50,7 +59,7 @@ void MotionAxis::setVelocityOverride(double percent)
             return;
         }
         guard->setStatus(MotionCommand::Status::Error,
-                         r->error().prefixed(QStringLiteral("velocity override")));
+                         r->error().prefixed(Tr::tr("velocity override")));
         m_lastError = guard->error();
         m_active = nullptr;
         setState(AxisState::ErrorStop);

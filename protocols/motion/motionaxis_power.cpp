@@ -1,5 +1,14 @@
 // MotionAxis: the administrative blocks MC_Power and MC_Reset.
 #include "motionaxis.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -11,7 +20,7 @@ void MotionAxis::startPower(MotionCommand *command)
     m_powerWanted = on;
     if (!on) {
         abortActive(MotionCommand::Status::CommandAborted,
-                    Error(Error::Kind::Cancelled, QStringLiteral("power switched off")));
+                    Error(Error::Kind::Cancelled, Tr::tr("power switched off")));
         m_tracker.enableOff();
     }
     QPointer<MotionCommand> guard(command);

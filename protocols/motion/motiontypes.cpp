@@ -1,4 +1,13 @@
 #include "motiontypes.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::motion)
+};
+} // namespace
 
 namespace db::motion {
 
@@ -64,27 +73,27 @@ QString refusalText(Refusal refusal)
     case Refusal::None:
         return {};
     case Refusal::TargetOutsideSoftLimits:
-        return QStringLiteral("target outside the software limit switches");
+        return Tr::tr("target outside the software limit switches");
     case Refusal::DirectionNotPermitted:
-        return QStringLiteral("travel direction not permitted");
+        return Tr::tr("travel direction not permitted");
     case Refusal::TargetOutsideCycle:
-        return QStringLiteral("target outside the cycle length");
+        return Tr::tr("target outside the cycle length");
     case Refusal::HardwareLimitSwitch:
-        return QStringLiteral("hardware limit switch active in the travel direction");
+        return Tr::tr("hardware limit switch active in the travel direction");
     case Refusal::ZeroProfileValue:
-        return QStringLiteral("velocity, acceleration, deceleration or jerk is zero");
+        return Tr::tr("velocity, acceleration, deceleration or jerk is zero");
     case Refusal::ZeroAxisLimit:
-        return QStringLiteral("maximum acceleration or maximum jerk of the axis is zero");
+        return Tr::tr("maximum acceleration or maximum jerk of the axis is zero");
     case Refusal::NotReferenced:
-        return QStringLiteral("axis not referenced");
+        return Tr::tr("axis not referenced");
     case Refusal::NotAtStandstill:
-        return QStringLiteral("axis not at standstill");
+        return Tr::tr("axis not at standstill");
     case Refusal::HomingInactive:
-        return QStringLiteral("homing method inactive");
+        return Tr::tr("homing method inactive");
     case Refusal::StopActive:
-        return QStringLiteral("MC_Stop is active");
+        return Tr::tr("MC_Stop is active");
     case Refusal::AxisNotReady:
-        return QStringLiteral("axis not enabled or in ErrorStop");
+        return Tr::tr("axis not enabled or in ErrorStop");
     }
     return {};
 }

@@ -4,7 +4,16 @@
 #include <QFile>
 #include <QSaveFile>
 
+#include <QCoreApplication>
 #include <algorithm>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -155,12 +164,10 @@ Result<void> ParameterSet::save(const QString &path, const QStringList &comments
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));
     const QByteArray bytes = serialize(comments);
     if (file.write(bytes) != bytes.size() || !file.commit())
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot write %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));
     return {};
 }
 
@@ -168,8 +175,7 @@ Result<ParameterSet> ParameterSet::load(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("cannot read %1: %2").arg(path, file.errorString()));
     return parse(file.readAll(), path);
 }
 

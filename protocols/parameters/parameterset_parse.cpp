@@ -5,8 +5,17 @@
 
 #include <QSet>
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <cctype>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::core)
+};
+} // namespace
 
 namespace db {
 
@@ -74,23 +83,21 @@ Result<QList<Token>> tokenize(const QString &line)
                         });
                     const uint code = ok ? hex.toUInt(&ok, 16) : 0;
                     if (!ok)
-                        return Error(
-                            Error::Kind::Malformed,
-                            QStringLiteral("'\\%1' needs %2 hex digits").arg(e).arg(digits));
+                        return Error(Error::Kind::Malformed,
+                                     Tr::tr("'\\%1' needs %2 hex digits").arg(e).arg(digits));
                     token.text += QChar(char16_t(code));
                     i += digits;
                     break;
                 }
                 default:
                     return Error(Error::Kind::Malformed,
-                                 QStringLiteral("unknown escape '\\%1' in a quoted string").arg(e));
+                                 Tr::tr("unknown escape '\\%1' in a quoted string").arg(e));
                 }
             }
             if (!closed)
-                return Error(Error::Kind::Malformed, QStringLiteral("unterminated quoted string"));
+                return Error(Error::Kind::Malformed, Tr::tr("unterminated quoted string"));
             if (i < n && !line.at(i).isSpace())
-                return Error(Error::Kind::Malformed,
-                             QStringLiteral("text right after a closing quote"));
+                return Error(Error::Kind::Malformed, Tr::tr("text right after a closing quote"));
         } else {
             while (i < n && !line.at(i).isSpace())
                 token.text += line.at(i++);
@@ -107,7 +114,7 @@ Result<quint32> parseU32(const QString &text)
         ? text.mid(2).toUInt(&ok, 16)
         : text.toUInt(&ok, 10);
     if (!ok)
-        return Error(Error::Kind::Malformed, QStringLiteral("'%1' is not a number").arg(text));
+        return Error(Error::Kind::Malformed, Tr::tr("'%1' is not a number").arg(text));
     return v;
 }
 
@@ -127,7 +134,7 @@ private:
     Error error(const QString &message) const
     {
         return Error(Error::Kind::Malformed,
-                     QStringLiteral("%1:%2: %3").arg(m_origin).arg(m_line).arg(message));
+                     Tr::tr("%1:%2: %3").arg(m_origin).arg(m_line).arg(message));
     }
     Result<void> header(const QList<Token> &t);
     Result<void> entry(const QList<Token> &t);
@@ -143,9 +150,8 @@ private:
 Result<ParameterSet> Parser::run(const QByteArray &bytes)
 {
     if (bytes.isEmpty())
-        return Error(
-            Error::Kind::Malformed,
-            QStringLiteral("%1: empty file, not a drivebench parameter set").arg(m_origin));
+        return Error(Error::Kind::Malformed,
+                     Tr::tr("%1: empty file, not a drivebench parameter set").arg(m_origin));
     QString text = QString::fromUtf8(bytes);
     if (text.startsWith(QChar(0xFEFF)))
         text.remove(0, 1);
@@ -157,8 +163,8 @@ Result<ParameterSet> Parser::run(const QByteArray &bytes)
             line.chop(1);
         if (m_part == Part::Magic) {
             if (line.trimmed() != QLatin1String(kMagic))
-                return error(QStringLiteral("not a drivebench parameter set (expected '%1' as the "
-                                            "first line)")
+                return error(Tr::tr("not a drivebench parameter set (expected '%1' as the "
+                                    "first line)")
                                  .arg(QLatin1String(kMagic)));
             m_part = Part::Format;
             continue;
@@ -167,7 +173,7 @@ Result<ParameterSet> Parser::run(const QByteArray &bytes)
         if (trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#')))
             continue;
         if (line.contains(QChar::ReplacementCharacter))
-            return error(QStringLiteral("the line is not valid UTF-8"));
+            return error(Tr::tr("the line is not valid UTF-8"));
         const auto tokens = tokenize(trimmed);
         if (!tokens)
             return error(tokens.error().message());
@@ -178,14 +184,13 @@ Result<ParameterSet> Parser::run(const QByteArray &bytes)
             break;
         case Part::Format: {
             if (key != QLatin1String("format") || t.size() != 2)
-                return error(
-                    QStringLiteral("expected 'format %1'").arg(ParameterSet::kFormatVersion));
+                return error(Tr::tr("expected 'format %1'").arg(ParameterSet::kFormatVersion));
             bool ok = false;
             const int version = t.at(1).text.toInt(&ok);
             if (!ok || version < 1)
-                return error(QStringLiteral("bad format version '%1'").arg(t.at(1).text));
+                return error(Tr::tr("bad format version '%1'").arg(t.at(1).text));
             if (version > ParameterSet::kFormatVersion)
-                return error(QStringLiteral("format %1 is newer than this drivebench reads (%2)")
+                return error(Tr::tr("format %1 is newer than this drivebench reads (%2)")
                                  .arg(version)
                                  .arg(ParameterSet::kFormatVersion));
             m_part = Part::Header;
@@ -203,11 +208,11 @@ Result<ParameterSet> Parser::run(const QByteArray &bytes)
             break;
         case Part::End:
             if (key != QLatin1String("end") || t.size() != 1)
-                return error(QStringLiteral("expected 'end' after %1 objects").arg(m_expected));
+                return error(Tr::tr("expected 'end' after %1 objects").arg(m_expected));
             m_part = Part::Done;
             break;
         case Part::Done:
-            return error(QStringLiteral("text after 'end'"));
+            return error(Tr::tr("text after 'end'"));
         }
     }
     switch (m_part) {
@@ -215,15 +220,15 @@ Result<ParameterSet> Parser::run(const QByteArray &bytes)
         return m_set;
     case Part::Magic:
     case Part::Format:
-        return error(QStringLiteral("truncated: no 'format' line"));
+        return error(Tr::tr("truncated: no 'format' line"));
     case Part::Header:
-        return error(QStringLiteral("truncated: no 'entries' line"));
+        return error(Tr::tr("truncated: no 'entries' line"));
     case Part::Entries:
-        return error(QStringLiteral("truncated: 'entries %1' but only %2 object lines")
+        return error(Tr::tr("truncated: 'entries %1' but only %2 object lines")
                          .arg(m_expected)
                          .arg(m_set.size()));
     case Part::End:
-        return error(QStringLiteral("truncated: no 'end' line"));
+        return error(Tr::tr("truncated: no 'end' line"));
     }
     return m_set;
 }
@@ -233,7 +238,7 @@ Result<void> Parser::header(const QList<Token> &t)
     const QString key = t.first().text;
     auto want = [&](qsizetype n) -> Result<void> {
         if (t.size() != n)
-            return error(QStringLiteral("'%1' takes %2 values").arg(key).arg(n - 1));
+            return error(Tr::tr("'%1' takes %2 values").arg(key).arg(n - 1));
         return {};
     };
     DeviceIdentity &id = m_set.identity;
@@ -256,8 +261,8 @@ Result<void> Parser::header(const QList<Token> &t)
             return r;
         const AddressFormat *format = AddressFormat::byKey(t.at(1).text);
         if (!format)
-            return error(QStringLiteral("unknown address format '%1' (canopen or parameter)")
-                             .arg(t.at(1).text));
+            return error(
+                Tr::tr("unknown address format '%1' (canopen or parameter)").arg(t.at(1).text));
         m_set.addressFormat = format;
     } else if (key == QLatin1String("revision")) {
         if (auto r = want(2); !r)
@@ -277,17 +282,17 @@ Result<void> Parser::header(const QList<Token> &t)
             return r;
         m_set.created = QDateTime::fromString(t.at(1).text, Qt::ISODateWithMs);
         if (!m_set.created.isValid())
-            return error(QStringLiteral("bad time '%1'").arg(t.at(1).text));
+            return error(Tr::tr("bad time '%1'").arg(t.at(1).text));
     } else if (key == QLatin1String("entries")) {
         if (auto r = want(2); !r)
             return r;
         bool ok = false;
         m_expected = t.at(1).text.toInt(&ok);
         if (!ok || m_expected < 0)
-            return error(QStringLiteral("bad object count '%1'").arg(t.at(1).text));
+            return error(Tr::tr("bad object count '%1'").arg(t.at(1).text));
         m_part = m_expected == 0 ? Part::End : Part::Entries;
     } else {
-        return error(QStringLiteral("unknown header line '%1'").arg(key));
+        return error(Tr::tr("unknown header line '%1'").arg(key));
     }
     return {};
 }
@@ -295,20 +300,20 @@ Result<void> Parser::header(const QList<Token> &t)
 Result<void> Parser::entry(const QList<Token> &t)
 {
     if (t.size() != 5 || t.at(0).quoted || !t.at(1).quoted || t.at(2).quoted || !t.at(4).quoted)
-        return error(QStringLiteral("expected an object line: ADDRESS \"NAME\" TYPE VALUE "
-                                    "\"UNIT\" (%1 of %2 objects read)")
+        return error(Tr::tr("expected an object line: ADDRESS \"NAME\" TYPE VALUE "
+                            "\"UNIT\" (%1 of %2 objects read)")
                          .arg(m_set.size())
                          .arg(m_expected));
     const AddressFormat &format = *m_set.addressFormat;
     const auto address = format.parse(t.at(0).text);
     if (!address)
-        return error(QStringLiteral("bad address '%1' (%2 addresses are written like %3)")
+        return error(Tr::tr("bad address '%1' (%2 addresses are written like %3)")
                          .arg(t.at(0).text, format.key(), format.example()));
     if (m_seen.contains(address.value()))
-        return error(QStringLiteral("%1 appears twice").arg(format.format(*address)));
+        return error(Tr::tr("%1 appears twice").arg(format.format(*address)));
     const auto type = datatype::fromName(t.at(2).text);
     if (!type)
-        return error(QStringLiteral("unknown type '%1'").arg(t.at(2).text));
+        return error(Tr::tr("unknown type '%1'").arg(t.at(2).text));
     const bool wantQuoted = datatype::isVariableLength(*type);
     if (t.at(3).quoted != wantQuoted)
         return error(

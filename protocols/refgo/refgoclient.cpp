@@ -1,6 +1,15 @@
 #include "refgoclient.h"
 
 #include "refgologging.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -38,7 +47,7 @@ RefgoClient::RefgoClient(ByteStream *stream, QObject *parent)
 
 RefgoClient::~RefgoClient()
 {
-    m_engine.failAll(Error(Error::Kind::Cancelled, QStringLiteral("RefGo client deleted")));
+    m_engine.failAll(Error(Error::Kind::Cancelled, Tr::tr("RefGo client deleted")));
 }
 
 Reply *RefgoClient::execute(const QString &rawCommand)
@@ -46,17 +55,17 @@ Reply *RefgoClient::execute(const QString &rawCommand)
     if (rawCommand.contains(QLatin1Char('\r')) || rawCommand.contains(QLatin1Char('\n')))
         return Reply::failed({},
                              Error(Error::Kind::InvalidArgument,
-                                   QStringLiteral("a RefGo command is one line; CR and LF "
-                                                  "are not allowed")));
+                                   Tr::tr("a RefGo command is one line; CR and LF "
+                                          "are not allowed")));
     if (rawCommand.trimmed().isEmpty())
-        return Reply::failed(
-            {}, Error(Error::Kind::InvalidArgument, QStringLiteral("empty RefGo command")));
+        return Reply::failed({},
+                             Error(Error::Kind::InvalidArgument, Tr::tr("empty RefGo command")));
     for (const QChar c : rawCommand) {
         if (c.unicode() < 0x20 || c.unicode() > 0x7e)
             return Reply::failed({},
                                  Error(Error::Kind::InvalidArgument,
-                                       QStringLiteral("RefGo command '%1' contains a "
-                                                      "non-printable or non-ASCII character")
+                                       Tr::tr("RefGo command '%1' contains a "
+                                              "non-printable or non-ASCII character")
                                            .arg(rawCommand)));
     }
     return enqueue(rawCommand,
@@ -74,9 +83,8 @@ Verdict RefgoClient::Protocol::Matcher::operator()(const Answer &answer) const
     if (answer.echo != text)
         return Verdict::notMine(QStringLiteral("echo is '%1'").arg(answer.echo));
     if (const auto line = deviceErrorLine(answer.lines))
-        return Verdict::mine(
-            Error(Error::Kind::DeviceError,
-                  QStringLiteral("drive refused '%1': %2").arg(answer.echo, *line)));
+        return Verdict::mine(Error(Error::Kind::DeviceError,
+                                   Tr::tr("drive refused '%1': %2").arg(answer.echo, *line)));
     return Verdict::mine(decode(answer.lines));
 }
 

@@ -1,6 +1,15 @@
 #include "refgocodec.h"
 
+#include <QCoreApplication>
 #include <limits>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -86,18 +95,18 @@ Result<ScannedNumber> scanNumber(const QString &original)
         t.chop(1);
     }
     if (t.isEmpty())
-        return invalid(QStringLiteral("'%1' is not a number").arg(original));
+        return invalid(Tr::tr("'%1' is not a number").arg(original));
     for (QChar c : t) {
         const bool digit = c >= QLatin1Char('0') && c <= QLatin1Char('9');
         const bool hexLetter = (c >= QLatin1Char('a') && c <= QLatin1Char('f'))
             || (c >= QLatin1Char('A') && c <= QLatin1Char('F'));
         if (!digit && !(n.hex && hexLetter))
-            return invalid(QStringLiteral("'%1' is not a number").arg(original));
+            return invalid(Tr::tr("'%1' is not a number").arg(original));
     }
     bool ok = false;
     n.magnitude = t.toULongLong(&ok, n.hex ? 16 : 10);
     if (!ok)
-        return invalid(QStringLiteral("'%1' is too large").arg(original));
+        return invalid(Tr::tr("'%1' is too large").arg(original));
     return n;
 }
 
@@ -110,13 +119,13 @@ Result<quint32> parseHexField(const QString &field, quint32 max, const QString &
     else if (endsWithH(t))
         t.chop(1);
     if (t.isEmpty())
-        return invalid(QStringLiteral("missing %1").arg(what));
+        return invalid(Tr::tr("missing %1").arg(what));
     bool ok = false;
     const qulonglong v = t.toULongLong(&ok, 16);
     if (!ok || t.startsWith(QLatin1Char('+')) || t.startsWith(QLatin1Char('-')))
-        return invalid(QStringLiteral("%1 '%2' is not hexadecimal").arg(what, field.trimmed()));
+        return invalid(Tr::tr("%1 '%2' is not hexadecimal").arg(what, field.trimmed()));
     if (v > max)
-        return invalid(QStringLiteral("%1 '%2' is too large").arg(what, field.trimmed()));
+        return invalid(Tr::tr("%1 '%2' is too large").arg(what, field.trimmed()));
     return quint32(v);
 }
 
@@ -152,7 +161,7 @@ Result<void> parseObjectParameters(Request &r, const QString &rest)
         const auto signedMax = qulonglong(std::numeric_limits<qint64>::max());
         if (v.negative) {
             if (v.magnitude > signedMax + 1)
-                return invalid(QStringLiteral("value '%1' is too small").arg(fields.at(2)));
+                return invalid(Tr::tr("value '%1' is too small").arg(fields.at(2)));
             r.value = QVariant::fromValue<qlonglong>(qlonglong(0 - v.magnitude));
         } else if (v.hex || v.magnitude > signedMax) {
             r.value = QVariant::fromValue<qulonglong>(v.magnitude);
@@ -163,7 +172,7 @@ Result<void> parseObjectParameters(Request &r, const QString &rest)
     }
     if (fields.size() == 3) {
         if (fields.at(2).trimmed().compare(QLatin1String("h"), Qt::CaseInsensitive) != 0)
-            return invalid(QStringLiteral("third OR field must be 'h' (hex output), not '%1'")
+            return invalid(Tr::tr("third OR field must be 'h' (hex output), not '%1'")
                                .arg(fields.at(2).trimmed()));
         r.hexOutput = true;
     } else {
@@ -243,12 +252,12 @@ Result<Request> parseRequest(const QString &line)
     r.text = line;
     const QString t = line.trimmed();
     if (t.isEmpty())
-        return invalid(QStringLiteral("empty request"));
+        return invalid(Tr::tr("empty request"));
     qsizetype n = 0;
     while (n < t.size() && isLetter(t.at(n)))
         ++n;
     if (n == 0)
-        return invalid(QStringLiteral("'%1' does not start with a command").arg(t));
+        return invalid(Tr::tr("'%1' does not start with a command").arg(t));
     const QString letters = t.left(n).toUpper();
     const CommandInfo *ci = findMnemonic(letters);
     if (!ci
@@ -257,20 +266,20 @@ Result<Request> parseRequest(const QString &line)
         n = 2;
     }
     if (!ci)
-        return invalid(QStringLiteral("unknown command '%1'").arg(letters));
+        return invalid(Tr::tr("unknown command '%1'").arg(letters));
     r.command = ci->command;
     const QString rest = t.mid(n).trimmed(); // a space after the mnemonic is fine (erratum 16)
     const QString name = QLatin1String(ci->mnemonic);
     switch (ci->parameter) {
     case Parameter::None:
         if (!rest.isEmpty())
-            return invalid(QStringLiteral("%1 takes no parameter, got '%2'").arg(name, rest));
+            return invalid(Tr::tr("%1 takes no parameter, got '%2'").arg(name, rest));
         break;
     case Parameter::Required:
     case Parameter::Optional: {
         if (rest.isEmpty()) {
             if (ci->parameter == Parameter::Required)
-                return invalid(QStringLiteral("%1 needs a numeric parameter").arg(name));
+                return invalid(Tr::tr("%1 needs a numeric parameter").arg(name));
             break;
         }
         const auto v = parseNumber(rest);
@@ -296,11 +305,11 @@ Result<qint64> parseNumber(const QString &text)
     const auto signedMax = qulonglong(std::numeric_limits<qint64>::max());
     if (v.negative) {
         if (v.magnitude > signedMax + 1)
-            return invalid(QStringLiteral("'%1' is too small").arg(text.trimmed()));
+            return invalid(Tr::tr("'%1' is too small").arg(text.trimmed()));
         return qint64(0 - v.magnitude);
     }
     if (!v.hex && v.magnitude > signedMax)
-        return invalid(QStringLiteral("'%1' is too large").arg(text.trimmed()));
+        return invalid(Tr::tr("'%1' is too large").arg(text.trimmed()));
     return qint64(v.magnitude); // hex: the unsigned bit pattern
 }
 
@@ -308,12 +317,12 @@ Result<ObjectValue> parseObjectRead(const QString &line)
 {
     const QString t = line.trimmed();
     if (!t.startsWith(QLatin1String("OR"), Qt::CaseInsensitive))
-        return invalid(QStringLiteral("'%1' is not an OR result line").arg(t));
+        return invalid(Tr::tr("'%1' is not an OR result line").arg(t));
     const QStringList fields = t.mid(2).split(QLatin1Char(','));
     if (fields.size() < 3 || fields.at(2).trimmed().isEmpty())
-        return invalid(QStringLiteral("'%1' has no value field").arg(t));
+        return invalid(Tr::tr("'%1' has no value field").arg(t));
     if (fields.size() > 3)
-        return invalid(QStringLiteral("'%1' has more than three fields").arg(t));
+        return invalid(Tr::tr("'%1' has more than three fields").arg(t));
     const auto address = parseAddress(fields.at(0), fields.at(1));
     if (!address)
         return address.error().prefixed(t);
@@ -331,7 +340,7 @@ Result<ProcessStatus> parseTpsr(const QString &line)
     bool ok = t.size() == 8;
     const quint32 bits = ok ? t.toUInt(&ok, 16) : 0;
     if (!ok || t.startsWith(QLatin1Char('+')) || t.startsWith(QLatin1Char('-')))
-        return invalid(QStringLiteral("TPSR answer '%1' is not 8 hex digits").arg(t));
+        return invalid(Tr::tr("TPSR answer '%1' is not 8 hex digits").arg(t));
     return ProcessStatus { bits };
 }
 
@@ -347,7 +356,7 @@ Result<SimpleStatus> parseTs(const QString &line)
     const int v = t.toInt(&ok, 10);
     if (ok && (v == 0 || v == 1 || v == 2 || v == 9))
         return SimpleStatus(v);
-    return invalid(QStringLiteral("TS answer '%1' is not 0, 1, 2 or 9").arg(t));
+    return invalid(Tr::tr("TS answer '%1' is not 0, 1, 2 or 9").arg(t));
 }
 
 QString simpleStatusName(SimpleStatus status)

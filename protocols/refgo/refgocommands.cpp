@@ -2,6 +2,15 @@
 // turn result lines into values. The engine lives in refgoclient.cpp.
 
 #include "refgoclient.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -9,7 +18,7 @@ namespace {
 
 Error malformed(const QString &command, const QString &what)
 {
-    return Error(Error::Kind::Malformed, QStringLiteral("answer to '%1' %2").arg(command, what));
+    return Error(Error::Kind::Malformed, Tr::tr("answer to '%1' %2").arg(command, what));
 }
 
 // Integer, Hex32 and ObjectRead answers have exactly one result line (spec 3.3).
@@ -17,7 +26,7 @@ Result<QString> singleLine(const QString &command, const QStringList &lines)
 {
     if (lines.size() != 1)
         return malformed(command,
-                         QStringLiteral("has %1 result lines, expected one: %2")
+                         Tr::tr("has %1 result lines, expected one: %2")
                              .arg(lines.size())
                              .arg(lines.join(QLatin1String(" / "))));
     return lines.first();
@@ -52,7 +61,7 @@ Result<QVariant> decodeInteger(const QString &command, const QStringList &lines,
         return line.error();
     const auto n = parseNumber(line.value());
     if (!n)
-        return malformed(command, QStringLiteral("is not a number: %1").arg(n.error().message()));
+        return malformed(command, Tr::tr("is not a number: %1").arg(n.error().message()));
     if (asBool) // TI: 0 or 1 (spec 3.3)
         return QVariant(n.value() != 0);
     return QVariant::fromValue<qlonglong>(n.value());
@@ -66,11 +75,11 @@ Reply *RefgoClient::send(Command command, std::optional<qint64> argument)
     const QString name = QLatin1String(ci.mnemonic);
     QString problem;
     if (ci.parameter == Parameter::Object)
-        problem = QStringLiteral("use objectRead()/objectWrite() for %1").arg(name);
+        problem = Tr::tr("use objectRead()/objectWrite() for %1").arg(name);
     else if (ci.parameter == Parameter::None && argument)
-        problem = QStringLiteral("%1 takes no parameter").arg(name);
+        problem = Tr::tr("%1 takes no parameter").arg(name);
     else if (ci.parameter == Parameter::Required && !argument)
-        problem = QStringLiteral("%1 needs a parameter").arg(name);
+        problem = Tr::tr("%1 needs a parameter").arg(name);
     if (!problem.isEmpty())
         return Reply::failed({}, Error(Error::Kind::InvalidArgument, problem));
 
@@ -210,7 +219,7 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
             // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
             if (lines.isEmpty())
                 return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive gave no value for '%1'").arg(text));
+                             Tr::tr("drive gave no value for '%1'").arg(text));
             const auto line = singleLine(text, lines);
             if (!line)
                 return line.error();
@@ -218,13 +227,13 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
             if (!value && isBrokenNumber(line.value()))
                 return malformed(text, value.error().message());
             if (!value)
-                return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive gave no value for '%1': %2")
-                                 .arg(text, value.error().message()));
+                return Error(
+                    Error::Kind::DeviceError,
+                    Tr::tr("drive gave no value for '%1': %2").arg(text, value.error().message()));
             if (value->address != address)
-                return malformed(text,
-                                 QStringLiteral("names object %1: '%2'")
-                                     .arg(value->address.toString(), line.value()));
+                return malformed(
+                    text,
+                    Tr::tr("names object %1: '%2'").arg(value->address.toString(), line.value()));
             return QVariant::fromValue<qlonglong>(value->value);
         },
         address);
@@ -249,7 +258,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
     default:
         return Reply::failed(address,
                              Error(Error::Kind::InvalidArgument,
-                                   QStringLiteral("OW writes integers only, not %1 '%2'")
+                                   Tr::tr("OW writes integers only, not %1 '%2'")
                                        .arg(QLatin1String(value.typeName()), value.toString())));
     }
     const QString text = formatWrite(address, value);
@@ -263,7 +272,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
                    });
             if (!acknowledged)
                 return Error(Error::Kind::DeviceError,
-                             QStringLiteral("drive did not acknowledge '%1' with ',OK': %2")
+                             Tr::tr("drive did not acknowledge '%1' with ',OK': %2")
                                  .arg(text,
                                       lines.isEmpty() ? QStringLiteral("(no result)")
                                                       : lines.join(QLatin1String(" / "))));

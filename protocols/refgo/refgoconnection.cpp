@@ -5,7 +5,16 @@
 #include "refgologging.h"
 #include "transport/tcpstream.h"
 
+#include <QCoreApplication>
 #include <QPointer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -20,8 +29,8 @@ bool carriedByRefgo(DataType type)
 Error notSupported(const ObjectDef &def)
 {
     return Error(Error::Kind::NotSupported,
-                 QStringLiteral("%1 %2 is %3: RefGo OR/OW carry integers only (use the CANopen "
-                                "SLCAN port for strings, domains and reals)")
+                 Tr::tr("%1 %2 is %3: RefGo OR/OW carry integers only (use the CANopen "
+                        "SLCAN port for strings, domains and reals)")
                      .arg(def.address.toString(), def.name, datatype::name(def.type)));
 }
 
@@ -47,8 +56,7 @@ Result<QVariant> convertRead(const ObjectDef *def, qlonglong v)
     }
     auto raw = codec::normalize(def->type, candidate);
     if (!raw)
-        return raw.error().prefixed(
-            QStringLiteral("%1 %2").arg(def->address.toString(), def->name));
+        return raw.error().prefixed(Tr::tr("%1 %2").arg(def->address.toString(), def->name));
     return raw;
 }
 
@@ -139,7 +147,7 @@ void RefgoConnection::onClosed(const Error &error)
     const Error why = error.isError()
         ? error
         : Error(Error::Kind::Disconnected,
-                QStringLiteral("connection to %1 closed").arg(m_stream->peerName()));
+                Tr::tr("connection to %1 closed").arg(m_stream->peerName()));
     Q_EMIT logLine(QStringLiteral("! ") + why.message());
     setState(State::Disconnected, why);
     if (m_autoReconnect)
@@ -161,9 +169,9 @@ Reply *RefgoConnection::restoreFactoryDefaults()
 Reply *RefgoConnection::command(const QString &raw)
 {
     if (!isConnected())
-        return Reply::failed({},
-                             Error(Error::Kind::Disconnected,
-                                   QStringLiteral("not connected to %1").arg(uri().toString())));
+        return Reply::failed(
+            {},
+            Error(Error::Kind::Disconnected, Tr::tr("not connected to %1").arg(uri().toString())));
     m_client->setTimeoutMs(requestTimeoutMs());
     return m_client->execute(raw);
 }

@@ -1,4 +1,13 @@
 #include "refgoframer.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -26,8 +35,8 @@ std::vector<Result<Answer>> Framer::feed(const QByteArray &bytes)
         m_line.append(c);
         if (++m_size > kMaxAnswerBytes) {
             out.push_back(Error(Error::Kind::Malformed,
-                                QStringLiteral("answer too long without prompt (more than %1 "
-                                               "bytes)")
+                                Tr::tr("answer too long without prompt (more than %1 "
+                                       "bytes)")
                                     .arg(kMaxAnswerBytes)));
             reset();
             m_discarding = true;

@@ -1,4 +1,13 @@
 #include "objectstore.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::simulation)
+};
+} // namespace
 
 namespace db::sim {
 
@@ -58,13 +67,12 @@ Result<void> ObjectStore::checkRead(ObjectAddress address) const
 {
     const ObjectDef *def = definition(address);
     if (!def)
-        return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist")
-                         .arg(m_dictionary.addressFormat().format(address)));
-    if (!def->readable())
         return Error(
-            Error::Kind::AccessDenied,
-            QStringLiteral("%1 is write-only").arg(m_dictionary.addressFormat().format(address)));
+            Error::Kind::InvalidArgument,
+            Tr::tr("object %1 does not exist").arg(m_dictionary.addressFormat().format(address)));
+    if (!def->readable())
+        return Error(Error::Kind::AccessDenied,
+                     Tr::tr("%1 is write-only").arg(m_dictionary.addressFormat().format(address)));
     return {};
 }
 
@@ -72,13 +80,12 @@ Result<QVariant> ObjectStore::checkWrite(ObjectAddress address, const QVariant &
 {
     const ObjectDef *def = definition(address);
     if (!def)
-        return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist")
-                         .arg(m_dictionary.addressFormat().format(address)));
-    if (!def->writable())
         return Error(
-            Error::Kind::AccessDenied,
-            QStringLiteral("%1 is read-only").arg(m_dictionary.addressFormat().format(address)));
+            Error::Kind::InvalidArgument,
+            Tr::tr("object %1 does not exist").arg(m_dictionary.addressFormat().format(address)));
+    if (!def->writable())
+        return Error(Error::Kind::AccessDenied,
+                     Tr::tr("%1 is read-only").arg(m_dictionary.addressFormat().format(address)));
     return def->validate(value, m_dictionary.addressFormat());
 }
 

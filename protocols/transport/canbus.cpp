@@ -1,8 +1,17 @@
 #include "canbus.h"
 
+#include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QEventLoop>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -87,7 +96,7 @@ void CanBus::flushDropReport()
         return;
     m_lastReportMs = QDeadlineTimer::current().deadline();
     const qint64 frames = std::exchange(m_droppedUnreported, 0);
-    Q_EMIT warning(QStringLiteral("%1: receive queue overflow: %2 frames dropped (%3 in all)")
+    Q_EMIT warning(Tr::tr("%1: receive queue overflow: %2 frames dropped (%3 in all)")
                        .arg(name())
                        .arg(frames)
                        .arg(m_dropped));
@@ -111,7 +120,7 @@ Result<void> CanBus::openAndWait(int timeoutMs)
     return failure.isError()
         ? failure
         : Error(Error::Kind::Timeout,
-                QStringLiteral("%1 did not open within %2 ms").arg(name()).arg(timeoutMs));
+                Tr::tr("%1 did not open within %2 ms").arg(name()).arg(timeoutMs));
 }
 
 } // namespace db

@@ -1,6 +1,15 @@
 #include "clientthrottle.h"
 
+#include <QCoreApplication>
 #include <QTcpSocket>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -39,8 +48,8 @@ void ClientThrottle::onBytesWritten()
 QString ClientThrottle::drop(QTcpSocket *socket, QObject *receiver, qint64 queuedBytes,
                              int pausedMs)
 {
-    const QString why = QStringLiteral("dropping client %1:%2: it has not read its answers for "
-                                       "%3 ms (%4 bytes queued)")
+    const QString why = Tr::tr("dropping client %1:%2: it has not read its answers for "
+                               "%3 ms (%4 bytes queued)")
                             .arg(socket->peerAddress().toString())
                             .arg(socket->peerPort())
                             .arg(pausedMs)

@@ -1,8 +1,17 @@
 #include "qtcanbus.h"
 
 #include <QCanBus>
+#include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QVariant>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -70,8 +79,8 @@ void QtCanBus::doOpen()
 {
     if (!QCanBus::instance()->plugins().contains(m_plugin)) {
         failLater(Error(Error::Kind::NotSupported,
-                        QStringLiteral("no Qt CAN plugin '%1' for interface %2 (available "
-                                       "plugins: %3)")
+                        Tr::tr("no Qt CAN plugin '%1' for interface %2 (available "
+                               "plugins: %3)")
                             .arg(m_plugin, m_interface, joined(availablePlugins()))));
         return;
     }
@@ -80,7 +89,7 @@ void QtCanBus::doOpen()
     // Only refuse when the plugin does list interfaces: virtualcan accepts names it never lists.
     if (!interfaces.isEmpty() && !interfaces.contains(m_interface) && m_plugin != u"virtualcan") {
         failLater(Error(Error::Kind::HostNotFound,
-                        QStringLiteral("%1 has no interface '%2' (available: %3)")
+                        Tr::tr("%1 has no interface '%2' (available: %3)")
                             .arg(m_plugin, m_interface, joined(interfaces))));
         return;
     }
@@ -88,7 +97,7 @@ void QtCanBus::doOpen()
     m_device = QCanBus::instance()->createDevice(m_plugin, m_interface, &createError);
     if (!m_device) {
         failLater(Error(Error::Kind::HostNotFound,
-                        QStringLiteral("cannot create %1 interface '%2': %3 (available: %4)")
+                        Tr::tr("cannot create %1 interface '%2': %3 (available: %4)")
                             .arg(m_plugin, m_interface, createError, joined(interfaces))));
         return;
     }
@@ -100,7 +109,7 @@ void QtCanBus::doOpen()
         m_device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant(m_bitrate));
     if (!m_device->connectDevice()) {
         failLater(Error(Error::Kind::ConnectionRefused,
-                        QStringLiteral("cannot open %1 interface '%2': %3")
+                        Tr::tr("cannot open %1 interface '%2': %3")
                             .arg(m_plugin, m_interface, m_device->errorString())));
         return;
     }
@@ -126,7 +135,7 @@ void QtCanBus::doSend(const QCanBusFrame &frame)
     if (!m_device)
         return;
     if (!m_device->writeFrame(frame)) {
-        Q_EMIT warning(QStringLiteral("%1: frame %2 not sent: %3")
+        Q_EMIT warning(Tr::tr("%1: frame %2 not sent: %3")
                            .arg(name(), frame.toString(), m_device->errorString()));
         return;
     }
@@ -145,8 +154,8 @@ void QtCanBus::onStateChanged(QCanBusDevice::CanBusDeviceState state)
         if (was == State::Closing || was == State::Closed)
             setClosed();
         else
-            setClosed(Error(Error::Kind::Disconnected,
-                            QStringLiteral("%1 closed unexpectedly").arg(name())));
+            setClosed(
+                Error(Error::Kind::Disconnected, Tr::tr("%1 closed unexpectedly").arg(name())));
     }
 }
 
@@ -158,15 +167,15 @@ void QtCanBus::onError(QCanBusDevice::CanBusError error)
         return;
     case QCanBusDevice::ConnectionError:
         if (CanBus::state() == State::Opening) {
-            failLater(Error(Error::Kind::ConnectionRefused,
-                            QStringLiteral("cannot open %1 interface '%2': %3")
-                                .arg(m_plugin, m_interface, text)));
+            failLater(Error(
+                Error::Kind::ConnectionRefused,
+                Tr::tr("cannot open %1 interface '%2': %3").arg(m_plugin, m_interface, text)));
             return;
         }
-        Q_EMIT warning(QStringLiteral("%1: connection error: %2").arg(name(), text));
+        Q_EMIT warning(Tr::tr("%1: connection error: %2").arg(name(), text));
         return;
     case QCanBusDevice::ConfigurationError:
-        Q_EMIT warning(QStringLiteral("%1: configuration not applied (bit rate %2): %3")
+        Q_EMIT warning(Tr::tr("%1: configuration not applied (bit rate %2): %3")
                            .arg(name())
                            .arg(m_bitrate)
                            .arg(text));
@@ -190,8 +199,8 @@ void QtCanBus::onFramesReceived()
     for (int i = 0; i < kReceiveSliceFrames && m_device && m_device->framesAvailable() > 0; ++i) {
         const QCanBusFrame frame = m_device->readFrame();
         if (frame.frameType() == QCanBusFrame::ErrorFrame) {
-            Q_EMIT warning(QStringLiteral("%1: error frame: %2")
-                               .arg(name(), m_device->interpretErrorFrame(frame)));
+            Q_EMIT warning(
+                Tr::tr("%1: error frame: %2").arg(name(), m_device->interpretErrorFrame(frame)));
             continue;
         }
         qCDebug(lcQtCanRaw).noquote() << name() << "rx" << frame.toString();

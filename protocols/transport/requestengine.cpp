@@ -1,4 +1,13 @@
 #include "requestengine.h"
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -148,34 +157,32 @@ Error RequestEngineBase::framingError(const Error &error)
 
 Error RequestEngineBase::notConnected(const QString &label) const
 {
-    return Error(
-        Error::Kind::Disconnected,
-        QStringLiteral("cannot send '%1': not connected to %2").arg(label, m_stream->peerName()));
+    return Error(Error::Kind::Disconnected,
+                 Tr::tr("cannot send '%1': not connected to %2").arg(label, m_stream->peerName()));
 }
 
 Error RequestEngineBase::timedOut(const QString &label, int transmissions) const
 {
-    QString message = QStringLiteral("no answer to '%1' from %2 within %3 ms")
+    QString message = Tr::tr("no answer to '%1' from %2 within %3 ms")
                           .arg(label, m_stream->peerName())
                           .arg(m_timeoutMs);
     if (transmissions > 1)
-        message += QStringLiteral(" (sent %1 times)").arg(transmissions);
+        message += Tr::tr(" (sent %1 times)").arg(transmissions);
     return Error(Error::Kind::Timeout, message);
 }
 
 Error RequestEngineBase::foreign(const QString &label, const QString &reason) const
 {
     return Error(Error::Kind::Malformed,
-                 QStringLiteral("answer from %1 does not belong to '%2': %3")
+                 Tr::tr("answer from %1 does not belong to '%2': %3")
                      .arg(m_stream->peerName(), label, reason));
 }
 
 Error RequestEngineBase::closedError(const Error &error) const
 {
-    return error.isError()
-        ? error
-        : Error(Error::Kind::Disconnected,
-                QStringLiteral("connection to %1 closed").arg(m_stream->peerName()));
+    return error.isError() ? error
+                           : Error(Error::Kind::Disconnected,
+                                   Tr::tr("connection to %1 closed").arg(m_stream->peerName()));
 }
 
 } // namespace db

@@ -1,7 +1,16 @@
 #include "slcanbus.h"
 
+#include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -75,8 +84,8 @@ void SlcanBus::doSend(const QCanBusFrame &frame)
 {
     const QByteArray line = slcan::encodeFrame(frame);
     if (line.isEmpty()) {
-        Q_EMIT warning(QStringLiteral("%1: cannot send frame %2 over slcan (FD, error frame or "
-                                      "more than 8 bytes)")
+        Q_EMIT warning(Tr::tr("%1: cannot send frame %2 over slcan (FD, error frame or "
+                              "more than 8 bytes)")
                            .arg(name(), frame.toString()));
         return;
     }
@@ -182,10 +191,10 @@ void SlcanBus::handle(const slcan::Message &m)
         break;
     case slcan::Message::Kind::Bell:
         Q_EMIT warning(
-            QStringLiteral("%1: the adapter answered BEL (command or frame refused)").arg(name()));
+            Tr::tr("%1: the adapter answered BEL (command or frame refused)").arg(name()));
         break;
     case slcan::Message::Kind::Unknown:
-        Q_EMIT warning(QStringLiteral("%1: skipped a line that is not slcan: '%2'")
+        Q_EMIT warning(Tr::tr("%1: skipped a line that is not slcan: '%2'")
                            .arg(name(), QString::fromLatin1(m.line.toPercentEncoding(" "))));
         break;
     case slcan::Message::Kind::Ack:

@@ -1,6 +1,15 @@
 #include "tcpstream.h"
 
+#include <QCoreApplication>
 #include <QLoggingCategory>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -19,7 +28,7 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
         m_socket.abort();
         setClosed(Error(Error::Kind::Timeout,
-                        QStringLiteral("no TCP connection to %1 within %2 ms")
+                        Tr::tr("no TCP connection to %1 within %2 ms")
                             .arg(peerName())
                             .arg(m_connectTimeoutMs)));
     });
@@ -90,31 +99,28 @@ void TcpStream::onDisconnected()
     if (state() == State::Closing)
         setClosed();
     else
-        setClosed(Error(Error::Kind::Disconnected,
-                        QStringLiteral("%1 closed the connection").arg(peerName())));
+        setClosed(
+            Error(Error::Kind::Disconnected, Tr::tr("%1 closed the connection").arg(peerName())));
 }
 
 Error TcpStream::describe(QAbstractSocket::SocketError error) const
 {
     switch (error) {
     case QAbstractSocket::ConnectionRefusedError:
-        return Error(Error::Kind::ConnectionRefused,
-                     QStringLiteral("%1 refused the connection (nothing listens on that port)")
-                         .arg(peerName()));
-    case QAbstractSocket::HostNotFoundError:
-        return Error(Error::Kind::HostNotFound, QStringLiteral("host '%1' not found").arg(m_host));
-    case QAbstractSocket::RemoteHostClosedError:
-        return Error(Error::Kind::Disconnected,
-                     QStringLiteral("%1 closed the connection").arg(peerName()));
-    case QAbstractSocket::SocketTimeoutError:
-        return Error(Error::Kind::Timeout, QStringLiteral("%1: socket timeout").arg(peerName()));
-    case QAbstractSocket::NetworkError:
         return Error(
-            Error::Kind::Disconnected,
-            QStringLiteral("%1: network error: %2").arg(peerName(), m_socket.errorString()));
+            Error::Kind::ConnectionRefused,
+            Tr::tr("%1 refused the connection (nothing listens on that port)").arg(peerName()));
+    case QAbstractSocket::HostNotFoundError:
+        return Error(Error::Kind::HostNotFound, Tr::tr("host '%1' not found").arg(m_host));
+    case QAbstractSocket::RemoteHostClosedError:
+        return Error(Error::Kind::Disconnected, Tr::tr("%1 closed the connection").arg(peerName()));
+    case QAbstractSocket::SocketTimeoutError:
+        return Error(Error::Kind::Timeout, Tr::tr("%1: socket timeout").arg(peerName()));
+    case QAbstractSocket::NetworkError:
+        return Error(Error::Kind::Disconnected,
+                     Tr::tr("%1: network error: %2").arg(peerName(), m_socket.errorString()));
     default:
-        return Error(Error::Kind::Io,
-                     QStringLiteral("%1: %2").arg(peerName(), m_socket.errorString()));
+        return Error(Error::Kind::Io, Tr::tr("%1: %2").arg(peerName(), m_socket.errorString()));
     }
 }
 

@@ -5,9 +5,9 @@
 #include "commands.h"
 #include "commands_params.h"
 #include "commands_record.h"
-#include "parameters/parameterset.h"
 #include "core/valuecodec.h"
 #include "fakeconnection.h"
+#include "parameters/parameterset.h"
 
 #include <QBuffer>
 #include <QFile>

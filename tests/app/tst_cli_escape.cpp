@@ -154,7 +154,8 @@ void TestCliEscape::hostileFileContentsInErrors_data()
     QTest::newRow("type token") << QStringLiteral("restore") << QByteArray(" UNSIGNED32 ")
                                 << QByteArray(" \x1b[2J\x1b[1;1HOK") + '\0' + "\xc2\x9b "
                                 << QStringLiteral("type.dbp")
-                                << QStringLiteral("unknown type '\\x1b[2J\\x1b[1;1HOK\\x00\\u009b'");
+                                << QStringLiteral(
+                                       "unknown type '\\x1b[2J\\x1b[1;1HOK\\x00\\u009b'");
     QTest::newRow("product name") << QStringLiteral("restore") << QByteArray("product 0x")
                                   << QByteArray("product 0x") << QStringLiteral("product.dbp")
                                   << QStringLiteral("@PRODUCT@");

@@ -22,6 +22,8 @@ private Q_SLOTS:
     void usageErrorsExitWithTwo_data();
     void usageErrorsExitWithTwo();
     void tooShortWaitStopsTheAxis();
+    void velocityThenHaltAndStopFromAnotherProcess_data();
+    void velocityThenHaltAndStopFromAnotherProcess();
     void killedJogStopsByItself_data();
     void killedJogStopsByItself();
 
@@ -200,6 +202,56 @@ void TestCliMotion::tooShortWaitStopsTheAxis()
         QStringLiteral("0"), 5000);
     r = cli({ QStringLiteral("reset"), u });
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+void TestCliMotion::velocityThenHaltAndStopFromAnotherProcess_data()
+{
+    addTransports();
+}
+
+// velocity runs the drive's velocity mode for --time and halts; halt and stop brake a motion that
+// another process started.
+void TestCliMotion::velocityThenHaltAndStopFromAnotherProcess()
+{
+    QFETCH(QString, transport);
+    const QString u = uri(transport);
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    const double start = position(cli({ QStringLiteral("read"), u, QStringLiteral("6064:0") }));
+    Run r = cli({ QStringLiteral("velocity"), u, QStringLiteral("--vel"), QStringLiteral("-1000"),
+                  QStringLiteral("--time"), QStringLiteral("300"), QStringLiteral("--acc"),
+                  QStringLiteral("20000"), QStringLiteral("--dec"), QStringLiteral("20000") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const double after = position(r);
+    QVERIFY2(after < start - 100 && after > start - 500,
+             qPrintable(QStringLiteral("%1 -> %2").arg(start).arg(after)));
+    QCOMPARE(cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed(),
+             QStringLiteral("0"));
+    if (transport == u"refgo")
+        QVERIFY2(r.err.contains(QLatin1String("nothing on the drive's side stops")),
+                 qPrintable(r.err));
+
+    for (const QString &brake : { QStringLiteral("halt"), QStringLiteral("stop") }) {
+        QProcess move;
+        move.start(QStringLiteral(DRIVEBENCH_CLI),
+                   { QStringLiteral("move"), u, QStringLiteral("--abs"),
+                     QString::number(after + 50000), QStringLiteral("--vel"),
+                     QStringLiteral("1000"), QStringLiteral("--wait"), QStringLiteral("3000") });
+        QVERIFY(move.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed().toDouble()
+                > 900,
+            10000);
+        r = cli({ brake, u, QStringLiteral("--dec"), QStringLiteral("20000") });
+        QVERIFY2(r.exitCode == 0, qPrintable(brake + QLatin1String(": ") + r.err));
+        QCOMPARE(cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed(),
+                 QStringLiteral("0"));
+        // The other process's move never reaches its target: it ends at its --wait.
+        QVERIFY(move.waitForFinished(10000));
+        QVERIFY2(move.exitCode() != 0, qPrintable(QString::fromUtf8(move.readAllStandardOutput())));
+        cli({ QStringLiteral("reset"), u });
+        QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    }
     QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
 }
 

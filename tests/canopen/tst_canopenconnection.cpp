@@ -3,6 +3,7 @@
 
 #include "canopen/canbusfactory.h"
 #include "canopen/canopenconnection.h"
+#include "canopen/heartbeatproducer.h"
 #include "canopen/sdoclient.h"
 #include "parameters/parameterrunner.h"
 #include "scriptedcanbus.h"
@@ -49,6 +50,8 @@ private Q_SLOTS:
 
     void missingNodeFailsOpenWithClearError();
     void connectedWhenBusOpens();
+    void toolNodeIsTheHeartbeatNode_data();
+    void toolNodeIsTheHeartbeatNode();
     void readTypedStatusword();
     void readUnknownObjectGivesIntegerByLength();
     void readVisibleStringSegmented();
@@ -116,6 +119,40 @@ void TstCanopenConnection::connectedWhenBusOpens()
     QCOMPARE(m_conn->protocolKey(), QStringLiteral("canopen"));
     QVERIFY(m_conn->capabilities() & DeviceConnection::Capability::StoreNonVolatile);
     QVERIFY(m_bus->sent().isEmpty());
+}
+
+void TstCanopenConnection::toolNodeIsTheHeartbeatNode_data()
+{
+    QTest::addColumn<QString>("query");
+    QTest::addColumn<int>("tool"); // 0: refused
+    QTest::addColumn<QString>("why");
+    QTest::newRow("default") << QString() << 127 << QString();
+    QTest::newRow("given") << QStringLiteral("&toolnode=100") << 100 << QString();
+    QTest::newRow("hex") << QStringLiteral("&toolnode=0x70") << 0x70 << QString();
+    QTest::newRow("clash") << QStringLiteral("&toolnode=50") << 0
+                           << QStringLiteral("?toolnode=50 is the drive's own node id");
+    QTest::newRow("zero") << QStringLiteral("&toolnode=0") << 0 << QStringLiteral("toolnode=0 in");
+    QTest::newRow("too big") << QStringLiteral("&toolnode=128") << 0
+                             << QStringLiteral("from 1 to 127");
+}
+
+// The tool's own heartbeat (what drives with 1016h watch) uses ?toolnode=, 127 by default, never
+// the drive's id.
+void TstCanopenConnection::toolNodeIsTheHeartbeatNode()
+{
+    QFETCH(QString, query);
+    QFETCH(int, tool);
+    QFETCH(QString, why);
+    open(QStringLiteral("canopen+slcan://127.0.0.1?node=50") + query);
+    if (tool == 0) {
+        QCOMPARE(m_conn->state(), DeviceConnection::State::Disconnected);
+        QCOMPARE(m_conn->lastError().kind(), Error::Kind::InvalidArgument);
+        QVERIFY2(m_conn->lastError().message().contains(why),
+                 qPrintable(m_conn->lastError().message()));
+        return;
+    }
+    QCOMPARE(m_conn->state(), DeviceConnection::State::Connected);
+    QCOMPARE(int(m_conn->network()->heartbeat()->nodeId()), tool);
 }
 
 void TstCanopenConnection::readTypedStatusword()

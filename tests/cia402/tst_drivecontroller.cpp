@@ -85,14 +85,14 @@ private Q_SLOTS:
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
         QVERIFY(awaitReply(dc.enableOperation()).ok());
-        PositionSetPoint sp { 720, 7200, 2000, 2000, false, true };
+        PositionSetPoint sp { 720, 7200, 2000, 2000, false, true, {}, 0 };
         auto r = awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start());
         QVERIFY2(r.ok(), qPrintable(r.error().toString()));
         // Handshake finished: bit 4 back to 0, bit 12 cleared.
         QCOMPARE(rig->drive().read({ 0x6040, 0 }).value().toUInt(), 0x0Fu);
         QTRY_VERIFY(rig->drive().statusword() & sw::TargetReached);
         QTRY_VERIFY(qAbs(rig->drive().axis().position() - 720) < 1);
-        sp = { 100, 7200, 2000, 2000, true, true }; // relative (bit 6): from the last target
+        sp = { 100, 7200, 2000, 2000, true, true, {}, 0 }; // relative (bit 6): from the last target
         QVERIFY(awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start()).ok());
         QTRY_VERIFY(qAbs(rig->drive().axis().position() - 820) < 1);
     }

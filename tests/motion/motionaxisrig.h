@@ -19,11 +19,12 @@ struct MotionRig
 
 // A MotionAxis on rig `kind` (see makeRig), initialised, limited to `maxVelocity` units/s;
 // nullptr when the rig or the initialisation fails.
-inline std::unique_ptr<MotionRig> makeMotionRig(const QString &kind, double maxVelocity)
+inline std::unique_ptr<MotionRig> makeMotionRig(const QString &kind, double maxVelocity,
+                                                const QHash<ObjectAddress, QVariant> &initial = {})
 {
     using namespace db::motion;
     auto a = std::make_unique<MotionRig>();
-    a->rig = makeRig(kind);
+    a->rig = makeRig(kind, initial);
     if (!a->rig)
         return nullptr;
     a->cia = std::make_unique<Cia402Axis>(a->rig->connection.get());

@@ -86,8 +86,41 @@ private Q_SLOTS:
         QSignalSpy lost(rig->connection.get(), &DeviceConnection::supervisionLost);
         QVERIFY(awaitReply(rig->connection->write({ 0x1017, 0 }, 0)).ok()); // falls silent
         QVERIFY(lost.wait(2000));
-        QVERIFY2(lost.at(0).at(0).toString().contains(QLatin1String("heartbeat of node 50 lost")),
+        QVERIFY2(lost.at(0).at(0).toString().contains(
+                     QLatin1String("heartbeat lost: node 50 silent for more than 100 ms")),
                  qPrintable(lost.at(0).at(0).toString()));
+    }
+
+    void runningMoveEndsWithHeartbeatLost()
+    {
+        // The drive beats every 50 ms (1017h); it falls silent mid-move (dead, or its bus
+        // gone): the move ends with the cause within the consumer time, and the drive, which
+        // still answers SDO here, is told to stop.
+        auto a =
+            makeMotionRig(QStringLiteral("canopen"), 50000, { { ObjectAddress(0x1017, 0), 50 } });
+        QVERIFY(a);
+        const auto at = canopen::networkNodeOf(a->rig->connection.get());
+        QTRY_COMPARE(at.network->monitor()->consumerTime(at.node), 100);
+        QVERIFY(powerOn(a->axis.get()));
+        MotionCommand move(a->axis.get(), CommandKind::MoveAbsolute);
+        move.setParams(moveParams(1e6, 2000, 20000));
+        move.setExecute(true);
+        const auto &drive = a->rig->drive();
+        QTRY_VERIFY_WITH_TIMEOUT(qAbs(drive.axis().velocity() - 2000) < 20, 5000);
+        QVERIFY(move.isBusy());
+        QElapsedTimer since;
+        since.start();
+        a->rig->demo->setHeartbeatSilenced(true);
+        QTRY_VERIFY_WITH_TIMEOUT(move.isFinished(), 100 + kMarginMs);
+        const qint64 endedMs = since.elapsed();
+        QCOMPARE(move.status(), Status::Error);
+        QVERIFY2(move.error().message().contains(QLatin1String("heartbeat lost: node 50")),
+                 qPrintable(move.error().message()));
+        QCOMPARE(a->axis->state(), AxisState::ErrorStop);
+        QTRY_VERIFY_WITH_TIMEOUT(!drive.axis().isMoving(), 2000);
+        qInfo("move ended %lld ms after the heartbeat stopped (consumer time 100 ms); standstill "
+              "after %lld ms",
+              endedMs, since.elapsed());
     }
 
     void toolGoneQuickStopsTheDrive()

@@ -71,6 +71,28 @@ private Q_SLOTS:
         QCOMPARE(add.target(), 1200.0);
         QVERIFY(qAbs(a->rig->drive().axis().position() - 1200) < kTolerance);
     }
+    void jerkReachesTheDrive_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+    // The MovingCap describes its profile jerk as 60A4h.0 (not the CiA 402 array's 60A4h.1):
+    // the axis offers jerk and a move writes it there.
+    void jerkReachesTheDrive()
+    {
+        QFETCH(QString, kind);
+        auto a = makeAxis(kind);
+        QVERIFY(a && powerOn(a->axis.get()));
+        QVERIFY(a->cia->features().testFlag(AxisInterface::Feature::Jerk));
+        MotionCommand move(a->axis.get(), CommandKind::MoveAbsolute);
+        MoveParams p = params(300);
+        p.jerk = 54321;
+        move.setParams(p);
+        move.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(move.status(), Status::Done, 5000);
+        QCOMPARE(a->rig->drive().read({ 0x60A4, 0 }).value().toLongLong(), 54321LL);
+    }
     void newAbsoluteAbortsRunning() // S-02
     {
         auto a = makeAxis(QStringLiteral("sim"));

@@ -1,9 +1,9 @@
 // Parameter sets know how their addresses are written: a set of inverter parameters is saved
 // and read back in decimal NUMBER:DATASET, files without the "addresses" line stay CANopen, and
 // sets (or a set and a device) of different formats are never compared or restored across.
+#include "fakeconnection.h"
 #include "parameters/parameterrunner.h"
 #include "parameters/parameterset.h"
-#include "fakeconnection.h"
 
 #include <QSignalSpy>
 #include <QTest>

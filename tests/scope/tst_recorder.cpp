@@ -1,5 +1,6 @@
 // Level 1/2: the recorder with a scripted source: every trigger kind with its pre/post window,
-// modes run/roll/single/normal, loss counting and gaps, bounded memory, source failure.
+// modes run/roll/single/normal, a run that ends after its duration, loss counting and gaps, bounded
+// memory, source failure.
 #include "fakesource.h"
 #include "scope/recorder.h"
 
@@ -161,6 +162,28 @@ private Q_SLOTS:
         QCOMPARE(m_recorder->state(), Recorder::State::Triggered);
         QTRY_COMPARE(m_recorder->state(), Recorder::State::Stopped);
         QCOMPARE(m_recorder->buffer(0).size(), 1);
+    }
+
+    void runEndsAfterItsDuration()
+    {
+        m_recorder->setDurationS(0.05);
+        m_recorder->start();
+        QVERIFY(std::isnan(m_recorder->stoppedAt()));
+        // A sample stamped after the end (its answer came before the end timer's turn) is not
+        // part of the recording.
+        m_source->push(0, { { 0.01, 1 }, { 0.0625, 2 } });
+        QCOMPARE(m_recorder->buffer(0).size(), 1);
+        QTRY_COMPARE(m_recorder->state(), Recorder::State::Stopped);
+        QVERIFY(!m_source->isRunning());
+        QVERIFY2(m_recorder->stoppedAt() >= 0.05,
+                 qPrintable(QString::number(m_recorder->stoppedAt())));
+        // Without a duration the recording runs until stop().
+        m_recorder->setDurationS(0);
+        m_recorder->start();
+        m_source->push(0, { { 0.0625, 2 } });
+        QCOMPARE(m_recorder->buffer(0).size(), 1);
+        QVERIFY(m_recorder->isRunning());
+        m_recorder->stop();
     }
 
     void normalModeKeepsTheLastCapture()

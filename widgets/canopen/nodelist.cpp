@@ -59,11 +59,14 @@ NodeList::NodeList(QWidget *parent)
         const char *text;
         const char *toolTip;
     } commands[] = {
-        { NmtCommand::Start, "start", "Start", "NMT start: operational" },
-        { NmtCommand::Stop, "stop", "Stop", "NMT stop: stopped" },
-        { NmtCommand::EnterPreOperational, "preop", "Pre-op", "NMT enter pre-operational" },
-        { NmtCommand::ResetNode, "reset", "Reset", "NMT reset node (application)" },
-        { NmtCommand::ResetCommunication, "resetComm", "Reset comm", "NMT reset communication" },
+        { NmtCommand::Start, "start", QT_TR_NOOP("Start"), QT_TR_NOOP("NMT start: operational") },
+        { NmtCommand::Stop, "stop", QT_TR_NOOP("Stop"), QT_TR_NOOP("NMT stop: stopped") },
+        { NmtCommand::EnterPreOperational, "preop", QT_TR_NOOP("Pre-op"),
+          QT_TR_NOOP("NMT enter pre-operational") },
+        { NmtCommand::ResetNode, "reset", QT_TR_NOOP("Reset"),
+          QT_TR_NOOP("NMT reset node (application)") },
+        { NmtCommand::ResetCommunication, "resetComm", QT_TR_NOOP("Reset comm"),
+          QT_TR_NOOP("NMT reset communication") },
     };
     for (const auto &c : commands) {
         auto *button = new QToolButton(this);

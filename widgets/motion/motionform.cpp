@@ -317,6 +317,8 @@ void MotionForm::start(CommandKind kind)
     MoveParams p = params();
     if (kind == CommandKind::Stop || kind == CommandKind::Halt)
         p.deceleration = std::max(p.deceleration, m_deceleration->minimum());
+    if (refusesInput(kind, p))
+        return;
     c->setParams(p);
     c->setHoming(homing());
     m_last = c;
@@ -324,6 +326,35 @@ void MotionForm::start(CommandKind kind)
     c->setExecute(true); // the rising edge latches the inputs
     showStatus();
     Q_EMIT started(c);
+}
+
+// A refusal caused only by what was typed (target beyond the software limits or the cycle, a
+// direction the axis may not take, a zero profile value) is refused here, as input: started, the
+// model would refuse it too and put the axis in ErrorStop, quick-stopping a running motion.
+bool MotionForm::refusesInput(CommandKind kind, const MoveParams &p)
+{
+    const Refusal refusal = m_axis->preview(kind, p).refusal;
+    QWidget *field = nullptr;
+    switch (refusal) {
+    case Refusal::TargetOutsideSoftLimits:
+    case Refusal::TargetOutsideCycle:
+        field = m_target;
+        break;
+    case Refusal::DirectionNotPermitted:
+        field = m_direction;
+        break;
+    case Refusal::ZeroProfileValue:
+        field = m_velocity;
+        break;
+    default:
+        return false;
+    }
+    m_status->setText(tr("%1 not started: %2. Correct the input; the axis is unchanged.")
+                          .arg(commandName(kind), refusalText(refusal)));
+    style::setTextColor(m_status, style::errorColor());
+    m_flags->setVisible(false);
+    field->setFocus();
+    return true;
 }
 
 void MotionForm::execute()

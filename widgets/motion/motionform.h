@@ -64,6 +64,7 @@ private:
     void buildUi();
     void updateFields();
     void start(motion::CommandKind kind);
+    bool refusesInput(motion::CommandKind kind, const motion::MoveParams &params);
     void showStatus();
 
     QPointer<motion::MotionAxis> m_axis;

@@ -249,6 +249,12 @@ void OdEditor::addToolActions(const QString &title, const QList<QAction *> &acti
     m_tools->addWidget(button);
 }
 
+void OdEditor::focusFilter()
+{
+    m_filterEdit->setFocus(Qt::ShortcutFocusReason);
+    m_filterEdit->selectAll();
+}
+
 void OdEditor::setFilterText(const QString &text)
 {
     m_filterEdit->setText(text);

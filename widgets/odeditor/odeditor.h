@@ -52,6 +52,8 @@ public:
     OdBitFieldView *details() const { return m_details; }
 
     void setFilterText(const QString &text);
+    // Puts the keyboard focus into the filter field, its text selected (Ctrl+F).
+    void focusFilter();
     void setHex(bool hex);
     // One of OdEditorPoller::kPeriodsMs (0 = off); other values pick the nearest.
     void setRefreshPeriodMs(int ms);

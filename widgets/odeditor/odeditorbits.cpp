@@ -18,40 +18,44 @@ QList<BitField> cia402Fields(quint16 index)
     const auto list = [](std::initializer_list<std::pair<int, const char *>> bits) {
         QList<BitField> fields;
         for (const auto &[bit, name] : bits)
-            fields.append({ bit, 1, QString::fromLatin1(name) });
+            fields.append({ bit, 1, OdBitFieldView::tr(name) });
         return fields;
     };
     switch (index) {
     case 0x6040:
-        return list({ { 0, "Switch on" },
-                      { 1, "Enable voltage" },
-                      { 2, "Quick stop" },
-                      { 3, "Enable operation" },
-                      { 4, "Operation mode specific" },
-                      { 5, "Operation mode specific" },
-                      { 6, "Operation mode specific" },
-                      { 7, "Fault reset" },
-                      { 8, "Halt" },
-                      { 9, "Operation mode specific" } });
+        return list(
+            { { 0, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Switch on") },
+              { 1, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Enable voltage") },
+              { 2, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Quick stop") },
+              { 3, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Enable operation") },
+              { 4, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") },
+              { 5, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") },
+              { 6, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") },
+              { 7, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Fault reset") },
+              { 8, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Halt") },
+              { 9, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") } });
     case 0x6041:
-        return list({ { 0, "Ready to switch on" },
-                      { 1, "Switched on" },
-                      { 2, "Operation enabled" },
-                      { 3, "Fault" },
-                      { 4, "Voltage enabled" },
-                      { 5, "Quick stop" },
-                      { 6, "Switch on disabled" },
-                      { 7, "Warning" },
-                      { 9, "Remote" },
-                      { 10, "Target reached" },
-                      { 11, "Internal limit active" },
-                      { 12, "Operation mode specific" },
-                      { 13, "Operation mode specific" } });
+        return list(
+            { { 0, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Ready to switch on") },
+              { 1, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Switched on") },
+              { 2, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation enabled") },
+              { 3, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Fault") },
+              { 4, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Voltage enabled") },
+              { 5, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Quick stop") },
+              { 6, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Switch on disabled") },
+              { 7, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Warning") },
+              { 9, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Remote") },
+              { 10, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Target reached") },
+              { 11, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Internal limit active") },
+              { 12, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") },
+              { 13,
+                QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Operation mode specific") } });
     case 0x60FD:
-        return list({ { 0, "Negative limit switch" },
-                      { 1, "Positive limit switch" },
-                      { 2, "Home switch" },
-                      { 3, "Interlock" } });
+        return list(
+            { { 0, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Negative limit switch") },
+              { 1, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Positive limit switch") },
+              { 2, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Home switch") },
+              { 3, QT_TRANSLATE_NOOP("db::widgets::OdBitFieldView", "Interlock") } });
     default:
         return {};
     }

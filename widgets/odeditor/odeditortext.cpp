@@ -12,10 +12,10 @@ bool isScaled(const ObjectDef &def)
         && (def.factor != 1.0 || def.offset != 0.0);
 }
 
-QString tr(const char *text)
+struct Tr
 {
-    return QCoreApplication::translate("db::widgets::OdEditorModel", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(db::widgets::OdEditorModel)
+};
 
 // Words made of bits (6040h, 6041h, 1002h, ...) read better in hex, whatever the toggle says.
 bool isBitWord(const ObjectDef &def)
@@ -68,18 +68,19 @@ Result<QVariant> parse(const ObjectDef &def, const QString &text, const AddressF
 {
     if (!def.writable()) {
         return Error(Error::Kind::AccessDenied,
-                     tr("%1 is %2 and cannot be written")
+                     Tr::tr("%1 is %2 and cannot be written")
                          .arg(format.format(def.address), access::name(def.access)));
     }
     const QString t = text.trimmed();
     if (t.isEmpty() && datatype::isNumeric(def.type))
-        return Error(Error::Kind::InvalidArgument, tr("enter a value"));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("enter a value"));
     // Physical input for scaled objects, unless the user typed a raw hex pattern.
     if (isScaled(def) && !t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
         bool ok = false;
         const double physical = QLocale::c().toDouble(t, &ok);
         if (!ok) {
-            return Error(Error::Kind::InvalidArgument, tr("'%1' is not a number").arg(t.left(40)));
+            return Error(Error::Kind::InvalidArgument,
+                         Tr::tr("'%1' is not a number").arg(t.left(40)));
         }
         auto raw = codec::fromPhysical(def.type, physical, def.factor, def.offset);
         if (!raw)

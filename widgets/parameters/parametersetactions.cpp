@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QMessageBox>
+#include <QPointer>
 #include <QProgressDialog>
 #include <QPushButton>
 
@@ -248,7 +249,13 @@ void ParameterSetActions::storeNow()
 {
     if (!m_connection || !m_connection->isConnected() || isBusy())
         return;
-    writeSignature(m_connection->storeNonVolatile(), tr("Parameters stored permanently"));
+    Reply *reply = m_connection->storeNonVolatile();
+    connect(reply, &Reply::finished, this,
+            [this, reply, connection = QPointer<DeviceConnection>(m_connection)] {
+                if (reply->ok() && connection)
+                    Q_EMIT storedPermanently(connection);
+            });
+    writeSignature(reply, tr("Parameters stored permanently"));
 }
 
 void ParameterSetActions::restoreFactoryDefaultsNow()

@@ -62,6 +62,8 @@ Q_SIGNALS:
     // Outcome of every command, for the status bar and log.
     void message(const QString &text, bool ok);
     void backupFinished(bool ok, const QString &path);
+    // The device took "save" (1010h): what was written to it survives a power cycle.
+    void storedPermanently(db::DeviceConnection *connection);
 
 private:
     // Reads every storable object with a progress dialog, then calls done with the finished

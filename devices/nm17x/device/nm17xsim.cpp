@@ -2,8 +2,8 @@
 
 #include "simulatednm17x.h"
 
-#include "transport/qtcanbus.h"
 #include "transport/device/slcanserver.h"
+#include "transport/qtcanbus.h"
 
 #include <QCoreApplication>
 #include <QTcpServer>

@@ -4,7 +4,16 @@
 #include "canopen/sdoabort.h"
 #include "transport/canbus.h"
 
+#include <QCoreApplication>
 #include <QtEndian>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen)
+};
+} // namespace
 
 namespace db::canopen {
 
@@ -38,7 +47,7 @@ Result<QVariant> ObjectValueStore::read(ObjectAddress address)
 {
     if (!m_dictionary.contains(address))
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()),
+                     Tr::tr("object %1 does not exist").arg(address.toString()),
                      abort::NoSuchObject);
     return m_values.value(address);
 }
@@ -48,7 +57,7 @@ Result<void> ObjectValueStore::write(ObjectAddress address, const QVariant &raw)
     const ObjectDef *def = m_dictionary.find(address);
     if (!def)
         return Error(Error::Kind::InvalidArgument,
-                     QStringLiteral("object %1 does not exist").arg(address.toString()),
+                     Tr::tr("object %1 does not exist").arg(address.toString()),
                      abort::NoSuchObject);
     auto valid = def->validate(raw);
     if (!valid)
@@ -111,8 +120,10 @@ void SimulatedNode::init()
     m_errorControl.setNodeId(m_node);
     connect(&m_errorControl, &ErrorControlSlave::transmit, this, &SimulatedNode::transmit);
     connect(&m_errorControl, &ErrorControlSlave::lost, this, &SimulatedNode::onCommunicationError);
-    connect(&m_heartbeat, &QTimer::timeout, this,
-            [this] { send(cob::heartbeat(m_node), QByteArray(1, char(m_state))); });
+    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+        if (!m_heartbeatSilenced)
+            send(cob::heartbeat(m_node), QByteArray(1, char(m_state)));
+    });
     for (int n = 0; n < kPdoCount; ++n) {
         auto *timer = new QTimer(this);
         connect(timer, &QTimer::timeout, this, [this, n] { sendTpdo(n); });

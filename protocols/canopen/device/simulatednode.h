@@ -83,6 +83,11 @@ public:
     // An EMCY frame with exactly these bytes (padded to 8), for devices keeping their own 1001h.
     void sendEmergency(const QByteArray &data);
 
+    // Failure mode: no heartbeat frames (a node that died or lost its bus), everything else
+    // keeps working; off again resumes at the 1017h period.
+    void setHeartbeatSilenced(bool on) { m_heartbeatSilenced = on; }
+    bool isHeartbeatSilenced() const { return m_heartbeatSilenced; }
+
     // ---- SDO failure modes ----
     void setSdoNoReply(bool on) { m_noReply = on; }
     // Every SDO request initiating a transfer of this object gets this abort code.
@@ -143,6 +148,7 @@ private:
     QList<QTimer *> m_eventTimers; // per TPDO, owned by this
     QList<int> m_syncCounters;
 
+    bool m_heartbeatSilenced = false;
     bool m_noReply = false;
     QHash<ObjectAddress, quint32> m_aborts;
     int m_replyDelayMs = 0;

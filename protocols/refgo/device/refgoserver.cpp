@@ -2,9 +2,18 @@
 
 #include "refgo/refgologging.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QTcpServer>
 #include <QTcpSocket>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::refgo)
+};
+} // namespace
 
 namespace db::refgo {
 
@@ -56,12 +65,11 @@ Server::~Server()
 Result<void> Server::listen(quint16 port, const QHostAddress &address)
 {
     if (d->server.isListening())
-        return Error(
-            Error::Kind::Busy,
-            QStringLiteral("RefGo server already listens on port %1").arg(d->server.serverPort()));
+        return Error(Error::Kind::Busy,
+                     Tr::tr("RefGo server already listens on port %1").arg(d->server.serverPort()));
     if (!d->server.listen(address, port))
         return Error(Error::Kind::Io,
-                     QStringLiteral("RefGo server cannot listen on %1:%2: %3")
+                     Tr::tr("RefGo server cannot listen on %1:%2: %3")
                          .arg(address.toString())
                          .arg(port)
                          .arg(d->server.errorString()));
@@ -78,6 +86,11 @@ quint16 Server::port() const
 void Server::close()
 {
     d->server.close();
+    dropClients();
+}
+
+int Server::dropClients()
+{
     const auto sockets = d->clients.keys();
     d->clients.clear();
     for (QTcpSocket *socket : sockets) {
@@ -85,6 +98,7 @@ void Server::close()
         socket->abort();
         socket->deleteLater();
     }
+    return int(sockets.size());
 }
 
 int Server::clientCount() const

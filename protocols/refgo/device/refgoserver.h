@@ -38,6 +38,9 @@ public:
     Result<void> listen(quint16 port = 0, const QHostAddress &address = QHostAddress::LocalHost);
     quint16 port() const;
     void close();
+    // Aborts every client connection (RST, no goodbye) and keeps listening: a cut cable as the
+    // clients see it. Returns how many were dropped.
+    int dropClients();
     int clientCount() const;
     // Applies to clients that connect afterwards.
     void setClientLimits(const ClientThrottle::Limits &limits);

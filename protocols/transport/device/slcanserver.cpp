@@ -2,11 +2,20 @@
 
 #include "transport/slcancodec.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QLoggingCategory>
 #include <QTcpServer>
 #include <QTcpSocket>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::transport)
+};
+} // namespace
 
 namespace db {
 
@@ -65,12 +74,11 @@ SlcanServer::~SlcanServer()
 Result<void> SlcanServer::listen(quint16 port, const QHostAddress &address)
 {
     if (d->server.isListening())
-        return Error(
-            Error::Kind::Busy,
-            QStringLiteral("slcan server already listens on port %1").arg(d->server.serverPort()));
+        return Error(Error::Kind::Busy,
+                     Tr::tr("slcan server already listens on port %1").arg(d->server.serverPort()));
     if (!d->server.listen(address, port))
         return Error(Error::Kind::Io,
-                     QStringLiteral("slcan server cannot listen on %1:%2: %3")
+                     Tr::tr("slcan server cannot listen on %1:%2: %3")
                          .arg(address.toString())
                          .arg(port)
                          .arg(d->server.errorString()));
@@ -92,6 +100,11 @@ bool SlcanServer::isListening() const
 void SlcanServer::close()
 {
     d->server.close();
+    dropClients();
+}
+
+int SlcanServer::dropClients()
+{
     const auto sockets = d->clients.keys();
     d->clients.clear();
     for (QTcpSocket *socket : sockets) {
@@ -99,6 +112,7 @@ void SlcanServer::close()
         socket->abort();
         socket->deleteLater();
     }
+    return int(sockets.size());
 }
 
 int SlcanServer::clientCount() const

@@ -41,6 +41,9 @@ public:
     bool isListening() const;
     // Stops listening and drops every client.
     void close();
+    // Aborts every client connection (RST, no goodbye) and keeps listening: a cut cable as the
+    // clients see it. Returns how many were dropped.
+    int dropClients();
     int clientCount() const;
     // Applies to clients that connect afterwards.
     void setClientLimits(const ClientThrottle::Limits &limits);

@@ -32,6 +32,10 @@ private Q_SLOTS:
     void faultInjectionGivesEmcyBytes_data();
     void faultInjectionGivesEmcyBytes();
     void nmtAndHeartbeat();
+    void lifeGuardingEndsInTheAbortConnectionReaction_data();
+    void lifeGuardingEndsInTheAbortConnectionReaction();
+    void noConsumerHeartbeatObject();
+    void silencedHeartbeat();
 
 private:
     // Sends lines and collects the answer until it ends with `until` (or 2 s pass).
@@ -194,6 +198,69 @@ void TestMovingCapCanopen::nmtAndHeartbeat()
     QTRY_COMPARE(m_canopen->node().nmtState(), NmtState::Operational);
     // Reset communication: boot-up frame t732100.
     QVERIFY(exchange("t00028232\r", "t732100\r").endsWith("t732100\r"));
+}
+
+void TestMovingCapCanopen::lifeGuardingEndsInTheAbortConnectionReaction_data()
+{
+    QTest::addColumn<int>("option");
+    QTest::addColumn<cia402::State>("after");
+    QTest::newRow("0 no action") << 0 << cia402::State::OperationEnabled;
+    QTest::newRow("1 fault") << 1 << cia402::State::Fault;
+    QTest::newRow("2 disable voltage") << 2 << cia402::State::SwitchOnDisabled;
+    QTest::newRow("3 quick stop") << 3 << cia402::State::QuickStopActive;
+}
+
+// Guarded once, then no more guard requests for guard time x life time factor: the drive reacts
+// as 6007h says (CiA 402), and a fault shows as 1002h bit 5 "Abort connection".
+void TestMovingCapCanopen::lifeGuardingEndsInTheAbortConnectionReaction()
+{
+    QFETCH(int, option);
+    QFETCH(cia402::State, after);
+    m_drive->startRealTime(); // the fault reaction takes its time
+    QVERIFY(m_drive->write({ 0x605A, 0 }, 6).ok()); // quick stop: stay in quick stop active
+    QVERIFY(m_drive->write({ 0x6007, 0 }, option).ok());
+    QVERIFY(exchange(sdoLine("2B 0C 10 00 1400 0000"), "\r")
+                .endsWith(sdoLine("60 0C 10 00 00000000", 0x5B2)));
+    QVERIFY(exchange(sdoLine("2F 0D 10 00 02 000000"), "\r")
+                .endsWith(sdoLine("60 0D 10 00 00000000", 0x5B2)));
+    for (int cw : { 6, 7, 15 })
+        QVERIFY(m_drive->write({ 0x6040, 0 }, cw).ok());
+    QCOMPARE(m_drive->state(), cia402::State::OperationEnabled);
+    // Guard request (RTR on 732h): answered with the NMT state and toggle bit 0.
+    QSignalSpy lost(&m_canopen->node(), &SimulatedNode::communicationLost);
+    QVERIFY(exchange("r7321\r", "t73217F\r").endsWith("t73217F\r"));
+    QVERIFY(lost.wait(2000));
+    QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(), after, 2000);
+    // One EMCY for the event (CiA 301 8130h, error register 11h), whatever the reaction.
+    QByteArray got;
+    QTRY_VERIFY((got += m_client->readAll()).contains("t0B28"));
+    QCOMPARE(got.count("t0B28"), 1);
+    QVERIFY2(got.contains("t0B2830811"), got.constData());
+    const quint32 status = quint32(m_drive->read({ 0x1002, 0 }).value().toULongLong());
+    QCOMPARE(bool(status & (1u << 5)), after == cia402::State::Fault);
+    if (after == cia402::State::Fault)
+        QCOMPARE(m_drive->read({ 0x603F, 0 }).value().toUInt(), 0x8130u);
+}
+
+// The drive's XDD has no 1016h: a master cannot make it watch a heartbeat, only guard it.
+void TestMovingCapCanopen::noConsumerHeartbeatObject()
+{
+    QVERIFY(exchange(sdoLine("40 16 10 01 00000000"), "\r")
+                .endsWith(sdoLine("80 16 10 01 00000206", 0x5B2)));
+}
+
+void TestMovingCapCanopen::silencedHeartbeat()
+{
+    QVERIFY(exchange(sdoLine("2B 17 10 00 1400 0000"), "\r")
+                .endsWith(sdoLine("60 17 10 00 00000000", 0x5B2)));
+    QByteArray got;
+    QTRY_VERIFY_WITH_TIMEOUT((got += m_client->readAll()).count("t7321") >= 2, 2000);
+    m_canopen->node().setHeartbeatSilenced(true);
+    QSignalSpy sent(&m_canopen->node(), &SimulatedNode::transmit);
+    QVERIFY(!sent.wait(100)); // five periods without a frame
+    m_canopen->node().setHeartbeatSilenced(false);
+    got.clear();
+    QTRY_VERIFY_WITH_TIMEOUT((got += m_client->readAll()).contains("t7321"), 2000);
 }
 
 QTEST_GUILESS_MAIN(TestMovingCapCanopen)

@@ -7,10 +7,10 @@
 #include "devices/nm17x/nm17xline.h"
 #include "scriptedcanbus.h"
 
+#include "canopen/device/simulatednode.h"
 #include "canopen/nmtmaster.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/sdoclient.h"
-#include "canopen/device/simulatednode.h"
 
 #include <QSignalSpy>
 #include <QTest>
