@@ -5,79 +5,79 @@
     <name>Nm17x</name>
     <message>
         <source>%1 has %2 bytes, 8 expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat %2 Bytes, 8 erwartet</translation>
     </message>
     <message>
         <source>%1 needs a speed (slow, medium, fast)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 braucht eine Geschwindigkeit (slow, medium, fast)</translation>
     </message>
     <message>
         <source>%1 takes no speed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nimmt keine Geschwindigkeit an</translation>
     </message>
     <message>
         <source>the reserved combinations have no function</source>
-        <translation type="unfinished"></translation>
+        <translation>die reservierten Kombinationen haben keine Funktion</translation>
     </message>
     <message>
         <source>unknown command</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekanntes Kommando</translation>
     </message>
     <message>
         <source>control word 0x%1 is not an allowed combination; the display would reject it with EMCY 8230h</source>
-        <translation type="unfinished"></translation>
+        <translation>Control-Wort 0x%1 ist keine zulässige Kombination; die Anzeige würde es mit EMCY 8230h ablehnen</translation>
     </message>
     <message>
         <source>no function</source>
-        <translation type="unfinished"></translation>
+        <translation>ohne Funktion</translation>
     </message>
     <message>
         <source>write D3</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert in Positionswert D3 schreiben</translation>
     </message>
     <message>
         <source>reserved</source>
-        <translation type="unfinished"></translation>
+        <translation>reserviert</translation>
     </message>
     <message>
         <source>direct setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert direkt</translation>
     </message>
     <message>
         <source>setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert</translation>
     </message>
     <message>
         <source>setpoint with release</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert mit Freigabe</translation>
     </message>
     <message>
         <source>plunge-cut setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert Einsägen</translation>
     </message>
     <message>
         <source>plunge-cut setpoint with release</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert Einsägen mit Freigabe</translation>
     </message>
     <message>
         <source>jog right</source>
-        <translation type="unfinished"></translation>
+        <translation>Tippen rechts</translation>
     </message>
     <message>
         <source>jog left</source>
-        <translation type="unfinished"></translation>
+        <translation>Tippen links</translation>
     </message>
     <message>
         <source>open clamp</source>
-        <translation type="unfinished"></translation>
+        <translation>Klemmung öffnen</translation>
     </message>
     <message>
         <source>close clamp</source>
-        <translation type="unfinished"></translation>
+        <translation>Klemmung schließen</translation>
     </message>
     <message>
         <source>stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Motorstopp</translation>
     </message>
     <message>
         <source>Moving</source>
@@ -85,239 +85,239 @@
     </message>
     <message>
         <source>Manual positioning abort</source>
-        <translation type="unfinished"></translation>
+        <translation>Manueller Positionierabbruch</translation>
     </message>
     <message>
         <source>Oscillation active</source>
-        <translation type="unfinished"></translation>
+        <translation>Oszilliermodus aktiv</translation>
     </message>
     <message>
         <source>Takten active</source>
-        <translation type="unfinished"></translation>
+        <translation>Takten aktiv</translation>
     </message>
     <message>
         <source>ExternPosi active</source>
-        <translation type="unfinished"></translation>
+        <translation>ExternPosi aktiv</translation>
     </message>
     <message>
         <source>Left key pressed</source>
-        <translation type="unfinished"></translation>
+        <translation>Linke Taste betätigt</translation>
     </message>
     <message>
         <source>Right key pressed</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechte Taste betätigt</translation>
     </message>
     <message>
         <source>Speed output IN4</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Geschwindigkeitsstufe IN4</translation>
     </message>
     <message>
         <source>Speed output IN3</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Geschwindigkeitsstufe IN3</translation>
     </message>
     <message>
         <source>Direction output IN2 (right)</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Richtungssignal IN2 (rechts)</translation>
     </message>
     <message>
         <source>Direction output IN1 (left)</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Richtungssignal IN1 (links)</translation>
     </message>
     <message>
         <source>Arrows active</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeile aktiv</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Errorbit</translation>
     </message>
     <message>
         <source>In Position</source>
-        <translation type="unfinished"></translation>
+        <translation>In Position</translation>
     </message>
     <message>
         <source>end limit MAX violated</source>
-        <translation type="unfinished"></translation>
+        <translation>Endlage MAX verletzt</translation>
     </message>
     <message>
         <source>Move into the allowed range</source>
-        <translation type="unfinished"></translation>
+        <translation>In zulässigen Positionsbereich verfahren</translation>
     </message>
     <message>
         <source>end limit MIN violated</source>
-        <translation type="unfinished"></translation>
+        <translation>Endlage MIN verletzt</translation>
     </message>
     <message>
         <source>shaft does not turn despite the drive signal</source>
-        <translation type="unfinished"></translation>
+        <translation>Gerätewelle dreht sich trotz Fahrsignal nicht</translation>
     </message>
     <message>
         <source>Check motor, cable and mechanics</source>
-        <translation type="unfinished"></translation>
+        <translation>Funktion des Motors überprüfen; Kabel und Mechanik von Motor über Welle zur Anzeige überprüfen</translation>
     </message>
     <message>
         <source>motor fault (overcurrent)</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Störung (Überstrom)</translation>
     </message>
     <message>
         <source>Fix the motor fault</source>
-        <translation type="unfinished"></translation>
+        <translation>Motorfehler beheben</translation>
     </message>
     <message>
         <source>target window not reached</source>
-        <translation type="unfinished"></translation>
+        <translation>Zielfenster nicht erreicht</translation>
     </message>
     <message>
         <source>Enlarge the tolerance window or switch to creep speed earlier</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranzfenster größer wählen oder Umschaltung auf Kriechgang früher setzen</translation>
     </message>
     <message>
         <source>direction error: the spindle turns the wrong way</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtungsfehler: Spindel dreht in falsche Richtung</translation>
     </message>
     <message>
         <source>Check the motor direction setting and the motor wiring</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehrichtung Motor und Kabelanschluss zum Motor prüfen</translation>
     </message>
     <message>
         <source>setpoint above end limit MAX (motor does not start)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert &gt; Endlage MAX (Motor fährt nicht los)</translation>
     </message>
     <message>
         <source>Send a valid setpoint (mind the loop travel)</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuen gültigen Sollwert senden (Schleifenfahrt berücksichtigen)</translation>
     </message>
     <message>
         <source>setpoint below end limit MIN (motor does not start)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert &lt; Endlage MIN (Motor fährt nicht los)</translation>
     </message>
     <message>
         <source>collision limit violated</source>
-        <translation type="unfinished"></translation>
+        <translation>Endlage Kollision verletzt</translation>
     </message>
     <message>
         <source>setpoint between end limit and collision limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Sollwert befindet sich zwischen Endlage und Kollision</translation>
     </message>
     <message>
         <source>no encoder signal: the position cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Gebersignal: Position kann nicht gelesen werden</translation>
     </message>
     <message>
         <source>Check the sensor and its cable</source>
-        <translation type="unfinished"></translation>
+        <translation>Sensor und Kabel prüfen</translation>
     </message>
     <message>
         <source>the encoder reports an error: the position is wrong</source>
-        <translation type="unfinished"></translation>
+        <translation>Geber meldet Fehler: Position ist falsch</translation>
     </message>
     <message>
         <source>Fix the sensor</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler des SSI-Drehgebers beheben</translation>
     </message>
     <message>
         <source>CAN communication error</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-Kommunikationsfehler</translation>
     </message>
     <message>
         <source>CAN buffer overflow</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-Pufferüberlauf</translation>
     </message>
     <message>
         <source>CAN error passive</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN passiv</translation>
     </message>
     <message>
         <source>heartbeat error</source>
-        <translation type="unfinished"></translation>
+        <translation>Heartbeat-Fehler</translation>
     </message>
     <message>
         <source>recovered from bus-off</source>
-        <translation type="unfinished"></translation>
+        <translation>Bus-Off Recover</translation>
     </message>
     <message>
         <source>CAN-ID collision</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-ID-Kollision</translation>
     </message>
     <message>
         <source>RxPDO does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>RxPDO existiert nicht</translation>
     </message>
     <message>
         <source>object not found in the conversion table (broadcast object not allowed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekt nicht gefunden in der Umsetzungstabelle (Broadcast-Objekt nicht zulässig)</translation>
     </message>
     <message>
         <source>transmit memory (FIFO) to the application controller too small</source>
-        <translation type="unfinished"></translation>
+        <translation>Sendespeicher (FIFO) zum Übertragen von Daten an den Applikations-Controller zu klein</translation>
     </message>
     <message>
         <source>data type not correct</source>
-        <translation type="unfinished"></translation>
+        <translation>Datentyp nicht korrekt</translation>
     </message>
     <message>
         <source>RxPDO2: invalid value in the control word</source>
-        <translation type="unfinished"></translation>
+        <translation>RxPDO2: ungültiger Wert im Register Control</translation>
     </message>
     <message>
         <source>FIFO between the internal controllers too small</source>
-        <translation type="unfinished"></translation>
+        <translation>FIFO-Speicher für Kommunikation zwischen den internen Controllern zu klein</translation>
     </message>
     <message>
         <source>position, status and errors could not be read several times</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten (Position, Status, Errors) konnten mehrfach nicht gelesen werden</translation>
     </message>
     <message>
         <source>transfer to the application controller failed: no valid response</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler bei der Datenübertragung an den Applikations-Controller: keine gültige Rückantwort erhalten</translation>
     </message>
     <message>
         <source>faulty data read from the application controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehlerhafte Daten beim Lesen vom Applikations-Controller empfangen</translation>
     </message>
     <message>
         <source>position, status and errors could not be read more than 3 times</source>
-        <translation type="unfinished"></translation>
+        <translation>Daten (Position, Status, Errors) konnten mehr als 3 Mal nicht gelesen werden</translation>
     </message>
     <message>
         <source>unknown state of the application state machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekannter Status der Applikations-Zustandsmaschine</translation>
     </message>
     <message>
         <source>buffer overflow when sending to the application controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Puffer-Überlauf beim Senden an den Applikations-Controller</translation>
     </message>
     <message>
         <source>motor stop command could not be sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Motor-Stopp-Befehl konnte nicht gesendet werden</translation>
     </message>
     <message>
         <source>addressing commands could not be sent to the application controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Adressierungs-Kommandos konnten nicht an den Applikations-Controller gesendet werden</translation>
     </message>
     <message>
         <source>unknown state of the application state machine while writing data</source>
-        <translation type="unfinished"></translation>
+        <translation>Unbekannter Status der Applikations-Zustandsmaschine beim Schreiben von Daten</translation>
     </message>
     <message>
         <source>Up</source>
-        <translation type="unfinished"></translation>
+        <translation>Up</translation>
     </message>
     <message>
         <source>Down</source>
-        <translation type="unfinished"></translation>
+        <translation>Down</translation>
     </message>
     <message>
         <source>Side from which the target is approached (loop for backlash compensation)</source>
-        <translation type="unfinished"></translation>
+        <translation>Seite, von der die Zielposition angefahren wird (Schleifenfahrt für den Spielausgleich)</translation>
     </message>
     <message>
         <source>Up: turning the shaft right increases the actual value</source>
-        <translation type="unfinished"></translation>
+        <translation>Up: Drehen der Welle nach rechts erhöht den Istwert</translation>
     </message>
     <message>
         <source>Uni</source>
-        <translation type="unfinished"></translation>
+        <translation>Uni</translation>
     </message>
     <message>
         <source>Off</source>
@@ -325,111 +325,151 @@
     </message>
     <message>
         <source>Uni-Loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Uni-Loop</translation>
     </message>
     <message>
         <source>Off-Loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Off-Loop</translation>
     </message>
     <message>
         <source>Direction arrows; Uni and Off position without loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtungspfeile; Uni und Off positionieren ohne Schleifenfahrt</translation>
     </message>
     <message>
         <source>On</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein</translation>
     </message>
     <message>
         <source>On: the correction 2010h is added to actual value and setpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein: die Istwertkorrektur 2010h wird zu Istwert und Sollwert addiert</translation>
     </message>
     <message>
         <source>Ever</source>
-        <translation type="unfinished"></translation>
+        <translation>Ever</translation>
     </message>
     <message>
         <source>Key</source>
-        <translation type="unfinished"></translation>
+        <translation>Key</translation>
     </message>
     <message>
         <source>Slow</source>
-        <translation type="unfinished"></translation>
+        <translation>Slow</translation>
     </message>
     <message>
         <source>Middle</source>
-        <translation type="unfinished"></translation>
+        <translation>Middle</translation>
     </message>
     <message>
         <source>Fast</source>
-        <translation type="unfinished"></translation>
+        <translation>Fast</translation>
     </message>
     <message>
         <source>Display only: values on the bus stay in 1/100 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur für die Anzeige: Werte auf dem Bus bleiben in 1/100 mm</translation>
     </message>
     <message>
         <source>slow</source>
-        <translation type="unfinished"></translation>
+        <translation>langsam</translation>
     </message>
     <message>
         <source>medium</source>
-        <translation type="unfinished"></translation>
+        <translation>mittel</translation>
     </message>
     <message>
         <source>fast</source>
-        <translation type="unfinished"></translation>
+        <translation>schnell</translation>
     </message>
     <message>
         <source>group %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gruppe %1</translation>
     </message>
     <message>
         <source>Standard / Oscillating</source>
-        <translation type="unfinished"></translation>
+        <translation>Standard / Oszillieren</translation>
     </message>
     <message>
         <source>Takten</source>
-        <translation type="unfinished"></translation>
+        <translation>Takten</translation>
     </message>
     <message>
         <source>ExternPosi</source>
-        <translation type="unfinished"></translation>
+        <translation>ExternPosi</translation>
     </message>
     <message>
         <source>Standard</source>
-        <translation type="unfinished"></translation>
+        <translation>Standard</translation>
     </message>
     <message>
         <source>start group %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Startgruppe %1</translation>
     </message>
     <message>
         <source>right slow</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts langsam</translation>
     </message>
     <message>
         <source>right medium</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts mittel</translation>
     </message>
     <message>
         <source>right fast</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts schnell</translation>
     </message>
     <message>
         <source>left slow</source>
-        <translation type="unfinished"></translation>
+        <translation>links langsam</translation>
     </message>
     <message>
         <source>left medium</source>
-        <translation type="unfinished"></translation>
+        <translation>links mittel</translation>
     </message>
     <message>
         <source>left fast</source>
-        <translation type="unfinished"></translation>
+        <translation>links schnell</translation>
     </message>
     <message>
         <source>Takes effect at the next Reset Node</source>
-        <translation type="unfinished"></translation>
+        <translation>Wirksam ab dem nächsten Reset Node</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a position in mm (-999.99 .. 9999.99)</source>
+        <translation>„%1“ ist keine Position in mm (-999.99 .. 9999.99)</translation>
+    </message>
+    <message>
+        <source>the CAN bus %1 is not open</source>
+        <translation>der CAN-Bus %1 ist nicht geöffnet</translation>
+    </message>
+    <message>
+        <source>node %1 is not 1..127</source>
+        <translation>Knoten %1 liegt nicht in 1..127</translation>
+    </message>
+    <message>
+        <source>setpoint %1 is outside -99999..999999 (1/100 mm)</source>
+        <translation>Sollwert %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
+    </message>
+    <message>
+        <source>a correction of -32768 would mean &quot;keep 2010h&quot;; leave it out instead</source>
+        <translation>eine Korrektur von -32768 hieße „2010h behalten“; stattdessen weglassen</translation>
+    </message>
+    <message>
+        <source>%1 cannot be sent by broadcast; the displays would answer with EMCY 8220h</source>
+        <translation>%1 kann nicht per Broadcast gesendet werden; die Anzeigen würden mit EMCY 8220h antworten</translation>
+    </message>
+    <message>
+        <source>group %1 is not 1..8</source>
+        <translation>Gruppe %1 liegt nicht in 1..8</translation>
+    </message>
+    <message>
+        <source>preset %1 is outside -99999..999999 (1/100 mm)</source>
+        <translation>Preset %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
+    </message>
+    <message>
+        <source>node %1, %2</source>
+        <translation>Knoten %1, %2</translation>
+    </message>
+    <message>
+        <source>node %1 is no NM170/NM172/NM174 (vendor 0x%2, product 0x%3)</source>
+        <translation>Knoten %1 ist keine NM170/NM172/NM174 (Hersteller 0x%2, Produkt 0x%3)</translation>
     </message>
 </context>
 <context>
@@ -563,71 +603,71 @@
     <name>VABus</name>
     <message>
         <source>no error</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Fehler</translation>
     </message>
     <message>
         <source>invalid parameter value</source>
-        <translation type="unfinished"></translation>
+        <translation>unzulässiger Parameterwert</translation>
     </message>
     <message>
         <source>invalid data set</source>
-        <translation type="unfinished"></translation>
+        <translation>unzulässiger Datensatz</translation>
     </message>
     <message>
         <source>parameter not readable (write-only)</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter nicht lesbar (write-only)</translation>
     </message>
     <message>
         <source>parameter not writable (read-only)</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter nicht schreibbar (read-only)</translation>
     </message>
     <message>
         <source>EEPROM read error</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesefehler EEPROM</translation>
     </message>
     <message>
         <source>EEPROM write error</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreibfehler EEPROM</translation>
     </message>
     <message>
         <source>EEPROM checksum error</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfsummenfehler EEPROM</translation>
     </message>
     <message>
         <source>parameter not writable while the drive is running</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter nicht während laufenden Antriebs schreibbar</translation>
     </message>
     <message>
         <source>values of the data sets differ</source>
-        <translation type="unfinished"></translation>
+        <translation>Werte der Datensätze unterscheiden sich</translation>
     </message>
     <message>
         <source>not available</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht verfügbar</translation>
     </message>
     <message>
         <source>unknown parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Parameter</translation>
     </message>
     <message>
         <source>syntax error in received telegram</source>
-        <translation type="unfinished"></translation>
+        <translation>Syntaxfehler im empfangenen Telegramm</translation>
     </message>
     <message>
         <source>data type of the parameter does not match the number of bytes in the telegram</source>
-        <translation type="unfinished"></translation>
+        <translation>Datentyp des Parameters passt nicht zur Anzahl Bytes im Telegramm</translation>
     </message>
     <message>
         <source>unknown error</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Fehler</translation>
     </message>
     <message>
         <source>selected system bus node not available</source>
-        <translation type="unfinished"></translation>
+        <translation>gewählter Systembus-Knoten nicht verfügbar</translation>
     </message>
     <message>
         <source>error code %1 (not in the VABus error table)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehlercode %1 (nicht in der VABus-Fehlertabelle)</translation>
     </message>
 </context>
 <context>
@@ -941,20 +981,8 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>move: Weg ab dem letzten Ziel (MC_MoveAdditive).</translation>
     </message>
     <message>
-        <source>move, jog, home: velocity (units/s).</source>
-        <translation>move, jog, home: Geschwindigkeit (Einheiten/s).</translation>
-    </message>
-    <message>
         <source>move, jog, home: acceleration (units/s²).</source>
         <translation>move, jog, home: Beschleunigung (Einheiten/s²).</translation>
-    </message>
-    <message>
-        <source>move, jog: deceleration (units/s²).</source>
-        <translation>move, jog: Verzögerung (Einheiten/s²).</translation>
-    </message>
-    <message>
-        <source>jog: how long to jog (ms).</source>
-        <translation>jog: wie lange getippt wird (ms).</translation>
     </message>
     <message>
         <source>motion commands: longest wait for the end (ms, default 60000).</source>
@@ -1362,15 +1390,15 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>node %1 TxPDO1 position %2 status %3 errors %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 TxPDO1 Position %2 Status %3 Fehler %4</translation>
     </message>
     <message>
         <source>node %1 TxPDO2 position %2 correction %3 status %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 TxPDO2 Position %2 Korrektur %3 Status %4</translation>
     </message>
     <message>
         <source>node %1 EMCY %2h sub %3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Knoten %1 EMCY %2h Sub %3: %4</translation>
     </message>
     <message>
         <source>watching %1 for %2 s</source>
@@ -1398,11 +1426,11 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>nm17x setpoint: with release, without loop.</source>
-        <translation>nm17x setpoint: mit Freigabe, ohne Schleife.</translation>
+        <translation>nm17x setpoint: mit Freigabe, ohne Schleifenfahrt.</translation>
     </message>
     <message>
         <source>nm17x setpoint: plunge cut at this speed.</source>
-        <translation>nm17x setpoint: Einstich mit diesem Tempo.</translation>
+        <translation>nm17x setpoint: Einsägen mit dieser Geschwindigkeit.</translation>
     </message>
     <message>
         <source>nm17x: actual value correction in mm.</source>
@@ -1439,6 +1467,30 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>unknown nm17x command &apos;%1&apos; (%2)</source>
         <translation>unbekannter nm17x-Befehl „%1“ (%2)</translation>
+    </message>
+    <message>
+        <source>run the drive&apos;s velocity mode at V for MS ms, then halt; prints the position</source>
+        <translation>die Geschwindigkeitsbetriebsart des Antriebs mit V für MS ms fahren, dann anhalten; gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>brake to standstill (MC_Halt); prints the position</source>
+        <translation>bis zum Stillstand bremsen (MC_Halt); gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>stop (MC_Stop: nothing else starts until standstill); prints the position</source>
+        <translation>stoppen (MC_Stop: bis zum Stillstand startet nichts anderes); gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>move, jog, velocity, home: velocity (units/s).</source>
+        <translation>move, jog, velocity, home: Geschwindigkeit (Einheiten/s).</translation>
+    </message>
+    <message>
+        <source>move, jog, velocity, halt, stop: deceleration (units/s²).</source>
+        <translation>move, jog, velocity, halt, stop: Verzögerung (Einheiten/s²).</translation>
+    </message>
+    <message>
+        <source>jog, velocity: how long to move (ms).</source>
+        <translation>jog, velocity: Fahrdauer (ms).</translation>
     </message>
 </context>
 <context>
@@ -2831,13 +2883,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
-    <name>db::nm17x</name>
-    <message>
-        <source>&apos;%1&apos; is not a position in mm (-999.99 .. 9999.99)</source>
-        <translation>„%1“ ist keine Position in mm (-999.99 .. 9999.99)</translation>
-    </message>
-</context>
-<context>
     <name>db::nm17x::BroadcastAddressing</name>
     <message>
         <source>broadcast addressing is already running</source>
@@ -2858,45 +2903,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>no display took node id %1 within %2 s</source>
         <translation>keine Anzeige hat Knoten-ID %1 innerhalb von %2 s übernommen</translation>
-    </message>
-</context>
-<context>
-    <name>db::nm17x::Nm17xLine</name>
-    <message>
-        <source>the CAN bus %1 is not open</source>
-        <translation>der CAN-Bus %1 ist nicht geöffnet</translation>
-    </message>
-    <message>
-        <source>node %1 is not 1..127</source>
-        <translation>Knoten %1 liegt nicht in 1..127</translation>
-    </message>
-    <message>
-        <source>setpoint %1 is outside -99999..999999 (1/100 mm)</source>
-        <translation>Sollwert %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
-    </message>
-    <message>
-        <source>a correction of -32768 would mean &quot;keep 2010h&quot;; leave it out instead</source>
-        <translation>eine Korrektur von -32768 hieße „2010h behalten“; stattdessen weglassen</translation>
-    </message>
-    <message>
-        <source>%1 cannot be sent by broadcast; the displays would answer with EMCY 8220h</source>
-        <translation>%1 kann nicht per Broadcast gesendet werden; die Anzeigen würden mit EMCY 8220h antworten</translation>
-    </message>
-    <message>
-        <source>group %1 is not 1..8</source>
-        <translation>Gruppe %1 liegt nicht in 1..8</translation>
-    </message>
-    <message>
-        <source>preset %1 is outside -99999..999999 (1/100 mm)</source>
-        <translation>Preset %1 liegt außerhalb von -99999..999999 (1/100 mm)</translation>
-    </message>
-    <message>
-        <source>node %1, %2</source>
-        <translation>Knoten %1, %2</translation>
-    </message>
-    <message>
-        <source>node %1 is no NM170/NM172/NM174 (vendor 0x%2, product 0x%3)</source>
-        <translation>Knoten %1 ist keine NM170/NM172/NM174 (Hersteller 0x%2, Produkt 0x%3)</translation>
     </message>
 </context>
 <context>
@@ -2927,7 +2933,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>key INDEX left|right [MS]</source>
-        <translation type="unfinished"></translation>
+        <translation>key INDEX left|right [MS] (Anzeigenindex, Taste, Dauer in ms)</translation>
     </message>
     <message>
         <source>only an NM174 has an external sensor</source>
@@ -2935,7 +2941,7 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>fault INDEX motor|sensor|none</source>
-        <translation type="unfinished"></translation>
+        <translation>fault INDEX motor|sensor|none (Anzeigenindex, Störung)</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (list, turn, key, fault)</source>
@@ -2950,11 +2956,11 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>only 0 and 8 are allowed</source>
-        <translation type="unfinished"></translation>
+        <translation>nur 0 und 8 sind zulässig</translation>
     </message>
     <message>
         <source>only 0 clears the history</source>
-        <translation type="unfinished"></translation>
+        <translation>nur 0 löscht die Fehlerliste</translation>
     </message>
     <message>
         <source>wrong signature</source>
@@ -2962,19 +2968,19 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
     <message>
         <source>transmission type not supported</source>
-        <translation type="unfinished"></translation>
+        <translation>Übertragungsart wird nicht unterstützt</translation>
     </message>
     <message>
         <source>exactly 12 characters</source>
-        <translation type="unfinished"></translation>
+        <translation>genau 12 Zeichen</translation>
     </message>
     <message>
         <source>11..13 or 21..23</source>
-        <translation type="unfinished"></translation>
+        <translation>11..13 oder 21..23</translation>
     </message>
     <message>
         <source>write queue to the application is full</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreibwarteschlange zur Applikation ist voll</translation>
     </message>
 </context>
 <context>
@@ -4574,16 +4580,20 @@ Letzter Fehler: %1</translation>
         <source>acceleration or jerk limited</source>
         <translation>Beschleunigung oder Ruck begrenzt</translation>
     </message>
+    <message>
+        <source>%1 not started: %2. Correct the input; the axis is unchanged.</source>
+        <translation>%1 nicht gestartet: %2. Eingabe korrigieren; die Achse ist unverändert.</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::Nm17xLineModel</name>
     <message>
         <source> (right)</source>
-        <translation type="unfinished"></translation>
+        <translation> (rechts)</translation>
     </message>
     <message>
         <source> (left)</source>
-        <translation type="unfinished"></translation>
+        <translation> (links)</translation>
     </message>
     <message>
         <source>Node</source>
@@ -4622,23 +4632,23 @@ Letzter Fehler: %1</translation>
     <name>db::widgets::Nm17xLinePanel</name>
     <message>
         <source>standard</source>
-        <translation type="unfinished"></translation>
+        <translation>Standard</translation>
     </message>
     <message>
         <source>with release</source>
-        <translation type="unfinished"></translation>
+        <translation>mit Freigabe</translation>
     </message>
     <message>
         <source>direct (no loop)</source>
-        <translation type="unfinished"></translation>
+        <translation>direkt (ohne Schleifenfahrt)</translation>
     </message>
     <message>
         <source>plunge cut</source>
-        <translation type="unfinished"></translation>
+        <translation>Einsägen</translation>
     </message>
     <message>
         <source>plunge cut with release</source>
-        <translation type="unfinished"></translation>
+        <translation>Einsägen mit Freigabe</translation>
     </message>
     <message>
         <source>Find displays</source>
@@ -4705,11 +4715,11 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>right</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts</translation>
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished"></translation>
+        <translation>links</translation>
     </message>
     <message>
         <source>node %1: stop sent</source>
@@ -4721,11 +4731,11 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>inch</source>
-        <translation type="unfinished"></translation>
+        <translation>Zoll</translation>
     </message>
     <message>
         <source>mm</source>
-        <translation type="unfinished"></translation>
+        <translation>mm</translation>
     </message>
     <message>
         <source>every display shows its node id</source>
@@ -6395,6 +6405,14 @@ Geräte:
     <message>
         <source>acu: a system bus slave with this node id (1-63) behind the module (repeatable).</source>
         <translation>acu: ein Systembus-Slave mit dieser Knoten-ID (1-63) hinter dem Modul (wiederholbar).</translation>
+    </message>
+    <message>
+        <source>movingcap: the drive starts in fault with this EMCY code (hexadecimal, e.g. 7121).</source>
+        <translation>movingcap: der Antrieb startet mit diesem EMCY-Code in Störung (hexadezimal, z. B. 7121).</translation>
+    </message>
+    <message>
+        <source>movingcap: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on.</source>
+        <translation>movingcap: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE, heartbeat off|on.</translation>
     </message>
 </context>
 </TS>

@@ -8,17 +8,20 @@
 #include <QCoreApplication>
 #include <QtEndian>
 
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(Nm17x)
+};
+} // namespace
+
 namespace db::nm17x {
 
 using namespace db::canopen;
 
 namespace {
 constexpr double kMmPerInch = 25.4;
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("Nm17x", text);
-}
 } // namespace
 
 QString formatPosition(qint32 v, bool inch)
@@ -35,7 +38,7 @@ Result<qint32> parseMillimetres(const QString &text)
     const double hundredths = mm * 100.0;
     if (!ok || hundredths < kMinPosition - 0.5 || hundredths > kMaxPosition + 0.5)
         return Error(Error::Kind::InvalidArgument,
-                     tr("'%1' is not a position in mm (-999.99 .. 9999.99)").arg(text));
+                     Tr::tr("'%1' is not a position in mm (-999.99 .. 9999.99)").arg(text));
     return qint32(qRound(hundredths));
 }
 
@@ -80,19 +83,20 @@ Result<void> Nm17xLine::sendFrame(quint32 id, const QByteArray &payload)
 {
     if (!m_network->send(QCanBusFrame(id, payload)))
         return Error(Error::Kind::Disconnected,
-                     tr("the CAN bus %1 is not open").arg(m_network->name()));
+                     Tr::tr("the CAN bus %1 is not open").arg(m_network->name()));
     return {};
 }
 
 Result<void> Nm17xLine::send(NodeId node, const PositionCommand &command)
 {
     if (node < kMinNodeId || node > kMaxNodeId)
-        return Error(Error::Kind::InvalidArgument, tr("node %1 is not 1..127").arg(node));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("node %1 is not 1..127").arg(node));
     if (auto allowed = classify(command.control); !allowed)
         return allowed.error(); // refused here, before it leaves
     if (command.setpoint < kMinPosition || command.setpoint > kMaxPosition)
-        return Error(Error::Kind::InvalidArgument,
-                     tr("setpoint %1 is outside -99999..999999 (1/100 mm)").arg(command.setpoint));
+        return Error(
+            Error::Kind::InvalidArgument,
+            Tr::tr("setpoint %1 is outside -99999..999999 (1/100 mm)").arg(command.setpoint));
     return sendFrame(cob::Rpdo2 + node, encodePositionCommand(command));
 }
 
@@ -117,8 +121,9 @@ Result<void> Nm17xLine::setpoint(NodeId node, qint32 value, SetpointKind kind,
         break;
     }
     if (correction && *correction == kKeepCorrection)
-        return Error(Error::Kind::InvalidArgument,
-                     tr("a correction of -32768 would mean \"keep 2010h\"; leave it out instead"));
+        return Error(
+            Error::Kind::InvalidArgument,
+            Tr::tr("a correction of -32768 would mean \"keep 2010h\"; leave it out instead"));
     const auto word = controlWord(command, speed);
     if (!word)
         return word.error();
@@ -142,8 +147,8 @@ Result<void> Nm17xLine::broadcast(const Broadcast &command)
 {
     if (!isBroadcastObject(command.index, command.subIndex))
         return Error(Error::Kind::InvalidArgument,
-                     tr("%1 cannot be sent by broadcast; the displays would answer with EMCY "
-                        "8220h")
+                     Tr::tr("%1 cannot be sent by broadcast; the displays would answer with EMCY "
+                            "8220h")
                          .arg(ObjectAddress(command.index, command.subIndex).toString()));
     return sendFrame(kBroadcastCobId, encodeBroadcast(command));
 }
@@ -161,7 +166,7 @@ Result<void> Nm17xLine::showNodeIds(bool show)
 Result<void> Nm17xLine::startGroup(int group)
 {
     if (group < 1 || group > 8)
-        return Error(Error::Kind::InvalidArgument, tr("group %1 is not 1..8").arg(group));
+        return Error(Error::Kind::InvalidArgument, Tr::tr("group %1 is not 1..8").arg(group));
     return broadcast({ 0, 0x204D, 1, quint32(group) });
 }
 
@@ -174,7 +179,7 @@ Result<void> Nm17xLine::presetAll(qint32 value)
 {
     if (value < kMinPosition || value > kMaxPosition)
         return Error(Error::Kind::InvalidArgument,
-                     tr("preset %1 is outside -99999..999999 (1/100 mm)").arg(value));
+                     Tr::tr("preset %1 is outside -99999..999999 (1/100 mm)").arg(value));
     return broadcast({ 0, 0x6003, 0, quint32(value) });
 }
 
@@ -233,8 +238,8 @@ void Nm17xLine::readNext(Reply *outer, DisplayState state, QList<ObjectAddress> 
     connect(inner, &Reply::finished, outer, [this, outer, inner, state, todo, address]() mutable {
         inner->deleteLater();
         if (!inner->ok()) {
-            outer->fail(
-                inner->error().prefixed(tr("node %1, %2").arg(state.node).arg(address.toString())));
+            outer->fail(inner->error().prefixed(
+                Tr::tr("node %1, %2").arg(state.node).arg(address.toString())));
             return;
         }
         const QByteArray bytes = inner->value().toByteArray();
@@ -251,8 +256,8 @@ void Nm17xLine::readNext(Reply *outer, DisplayState state, QList<ObjectAddress> 
             const auto variant = variantOf(state.serial, v);
             if (!variant) {
                 outer->fail(Error(Error::Kind::NotSupported,
-                                  tr("node %1 is no NM170/NM172/NM174 (vendor 0x%2, product "
-                                     "0x%3)")
+                                  Tr::tr("node %1 is no NM170/NM172/NM174 (vendor 0x%2, product "
+                                         "0x%3)")
                                       .arg(state.node)
                                       .arg(state.serial, 8, 16, QLatin1Char('0'))
                                       .arg(v, 8, 16, QLatin1Char('0'))));
