@@ -3438,10 +3438,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>ungültige Startzeit „%1“</translation>
     </message>
     <message>
-        <source>channel line without a valid &apos;INDEX:SUB&apos; id</source>
-        <translation>Kanalzeile ohne gültige „INDEX:SUB“-Kennung</translation>
-    </message>
-    <message>
         <source>channel %1: bad scale or offset</source>
         <translation>Kanal %1: ungültige Skalierung oder ungültiger Offset</translation>
     </message>
@@ -3472,6 +3468,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>column %1 (%2): &apos;%3&apos; is not a number</source>
         <translation>Spalte %1 (%2): „%3“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>channel %1: unknown address format &apos;%2&apos; (canopen or parameter)</source>
+        <translation>Kanal %1: unbekanntes Adressformat &apos;%2&apos; (canopen oder parameter)</translation>
+    </message>
+    <message>
+        <source>channel line without a valid id (%1 addresses are written like %2)</source>
+        <translation>Kanalzeile ohne gültige Kennung (%1-Adressen werden wie %2 geschrieben)</translation>
     </message>
 </context>
 <context>
@@ -4879,10 +4883,6 @@ Letzter Fehler: %1</translation>
         <translation>Wert:</translation>
     </message>
     <message>
-        <source>Enter an object address, e.g. 6041:0 or 6064</source>
-        <translation>Objektadresse eingeben, z. B. 6041:0 oder 6064</translation>
-    </message>
-    <message>
         <source>&lt;br&gt;%1, %2</source>
         <translation>&lt;br&gt;%1, %2</translation>
     </message>
@@ -4913,6 +4913,10 @@ Letzter Fehler: %1</translation>
     <message>
         <source>written %1</source>
         <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Enter an object address, e.g. %1</source>
+        <translation>Objektadresse eingeben, z. B. %1</translation>
     </message>
 </context>
 <context>
@@ -5190,6 +5194,10 @@ Letzter Fehler: %1</translation>
         <source>&apos;%1&apos; is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParamCompareModel</name>
@@ -5220,6 +5228,10 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Status</source>
         <translation>Status</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
     </message>
 </context>
 <context>
@@ -5271,6 +5283,10 @@ Letzter Fehler: %1</translation>
     <message>
         <source>&amp;Copy Report</source>
         <translation>Bericht &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
     </message>
 </context>
 <context>
@@ -6082,10 +6098,6 @@ Doppelklick auf den Namen ändert die Farbe</translation>
         <translation>„%1“: %2</translation>
     </message>
     <message>
-        <source>Type an object address such as 6064:0.</source>
-        <translation>Eine Objektadresse wie 6064:0 eingeben.</translation>
-    </message>
-    <message>
         <source>Channel colour</source>
         <translation>Kanalfarbe</translation>
     </message>
@@ -6245,6 +6257,22 @@ Change it?</source>
     <message>
         <source>a PDO channel needs a CANopen connection</source>
         <translation>ein PDO-Kanal braucht eine CANopen-Verbindung</translation>
+    </message>
+    <message>
+        <source>Object address, e.g. %1</source>
+        <translation>Objektadresse, z. B. %1</translation>
+    </message>
+    <message>
+        <source>Object addresses (%1 and %2, as the device writes them), separated by commas</source>
+        <translation>Objektadressen (%1 und %2, wie das Gerät sie schreibt), durch Kommas getrennt</translation>
+    </message>
+    <message>
+        <source>the dropped objects have %1 addresses, this device&apos;s are %2 addresses (like %3)</source>
+        <translation>die abgelegten Objekte haben %1-Adressen, die dieses Geräts sind %2-Adressen (wie %3)</translation>
+    </message>
+    <message>
+        <source>Type an object address such as %1.</source>
+        <translation>Geben Sie eine Objektadresse wie %1 ein.</translation>
     </message>
 </context>
 <context>
