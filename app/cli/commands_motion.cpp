@@ -118,6 +118,23 @@ Result<double> number(Context &c, const QString &option)
     return v;
 }
 
+// The profile values given on the command line (--vel/--acc/--dec) replace what was read from
+// the drive; options not given leave their field as it is.
+Result<void> profileOptions(Context &c, MoveParams &p, bool withVelocity)
+{
+    for (const auto &[name, field] : { std::pair { kVel, &p.velocity },
+                                       { kAcc, &p.acceleration },
+                                       { kDec, &p.deceleration } }) {
+        if (!c.parser->isSet(name) || (name == kVel && !withVelocity))
+            continue;
+        const auto v = number(c, name);
+        if (!v)
+            return v.error();
+        *field = *v;
+    }
+    return {};
+}
+
 // Opens the connection, reads the scaling and the drive's limits and waits for the drive's
 // status, so that the model knows whether it is enabled.
 Result<std::unique_ptr<Axis>> openAxis(Context &c)
@@ -323,16 +340,8 @@ int move(Context &c)
     p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
     p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
     p.jerk = axis.model->config().maxJerk;
-    for (const auto &[name, field] : { std::pair { kVel, &p.velocity },
-                                       { kAcc, &p.acceleration },
-                                       { kDec, &p.deceleration } }) {
-        if (!c.parser->isSet(name))
-            continue;
-        const auto v = number(c, name);
-        if (!v)
-            return fail(c, v.error());
-        *field = *v;
-    }
+    if (auto given = profileOptions(c, p, true); !given)
+        return fail(c, given.error());
     MotionCommand command(axis.model.get(), kind);
     command.setParams(p);
     if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
@@ -362,15 +371,8 @@ int jog(Context &c)
     MoveParams p;
     p.velocity = *v;
     p.acceleration = p.deceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
-    for (const auto &[name, field] :
-         { std::pair { kAcc, &p.acceleration }, { kDec, &p.deceleration } }) {
-        if (!c.parser->isSet(name))
-            continue;
-        const auto x = number(c, name);
-        if (!x)
-            return fail(c, x.error());
-        *field = *x;
-    }
+    if (auto given = profileOptions(c, p, false); !given)
+        return fail(c, given.error());
     p.jerk = axis.model->config().maxJerk;
     // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
     const auto supervision = superviseDrive(c, axis);
@@ -440,15 +442,8 @@ int velocity(Context &c)
     p.velocity = *v;
     p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
     p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
-    for (const auto &[name, field] :
-         { std::pair { kAcc, &p.acceleration }, { kDec, &p.deceleration } }) {
-        if (!c.parser->isSet(name))
-            continue;
-        const auto x = number(c, name);
-        if (!x)
-            return fail(c, x.error());
-        *field = *x;
-    }
+    if (auto given = profileOptions(c, p, false); !given)
+        return fail(c, given.error());
     p.jerk = axis.model->config().maxJerk;
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
