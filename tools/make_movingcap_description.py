@@ -6,6 +6,7 @@ and 7), with the spec's readings of the manual's gaps and errata applied (see FI
 Run from the repository root:  python3 tools/make_movingcap_description.py
 """
 import csv
+import re
 import json
 import os
 import sys
@@ -103,6 +104,18 @@ TRACE = {0x6040, 0x6041, 0x6061, 0x6064, 0x606C, 0x6078, 0x607A, 0x60FF, 0x60FD,
          0x60FC, 0x1001}
 
 
+def user_text(text):
+    """A description as users read it: without the bracketed references to where a fact was
+    found ([seed ...], [STD], [EXT] ...), and with the drive's web page named as such."""
+    text = re.sub(r'\s*\[(?:seed|STD|EXT|GAP|CONFLICT|UNCERTAIN)\b[^\]]*\]', '', text)
+    text = re.sub(r'\s*\((?:spec|see) (?:App\.|section|§)[^)]*\)', '', text)
+    text = re.sub(r"Shown as ('[^']*') in (?:the )?web footer",
+                  r"The drive's web page shows it as \1", text)
+    text = re.sub(r"\(shown as ('[^']*') in (?:the )?web footer\)",
+                  r"(on the drive's web page: \1)", text)
+    return text.strip()
+
+
 def main():
     objects = []
     with open(os.path.join(SPECS, 'movingcap_objects.csv'), newline='') as f:
@@ -151,10 +164,12 @@ def main():
             obj['storable'] = acc == 'rw' and index not in NOT_STORABLE and not runtime_result
             obj['pdo'] = index in PDO
             obj['trace'] = index in TRACE or (index, sub) == (0x3401, 10)
-            obj['description'] = row['description'].strip()
+            obj['description'] = user_text(row['description'])
             objects.append(obj)
     for extra in EXTRA:
         obj = dict(extra)
+        if 'description' in obj:
+            obj['description'] = user_text(obj['description'])
         obj['index'] = '0x%04X' % obj['index']
         if 'bits' in obj:
             obj['bits'] = [dict(bit=b, name=n) for b, n in obj['bits']]
@@ -167,15 +182,15 @@ def main():
     errors = []
     with open(os.path.join(SPECS, 'movingcap_errors.csv'), newline='') as f:
         for row in csv.DictReader(f):
-            text = row['description'].split('.')[0].strip()
+            text = user_text(row['description'].split('.')[0])
             errors.append(dict(code='0x%04X' % int(row['code_hex'], 16), name=row['name'],
                                text=text))
 
     doc = {
         'format': 'drivebench-device-description',
         'version': 1,
-        'comment': 'Written by drivebench from the facts in shared/specs/movingcap.md '
-                   '(sections 6 and 7) by tools/make_movingcap_description.py.',
+        'comment': 'drivebench\'s own description of the MovingCap ETH '
+                   '(tools/make_movingcap_description.py).',
         'device': {'vendor': 'Fullmo GmbH', 'vendorId': '0x0000053B',
                    'product': 'MovingCap ETH', 'revision': 'manual rev. 0 (2026-01-09)',
                    'version': '1'},

@@ -59,7 +59,7 @@ SimulatedAcu::SimulatedAcu(QObject *parent)
     , m_store(acuDictionary())
     , m_server(this)
 {
-    seed(m_store, 0);
+    presetValues(m_store, 0);
     for (const quint16 p : { kIpAddress, quint16(1433), quint16(1434), quint16(1435) }) {
         for (quint8 ds = 1; ds <= 4; ++ds)
             m_activeIp[p].append(m_store.value(p, ds));
@@ -75,7 +75,7 @@ SimulatedAcu::SimulatedAcu(QObject *parent)
 SimulatedAcu::~SimulatedAcu() = default;
 
 // The values the VABus examples read and write, and the limits they show.
-void SimulatedAcu::seed(AcuStore &store, quint8 nodeId)
+void SimulatedAcu::presetValues(AcuStore &store, quint8 nodeId)
 {
     const auto u = [](qulonglong v) {
         return QVariant::fromValue(v);
@@ -138,7 +138,7 @@ void SimulatedAcu::setStartupDelayMs(int ms)
 void SimulatedAcu::addSystemBusSlave(quint8 nodeId)
 {
     auto store = std::make_shared<AcuStore>(acuDictionary());
-    seed(*store, nodeId);
+    presetValues(*store, nodeId);
     m_slaves.insert(nodeId, store);
 }
 

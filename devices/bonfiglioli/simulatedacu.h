@@ -1,7 +1,7 @@
 #pragma once
 
 // A simulated ACTIVE Cube ACU with a CM-VABus/TCP module, for demos and tests: the parameter
-// memory (AcuStore, seeded with the parameter table's defaults and the values of the VABus
+// memory (AcuStore, preset with the parameter table's defaults and the values of the VABus
 // examples), the PLC port (vabus::Server), the 10 s communication watchdog with the reactions of
 // parameter 388, block access (17/18/19), the network parameters (1431-1437), warnings and
 // faults, and system bus slaves behind the module.
@@ -77,7 +77,7 @@ private:
     AcuStore::Outcome writeBlock(const QByteArray &data);
     AcuStore::Outcome ipCommand(const QByteArray &data);
     void onWatchdog();
-    void seed(AcuStore &store, quint8 nodeId);
+    void presetValues(AcuStore &store, quint8 nodeId);
 
     struct BlockItem
     {

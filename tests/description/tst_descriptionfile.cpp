@@ -3,6 +3,7 @@
 #include "description/descriptionfile.h"
 #include "resources/builtindescriptions.h"
 
+#include <QRegularExpression>
 #include <QTest>
 
 using namespace db;
@@ -14,6 +15,7 @@ private Q_SLOTS:
     void movingCapDescriptionLoads();
     void movingCapObjectsFollowTheSpec();
     void movingCapErrorTexts();
+    void builtinTextsAreForUsers();
     void brokenFilesGiveClearErrors_data();
     void brokenFilesGiveClearErrors();
     void missingFileNamesThePath();
@@ -64,6 +66,22 @@ void TestDescriptionFile::movingCapErrorTexts()
     QCOMPARE(dict.errorCode(0x2220)->name, QStringLiteral("ERROR_OVER_CURRENT"));
     QCOMPARE(dict.errorText(0x8130), QStringLiteral("life guard or heartbeat error"));
     QCOMPARE(dict.errorText(0x3299), QStringLiteral("voltage inside the device"));
+}
+
+// What the editor shows as a description or error text names no source document and carries no
+// note meant for the people who wrote the description.
+void TestDescriptionFile::builtinTextsAreForUsers()
+{
+    static const QRegularExpression reference(
+        QStringLiteral(R"(\[(seed|STD|EXT)\b|§|web footer|\.md\b|specs/)"),
+        QRegularExpression::CaseInsensitiveOption);
+    for (const QString &name : resources::builtinDescriptionNames()) {
+        const auto dict = resources::builtinDescription(name);
+        QVERIFY2(dict.ok(), qPrintable(name));
+        for (const ObjectDef &def : dict.value().objects())
+            QVERIFY2(!reference.match(def.description).hasMatch(),
+                     qPrintable(name + QStringLiteral(": ") + def.description));
+    }
 }
 
 void TestDescriptionFile::brokenFilesGiveClearErrors_data()
