@@ -1,6 +1,9 @@
 #include "jogpanel.h"
 
 #include "motionform.h"
+
+#include "cia402/modes.h"
+#include "devices/axisfactory.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QApplication>
@@ -90,15 +93,19 @@ void JogPanel::setConnection(DeviceConnection *connection)
         return;
     }
     const ObjectDictionary &dict = connection->dictionary();
-    const ObjectDef *pos = dict.find(cia402::obj::PositionActual);
-    const ObjectDef *vel = dict.find(cia402::obj::VelocityActual);
-    m_positionUnit = pos && !pos->unit.isEmpty() ? pos->unit : tr("units");
-    m_velocityUnit =
-        vel && !vel->unit.isEmpty() ? vel->unit : m_positionUnit + QStringLiteral("/s");
-
-    m_cia = std::make_unique<Cia402Axis>(connection);
-    if (rotaryAcceleration())
-        m_cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
+    auto made = devices::makeAxis(connection);
+    if (!made) {
+        m_connection = nullptr;
+        setMessage(made.error().message(), style::errorColor());
+        render();
+        renderLimits();
+        renderSupervision();
+        return;
+    }
+    m_cia = std::move(made.value());
+    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
+                                                     : m_cia->velocityUnit();
     m_motion = std::make_unique<MotionAxis>(m_cia.get());
     m_motion->setWatchdogTimeout(kWatchdogMs);
     m_motion->setVelocityOverride(m_override->value());
@@ -163,7 +170,9 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
         return;
     }
     m_form->setFeatures(m_cia->features());
-    readLimits(generation);
+    if (!m_cia->featureNote().isEmpty())
+        setMessage(m_cia->featureNote());
+    applyLimits();
 }
 
 bool JogPanel::isMotionInProgress() const
