@@ -426,10 +426,12 @@ int velocity(Context &c)
     p.jerk = axis.model->config().maxJerk;
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
-    if (!supervision)
+    if (!supervision && axis.cia->linkSupervision().isEmpty())
         c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
                  "drivebench-cli dies on this connection (jog moves in leases)"
               << Qt::endl;
+    else if (!supervision && c.options.verbose)
+        c.out << "supervision: " << axis.cia->linkSupervision() << Qt::endl;
     MotionCommand command(axis.model.get(), CommandKind::MoveVelocity);
     command.setParams(p);
     command.setExecute(true);

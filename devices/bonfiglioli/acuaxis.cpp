@@ -26,6 +26,7 @@ constexpr quint16 kConfiguration = 30;
 constexpr quint16 kActualSpeedRpm = 240;
 constexpr quint16 kCurrentFault = 260;
 constexpr quint16 kApplicationWarnings = 274;
+constexpr quint16 kBusErrorBehaviour = 388;
 constexpr quint16 kLocalRemote = 412;
 constexpr quint16 kStatusWord = 411;
 constexpr quint16 kSpeed = 1107; // u/s
@@ -44,7 +45,9 @@ constexpr quint16 kAcceleration = 1457;
 constexpr quint16 kDeceleration = 1458;
 constexpr quint16 kTargetVelocityRpm = 1459;
 constexpr quint16 kTargetVelocity = 1460;
-constexpr qint64 kOverrideOff = -1; // 1455-1460: the MCI value is used instead
+constexpr qint64 kOverrideOff = -1;
+constexpr int kFaultCheckMs = 100; // a fault that stays this long is not a transient // 1455-1460:
+                                   // the MCI value is used instead
 
 // Control word 410 (412 = 1).
 constexpr quint16 kDisableVoltage = 0x0000;
@@ -125,7 +128,8 @@ AxisInterface::Features AcuAxis::features() const
 {
     if (!hasPositioning())
         return Feature::ProfileVelocity;
-    return Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
+    return Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing
+        | Feature::MotionBlocks;
 }
 
 QString AcuAxis::featureNote() const
@@ -135,6 +139,36 @@ QString AcuAxis::featureNote() const
     return Tr::tr("configuration %1 has no positioning control (30 is not x40): velocity mode "
                   "(rpm) only")
         .arg(m_configuration);
+}
+
+QString AcuAxis::linkSupervision() const
+{
+    QString reaction;
+    switch (m_busErrorBehaviour) {
+    case 0:
+        return Tr::tr("Link watchdog off (388 = 0): the inverter keeps running when the link "
+                      "stops.");
+    case 1:
+        reaction = Tr::tr("fault F2714");
+        break;
+    case 2:
+        reaction = Tr::tr("switch off");
+        break;
+    case 3:
+        reaction = Tr::tr("quick stop");
+        break;
+    case 4:
+        reaction = Tr::tr("stop, then fault F2714");
+        break;
+    case 5:
+        reaction = Tr::tr("quick stop, then fault F2714");
+        break;
+    default:
+        return {};
+    }
+    return Tr::tr("Link watchdog (388 = %1): %2 10 s after the last exchange.")
+        .arg(m_busErrorBehaviour)
+        .arg(reaction);
 }
 
 QString AcuAxis::positionUnit() const
@@ -217,9 +251,10 @@ void AcuAxis::onRoundDone()
 Reply *AcuAxis::initialize()
 {
     auto *result = new Reply(ObjectAddress(kConfiguration, 0));
-    const QList<quint16> wanted { kConfiguration, kMode,         kProfileVelocity,   kAcceleration,
-                                  kDeceleration,  kTargetWindow, kTargetWindowTime,  kHomingMethod,
-                                  kFastSpeed,     kCreepSpeed,   kHomingAcceleration };
+    const QList<quint16> wanted { kConfiguration,   kBusErrorBehaviour, kMode,
+                                  kProfileVelocity, kAcceleration,      kDeceleration,
+                                  kTargetWindow,    kTargetWindowTime,  kHomingMethod,
+                                  kFastSpeed,       kCreepSpeed,        kHomingAcceleration };
     auto values = std::make_shared<QHash<quint16, QVariant>>();
     auto pending = std::make_shared<int>(int(wanted.size()));
     QPointer<Reply> guard(result);
@@ -235,6 +270,7 @@ Reply *AcuAxis::initialize()
                 return values->contains(p) ? values->value(p).toDouble() : fallback;
             };
             m_configuration = int(v(kConfiguration, 0));
+            m_busErrorBehaviour = int(v(kBusErrorBehaviour, -1));
             m_mode = Mode(qint16(qint8(int(v(kMode, 0)))));
             // -1 = override off: the drive then uses its MCI values, unknown here.
             const auto override = [&](quint16 p) {
@@ -273,13 +309,10 @@ Reply *AcuAxis::run(AcuSteps *steps)
     return steps->start();
 }
 
-Result<void> AcuAxis::checkEnabled() const
+void AcuAxis::requireEnabled(AcuSteps *steps) const
 {
-    if (!m_status.valid || !m_status.powered)
-        return Error(Error::Kind::DeviceError,
-                     Tr::tr("the inverter is not in 'operation enabled' (status word 0x%1)")
-                         .arg(m_status.rawStatus, 4, 16, QLatin1Char('0')));
-    return {};
+    steps->checkStatus([](quint16 w) { return inState(w, kOperationEnabled); },
+                       Tr::tr("the inverter is not in 'operation enabled': enable it first"));
 }
 
 Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode) const
@@ -318,12 +351,9 @@ Reply *AcuAxis::power(bool on)
                           Tr::tr("the inverter did not go to 'switch on disabled'"), true);
         return run(steps);
     }
-    if (m_status.valid && m_status.fault) {
-        delete steps;
-        return Reply::failed(ObjectAddress(410, 0),
-                             Error(Error::Kind::DeviceError,
-                                   Tr::tr("enable: the inverter is in fault: reset it first")));
-    }
+    // A fault first needs a reset (the status read now, not the last poll's).
+    steps->checkStatus([](quint16 w) { return !(w & kFaultBit); },
+                       Tr::tr("the inverter is in fault: reset it first"));
     // Control through the state machine; the RAM copy of all data sets, so nothing is stored.
     steps->write(kLocalRemote, 1);
     if (m_status.valid && m_status.powered)
@@ -383,7 +413,7 @@ Reply *AcuAxis::moveTo(double target, const Profile &profile)
         delete steps;
         return Reply::failed(ObjectAddress(kMode, 0), ok.error());
     }
-    steps->call([this] { return checkEnabled(); });
+    requireEnabled(steps);
     // The last set-point's bit 4 falls first; the drive then clears bit 12 and takes a new one.
     steps->control(kEnableOperation | kBit5);
     steps->waitStatus([](quint16 w) { return !(w & kBit12); }, kHandshakeTimeoutMs,
@@ -417,7 +447,7 @@ Reply *AcuAxis::moveVelocity(double velocity, const Profile &profile)
             Error(Error::Kind::OutOfRange,
                   Tr::tr("velocity -1 cannot be set: -1 switches the override off")));
     }
-    steps->call([this] { return checkEnabled(); });
+    requireEnabled(steps);
     if (mode == Mode::ProfileVelocity) {
         steps->write(kAcceleration, positive(profile.acceleration));
         steps->write(kDeceleration, positive(profile.deceleration));
@@ -451,7 +481,7 @@ Reply *AcuAxis::home(const motion::HomingParams &params)
         delete steps;
         return Reply::failed(ObjectAddress(kMode, 0), ok.error());
     }
-    steps->call([this] { return checkEnabled(); });
+    requireEnabled(steps);
     steps->write(kHomingMethod, params.method);
     if (params.speedFast > 0)
         steps->write(kFastSpeed, positive(params.speedFast));
@@ -503,7 +533,7 @@ Reply *AcuAxis::startMotionBlock(int block, bool sequence, bool resume)
         delete steps;
         return Reply::failed(ObjectAddress(kMode, 0), ok.error());
     }
-    steps->call([this] { return checkEnabled(); });
+    requireEnabled(steps);
     const quint16 select = quint16((block - 1) << 11);
     const quint16 word =
         quint16(kEnableOperation | select | (sequence ? kBit4 : 0) | (resume ? kBit6 : 0));
@@ -530,7 +560,7 @@ Reply *AcuAxis::moveAwayFromLimitSwitch()
         delete steps;
         return Reply::failed(ObjectAddress(kMode, 0), ok.error());
     }
-    steps->call([this] { return checkEnabled(); });
+    requireEnabled(steps);
     steps->control(kEnableOperation);
     steps->control(kEnableOperation | kBit4);
     steps->waitStatus([](quint16 w) { return w & kTargetReached; }, kHomingTimeoutMs,

@@ -73,6 +73,8 @@ public:
     QString positionUnit() const override;
     QString velocityUnit() const override;
     QString featureNote() const override;
+    // 388 as read by initialize(), with the inverter's 10 s link watchdog.
+    QString linkSupervision() const override;
 
     Reply *power(bool on) override;
     // Reads 260, then gives bit 7 a rising edge; finishes with the fault code once the fault
@@ -101,7 +103,8 @@ private:
     // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
     // when the change is refused.
     Result<void> addModeChange(AcuSteps *steps, Mode mode) const;
-    Result<void> checkEnabled() const;
+    // A step that fails unless the inverter is in "operation enabled" (411 read then).
+    void requireEnabled(AcuSteps *steps) const;
 
     DeviceConnection *m_connection;
     Status m_status;
@@ -112,6 +115,7 @@ private:
     quint16 m_controlWord = 0;
     Mode m_mode = Mode::None;
     int m_configuration = 0;
+    int m_busErrorBehaviour = -1; // 388, -1 = not read
     quint16 m_faultCode = 0;
     bool m_modeChanging = false; // passing "switched on" to change 1454
     motion::AxisConfig m_limits;

@@ -12,6 +12,7 @@ struct Tr
 };
 constexpr quint16 kStatusWord = 411;
 constexpr quint16 kFaultBit = 0x0008;
+constexpr int kOnce = -1; // a wait step that reads once
 } // namespace
 
 namespace db::bonfiglioli {
@@ -48,6 +49,11 @@ void AcuSteps::waitStatus(std::function<bool(quint16)> pred, int timeoutMs, cons
     s.failText = failText;
     s.faultOk = faultOk;
     m_steps.append(s);
+}
+
+void AcuSteps::checkStatus(std::function<bool(quint16)> pred, const QString &failText)
+{
+    waitStatus(std::move(pred), kOnce, failText, true);
 }
 
 void AcuSteps::call(std::function<Result<void>()> fn)
@@ -119,7 +125,8 @@ void AcuSteps::next()
         return;
     }
     case Step::Kind::Wait:
-        m_deadline.start(s.timeoutMs);
+        if (s.timeoutMs != kOnce)
+            m_deadline.start(s.timeoutMs);
         readStatus();
         return;
     case Step::Kind::Call:
@@ -149,6 +156,10 @@ void AcuSteps::readStatus()
         const Step &s = m_steps.at(m_index);
         if (s.pred(word)) {
             next();
+            return;
+        }
+        if (s.timeoutMs == kOnce) {
+            fail(Error(Error::Kind::DeviceError, s.failText));
             return;
         }
         if ((word & kFaultBit) && !s.faultOk) {

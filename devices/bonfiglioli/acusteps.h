@@ -4,6 +4,7 @@
 // block) as a list of steps run one after the other on the event loop:
 //
 //   write(P, v) --ok--> next      waitStatus(pred) --411 read, pred true--> next
+//                                 checkStatus(pred): the same with one read, no waiting
 //        |                              |--fault bit or timeout--> fail
 //        +--error--> fail          call(fn) --ok--> next, --error--> fail
 //
@@ -39,6 +40,8 @@ public:
     // faultOk, the timeout with `failText`.
     void waitStatus(std::function<bool(quint16)> pred, int timeoutMs, const QString &failText,
                     bool faultOk = false);
+    // Reads 411 once; fails with `failText` unless pred(411) holds.
+    void checkStatus(std::function<bool(quint16)> pred, const QString &failText);
     void call(std::function<Result<void>()> fn);
     // The reply's value when all steps are done.
     void setResult(std::function<QVariant()> fn) { m_result = std::move(fn); }

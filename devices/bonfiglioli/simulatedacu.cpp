@@ -130,7 +130,8 @@ void SimulatedAcu::presetValues(AcuStore &store, quint8 nodeId)
     store.set(1458, 0, i(50000));
 }
 
-// Motion blocks 1-3: 1 absolute 123000 u then block 2, 2 absolute 5000 u, 3 relative 2000 u.
+// Motion blocks 2-4 (1 stays empty): 2 absolute 5000 u, 3 relative 2000 u, 4 absolute 123000 u
+// and on to block 2 in a sequence.
 void SimulatedAcu::presetBlocks()
 {
     struct Block
@@ -138,9 +139,9 @@ void SimulatedAcu::presetBlocks()
         int index;
         qlonglong target, speed, acc, dec, mode, next;
     };
-    for (const Block &b : { Block { 1, 123000, 40000, 50000, 50000, 1, 2 },
-                            Block { 2, 5000, 20000, 50000, 50000, 1, 0 },
-                            Block { 3, 2000, 10000, 50000, 50000, 2, 0 } }) {
+    for (const Block &b : { Block { 2, 5000, 20000, 50000, 50000, 1, 0 },
+                            Block { 3, 2000, 10000, 50000, 50000, 2, 0 },
+                            Block { 4, 123000, 40000, 50000, 50000, 1, 2 } }) {
         m_indexed.preset(1202, b.index, b.target);
         m_indexed.preset(1203, b.index, b.speed);
         m_indexed.preset(1204, b.index, b.acc);

@@ -42,6 +42,7 @@ public:
         Homing = 0x4,
         Torque = 0x8,
         Jerk = 0x10,
+        MotionBlocks = 0x20, // a table of motion blocks in the drive (startMotionBlock)
     };
     Q_DECLARE_FLAGS(Features, Feature)
 
@@ -84,6 +85,9 @@ public:
     // How the drive names its units ("u", "u/s"); empty when it does not say.
     virtual QString positionUnit() const { return {}; }
     virtual QString velocityUnit() const { return {}; }
+    // What the drive itself does when the link to it stops ("link watchdog: ..."); empty when
+    // the axis does not know.
+    virtual QString linkSupervision() const { return {}; }
     // Why a feature is missing ("configuration 210 has no positioning control"), for display.
     virtual QString featureNote() const { return {}; }
 

@@ -1,5 +1,6 @@
 #include "jogpanel.h"
 
+#include "motionblockbox.h"
 #include "motionform.h"
 
 #include "cia402/modes.h"
@@ -68,6 +69,7 @@ void JogPanel::teardown()
     m_keepAlive->stop();
     releaseSupervision();
     m_form->setAxis(nullptr);
+    m_blocks->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
     m_lease.reset();
@@ -169,7 +171,12 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
         });
         return;
     }
+    // What the drive said about itself: its units, modes and limits.
+    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
+                                                     : m_cia->velocityUnit();
     m_form->setFeatures(m_cia->features());
+    m_blocks->setAxis(m_cia.get());
     if (!m_cia->featureNote().isEmpty())
         setMessage(m_cia->featureNote());
     applyLimits();

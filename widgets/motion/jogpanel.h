@@ -19,6 +19,7 @@ class QPushButton;
 namespace db::widgets {
 
 class Lamp;
+class MotionBlockBox;
 class MotionForm;
 
 // Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
@@ -148,6 +149,7 @@ private:
     QLabel *m_limits = nullptr;
     QLabel *m_supervision = nullptr;
     MotionForm *m_form = nullptr;
+    MotionBlockBox *m_blocks = nullptr; // drives with a motion block table
 };
 
 } // namespace db::widgets

@@ -21,6 +21,7 @@ void JogPanel::applyLimits()
     m_limitsKnown = true;
     m_form->setLimits(m_config, m_positionUnit, m_velocityUnit);
     renderLimits();
+    renderSupervision();
 }
 
 } // namespace db::widgets
@@ -37,7 +38,9 @@ void JogPanel::renderSupervision()
                              "the drive stops by itself when the renewals stop.")
                               .arg(motion::LeasedMove::kLeaseMs);
     QString drive;
-    if (!m_driveSupervision)
+    if (!m_driveSupervision && m_cia && !m_cia->linkSupervision().isEmpty())
+        drive = m_cia->linkSupervision();
+    else if (!m_driveSupervision)
         drive = tr("No drive-side supervision on this connection.");
     else if (m_driveSupervision->isArmed())
         drive = tr("Active: %1.").arg(m_driveSupervision->description());
