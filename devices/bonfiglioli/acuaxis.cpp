@@ -166,9 +166,17 @@ QString AcuAxis::linkSupervision() const
     default:
         return {};
     }
-    return Tr::tr("Link watchdog (388 = %1): %2 10 s after the last exchange.")
-        .arg(m_busErrorBehaviour)
-        .arg(reaction);
+    QString text = Tr::tr("Link watchdog (388 = %1): %2 10 s after the last exchange.")
+                       .arg(m_busErrorBehaviour)
+                       .arg(reaction);
+    if (m_lastAnswer.isValid() && m_lastAnswer.elapsed() >= kSilenceShownMs) {
+        const qint64 left = std::max<qint64>(0, kLinkWatchdogMs - m_lastAnswer.elapsed());
+        text += QLatin1Char(' ')
+            + Tr::tr("No answer for %1 s: the inverter reacts in %2 s at the latest.")
+                  .arg(m_lastAnswer.elapsed() / 1000.0, 0, 'f', 1)
+                  .arg(left / 1000.0, 0, 'f', 1);
+    }
+    return text;
 }
 
 QString AcuAxis::positionUnit() const
@@ -226,6 +234,7 @@ void AcuAxis::onRoundDone()
         const quint16 state = word & kStateMask;
         const bool velocityMode = m_mode == Mode::Velocity || !hasPositioning();
         m_status.valid = true;
+        m_lastAnswer.start();
         m_status.rawStatus = word;
         m_status.powered =
             state == kOperationEnabled || (m_modeChanging && m_running && state == kSwitchedOn);

@@ -23,6 +23,7 @@
 
 #include "core/deviceconnection.h"
 
+#include <QElapsedTimer>
 #include <QPointer>
 #include <QTimer>
 
@@ -39,6 +40,8 @@ public:
     static constexpr int kHandshakeTimeoutMs = 2000; // set-point acknowledged
     static constexpr int kHomingTimeoutMs = 60000;
     static constexpr int kTableTravelTimeoutMs = 120000;
+    static constexpr int kLinkWatchdogMs = 10000; // the module's PLC link timeout
+    static constexpr int kSilenceShownMs = 1000; // no answer this long: the time left is shown
 
     // 1454 Override Modes Of Operation; negative modes are sent as 256 + mode.
     enum class Mode : qint16 {
@@ -73,7 +76,8 @@ public:
     QString positionUnit() const override;
     QString velocityUnit() const override;
     QString featureNote() const override;
-    // 388 as read by initialize(), with the inverter's 10 s link watchdog.
+    // 388 as read by initialize(), with the inverter's 10 s link watchdog; once the inverter
+    // has not answered for kSilenceShownMs, also the time left until it reacts.
     QString linkSupervision() const override;
 
     Reply *power(bool on) override;
@@ -117,7 +121,9 @@ private:
     int m_configuration = 0;
     int m_busErrorBehaviour = -1; // 388, -1 = not read
     quint16 m_faultCode = 0;
-    bool m_modeChanging = false; // passing "switched on" to change 1454
+    bool m_modeChanging = false;
+    QElapsedTimer m_lastAnswer; // since the last complete status round // passing "switched on" to
+                                // change 1454
     motion::AxisConfig m_limits;
     Profile m_profile;
     motion::HomingParams m_homing;

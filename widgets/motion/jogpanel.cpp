@@ -29,6 +29,8 @@ JogPanel::JogPanel(QWidget *parent)
     connect(m_keepAlive, &QTimer::timeout, this, [this] {
         if (m_motion)
             m_motion->keepAlive();
+        if (m_cia && !m_cia->linkSupervision().isEmpty())
+            renderSupervision(); // the time left when the drive stops answering
     });
 
     // Hold-to-run: press starts, release halts (QAbstractButton::released also fires when the

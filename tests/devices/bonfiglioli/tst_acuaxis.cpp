@@ -279,6 +279,20 @@ private Q_SLOTS:
         QVERIFY2(clock.elapsed() <= leaseMs + 200, qPrintable(QString::number(clock.elapsed())));
     }
 
+    void linkSilenceShowsTimeLeft()
+    {
+        QVERIFY(m_axis->linkSupervision().contains(QLatin1String("388 = 1")));
+        QVERIFY(!m_axis->linkSupervision().contains(QLatin1String("No answer")));
+        vabus::Server::FailureMode silent;
+        silent.failure = vabus::Server::Failure::Silent;
+        m_acu->server().setFailure(silent);
+        QTRY_VERIFY_WITH_TIMEOUT(m_axis->linkSupervision().contains(QLatin1String("No answer")),
+                                 5000);
+        QVERIFY2(m_axis->linkSupervision().contains(QLatin1String("reacts in")),
+                 qPrintable(m_axis->linkSupervision()));
+        m_acu->server().setFailure({});
+    }
+
     void quickStop()
     {
         QVERIFY(power(true));
