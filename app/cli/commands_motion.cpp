@@ -507,24 +507,14 @@ int travel(Context &c)
     if (!opened)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
-    Reply *reply =
-        axis.cia->startMotionBlock(block, c.parser->isSet(kSequence), c.parser->isSet(kResume));
-    bool finished = false;
-    QObject::connect(reply, &Reply::finished, [&finished] { finished = true; });
-    if (!waitUntil(
-            axis, [&] { return finished; }, axis.waitMs)) {
-        delete reply;
-        axis.model->stopNow();
-        return fail(c,
-                    Error(Error::Kind::Timeout,
-                          Tr::tr("motion block %1 not done within %2 ms (--wait); axis stopped")
-                              .arg(block)
-                              .arg(axis.waitMs)));
-    }
-    const Error error = reply->error();
-    delete reply;
-    if (error.isError())
-        return fail(c, error);
+    MoveParams p;
+    p.block = block;
+    p.sequence = c.parser->isSet(kSequence);
+    p.resume = c.parser->isSet(kResume);
+    MotionCommand command(axis.model.get(), CommandKind::MotionBlock);
+    command.setParams(p);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
     printPosition(c, axis);
     return ExitOk;
 }

@@ -178,7 +178,7 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
     m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
                                                      : m_cia->velocityUnit();
     m_form->setFeatures(m_cia->features());
-    m_blocks->setAxis(m_cia.get());
+    m_blocks->setAxis(m_motion.get());
     if (!m_cia->featureNote().isEmpty())
         setMessage(m_cia->featureNote());
     applyLimits();

@@ -46,36 +46,55 @@ MotionBlockBox::MotionBlockBox(QWidget *parent)
     setVisible(false);
 }
 
-void MotionBlockBox::setAxis(motion::AxisInterface *axis)
+void MotionBlockBox::setAxis(motion::MotionAxis *axis)
 {
-    delete m_reply; // a block of the previous axis: its end no longer matters here
-    m_axis = axis;
+    m_command.reset();
     m_result->clear();
+    m_result->setStyleSheet({});
     m_run->setEnabled(true);
-    setVisible(axis && (axis->features() & motion::AxisInterface::Feature::MotionBlocks));
+    const bool offered =
+        axis && (axis->axis()->features() & motion::AxisInterface::Feature::MotionBlocks);
+    setVisible(offered);
+    if (!offered)
+        return;
+    m_command = std::make_unique<motion::MotionCommand>(axis, motion::CommandKind::MotionBlock);
+    connect(m_command.get(), &motion::MotionCommand::statusChanged, this,
+            [this](motion::MotionCommand::Status s) {
+                using Status = motion::MotionCommand::Status;
+                const int block = m_command->latched().block;
+                m_run->setEnabled(s != Status::Busy && s != Status::Active);
+                m_result->setStyleSheet({});
+                switch (s) {
+                case Status::Busy:
+                case Status::Active:
+                    m_result->setText(tr("Block %1 running").arg(block));
+                    return;
+                case Status::Done:
+                    m_result->setText(tr("Block %1 done").arg(block));
+                    return;
+                case Status::CommandAborted:
+                case Status::Error:
+                    m_result->setText(m_command->error().message());
+                    m_result->setStyleSheet(
+                        QStringLiteral("color: %1").arg(style::errorColor().name()));
+                    return;
+                case Status::Idle:
+                    return;
+                }
+            });
 }
 
 void MotionBlockBox::run()
 {
-    if (!m_axis || m_reply)
+    if (!m_command)
         return;
-    const int block = m_block->value();
-    m_reply = m_axis->startMotionBlock(block, m_sequence->isChecked(), m_resume->isChecked());
-    m_run->setEnabled(false);
-    m_result->setText(tr("Block %1 running").arg(block));
-    m_result->setStyleSheet({});
-    Reply *r = m_reply;
-    connect(r, &Reply::finished, this, [this, r, block] {
-        r->deleteLater();
-        m_reply = nullptr;
-        m_run->setEnabled(true);
-        if (r->ok()) {
-            m_result->setText(tr("Block %1 done").arg(block));
-            return;
-        }
-        m_result->setText(r->error().message());
-        m_result->setStyleSheet(QStringLiteral("color: %1").arg(style::errorColor().name()));
-    });
+    motion::MoveParams p;
+    p.block = m_block->value();
+    p.sequence = m_sequence->isChecked();
+    p.resume = m_resume->isChecked();
+    m_command->setParams(p);
+    m_command->setExecute(false);
+    m_command->setExecute(true);
 }
 
 } // namespace db::widgets

@@ -1,9 +1,11 @@
 #pragma once
 
-#include "motion/axisinterface.h"
+#include "motion/motionaxis.h"
+#include "motion/motioncommand.h"
 
 #include <QGroupBox>
-#include <QPointer>
+
+#include <memory>
 
 class QCheckBox;
 class QLabel;
@@ -12,25 +14,24 @@ class QSpinBox;
 
 namespace db::widgets {
 
-// Runs a motion block of the drive's own table (AxisInterface::startMotionBlock): block number,
-// single block or the sequence it starts, resume; says how it ended. Hidden unless the axis
-// offers motion blocks. Esc and the panel's stop buttons stop it like any motion (quick stop).
+// Runs a motion block of the drive's own table (the command model's MotionBlock command): block
+// number, single block or the sequence it starts, resume; shows the command's state and how it
+// ended. Hidden unless the axis offers motion blocks. Esc stops it like any motion.
 class MotionBlockBox : public QGroupBox
 {
     Q_OBJECT
 public:
     explicit MotionBlockBox(QWidget *parent = nullptr);
 
-    // May be null; not owned.
-    void setAxis(motion::AxisInterface *axis);
-    bool isRunning() const { return m_reply != nullptr; }
+    // May be null; not owned (it must outlive this box or be replaced first).
+    void setAxis(motion::MotionAxis *axis);
+    bool isRunning() const { return m_command && m_command->isBusy(); }
 
 public Q_SLOTS:
     void run();
 
 private:
-    QPointer<motion::AxisInterface> m_axis;
-    QPointer<Reply> m_reply;
+    std::unique_ptr<motion::MotionCommand> m_command;
     QSpinBox *m_block = nullptr;
     QCheckBox *m_sequence = nullptr;
     QCheckBox *m_resume = nullptr;

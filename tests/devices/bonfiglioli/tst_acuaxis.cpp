@@ -249,6 +249,30 @@ private Q_SLOTS:
         QCOMPARE(m_acu->motion().position(), 5000.0);
     }
 
+    // Table travel through the command model: Busy until the block ended, then Done; refused
+    // while the axis moves in another mode.
+    void motionBlockCommand()
+    {
+        QVERIFY(power(true));
+        MotionCommand block(m_model.get(), CommandKind::MotionBlock);
+        MoveParams p;
+        p.block = 3; // relative 2000 u
+        block.setParams(p);
+        block.setExecute(true);
+        QVERIFY(block.isBusy());
+        QTRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Done, 10000);
+        QCOMPARE(m_acu->motion().position(), 2000.0);
+        QCOMPARE(m_model->state(), AxisState::Standstill);
+        MotionCommand velocity(m_model.get(), CommandKind::MoveVelocity);
+        velocity.setParams(params(0, 3000));
+        velocity.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
+        block.setExecute(false);
+        block.setExecute(true);
+        QTRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Error, 3000);
+        QCOMPARE(block.refusal(), Refusal::NotAtStandstill);
+    }
+
     void moveAwayFromLimitSwitch()
     {
         QVERIFY(power(true));
