@@ -324,7 +324,7 @@ void AcuAxis::requireEnabled(AcuSteps *steps) const
                        Tr::tr("the inverter is not in 'operation enabled': enable it first"));
 }
 
-Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode) const
+Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode)
 {
     if (m_mode == mode)
         return {};
@@ -332,7 +332,7 @@ Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode) const
         return Error(Error::Kind::Busy, Tr::tr("refused: mode change while moving"));
     // 1454 changes only in "switched on" (0x0007): the inverter is safe there. The axis's own
     // pass through it does not count as the power stage going off.
-    auto *self = const_cast<AcuAxis *>(this);
+    AcuAxis *self = this;
     steps->call([self] {
         self->m_modeChanging = true;
         return Result<void>();

@@ -106,7 +106,7 @@ private:
     Reply *run(AcuSteps *steps);
     // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
     // when the change is refused.
-    Result<void> addModeChange(AcuSteps *steps, Mode mode) const;
+    Result<void> addModeChange(AcuSteps *steps, Mode mode);
     // A step that fails unless the inverter is in "operation enabled" (411 read then).
     void requireEnabled(AcuSteps *steps) const;
 
