@@ -21,7 +21,7 @@ using motion::AxisInterface;
 
 namespace {
 
-// Parameters (VABus/TCP manual, chapters 10-12).
+// Parameters of the ACTIVE Cube used here.
 constexpr quint16 kConfiguration = 30;
 constexpr quint16 kActualSpeedRpm = 240;
 constexpr quint16 kCurrentFault = 260;

@@ -99,7 +99,7 @@ qint16 AcuMotion::mode() const
     return qint16(qint8(int(param(kMode, 0)) & 0xFF));
 }
 
-// n [rpm] -> v [u/s] = n x (1115 / 60) x (1116 / 1117) (14.6.6).
+// n [rpm] -> v [u/s] = n x (1115 / 60) x (1116 / 1117).
 double AcuMotion::uPerRpm() const
 {
     return param(kFeed, 1) / 60.0 * param(kGearShaft, 1) / std::max(1.0, param(kGearMotor, 1));
@@ -264,7 +264,7 @@ quint16 AcuMotion::writeControlWord(quint16 word)
     return 0;
 }
 
-// The mode-specific bits in "operation enabled" (5.9).
+// The mode-specific bits, taken in "operation enabled".
 void AcuMotion::modeEdges(quint16 old, quint16 word)
 {
     switch (mode()) {

@@ -7,8 +7,8 @@
 // the inputs 250 are written into the store's images (no EEPROM write). Electronic gear (-3) is
 // not simulated: 1454 = 253 is taken, and the axis then stands.
 //
-// State values reproduce the manual's sequences: 0x0050, 0x0031, 0x0033, 0x0237 (bit 9 remote
-// is set while operation is enabled under 412 = 1; bit 4 follows the mains).
+// Status values as the inverter gives them in its sequences: 0x0050, 0x0031, 0x0033, 0x0237 (bit 9
+// remote is set while operation is enabled under 412 = 1; bit 4 follows the mains).
 
 #include "acuindexed.h"
 #include "acustore.h"

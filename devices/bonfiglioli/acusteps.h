@@ -29,7 +29,7 @@ class AcuSteps : public QObject
     Q_OBJECT
 public:
     static constexpr int kStatusReadMs = 10; // between two 411 reads while waiting
-    static constexpr quint8 kRamDataSet = 5; // data set 0 in RAM (8.1)
+    static constexpr quint8 kRamDataSet = 5; // data set 0 in RAM
 
     AcuSteps(AcuAxis *axis, const QString &name);
 

@@ -343,7 +343,7 @@ private Q_SLOTS:
     }
 
     // The state machine's sequences (412 = 1, positioning configuration 240): each command
-    // gives the manual's status value; 0x000F straight from "switch on disabled" (4') is only
+    // gives the inverter's status value; 0x000F straight from "switch on disabled" (4') is only
     // for configurations without positioning control.
     void stateMachineSequence()
     {
