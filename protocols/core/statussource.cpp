@@ -19,6 +19,11 @@ StatusSource::StatusSource(DeviceConnection *connection, QObject *parent)
 
 StatusSource::~StatusSource() = default;
 
+DeviceConnection *StatusSource::connection() const
+{
+    return m_connection;
+}
+
 void StatusSource::acquire()
 {
     if (++m_users == 1)

@@ -82,7 +82,7 @@ public:
     explicit StatusSource(DeviceConnection *connection, QObject *parent = nullptr);
     ~StatusSource() override;
 
-    DeviceConnection *connection() const { return m_connection; }
+    DeviceConnection *connection() const;
 
     // ---- polling ----
     // Users that want fresh values hold the source; it polls while the count is above zero.
