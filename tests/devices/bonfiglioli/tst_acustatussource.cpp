@@ -9,6 +9,7 @@
 #include "vabus/vabusclient.h"
 #include "vabus/vabusconnection.h"
 
+#include <QSignalSpy>
 #include <QtTest>
 
 #include <memory>
@@ -152,6 +153,37 @@ private Q_SLOTS:
         QTRY_VERIFY(m_requests.size() >= before + 5);
         QCOMPARE(m_requests.last().first, quint16(411));
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    // The inverter is switched off and on: the link drops, the port refuses connections while
+    // it starts, the connection tries again until it is back, and the block is defined anew.
+    void reconnectsAfterPowerCycle()
+    {
+        m_connection->setRetryAfterLoss(5000, 50);
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        QSignalSpy states(m_connection.get(), &DeviceConnection::stateChanged);
+        m_acu->restart(400);
+        QTRY_VERIFY(!m_connection->isConnected());
+        QTRY_VERIFY(m_connection->isRetryScheduled() || m_connection->isConnected());
+        QTRY_VERIFY_WITH_TIMEOUT(m_connection->isConnected(), 5000);
+        // At least one attempt was refused while the module started.
+        QVERIFY(
+            states.count(QVariantList { QVariant::fromValue(DeviceConnection::State::Connecting) })
+            >= 2);
+        QTRY_COMPARE(m_source->blockDefinitions(), 2);
+        QTRY_VERIFY(m_source->isFresh({ 411, 0 }));
+        QVERIFY(!m_connection->isRetryScheduled());
+    }
+
+    void noRetryAfterOwnCloseOrFailedFirstOpen()
+    {
+        m_connection->close();
+        QTRY_VERIFY(!m_connection->isConnected());
+        QVERIFY(!m_connection->isRetryScheduled());
+        m_acu->server().close();
+        QVERIFY(!m_connection->openAndWait(2000).ok());
+        QVERIFY(!m_connection->isRetryScheduled());
     }
 
 private:
