@@ -6,6 +6,7 @@
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/scope/scopepage.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QSettings>
 #include <QTabWidget>
@@ -96,6 +97,12 @@ private Q_SLOTS:
         MainWindow window(app::protocolRegistry());
         window.resize(1366, 768);
         window.show();
+        // The page in question gets the room: no log or motion docks in these pictures.
+        for (QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+            const Qt::DockWidgetArea area = window.dockWidgetArea(dock);
+            if (area == Qt::BottomDockWidgetArea || area == Qt::RightDockWidgetArea)
+                dock->hide();
+        }
         QVERIFY(window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port())));
         widgets::DriveStatusPanel *panel = window.statusPanel();
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isStale(ObjectAddress(411, 0)), 10000);
@@ -103,7 +110,7 @@ private Q_SLOTS:
         QVERIFY(window.grab().save(dir + QStringLiteral("/acu-status.png")));
 
         window.pages()->setCurrentWidget(window.odEditor());
-        window.odEditor()->setFilterText(QStringLiteral("frequency"));
+        window.odEditor()->setFilterText(QStringLiteral("fixed frequency"));
         QTest::qWait(1500);
         QVERIFY(window.grab().save(dir + QStringLiteral("/acu-editor.png")));
 

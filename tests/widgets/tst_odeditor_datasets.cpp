@@ -9,7 +9,9 @@
 #include "widgets/odeditor/odeditormodel.h"
 
 #include <QCheckBox>
+#include <QHeaderView>
 #include <QTest>
+#include <QTreeView>
 
 #include <memory>
 
@@ -98,6 +100,15 @@ private Q_SLOTS:
         // of the data sets differ" when they differ).
         QVERIFY(!model->addresses().contains(kFixedFrequency2));
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
+
+        // On screen the data sets stand right of DS 0; a parameter list has no PDO column.
+        QHeaderView *header = editor.view()->header();
+        QCOMPARE(header->visualIndex(OdEditorModel::DataSet1),
+                 header->visualIndex(OdEditorModel::Value) + 1);
+        QVERIFY(header->isSectionHidden(OdEditorModel::Pdo));
+        editor.setConnection(nullptr);
+        QCOMPARE(model->columnCount(), int(OdEditorModel::ColumnCount));
+        QVERIFY(!header->isSectionHidden(OdEditorModel::Pdo));
     }
 
     void editWritesTheDataSetToEeprom()

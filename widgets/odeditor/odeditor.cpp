@@ -319,9 +319,10 @@ bool OdEditor::writesToRam() const
 
 void OdEditor::arrangeColumns()
 {
+    QHeaderView *header = m_view->header();
+    header->setSectionHidden(OdEditorModel::Pdo, m_model->hasDataSetColumns()); // no PDOs there
     if (!m_model->hasDataSetColumns())
         return;
-    QHeaderView *header = m_view->header();
     const int ch = QFontMetrics(style::monospaceFont()).horizontalAdvance(QLatin1Char('0'));
     for (int k = 0; k < 4; ++k) {
         const int column = OdEditorModel::DataSet1 + k;
@@ -331,7 +332,6 @@ void OdEditor::arrangeColumns()
         m_view->setItemDelegateForColumn(column, m_delegate);
     }
     header->resizeSection(OdEditorModel::Value, ch * 16);
-    header->setSectionHidden(OdEditorModel::Pdo, true); // parameter lists have no PDOs
 }
 
 void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
