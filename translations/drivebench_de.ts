@@ -5338,6 +5338,10 @@ Letzter Fehler: %1</translation>
         <source>DS %1</source>
         <translation>DS %1</translation>
     </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParamCompareModel</name>

@@ -320,7 +320,10 @@ bool OdEditor::writesToRam() const
 void OdEditor::arrangeColumns()
 {
     QHeaderView *header = m_view->header();
-    header->setSectionHidden(OdEditorModel::Pdo, m_model->hasDataSetColumns()); // no PDOs there
+    // Parameter lists have no PDOs; their five value columns need the room of type and
+    // default (both stay in the details pane).
+    for (int column : { OdEditorModel::Pdo, OdEditorModel::Type, OdEditorModel::Default })
+        header->setSectionHidden(column, m_model->hasDataSetColumns());
     if (!m_model->hasDataSetColumns())
         return;
     const int ch = QFontMetrics(style::monospaceFont()).horizontalAdvance(QLatin1Char('0'));
@@ -328,10 +331,10 @@ void OdEditor::arrangeColumns()
         const int column = OdEditorModel::DataSet1 + k;
         header->moveSection(header->visualIndex(column),
                             header->visualIndex(OdEditorModel::Value) + 1 + k);
-        header->resizeSection(column, ch * 16);
+        header->resizeSection(column, ch * 12);
         m_view->setItemDelegateForColumn(column, m_delegate);
     }
-    header->resizeSection(OdEditorModel::Value, ch * 16);
+    header->resizeSection(OdEditorModel::Value, ch * 12);
 }
 
 void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)

@@ -365,7 +365,7 @@ QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int
         return {};
     switch (section) {
     case Address:
-        return tr("Index:Sub");
+        return m_dataSetColumns ? tr("Parameter") : tr("Index:Sub");
     case Name:
         return tr("Name");
     case Type:
