@@ -1,14 +1,16 @@
 // Level 3: the ACTIVE Cube status source against the simulated ACU over loopback TCP: one block
 // telegram per poll cycle, the block defined again after an inverter reset and after every
 // reconnect, the state, fault, warnings and actual values as the drive reports them, and no
-// EEPROM write from polling or the keep-alive.
+// EEPROM write from status polling, scope polling or the keep-alive.
 
 #include "devices/bonfiglioli/acudescription.h"
 #include "devices/bonfiglioli/acustatussource.h"
 #include "devices/bonfiglioli/simulatedacu.h"
+#include "scope/pollingsource.h"
 #include "vabus/vabusclient.h"
 #include "vabus/vabusconnection.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -152,6 +154,21 @@ private Q_SLOTS:
         const qsizetype before = m_requests.size();
         QTRY_VERIFY(m_requests.size() >= before + 5);
         QCOMPARE(m_requests.last().first, quint16(411));
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    // The scope's host polling of actual values (stator frequency, RMS current) only reads.
+    void scopePollingNeverWritesEeprom()
+    {
+        scope::PollingSource polling(m_connection.get());
+        QVERIFY(polling.addChannel({ 210, 0 }, 0).ok());
+        QVERIFY(polling.addChannel({ 211, 0 }, 0).ok());
+        QElapsedTimer timeBase;
+        timeBase.start();
+        polling.start(timeBase);
+        QTRY_VERIFY(polling.deliveredCount() >= 200);
+        polling.stop();
+        QCOMPARE(polling.failedCount(), qint64(0));
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
     }
 
