@@ -179,7 +179,7 @@ void MainWindow::createDocks()
     });
     log->raise();
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
-    m_objectAccess->setMinimumWidth(320);
+    m_objectAccess->setMinimumWidth(280);
     m_log->setMinimumHeight(100);
     // Initial proportions; restoreState() replaces them once the user has arranged the docks.
     resizeDocks({ devices, nodes, access }, { 160, 150, 300 }, Qt::Vertical);

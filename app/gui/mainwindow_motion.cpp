@@ -2,14 +2,13 @@
 #include "mainwindow.h"
 
 #include "widgets/common/logconsole.h"
+#include "widgets/common/verticalscrollarea.h"
 #include "widgets/motion/jogpanel.h"
 
 #include <QApplication>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QKeyEvent>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QTimer>
 
 namespace db::gui {
@@ -54,13 +53,7 @@ void MainWindow::createMotionDock()
 {
     m_jogPanel = new widgets::JogPanel(this);
     m_jogPanel->setObjectName(QStringLiteral("jogPanel"));
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidget(m_jogPanel);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(m_jogPanel->minimumSizeHint().width()
-                            + scroll->verticalScrollBar()->sizeHint().width());
+    auto *scroll = new widgets::VerticalScrollArea(m_jogPanel, this);
     auto *dock = new QDockWidget(tr("Motion"), this);
     dock->setObjectName(QStringLiteral("motionDock")); // for saveState()/restoreState()
     dock->setWidget(scroll);

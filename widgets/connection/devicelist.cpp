@@ -1,8 +1,9 @@
 #include "devicelist.h"
 
+#include "widgets/common/flowlayout.h"
+
 #include "widgets/common/widgetstyle.h"
 
-#include <QHBoxLayout>
 #include <QListWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -44,13 +45,12 @@ DeviceList::DeviceList(QWidget *parent)
     m_list->setIconSize(QSize(16, 16));
     m_list->setUniformItemSizes(true);
 
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = new FlowLayout; // wraps when the dock is narrow (long translations)
     buttons->setSpacing(4);
     buttons->addWidget(m_addButton);
     buttons->addWidget(m_connectButton);
     buttons->addWidget(m_disconnectButton);
     buttons->addWidget(m_removeButton);
-    buttons->addStretch();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);

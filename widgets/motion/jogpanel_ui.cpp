@@ -2,6 +2,7 @@
 #include "jogpanel.h"
 
 #include "motionform.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/lamp.h"
 #include "widgets/common/widgetstyle.h"
 
@@ -69,7 +70,7 @@ void JogPanel::buildUi()
     QFont bold = m_state->font();
     bold.setBold(true);
     m_state->setFont(bold);
-    auto *powerRow = new QHBoxLayout;
+    auto *powerRow = new FlowLayout; // Fault reset wraps below in a narrow dock
     powerRow->addWidget(m_enableButton);
     powerRow->addWidget(m_disableButton);
     powerRow->addWidget(m_resetButton);

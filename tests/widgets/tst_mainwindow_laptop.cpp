@@ -1,0 +1,127 @@
+// The main window on a 1366x768 laptop screen, in English and German, with the demo drive
+// connected over RefGo and CANopen: its minimum size fits, and the controls that stop or move the
+// drive are inside the window, not cut off at its right edge.
+#include "common/demodrive.h"
+#include "common/protocols.h"
+#include "mainwindow.h"
+#include "translations/language.h"
+#include "widgets/connection/drivestatuspanel.h"
+#include "widgets/motion/jogpanel.h"
+
+#include <QAbstractScrollArea>
+#include <QApplication>
+#include <QDockWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace db;
+using db::gui::MainWindow;
+
+namespace {
+constexpr int kLaptopWidth = 1366;
+constexpr int kLaptopHeight = 768;
+// A desktop's title bar and panel take some of the 768 rows.
+constexpr int kUsableHeight = 740;
+
+QString layoutReport(const MainWindow &window)
+{
+    QString parts;
+    for (const QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+        if (dock->isVisible())
+            parts += QStringLiteral(" %1=%2x%3")
+                         .arg(dock->objectName())
+                         .arg(dock->minimumSizeHint().width())
+                         .arg(dock->minimumSizeHint().height());
+    }
+    for (int i = 0; i < window.pages()->count(); ++i)
+        parts += QStringLiteral(" '%1'=%2x%3")
+                     .arg(window.pages()->tabText(i))
+                     .arg(window.pages()->widget(i)->minimumSizeHint().width())
+                     .arg(window.pages()->widget(i)->minimumSizeHint().height());
+    return parts;
+}
+} // namespace
+
+class TestMainWindowLaptop : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_settingsDir;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    }
+
+    void cleanup() { i18n::installTranslations(*qApp, QStringLiteral("en")); }
+
+    void fitsWithTheDemoConnected_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("de") << QStringLiteral("de");
+    }
+
+    void fitsWithTheDemoConnected()
+    {
+        QFETCH(QString, language);
+        QVERIFY(i18n::installTranslations(*qApp, language));
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        QVERIFY(demo.startSlcan(0).ok());
+
+        MainWindow window(app::protocolRegistry());
+        window.resize(kLaptopWidth, kUsableHeight);
+        window.show();
+        QVERIFY(window.openConnection(demo.refgoUri()).ok());
+        auto canopen = window.openConnection(demo.slcanUri());
+        QVERIFY(canopen.ok());
+        // The values and limits of the drive are shown (they change the widths of labels).
+        QTRY_VERIFY_WITH_TIMEOUT(!window.statusPanel()->isStale(ObjectAddress(0x6041, 0)), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.jogPanel()->limitsKnown(), 10000);
+
+        const QSize min = window.minimumSizeHint().expandedTo(window.minimumSize());
+        QVERIFY2(min.width() <= kLaptopWidth && min.height() <= kUsableHeight,
+                 qPrintable(QStringLiteral("%1: window needs %2x%3:%4")
+                                .arg(language)
+                                .arg(min.width())
+                                .arg(min.height())
+                                .arg(layoutReport(window))));
+        QVERIFY(window.width() <= kLaptopWidth && window.height() <= kLaptopHeight);
+
+        // Every button of the Motion dock lies inside the window and inside the viewport of its
+        // scroll area horizontally (vertical scrolling is fine, cut-off columns are not).
+        auto *dock = window.findChild<QDockWidget *>(QStringLiteral("motionDock"));
+        QVERIFY(dock && dock->isVisible());
+        auto *scroll = qobject_cast<QAbstractScrollArea *>(dock->widget());
+        QVERIFY(scroll);
+        const QStringList required = { QStringLiteral("enable"),    QStringLiteral("disable"),
+                                       QStringLiteral("reset"),     QStringLiteral("jogPlus"),
+                                       QStringLiteral("jogMinus"),  QStringLiteral("stepPlus"),
+                                       QStringLiteral("stepMinus"), QStringLiteral("halt"),
+                                       QStringLiteral("stop"),      QStringLiteral("execute") };
+        for (const QString &name : required) {
+            auto *button = window.jogPanel()->findChild<QPushButton *>(name);
+            QVERIFY2(button, qPrintable(name));
+            QVERIFY2(button->isVisible(), qPrintable(name));
+            const QRect inViewport(button->mapTo(scroll->viewport(), QPoint(0, 0)), button->size());
+            const QRect inWindow(button->mapTo(&window, QPoint(0, 0)), button->size());
+            QVERIFY2(inViewport.left() >= 0 && inViewport.right() < scroll->viewport()->width()
+                         && inWindow.right() < window.width(),
+                     qPrintable(QStringLiteral("%1: '%2' at x %3..%4, viewport %5 wide")
+                                    .arg(language, button->text())
+                                    .arg(inViewport.left())
+                                    .arg(inViewport.right())
+                                    .arg(scroll->viewport()->width())));
+        }
+    }
+};
+
+QTEST_MAIN(TestMainWindowLaptop)
+#include "tst_mainwindow_laptop.moc"
