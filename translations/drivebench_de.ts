@@ -2716,6 +2716,74 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>NM17x Line</source>
         <translation>NM17x-Linie</translation>
     </message>
+    <message>
+        <source>Reset &amp;Layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>Enable</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <source>Switch the current drive&apos;s power stage on (as in the Motion dock)</source>
+        <translation>Die Endstufe des aktuellen Antriebs einschalten (wie im Bewegungs-Dock)</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Stop in the toolbar</source>
+        <translation>Stopp in der Werkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Quick stop of any motion (Esc)</source>
+        <translation>Schnellhalt jeder Bewegung (Esc)</translation>
+    </message>
+    <message>
+        <source>Start Scope</source>
+        <translation>Oszilloskop starten</translation>
+    </message>
+    <message>
+        <source>Start or stop the scope&apos;s recording (Space or F5 on the Scope page)</source>
+        <translation>Aufzeichnung des Oszilloskops starten oder stoppen (Leertaste oder F5 auf der Seite Oszilloskop)</translation>
+    </message>
+    <message>
+        <source>Stop Scope</source>
+        <translation>Oszilloskop stoppen</translation>
+    </message>
+    <message>
+        <source>No device connected</source>
+        <translation>Kein Gerät verbunden</translation>
+    </message>
+    <message>
+        <source>Connect to a drive over RefGo, VABus or CANopen, or try drivebench on a simulated drive.</source>
+        <translation>Verbinden Sie sich über RefGo, VABus oder CANopen mit einem Antrieb, oder probieren Sie drivebench an einem simulierten Antrieb aus.</translation>
+    </message>
+    <message>
+        <source>Connect…</source>
+        <translation>Verbinden…</translation>
+    </message>
+    <message>
+        <source>Start the Demo</source>
+        <translation>Demo starten</translation>
+    </message>
+    <message>
+        <source>A simulated MovingCap drive in this program, connected over RefGo and CANopen</source>
+        <translation>Ein simulierter MovingCap-Antrieb in diesem Programm, verbunden über RefGo und CANopen</translation>
+    </message>
+    <message>
+        <source>Recent connections:</source>
+        <translation>Letzte Verbindungen:</translation>
+    </message>
+    <message>
+        <source>Connect to %1</source>
+        <translation>Mit %1 verbinden</translation>
+    </message>
 </context>
 <context>
     <name>db::morse</name>
@@ -6319,6 +6387,10 @@ Change it?</source>
     <message>
         <source>Demo NM17x displays (nodes 2, 3, 4) at canopen+slcan://127.0.0.1:%1?node=2</source>
         <translation>Demo-NM17x-Anzeigen (Knoten 2, 3, 4) unter canopen+slcan://127.0.0.1:%1?node=2</translation>
+    </message>
+    <message>
+        <source>Cannot start the demo drive: %1</source>
+        <translation>Der Demo-Antrieb kann nicht gestartet werden: %1</translation>
     </message>
 </context>
 <context>

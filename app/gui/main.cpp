@@ -64,12 +64,23 @@ int main(int argc, char *argv[])
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
 
-    if (parser.isSet(demoOption)) {
+    // The demo: from --demo or the welcome page's button. A second start reconnects to the
+    // drive that already runs.
+    const auto startDemo = [&]() -> bool {
+        if (demo) {
+            window.openConnection(demo->refgoUri());
+            if (demo->slcanPort() != 0)
+                window.openConnection(demo->slcanUri());
+            return true;
+        }
         demo = std::make_unique<db::app::DemoDrive>();
         if (auto started = demo->startRefgo(0); !started) {
-            std::fprintf(stderr, "drivebench: cannot start the demo drive: %s\n",
-                         qPrintable(started.error().toString()));
-            return 1;
+            const QString text = QApplication::translate("main", "Cannot start the demo drive: %1")
+                                     .arg(started.error().toString());
+            std::fprintf(stderr, "drivebench: %s\n", qPrintable(text));
+            window.logConsole()->error(text);
+            demo.reset();
+            return false;
         }
         window.logConsole()->info(
             QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
@@ -96,7 +107,11 @@ int main(int argc, char *argv[])
                                         "Demo NM17x displays (nodes 2, 3, 4) at "
                                         "canopen+slcan://127.0.0.1:%1?node=2")
                     .arg(displays->slcanPort()));
-    }
+        return true;
+    };
+    window.setDemoStarter([&startDemo] { startDemo(); });
+    if (parser.isSet(demoOption) && !startDemo())
+        return 1;
     if (parser.isSet(connectOption)) {
         if (auto opened = window.openConnection(parser.value(connectOption)); !opened) {
             std::fprintf(stderr, "drivebench: %s\n", qPrintable(opened.error().toString()));

@@ -26,6 +26,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
@@ -84,13 +85,17 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     statusPage->setWidgetResizable(true);
     statusPage->setFrameShape(QFrame::NoFrame);
     m_pages->addTab(statusPage, tr("Drive Status"));
-    setCentralWidget(m_pages);
+    m_central = new QStackedWidget(this);
+    m_central->addWidget(m_pages);
+    setCentralWidget(m_central);
     createDocks();
     createMenus();
     createParameterPages();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
+    createToolBar();
+    createWelcome();
     statusBar()->addPermanentWidget(m_connectionState);
 
     connect(m_deviceList, &widgets::DeviceList::currentConnectionChanged, this,
@@ -112,8 +117,10 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     if (const QScreen *screen = QGuiApplication::primaryScreen())
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
+    m_defaultLayout = saveState();
     loadSettings();
     updateStatusBar();
+    updateWelcome();
 }
 
 MainWindow::~MainWindow()
@@ -189,8 +196,9 @@ void MainWindow::createDocks()
 void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::showConnectDialog);
-    connectAction->setShortcut(QKeySequence::Open);
+    m_connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::showConnectDialog);
+    m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    m_connectAction->setShortcut(QKeySequence::Open);
     m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -202,6 +210,9 @@ void MainWindow::createMenus()
     view->addSeparator();
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout)
+        ->setObjectName(QStringLiteral("resetLayoutAction"));
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *manual = help->addAction(tr("&User Manual"), this, &MainWindow::showManual);
@@ -237,6 +248,7 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
     m_deviceList->addConnection(connection.get());
     m_deviceList->setCurrentConnection(connection.get());
     m_log->info(tr("Connecting to %1").arg(connection->uri().toString()));
+    updateWelcome();
     connection->open();
     return connection.get();
 }
@@ -327,6 +339,7 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     // Deleted from the event loop, not inside the click that asked for it.
     QTimer::singleShot(0, this, [keep] {});
     updateStatusBar();
+    updateWelcome();
 }
 
 void MainWindow::showConnectDialog()

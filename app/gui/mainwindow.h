@@ -6,12 +6,15 @@
 #include <QPointer>
 #include <QSet>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 class QDialog;
 class QLabel;
+class QStackedWidget;
 class QTabWidget;
+class QToolBar;
 
 namespace db::canopen {
 class CanopenConnection;
@@ -85,6 +88,16 @@ public:
     // Connections written to since they were last stored permanently (the window title's "*").
     bool hasUnstoredWrites(const DeviceConnection *connection) const;
 
+    // mainwindow_layout.cpp. The toolbar: Connect, Disconnect, Enable, Stop (quick stop of any
+    // motion, like Esc) and the scope's Start/Stop (Space on the Scope page, F5 there).
+    QToolBar *mainToolBar() const { return m_toolBar; }
+    // Shown instead of the pages while no device is listed: Connect, the demo, recent
+    // connections.
+    QWidget *welcomePage() const { return m_welcome; }
+    // What "Start the demo" on the welcome page runs (the composition root starts the simulated
+    // drive and opens connections to it); without one the button is hidden.
+    void setDemoStarter(std::function<void()> start);
+
 public Q_SLOTS:
     void showConnectDialog();
     // The connection dialog with `uri` filled in (e.g. from the Morse panel).
@@ -93,12 +106,19 @@ public Q_SLOTS:
     void showAbout();
     // The README, built into the program, in a window of its own (Help → User Manual, F1).
     void showManual();
+    // View → Reset Layout: every dock back where it was at the first start, shown and docked.
+    void resetLayout();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
     void createDocks();
+    void createToolBar();
+    void createWelcome();
+    void updateWelcome();
+    // Starts or stops the scope's recording and shows the Scope page.
+    void toggleScope();
     void createMenus();
     void watch(DeviceConnection *connection);
     void setCurrent(DeviceConnection *connection);
@@ -141,7 +161,18 @@ private:
     QPointer<QDialog> m_manual; // made on first use
     QSet<const DeviceConnection *> m_unstored; // written, not stored permanently
     QTabWidget *m_pages = nullptr;
+    QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
+    QAction *m_enableAction = nullptr;
+    QAction *m_stopAction = nullptr;
+    QAction *m_scopeAction = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    QStackedWidget *m_central = nullptr; // the welcome page or the pages
+    QWidget *m_welcome = nullptr;
+    QWidget *m_recentBox = nullptr; // recent connections on the welcome page
+    QWidget *m_demoButton = nullptr;
+    std::function<void()> m_demoStarter;
+    QByteArray m_defaultLayout; // saveState() before the user's settings were restored
 };
 
 } // namespace db::gui

@@ -1,21 +1,27 @@
 // The main window on a 1366x768 laptop screen, in English and German, with the demo drive
 // connected over RefGo and CANopen: its minimum size fits, and the controls that stop or move the
-// drive are inside the window, not cut off at its right edge.
+// drive are inside the window, not cut off at its right edge. Also the toolbar, View → Reset
+// Layout and the welcome page shown while no device is listed.
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
 #include "mainwindow.h"
 #include "translations/language.h"
+#include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
+#include "widgets/scope/scopepage.h"
 
 #include <QAbstractScrollArea>
 #include <QApplication>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolBar>
 
 using namespace db;
 using db::gui::MainWindow;
@@ -120,6 +126,85 @@ private Q_SLOTS:
                                     .arg(inViewport.right())
                                     .arg(scroll->viewport()->width())));
         }
+    }
+
+    void welcomePageUntilADeviceIsListed()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto *central = qobject_cast<QStackedWidget *>(window.centralWidget());
+        QVERIFY(central);
+        QCOMPARE(central->currentWidget(), window.welcomePage());
+        auto *demoButton =
+            window.welcomePage()->findChild<QPushButton *>(QStringLiteral("welcomeDemo"));
+        QVERIFY(demoButton);
+        QVERIFY(!demoButton->isVisible()); // no demo without a starter
+        int started = 0;
+        window.setDemoStarter([&] {
+            ++started;
+            window.openConnection(demo.refgoUri());
+        });
+        QVERIFY(demoButton->isVisible());
+        QTest::mouseClick(demoButton, Qt::LeftButton);
+        QCOMPARE(started, 1);
+        QCOMPARE(central->currentWidget(), window.pages());
+        QTRY_VERIFY(window.currentConnection()->isConnected());
+
+        // Removing the last device brings the welcome page back.
+        QMetaObject::invokeMethod(window.deviceList(), "removeRequested",
+                                  Q_ARG(db::DeviceConnection *, window.currentConnection()));
+        QCOMPARE(central->currentWidget(), window.welcomePage());
+    }
+
+    void toolbarCommands()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        QToolBar *bar = window.mainToolBar();
+        QVERIFY(bar && bar->isVisible());
+        QStringList names;
+        for (QAction *a : bar->actions())
+            names << a->objectName();
+        for (const char *name : { "connectAction", "enableAction", "stopAction", "scopeAction" })
+            QVERIFY2(names.contains(QLatin1String(name)), name);
+        auto *enable = bar->findChild<QAction *>(QStringLiteral("enableAction"));
+        if (!enable)
+            enable = window.findChild<QAction *>(QStringLiteral("enableAction"));
+        QVERIFY(enable);
+        QVERIFY(!enable->isEnabled()); // no drive
+
+        QVERIFY(window.openConnection(demo.refgoUri()).ok());
+        QTRY_VERIFY_WITH_TIMEOUT(enable->isEnabled(), 10000);
+        enable->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(demo.drive().state(), cia402::State::OperationEnabled, 10000);
+
+        // The scope's Start/Stop shows the Scope page; without channels it says what is missing.
+        auto *scope = window.findChild<QAction *>(QStringLiteral("scopeAction"));
+        QVERIFY(scope);
+        scope->trigger();
+        QCOMPARE(window.pages()->currentWidget(), static_cast<QWidget *>(window.scopePage()));
+    }
+
+    void resetLayoutBringsEveryDockBack()
+    {
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto *motion = window.findChild<QDockWidget *>(QStringLiteral("motionDock"));
+        auto *log = window.findChild<QDockWidget *>(QStringLiteral("logDock"));
+        QVERIFY(motion && log);
+        motion->close();
+        log->setFloating(true);
+        window.mainToolBar()->hide();
+        QVERIFY(!motion->isVisible());
+        window.resetLayout();
+        QVERIFY(motion->isVisible());
+        QVERIFY(!log->isFloating());
+        QVERIFY(window.mainToolBar()->isVisible());
+        QCOMPARE(window.dockWidgetArea(motion), Qt::RightDockWidgetArea);
     }
 };
 
