@@ -1505,6 +1505,49 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::ConnectionHealth</name>
+    <message>
+        <source>the link to %1 closed</source>
+        <translation>die Verbindung zu %1 wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>connecting…</source>
+        <translation>verbinde…</translation>
+    </message>
+    <message>
+        <source>waiting for the device to answer</source>
+        <translation>warte auf Antwort des Geräts</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>not responding</source>
+        <translation>antwortet nicht</translation>
+    </message>
+    <message>
+        <source>connection failed</source>
+        <translation>Verbindung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>connection lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>disconnected by you</source>
+        <translation>von Ihnen getrennt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
     <name>db::Error</name>
     <message>
         <source>ok</source>
@@ -2783,6 +2826,38 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Connect to %1</source>
         <translation>Mit %1 verbinden</translation>
+    </message>
+    <message>
+        <source>%1 is already in the device list; it was not connected a second time</source>
+        <translation>%1 ist bereits in der Geräteliste; es wurde kein zweites Mal verbunden</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the link is up, waiting for the device to answer.</source>
+        <translation>%1: die Verbindung steht, warte auf Antwort des Geräts.</translation>
+    </message>
+    <message>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <source>The values shown are from %1 and may be out of date.</source>
+        <translation>Die angezeigten Werte stammen von %1 und sind möglicherweise veraltet.</translation>
+    </message>
+    <message>
+        <source>%1: disconnected by you.</source>
+        <translation>%1: von Ihnen getrennt.</translation>
+    </message>
+    <message>
+        <source>The drive at %1 is enabled. Closing the connection leaves it enabled (it stops by its own supervision only if that is set up). Close the connection anyway?</source>
+        <translation>Der Antrieb unter %1 ist freigegeben. Das Schließen der Verbindung lässt ihn freigegeben (er hält nur durch seine eigene Überwachung an, wenn diese eingerichtet ist). Verbindung trotzdem schließen?</translation>
+    </message>
+    <message>
+        <source>Drive enabled</source>
+        <translation>Antrieb freigegeben</translation>
     </message>
 </context>
 <context>
@@ -4362,6 +4437,14 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Position window: %1 %2</source>
         <translation>Positionsfenster: %1 %2</translation>
+    </message>
+    <message>
+        <source>The drive did not answer: its limits are not known yet.</source>
+        <translation>Der Antrieb hat nicht geantwortet: seine Grenzen sind noch nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Not responding</source>
+        <translation>Antwortet nicht</translation>
     </message>
 </context>
 <context>

@@ -64,13 +64,14 @@ int main(int argc, char *argv[])
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
 
+    using Remember = db::gui::MainWindow::Remember; // the demo is never a recent connection
     // The demo: from --demo or the welcome page's button. A second start reconnects to the
     // drive that already runs.
     const auto startDemo = [&]() -> bool {
         if (demo) {
-            window.openConnection(demo->refgoUri());
+            window.openConnection(demo->refgoUri(), Remember::No);
             if (demo->slcanPort() != 0)
-                window.openConnection(demo->slcanUri());
+                window.openConnection(demo->slcanUri(), Remember::No);
             return true;
         }
         demo = std::make_unique<db::app::DemoDrive>();
@@ -84,7 +85,7 @@ int main(int argc, char *argv[])
         }
         window.logConsole()->info(
             QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
-        window.openConnection(demo->refgoUri());
+        window.openConnection(demo->refgoUri(), Remember::No);
         // The same drive as CANopen node 50 on its SLCAN door: the CAN monitor shows its traffic.
         if (auto slcan = demo->startSlcan(0); !slcan) {
             window.logConsole()->warning(
@@ -93,7 +94,7 @@ int main(int argc, char *argv[])
         } else {
             window.logConsole()->info(
                 QApplication::translate("main", "Demo drive CANopen at %1").arg(demo->slcanUri()));
-            window.openConnection(demo->slcanUri());
+            window.openConnection(demo->slcanUri(), Remember::No);
             window.showCanMonitor();
         }
         // A line of three NM17x displays on a bus of their own, for the NM17x Line dock.

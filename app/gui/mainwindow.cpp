@@ -2,6 +2,7 @@
 
 #include "cameralivesource.h"
 #include "canopen/canopenconnection.h"
+#include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/nodelist.h"
@@ -31,6 +32,7 @@
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
+#include <QVBoxLayout>
 
 namespace db::gui {
 
@@ -56,6 +58,7 @@ Result<widgets::MorseSource> loadMorseSource(const QString &path)
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kRecentKey = QStringLiteral("connections/recent");
+constexpr int kStatusMessageMs = 10000;
 } // namespace
 
 MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
@@ -72,6 +75,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
 {
     setWindowTitle(tr("drivebench"));
     setObjectName(QStringLiteral("MainWindow"));
+    m_connectionState->setObjectName(QStringLiteral("connectionState"));
 
     // The centre is a set of pages (drive status, object dictionary, scope, ...); docks around it.
     m_pages = new QTabWidget(this);
@@ -81,7 +85,12 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     m_pages->tabBar()->setChangeCurrentOnDrag(true);
     m_pages->tabBar()->setAcceptDrops(true);
     auto *statusPage = new QScrollArea(m_pages);
-    statusPage->setWidget(m_statusPanel);
+    auto *statusBox = new QWidget(statusPage);
+    auto *statusLayout = new QVBoxLayout(statusBox);
+    statusLayout->setContentsMargins(0, 0, 0, 0);
+    createHealthBanner(statusBox);
+    statusLayout->addWidget(m_statusPanel, 1);
+    statusPage->setWidget(statusBox);
     statusPage->setWidgetResizable(true);
     statusPage->setFrameShape(QFrame::NoFrame);
     m_pages->addTab(statusPage, tr("Drive Status"));
@@ -104,10 +113,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     connect(m_deviceList, &widgets::DeviceList::connectRequested, this,
             [](DeviceConnection *c) { c->open(); });
     connect(m_deviceList, &widgets::DeviceList::disconnectRequested, this,
-            [this](DeviceConnection *c) {
-                stopMotionBeforeClose(c);
-                c->close();
-            });
+            &MainWindow::closeByUser);
     connect(m_deviceList, &widgets::DeviceList::removeRequested, this,
             &MainWindow::removeConnection);
 
@@ -223,19 +229,35 @@ void MainWindow::createMenus()
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
-Result<DeviceConnection *> MainWindow::openConnection(const QString &uri)
+Result<DeviceConnection *> MainWindow::openConnection(const QString &uri, Remember remember)
 {
     auto plan = m_registry.prepare(uri);
     if (!plan) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, plan.error().toString()));
         return plan.error();
     }
-    return openConnection(plan.value());
+    return openConnection(plan.value(), remember);
 }
 
-Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan)
+Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan, Remember remember)
 {
     const QString uri = plan.uri.toString();
+    // Two connections to one device would fight over it (two pollers, two masters of its
+    // motion): the listed one is used instead.
+    for (const auto &c : m_connections) {
+        if (c->uri().toString() != uri)
+            continue;
+        m_deviceList->setCurrentConnection(c.get());
+        if (c->state() == DeviceConnection::State::Disconnected)
+            c->open();
+        const Error refused(Error::Kind::Busy,
+                            tr("%1 is already in the device list; it was not connected a second "
+                               "time")
+                                .arg(uri));
+        m_log->warning(refused.message());
+        statusBar()->showMessage(refused.message(), kStatusMessageMs);
+        return refused;
+    }
     auto created = m_registry.create(plan);
     if (!created) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, created.error().toString()));
@@ -243,7 +265,8 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
     }
     std::shared_ptr<DeviceConnection> connection = created.value();
     m_connections.push_back(connection);
-    m_recent = widgets::ConnectionDialog::withRecent(m_recent, connection->uri().toString());
+    if (remember == Remember::No)
+        m_forget.insert(connection.get());
     watch(connection.get());
     m_deviceList->addConnection(connection.get());
     m_deviceList->setCurrentConnection(connection.get());
@@ -255,6 +278,9 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
 
 void MainWindow::watch(DeviceConnection *connection)
 {
+    auto *health = new ConnectionHealth(connection);
+    connect(health, &ConnectionHealth::statusChanged, this,
+            [this, connection] { onHealthChanged(connection); });
     connect(connection, &DeviceConnection::objectWritten, this, [this, connection] {
         m_unstored.insert(connection);
         updateWindowTitle();
@@ -300,6 +326,7 @@ void MainWindow::setCurrent(DeviceConnection *connection)
     attachParameters(connection);
     attachCanopen(connection);
     updateStatusBar();
+    renderHealth();
 }
 
 void MainWindow::attachCanopen(DeviceConnection *connection)
@@ -328,12 +355,15 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     if (it == m_connections.end())
         return;
     std::shared_ptr<DeviceConnection> keep = *it;
+    if (!confirmClose({ connection }))
+        return;
     stopMotionBeforeClose(connection);
     m_connections.erase(it);
     if (connection == m_canopen)
         attachCanopen(nullptr);
     m_deviceList->removeConnection(connection);
     m_unstored.remove(connection);
+    m_forget.remove(connection);
     m_log->info(tr("Removed %1").arg(connection->uri().toString()));
     connection->close();
     // Deleted from the event loop, not inside the click that asked for it.
@@ -354,16 +384,14 @@ void MainWindow::showConnectDialogFor(const QString &uri)
         dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    m_recent = dialog.recentUris();
+    // The URI joins the recent connections once its device answered (onHealthChanged()).
     openConnection(dialog.plan());
 }
 
 void MainWindow::disconnectCurrent()
 {
-    if (DeviceConnection *c = currentConnection()) {
-        stopMotionBeforeClose(c);
-        c->close();
-    }
+    if (DeviceConnection *c = currentConnection())
+        closeByUser(c);
 }
 
 void MainWindow::showAbout()
@@ -380,10 +408,15 @@ void MainWindow::updateStatusBar()
 {
     DeviceConnection *c = currentConnection();
     const auto state = c ? c->state() : DeviceConnection::State::Disconnected;
-    m_connectionState->setText(c ? tr("%1 — %2").arg(c->uri().toString(), stateName(state))
-                                 : tr("No device"));
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    m_connectionState->setText(
+        c ? tr("%1 — %2").arg(c->uri().toString(),
+                              health ? health->description() : stateName(state))
+          : tr("No device"));
     widgets::style::setTextColor(m_connectionState,
-                                 c ? widgets::style::connectionStateColor(state) : QColor());
+                                 health  ? widgets::style::healthColor(health->status())
+                                     : c ? widgets::style::connectionStateColor(state)
+                                         : QColor());
     m_disconnectAction->setEnabled(c && state != DeviceConnection::State::Disconnected);
     updateWindowTitle();
 }
@@ -397,7 +430,11 @@ void MainWindow::updateWindowTitle()
 {
     // The platform appends the application's display name ("— drivebench").
     DeviceConnection *c = currentConnection();
-    setWindowTitle(c ? tr("%1 (%2)[*]").arg(c->uri().toString(), stateName(c->state()))
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    setWindowTitle(c ? tr("%1 (%2)[*]")
+                           .arg(c->uri().toString(),
+                                health ? ConnectionHealth::statusText(health->status())
+                                       : stateName(c->state()))
                      : tr("drivebench"));
     setWindowModified(c && m_unstored.contains(c));
 }
@@ -428,6 +465,10 @@ void MainWindow::closeAllConnections(int timeoutMs)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (!confirmClose(connections())) {
+        event->ignore();
+        return;
+    }
     saveSettings();
     closeAllConnections();
     event->accept();

@@ -53,13 +53,23 @@ public:
     explicit MainWindow(const ProtocolRegistry &registry, QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    // Whether a connection's URI joins the recent connections once its device answered (not for
+    // the demo's simulated drive).
+    enum class Remember { Yes, No };
     // Makes a connection for `uri`, lists it, makes it current and opens it (asynchronously).
-    // The error of an unusable URI is returned and logged.
-    Result<DeviceConnection *> openConnection(const QString &uri);
-    Result<DeviceConnection *> openConnection(const ConnectionPlan &plan);
+    // The error of an unusable URI is returned and logged; a URI that is already listed is
+    // refused (that entry becomes current and is reconnected when it is down).
+    Result<DeviceConnection *> openConnection(const QString &uri,
+                                              Remember remember = Remember::Yes);
+    Result<DeviceConnection *> openConnection(const ConnectionPlan &plan,
+                                              Remember remember = Remember::Yes);
     DeviceConnection *currentConnection() const;
     QList<DeviceConnection *> connections() const;
     QStringList recentConnections() const { return m_recent; }
+    // Asked before a connection with an enabled drive is closed (Disconnect, Remove, Quit): true
+    // closes it. The default asks with a message box; tests answer themselves.
+    using Confirmation = std::function<bool(const QString &question)>;
+    void setConfirmation(Confirmation confirm) { m_confirm = std::move(confirm); }
 
     // Closes every connection and waits (local event loop) up to timeoutMs for all of them to
     // reach Disconnected. Called when the window closes.
@@ -133,6 +143,14 @@ private:
     // window deactivation and before a connection is closed by the user.
     void createMotionDock();
     void stopMotionBeforeClose(DeviceConnection *connection);
+    // mainwindow_health.cpp: what the connection's ConnectionHealth says, in the status bar, on
+    // the Drive Status page, in the Motion dock and the log; the question before closing a
+    // connection whose drive is enabled.
+    void createHealthBanner(QWidget *statusPage);
+    void onHealthChanged(DeviceConnection *connection);
+    void renderHealth();
+    bool confirmClose(const QList<DeviceConnection *> &connections);
+    void closeByUser(DeviceConnection *connection);
     // mainwindow_params.cpp: editor and parameter-set pages, the Parameters menu.
     void createParameterPages();
     void attachParameters(DeviceConnection *connection);
@@ -173,6 +191,9 @@ private:
     QWidget *m_demoButton = nullptr;
     std::function<void()> m_demoStarter;
     QByteArray m_defaultLayout; // saveState() before the user's settings were restored
+    QLabel *m_healthBanner = nullptr; // on the Drive Status page: lost, failed, not responding
+    QSet<const DeviceConnection *> m_forget; // not to be remembered as recent (the demo)
+    Confirmation m_confirm;
 };
 
 } // namespace db::gui

@@ -89,6 +89,12 @@ void DeviceList::addConnection(DeviceConnection *connection)
             updateItem(i);
         updateActions();
     });
+    if (ConnectionHealth *health = ConnectionHealth::of(connection)) {
+        connect(health, &ConnectionHealth::statusChanged, this, [this, connection] {
+            if (QListWidgetItem *i = itemFor(connection))
+                updateItem(i);
+        });
+    }
     connect(connection, &QObject::destroyed, this, [this](QObject *object) {
         for (int row = 0; row < m_list->count(); ++row) {
             QListWidgetItem *i = m_list->item(row);
@@ -157,8 +163,10 @@ void DeviceList::updateItem(QListWidgetItem *item)
         return;
     const DeviceConnection::State state = c->state();
     item->setText(c->uri().toString());
-    item->setIcon(style::connectionStateIcon(state));
-    QString tip = tr("%1\nState: %2").arg(c->uri().toString(), stateName(state));
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    item->setIcon(health ? style::healthIcon(health->status()) : style::connectionStateIcon(state));
+    QString tip = tr("%1\nState: %2")
+                      .arg(c->uri().toString(), health ? health->description() : stateName(state));
     if (c->lastError().isError())
         tip += tr("\nLast error: %1").arg(c->lastError().toString());
     item->setToolTip(tip);

@@ -38,8 +38,15 @@ void JogPanel::readLimits(quint64 generation)
             r->deleteLater();
             if (r->ok())
                 values->insert(a, r->value());
-            if (--*pending == 0 && generation == m_generation)
-                applyLimits(*values);
+            if (--*pending != 0 || generation != m_generation)
+                return;
+            if (values->isEmpty()) {
+                // Nothing answered: no limits from a drive that never replied (the
+                // description's defaults are not the drive's values). Read again once it answers.
+                m_limits->setText(tr("The drive did not answer: its limits are not known yet."));
+                return;
+            }
+            applyLimits(*values);
         });
     }
 }
@@ -54,6 +61,16 @@ void JogPanel::applyLimits(const QHash<ObjectAddress, QVariant> &values)
     m_limitsKnown = true;
     m_form->setLimits(m_config, m_positionUnit, m_velocityUnit);
     renderLimits();
+}
+
+void JogPanel::setDeviceResponding(bool responding, const QString &why)
+{
+    const bool answeredAgain = responding && !m_responding;
+    m_responding = responding;
+    m_silentWhy = why;
+    if (answeredAgain && !m_limitsKnown && m_connection && m_connection->isConnected())
+        onInitialized(nullptr, m_generation);
+    render();
 }
 
 } // namespace db::widgets

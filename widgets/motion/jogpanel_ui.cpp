@@ -67,6 +67,7 @@ void JogPanel::buildUi()
     m_resetButton = button(tr("Fault reset"), QStringLiteral("reset"), powerBox);
     m_state = new QLabel(tr("No drive"), powerBox);
     m_state->setObjectName(QStringLiteral("axisState"));
+    m_state->setWordWrap(true); // "not responding: ..." keeps the dock narrow
     QFont bold = m_state->font();
     bold.setBold(true);
     m_state->setFont(bold);
@@ -184,7 +185,8 @@ void JogPanel::buildUi()
 
 void JogPanel::render()
 {
-    const bool have = m_cia && m_connection && m_connection->isConnected();
+    const bool linked = m_cia && m_connection && m_connection->isConnected();
+    const bool have = linked && m_responding;
     const AxisInterface::Status s = m_cia ? m_cia->status() : AxisInterface::Status {};
     const bool valid = have && s.valid;
     const bool on[LampCount] = { s.powered,
@@ -209,11 +211,13 @@ void JogPanel::render()
     QString state = tr("No drive");
     if (m_motion && have)
         state = axisStateName(m_motion->state());
+    else if (linked)
+        state = m_silentWhy.isEmpty() ? tr("Not responding") : m_silentWhy;
     else if (m_connection)
         state = tr("Not connected");
     m_state->setText(state);
     const bool fault = m_motion && m_motion->state() == AxisState::ErrorStop;
-    style::setTextColor(m_state, fault ? style::errorColor() : QColor());
+    style::setTextColor(m_state, fault || (linked && !have) ? style::errorColor() : QColor());
     for (QWidget *w :
          std::initializer_list<QWidget *> { m_enableButton, m_disableButton, m_resetButton,
                                             m_jogMinus, m_jogPlus, m_stepMinus, m_stepPlus })
