@@ -7,6 +7,7 @@
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/common/wheelguard.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
 #include "widgets/connection/devicelist.h"
@@ -76,6 +77,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     setWindowTitle(tr("drivebench"));
     setObjectName(QStringLiteral("MainWindow"));
     m_connectionState->setObjectName(QStringLiteral("connectionState"));
+    widgets::WheelGuard::install(); // the wheel never changes an unfocused spin or combo box
 
     // The centre is a set of pages (drive status, object dictionary, scope, ...); docks around it.
     m_pages = new QTabWidget(this);

@@ -70,7 +70,7 @@ void MainWindow::renderHealth()
     const ConnectionHealth *health = ConnectionHealth::of(c);
     const auto status = health ? health->status() : ConnectionHealth::Status::Idle;
     m_jogPanel->setDeviceResponding(!health || health->isResponding(),
-                                    health ? health->description() : QString());
+                                    ConnectionHealth::statusText(status));
     QString text;
     switch (status) {
     case ConnectionHealth::Status::WaitingForAnswer:

@@ -88,7 +88,8 @@ void ConnectionHealth::onRequestFinished(const Error &error)
         m_lastAnswer = QDateTime::currentDateTime();
         setStatus(Status::Responding);
     } else if (error.kind() == Error::Kind::Timeout) {
-        if (++m_timeouts >= kTimeoutsBeforeSilent)
+        // The first timeout that made it silent stays the cause until the device answers.
+        if (++m_timeouts >= kTimeoutsBeforeSilent && m_status != Status::NotResponding)
             setStatus(Status::NotResponding, error);
     }
     m_probeTimer.start(); // the next probe only when nothing else asks the device
