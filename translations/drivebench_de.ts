@@ -4446,6 +4446,18 @@ Letzter Fehler: %1</translation>
         <source>Not responding</source>
         <translation>Antwortet nicht</translation>
     </message>
+    <message>
+        <source>Stopped: %1. The axis is in ErrorStop now and takes no motion command until it is reset: click Reset.</source>
+        <translation>Gestoppt: %1. Die Achse ist jetzt in ErrorStop und nimmt keinen Bewegungsbefehl an, bis sie zurückgesetzt ist: auf Zurücksetzen klicken.</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>MC_Reset: leave ErrorStop so that the axis takes commands again</source>
+        <translation>MC_Reset: ErrorStop verlassen, damit die Achse wieder Befehle annimmt</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::LogConsole</name>

@@ -7,6 +7,8 @@
 #include "core/connectionhealth.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "mainwindow.h"
+#include "motion/motionaxis.h"
+#include "widgets/common/logconsole.h"
 #include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
@@ -206,6 +208,39 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(ConnectionHealth::of(*first)->status(),
                                   ConnectionHealth::Status::Responding, kWaitMs);
         QVERIFY(!window.recentConnections().contains(demo.refgoUri())); // the demo's
+    }
+
+    // Esc quick-stops a move; the Motion dock says the axis is in ErrorStop and offers the reset.
+    void errorStopAfterEscIsExplained()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.setConfirmation([](const QString &) { return true; });
+        window.show();
+        QVERIFY(window.openConnection(demo.refgoUri()).ok());
+        widgets::JogPanel *panel = window.jogPanel();
+        QTRY_VERIFY_WITH_TIMEOUT(panel->limitsKnown(), kWaitMs);
+        auto *reset = motionButton(window, QStringLiteral("stopReset"));
+        QVERIFY(reset);
+        QVERIFY(!reset->isVisible());
+        panel->enableDrive();
+        QTRY_COMPARE_WITH_TIMEOUT(panel->motionAxis()->state(), motion::AxisState::Standstill,
+                                  kWaitMs);
+        panel->startJog(+1);
+        QTRY_VERIFY_WITH_TIMEOUT(demo.drive().axis().isMoving(), kWaitMs);
+        QTest::keyClick(window.logConsole(), Qt::Key_Escape);
+        QCOMPARE(panel->motionAxis()->state(), motion::AxisState::ErrorStop);
+        auto *message = panel->findChild<QLabel *>(QStringLiteral("message"));
+        QVERIFY2(message->text().contains(QStringLiteral("ErrorStop"))
+                     && message->text().contains(QStringLiteral("Reset")),
+                 qPrintable(message->text()));
+        QVERIFY(reset->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(!demo.drive().axis().isMoving(), kWaitMs);
+        QTest::mouseClick(reset, Qt::LeftButton); // one click out of ErrorStop
+        QTRY_VERIFY_WITH_TIMEOUT(panel->motionAxis()->state() != motion::AxisState::ErrorStop,
+                                 kWaitMs);
+        QVERIFY(!reset->isVisible());
     }
 
     void closingWithAnEnabledDriveAsks()

@@ -40,6 +40,7 @@ JogPanel::JogPanel(QWidget *parent)
     connect(m_enableButton, &QPushButton::clicked, this, &JogPanel::enableDrive);
     connect(m_disableButton, &QPushButton::clicked, this, &JogPanel::disableDrive);
     connect(m_resetButton, &QPushButton::clicked, this, &JogPanel::resetFault);
+    connect(m_stopReset, &QPushButton::clicked, this, &JogPanel::resetFault);
     connect(m_override, &QDoubleSpinBox::valueChanged, this, [this](double percent) {
         if (m_motion)
             m_motion->setVelocityOverride(percent);
@@ -287,7 +288,13 @@ void JogPanel::stopAll(const QString &reason)
 void JogPanel::noteStop(const QString &reason)
 {
     m_lastStopReason = reason;
-    setMessage(tr("Stopped: %1").arg(reason), style::warningColor());
+    if (m_motion && m_motion->state() == AxisState::ErrorStop)
+        setMessage(tr("Stopped: %1. The axis is in ErrorStop now and takes no motion command "
+                      "until it is reset: click Reset.")
+                       .arg(reason),
+                   style::warningColor());
+    else
+        setMessage(tr("Stopped: %1").arg(reason), style::warningColor());
     Q_EMIT stopped(reason);
 }
 

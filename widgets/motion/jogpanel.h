@@ -145,6 +145,7 @@ private:
     QLabel *m_position = nullptr;
     QLabel *m_velocity = nullptr;
     QLabel *m_message = nullptr;
+    QPushButton *m_stopReset = nullptr; // "stopReset": leaves ErrorStop in one click
     QList<Lamp *> m_lamps;
     QDoubleSpinBox *m_jogVelocity = nullptr;
     QDoubleSpinBox *m_jogAcceleration = nullptr;

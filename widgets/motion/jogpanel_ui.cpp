@@ -179,7 +179,14 @@ void JogPanel::buildUi()
     layout->addWidget(jogBox);
     layout->addWidget(commandBox);
     layout->addWidget(limitsBox);
-    layout->addWidget(m_message);
+    // After a quick stop (Esc, Stop) the axis is in ErrorStop: the reason and the way out, here.
+    m_stopReset = button(tr("Reset"), QStringLiteral("stopReset"), this);
+    m_stopReset->setToolTip(tr("MC_Reset: leave ErrorStop so that the axis takes commands again"));
+    m_stopReset->hide();
+    auto *messageRow = new QHBoxLayout;
+    messageRow->addWidget(m_message, 1);
+    messageRow->addWidget(m_stopReset, 0, Qt::AlignTop);
+    layout->addLayout(messageRow);
     layout->addStretch();
 }
 
@@ -218,6 +225,7 @@ void JogPanel::render()
     m_state->setText(state);
     const bool fault = m_motion && m_motion->state() == AxisState::ErrorStop;
     style::setTextColor(m_state, fault || (linked && !have) ? style::errorColor() : QColor());
+    m_stopReset->setVisible(have && fault);
     for (QWidget *w :
          std::initializer_list<QWidget *> { m_enableButton, m_disableButton, m_resetButton,
                                             m_jogMinus, m_jogPlus, m_stepMinus, m_stepPlus })
