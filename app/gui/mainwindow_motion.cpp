@@ -17,6 +17,7 @@ namespace {
 // How long a user's disconnect waits for the quick stop to reach the drive (the stop is written
 // from the event loop; closing at once would cancel it).
 constexpr int kStopBeforeCloseMs = 500;
+constexpr int kDockRoom = 40; // beyond its minimum: the fields show their units once connected
 
 // Esc anywhere in the application quick-stops a moving axis, and the main window losing the
 // activation halts a jog. The filter sits on qApp, so it sees the key before any widget can
@@ -59,9 +60,9 @@ void MainWindow::createMotionDock()
     addDockWidget(Qt::RightDockWidgetArea, dock);
     // The panel is tall: the right dock area takes the full height, beside the log.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
-    // As narrow as the panel allows, so that the pages get the room; until restoreState() knows
-    // better.
-    resizeDocks({ dock }, { scroll->minimumSizeHint().width() }, Qt::Horizontal);
+    // Little wider than the panel needs, so that the pages get the room; until restoreState()
+    // knows better.
+    resizeDocks({ dock }, { scroll->minimumSizeHint().width() + kDockRoom }, Qt::Horizontal);
     qApp->installEventFilter(new MotionStopFilter(this, m_jogPanel));
     connect(m_jogPanel, &widgets::JogPanel::stopped, this, [this](const QString &reason) {
         if (widgets::LogConsole *log = logConsole())
