@@ -2711,10 +2711,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Über drivebench</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -2877,6 +2873,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Drive enabled</source>
         <translation>Antrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 The drivebench developers. drivebench has not been released under a public licence: all rights are reserved by its developers; ask them before you copy or redistribute it.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Gebaut aus Commit %2 mit Qt %3 (läuft mit Qt %4) und QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 Die drivebench-Entwickler. drivebench wurde nicht unter einer öffentlichen Lizenz veröffentlicht: alle Rechte liegen bei seinen Entwicklern; fragen Sie sie, bevor Sie es kopieren oder weitergeben.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

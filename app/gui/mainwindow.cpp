@@ -396,16 +396,6 @@ void MainWindow::disconnectCurrent()
         closeByUser(c);
 }
 
-void MainWindow::showAbout()
-{
-    QMessageBox::about(
-        this, tr("About drivebench"),
-        tr("<h3>drivebench %1</h3>"
-           "<p>Commissioning tool for industrial drives.</p>"
-           "<p>Built with Qt %2.</p>")
-            .arg(QStringLiteral(DRIVEBENCH_VERSION), QString::fromLatin1(qVersion())));
-}
-
 void MainWindow::updateStatusBar()
 {
     DeviceConnection *c = currentConnection();

@@ -114,6 +114,8 @@ public Q_SLOTS:
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
     void showAbout();
+    // The About box's text: version, build commit, Qt version and the licence.
+    QString aboutText() const;
     // The README, built into the program, in a window of its own (Help → User Manual, F1).
     void showManual();
     // View → Reset Layout: every dock back where it was at the first start, shown and docked.

@@ -16,6 +16,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QTabWidget>
@@ -187,6 +188,17 @@ private Q_SLOTS:
         QVERIFY(scope);
         scope->trigger();
         QCOMPARE(window.pages()->currentWidget(), static_cast<QWidget *>(window.scopePage()));
+    }
+
+    void aboutNamesVersionCommitAndLicence()
+    {
+        MainWindow window(app::protocolRegistry());
+        const QString text = window.aboutText();
+        QVERIFY(text.contains(QStringLiteral(DRIVEBENCH_VERSION)));
+        QVERIFY(text.contains(QStringLiteral("all rights are reserved")));
+        // A commit hash (or "unknown" outside a git checkout), never an empty one.
+        static const QRegularExpression commit(QStringLiteral("commit ([0-9a-f]{7,}|unknown) "));
+        QVERIFY2(commit.match(text).hasMatch(), qPrintable(text));
     }
 
     void resetLayoutBringsEveryDockBack()
