@@ -2878,6 +2878,57 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 The drivebench developers. drivebench has not been released under a public licence: all rights are reserved by its developers; ask them before you copy or redistribute it.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Gebaut aus Commit %2 mit Qt %3 (läuft mit Qt %4) und QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 Die drivebench-Entwickler. drivebench wurde nicht unter einer öffentlichen Lizenz veröffentlicht: alle Rechte liegen bei seinen Entwicklern; fragen Sie sie, bevor Sie es kopieren oder weitergeben.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Settings…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+</context>
+<context>
+    <name>db::gui::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>As the system</source>
+        <translation>Wie das System</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start.</source>
+        <translation>Wirkt ab dem nächsten Start.</translation>
+    </message>
+    <message>
+        <source>How long a new connection may take to reach the device</source>
+        <translation>Wie lange eine neue Verbindung brauchen darf, um das Gerät zu erreichen</translation>
+    </message>
+    <message>
+        <source>How long a read or write waits for the device&apos;s answer</source>
+        <translation>Wie lange ein Lesen oder Schreiben auf die Antwort des Geräts wartet</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Clear All</source>
+        <translation>Alle löschen</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <source>Connect time limit:</source>
+        <translation>Zeitlimit Verbindungsaufbau:</translation>
+    </message>
+    <message>
+        <source>Answer time limit:</source>
+        <translation>Zeitlimit Antwort:</translation>
+    </message>
+    <message>
+        <source>Recent connections</source>
+        <translation>Letzte Verbindungen</translation>
+    </message>
 </context>
 <context>
     <name>db::morse</name>

@@ -30,7 +30,11 @@ int main(int argc, char *argv[])
     // the system; a Settings dialog writes it), else the locale variables.
     QString language = db::i18n::languageArgument(QApplication::arguments());
     if (language.isEmpty() && qEnvironmentVariableIsEmpty("DRIVEBENCH_LANG"))
-        language = QSettings().value(QStringLiteral("language")).toString();
+        language =
+            QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("drivebench"),
+                      QStringLiteral("drivebench"))
+                .value(QStringLiteral("language"))
+                .toString(); // the file MainWindow writes (File → Settings)
     db::i18n::installTranslations(app, db::i18n::chooseLanguage(language));
 
     QCommandLineParser parser;

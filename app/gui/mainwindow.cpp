@@ -59,6 +59,9 @@ Result<widgets::MorseSource> loadMorseSource(const QString &path)
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kRecentKey = QStringLiteral("connections/recent");
+const QString kConnectTimeoutKey = QStringLiteral("connections/connectTimeoutMs");
+const QString kRequestTimeoutKey = QStringLiteral("connections/requestTimeoutMs");
+const QString kLanguageKey = QStringLiteral("language"); // read by main() before the window
 constexpr int kStatusMessageMs = 10000;
 } // namespace
 
@@ -209,6 +212,9 @@ void MainWindow::createMenus()
     m_connectAction->setShortcut(QKeySequence::Open);
     m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
     file->addSeparator();
+    file->addAction(tr("&Settings…"), this, &MainWindow::showSettings)
+        ->setMenuRole(QAction::PreferencesRole);
+    file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
@@ -233,7 +239,7 @@ void MainWindow::createMenus()
 
 Result<DeviceConnection *> MainWindow::openConnection(const QString &uri, Remember remember)
 {
-    auto plan = m_registry.prepare(uri);
+    auto plan = m_registry.prepare(uri, m_connectTimeoutMs, m_requestTimeoutMs);
     if (!plan) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, plan.error().toString()));
         return plan.error();
@@ -260,7 +266,10 @@ Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan
         statusBar()->showMessage(refused.message(), kStatusMessageMs);
         return refused;
     }
-    auto created = m_registry.create(plan);
+    ConnectionPlan timed = plan; // the time limits of the Settings
+    timed.connectTimeoutMs = m_connectTimeoutMs;
+    timed.requestTimeoutMs = m_requestTimeoutMs;
+    auto created = m_registry.create(timed);
     if (!created) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, created.error().toString()));
         return created.error();
@@ -472,6 +481,31 @@ void MainWindow::loadSettings()
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
     restoreState(settings.value(kStateKey).toByteArray());
     m_recent = settings.value(kRecentKey).toStringList();
+    m_connectTimeoutMs = settings.value(kConnectTimeoutKey, m_connectTimeoutMs).toInt();
+    m_requestTimeoutMs = settings.value(kRequestTimeoutKey, m_requestTimeoutMs).toInt();
+    m_language = settings.value(kLanguageKey).toString();
+}
+
+SettingsDialog::Values MainWindow::settingsValues() const
+{
+    return { m_language, m_connectTimeoutMs, m_requestTimeoutMs, m_recent };
+}
+
+void MainWindow::applySettings(const SettingsDialog::Values &values)
+{
+    m_language = values.language;
+    m_connectTimeoutMs = values.connectTimeoutMs;
+    m_requestTimeoutMs = values.requestTimeoutMs;
+    m_recent = values.recent;
+    saveSettings();
+    updateWelcome();
+}
+
+void MainWindow::showSettings()
+{
+    SettingsDialog dialog(settingsValues(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        applySettings(dialog.values());
 }
 
 void MainWindow::saveSettings() const
@@ -480,6 +514,9 @@ void MainWindow::saveSettings() const
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());
     settings.setValue(kRecentKey, m_recent);
+    settings.setValue(kConnectTimeoutKey, m_connectTimeoutMs);
+    settings.setValue(kRequestTimeoutKey, m_requestTimeoutMs);
+    settings.setValue(kLanguageKey, m_language);
 }
 
 } // namespace db::gui

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocolregistry.h"
+#include "settingsdialog.h"
 
 #include <QMainWindow>
 #include <QPointer>
@@ -70,6 +71,10 @@ public:
     // closes it. The default asks with a message box; tests answer themselves.
     using Confirmation = std::function<bool(const QString &question)>;
     void setConfirmation(Confirmation confirm) { m_confirm = std::move(confirm); }
+    // File → Settings: the values shown and what applying them changes (new connections get the
+    // time limits, the language is stored for the next start, the recent list is replaced).
+    SettingsDialog::Values settingsValues() const;
+    void applySettings(const SettingsDialog::Values &values);
 
     // Closes every connection and waits (local event loop) up to timeoutMs for all of them to
     // reach Disconnected. Called when the window closes.
@@ -118,6 +123,7 @@ public Q_SLOTS:
     QString aboutText() const;
     // The README, built into the program, in a window of its own (Help → User Manual, F1).
     void showManual();
+    void showSettings();
     // View → Reset Layout: every dock back where it was at the first start, shown and docked.
     void resetLayout();
 
@@ -196,6 +202,9 @@ private:
     QLabel *m_healthBanner = nullptr; // on the Drive Status page: lost, failed, not responding
     QSet<const DeviceConnection *> m_forget; // not to be remembered as recent (the demo)
     Confirmation m_confirm;
+    int m_connectTimeoutMs = 3000; // for new connections (Settings)
+    int m_requestTimeoutMs = 1000;
+    QString m_language; // the setting "language": "" follows the system
 };
 
 } // namespace db::gui

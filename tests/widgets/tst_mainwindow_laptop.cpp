@@ -6,6 +6,7 @@
 #include "common/protocols.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "mainwindow.h"
+#include "settingsdialog.h"
 #include "translations/language.h"
 #include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
@@ -199,6 +200,43 @@ private Q_SLOTS:
         // A commit hash (or "unknown" outside a git checkout), never an empty one.
         static const QRegularExpression commit(QStringLiteral("commit ([0-9a-f]{7,}|unknown) "));
         QVERIFY2(commit.match(text).hasMatch(), qPrintable(text));
+    }
+
+    void settingsAreAppliedAndKept()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        {
+            gui::SettingsDialog dialog(
+                { QStringLiteral("de"),
+                  1500,
+                  700,
+                  { QStringLiteral("refgo://10.0.0.1"), QStringLiteral("refgo://10.0.0.2") } });
+            const auto shown = dialog.values();
+            QCOMPARE(shown.language, QStringLiteral("de"));
+            QCOMPARE(shown.requestTimeoutMs, 700);
+            auto *clear = dialog.findChild<QPushButton *>(QStringLiteral("clearRecent"));
+            QVERIFY(clear);
+            clear->click();
+            QVERIFY(dialog.values().recent.isEmpty());
+        }
+        {
+            MainWindow window(app::protocolRegistry());
+            window.applySettings(
+                { QStringLiteral("de"), 1500, 700, { QStringLiteral("refgo://10.0.0.1") } });
+            QCOMPARE(window.recentConnections(),
+                     QStringList { QStringLiteral("refgo://10.0.0.1") });
+            auto opened = window.openConnection(demo.refgoUri(), MainWindow::Remember::No);
+            QVERIFY(opened.ok());
+            QCOMPARE((*opened)->requestTimeoutMs(), 700); // new connections get the limits
+            QCOMPARE((*opened)->connectTimeoutMs(), 1500);
+        }
+        MainWindow again(app::protocolRegistry()); // kept in the settings file
+        const auto kept = again.settingsValues();
+        QCOMPARE(kept.language, QStringLiteral("de"));
+        QCOMPARE(kept.connectTimeoutMs, 1500);
+        QCOMPARE(kept.requestTimeoutMs, 700);
+        again.applySettings({ QString(), 3000, 1000, {} }); // as before, for the other tests
     }
 
     void resetLayoutBringsEveryDockBack()
