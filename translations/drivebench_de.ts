@@ -1775,6 +1775,132 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::StatusSource</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli::AcuStatusSource</name>
+    <message>
+        <source>Status word (411):</source>
+        <translation>Zustandswort (411):</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Mains on</source>
+        <translation>Netz ein</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Warning 2</source>
+        <translation>Warnung 2</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Current fault (260):</source>
+        <translation>Aktueller Fehler (260):</translation>
+    </message>
+    <message>
+        <source>No fault</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Fault %1 (not in the fault table)</source>
+        <translation>Fehler %1 (nicht in der Fehlertabelle)</translation>
+    </message>
+    <message>
+        <source>%1 bit %2</source>
+        <translation>%1 Bit %2</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter reacts as parameter 388 says (not read yet).</source>
+        <translation>Steht die Verbindung 10 s still, reagiert der Umrichter wie in Parameter 388 eingestellt (noch nicht gelesen).</translation>
+    </message>
+    <message>
+        <source>keeps its operating point</source>
+        <translation>behält seinen Arbeitspunkt</translation>
+    </message>
+    <message>
+        <source>goes to fault F2714 at once</source>
+        <translation>geht sofort in Störung F2714</translation>
+    </message>
+    <message>
+        <source>switches off (disable voltage, then switch on disabled)</source>
+        <translation>schaltet ab (Spannung sperren, dann Einschaltsperre)</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then switch on disabled</source>
+        <translation>macht einen Schnellhalt, dann Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>stops, then goes to fault F2714</source>
+        <translation>hält an und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then goes to fault F2714</source>
+        <translation>macht einen Schnellhalt und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>reacts in a way this program does not know</source>
+        <translation>reagiert auf eine diesem Programm unbekannte Weise</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter %1 (parameter 388 = %2).</source>
+        <translation>Steht die Verbindung 10 s still, %1 der Umrichter (Parameter 388 = %2).</translation>
+    </message>
+</context>
+<context>
     <name>db::canopen</name>
     <message>
         <source>%1 is not a CANopen URI (canopen+socketcan://, canopen+virtualcan://, canopen+slcan://)</source>
@@ -2081,6 +2207,73 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>homing error</source>
         <translation>Referenzfahrtfehler</translation>
+    </message>
+</context>
+<context>
+    <name>db::cia402::Cia402StatusSource</name>
+    <message>
+        <source>Statusword:</source>
+        <translation>Statuswort:</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>In Bewegung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Inputs (60FDh):</source>
+        <translation>Eingänge (60FDh):</translation>
+    </message>
+    <message>
+        <source>Outputs (60FEh.1):</source>
+        <translation>Ausgänge (60FEh.1):</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Position (6064h):</source>
+        <translation>Position (6064h):</translation>
+    </message>
+    <message>
+        <source>Velocity (606Ch):</source>
+        <translation>Geschwindigkeit (606Ch):</translation>
+    </message>
+    <message>
+        <source>Current (6078h):</source>
+        <translation>Strom (6078h):</translation>
+    </message>
+    <message>
+        <source>Last error (603Fh):</source>
+        <translation>Letzter Fehler (603Fh):</translation>
+    </message>
+    <message>
+        <source>No error</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Status register (1002h):</source>
+        <translation>Statusregister (1002h):</translation>
+    </message>
+    <message>
+        <source>bit %1</source>
+        <translation>Bit %1</translation>
     </message>
 </context>
 <context>
@@ -2775,8 +2968,48 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>NM17x-Linie</translation>
     </message>
     <message>
+        <source>&amp;Settings…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <source>%1 is already in the device list; it was not connected a second time</source>
+        <translation>%1 ist bereits in der Geräteliste; es wurde kein zweites Mal verbunden</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the link is up, waiting for the device to answer.</source>
+        <translation>%1: die Verbindung steht, warte auf Antwort des Geräts.</translation>
+    </message>
+    <message>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <source>The values shown are from %1 and may be out of date.</source>
+        <translation>Die angezeigten Werte stammen von %1 und sind möglicherweise veraltet.</translation>
+    </message>
+    <message>
+        <source>%1: disconnected by you.</source>
+        <translation>%1: von Ihnen getrennt.</translation>
+    </message>
+    <message>
+        <source>The drive at %1 is enabled. Closing the connection leaves it enabled (it stops by its own supervision only if that is set up). Close the connection anyway?</source>
+        <translation>Der Antrieb unter %1 ist freigegeben. Das Schließen der Verbindung lässt ihn freigegeben (er hält nur durch seine eigene Überwachung an, wenn diese eingerichtet ist). Verbindung trotzdem schließen?</translation>
+    </message>
+    <message>
+        <source>Drive enabled</source>
+        <translation>Antrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 The drivebench developers. drivebench has not been released under a public licence: all rights are reserved by its developers; ask them before you copy or redistribute it.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Gebaut aus Commit %2 mit Qt %3 (läuft mit Qt %4) und QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 Die drivebench-Entwickler. drivebench wurde nicht unter einer öffentlichen Lizenz veröffentlicht: alle Rechte liegen bei seinen Entwicklern; fragen Sie sie, bevor Sie es kopieren oder weitergeben.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Main</source>
@@ -2841,46 +3074,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Connect to %1</source>
         <translation>Mit %1 verbinden</translation>
-    </message>
-    <message>
-        <source>%1 is already in the device list; it was not connected a second time</source>
-        <translation>%1 ist bereits in der Geräteliste; es wurde kein zweites Mal verbunden</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>%1: the link is up, waiting for the device to answer.</source>
-        <translation>%1: die Verbindung steht, warte auf Antwort des Geräts.</translation>
-    </message>
-    <message>
-        <source>%1: %2.</source>
-        <translation>%1: %2.</translation>
-    </message>
-    <message>
-        <source>The values shown are from %1 and may be out of date.</source>
-        <translation>Die angezeigten Werte stammen von %1 und sind möglicherweise veraltet.</translation>
-    </message>
-    <message>
-        <source>%1: disconnected by you.</source>
-        <translation>%1: von Ihnen getrennt.</translation>
-    </message>
-    <message>
-        <source>The drive at %1 is enabled. Closing the connection leaves it enabled (it stops by its own supervision only if that is set up). Close the connection anyway?</source>
-        <translation>Der Antrieb unter %1 ist freigegeben. Das Schließen der Verbindung lässt ihn freigegeben (er hält nur durch seine eigene Überwachung an, wenn diese eingerichtet ist). Verbindung trotzdem schließen?</translation>
-    </message>
-    <message>
-        <source>Drive enabled</source>
-        <translation>Antrieb freigegeben</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 The drivebench developers. drivebench has not been released under a public licence: all rights are reserved by its developers; ask them before you copy or redistribute it.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Gebaut aus Commit %2 mit Qt %3 (läuft mit Qt %4) und QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 Die drivebench-Entwickler. drivebench wurde nicht unter einer öffentlichen Lizenz veröffentlicht: alle Rechte liegen bei seinen Entwicklern; fragen Sie sie, bevor Sie es kopieren oder weitergeben.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>&amp;Settings…</source>
-        <translation>&amp;Einstellungen…</translation>
     </message>
 </context>
 <context>
@@ -4139,42 +4332,6 @@ Letzter Fehler: %1</translation>
 <context>
     <name>db::widgets::DriveStatusPanel</name>
     <message>
-        <source>Not ready to switch on</source>
-        <translation>Nicht einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>Einschaltsperre</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>Einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>Eingeschaltet</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>Betrieb freigegeben</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>Schnellhalt aktiv</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>Fehlerreaktion aktiv</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>Unbekannter Zustand</translation>
-    </message>
-    <message>
         <source>No device selected.</source>
         <translation>Kein Gerät ausgewählt.</translation>
     </message>
@@ -4198,36 +4355,12 @@ Letzter Fehler: %1</translation>
         <translation>Kein Status</translation>
     </message>
     <message>
-        <source>bit %1</source>
-        <translation>Bit %1</translation>
-    </message>
-    <message>
         <source>No error or warning bits</source>
         <translation>Keine Fehler- oder Warnbits</translation>
     </message>
     <message>
-        <source>No error</source>
-        <translation>Kein Fehler</translation>
-    </message>
-    <message>
         <source>Drive state</source>
         <translation>Antriebszustand</translation>
-    </message>
-    <message>
-        <source>Target reached</source>
-        <translation>Ziel erreicht</translation>
-    </message>
-    <message>
-        <source>Moving</source>
-        <translation>In Bewegung</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>Internal limit</source>
-        <translation>Interne Begrenzung</translation>
     </message>
     <message>
         <source>Statusword:</source>
@@ -4242,52 +4375,24 @@ Letzter Fehler: %1</translation>
         <translation>Istwerte</translation>
     </message>
     <message>
-        <source>Position (6064h):</source>
-        <translation>Position (6064h):</translation>
-    </message>
-    <message>
-        <source>Velocity (606Ch):</source>
-        <translation>Geschwindigkeit (606Ch):</translation>
-    </message>
-    <message>
-        <source>Current (6078h):</source>
-        <translation>Strom (6078h):</translation>
-    </message>
-    <message>
         <source>Faults</source>
         <translation>Störungen</translation>
-    </message>
-    <message>
-        <source>603Fh keeps the last error after it has been cleared.</source>
-        <translation>603Fh behält den letzten Fehler, auch nachdem er quittiert wurde.</translation>
-    </message>
-    <message>
-        <source>Status register (1002h):</source>
-        <translation>Statusregister (1002h):</translation>
-    </message>
-    <message>
-        <source>Last error (603Fh):</source>
-        <translation>Letzter Fehler (603Fh):</translation>
     </message>
     <message>
         <source>Digital I/O</source>
         <translation>Digitale E/A</translation>
     </message>
     <message>
-        <source>Inputs (60FDh):</source>
-        <translation>Eingänge (60FDh):</translation>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
     <message>
-        <source>IN%1</source>
-        <translation>IN%1</translation>
+        <source>Warnings:</source>
+        <translation>Warnungen:</translation>
     </message>
     <message>
-        <source>Outputs (60FEh.1):</source>
-        <translation>Ausgänge (60FEh.1):</translation>
-    </message>
-    <message>
-        <source>OUT%1</source>
-        <translation>OUT%1</translation>
+        <source>Fault:</source>
+        <translation>Störung:</translation>
     </message>
 </context>
 <context>
@@ -4509,16 +4614,12 @@ Letzter Fehler: %1</translation>
         <translation>Positionsfenster: %1 %2</translation>
     </message>
     <message>
-        <source>The drive did not answer: its limits are not known yet.</source>
-        <translation>Der Antrieb hat nicht geantwortet: seine Grenzen sind noch nicht bekannt.</translation>
-    </message>
-    <message>
-        <source>Not responding</source>
-        <translation>Antwortet nicht</translation>
-    </message>
-    <message>
         <source>Stopped: %1. The axis is in ErrorStop now and takes no motion command until it is reset: click Reset.</source>
         <translation>Gestoppt: %1. Die Achse ist jetzt in ErrorStop und nimmt keinen Bewegungsbefehl an, bis sie zurückgesetzt ist: auf Zurücksetzen klicken.</translation>
+    </message>
+    <message>
+        <source>The drive did not answer: its limits are not known yet.</source>
+        <translation>Der Antrieb hat nicht geantwortet: seine Grenzen sind noch nicht bekannt.</translation>
     </message>
     <message>
         <source>Reset</source>
@@ -4527,6 +4628,10 @@ Letzter Fehler: %1</translation>
     <message>
         <source>MC_Reset: leave ErrorStop so that the axis takes commands again</source>
         <translation>MC_Reset: ErrorStop verlassen, damit die Achse wieder Befehle annimmt</translation>
+    </message>
+    <message>
+        <source>Not responding</source>
+        <translation>Antwortet nicht</translation>
     </message>
 </context>
 <context>
@@ -5336,6 +5441,18 @@ Letzter Fehler: %1</translation>
         <source>Objects that the device description does not list are added to the tree once read or written.</source>
         <translation>Objekte, die die Gerätebeschreibung nicht enthält, werden nach dem Lesen oder Schreiben in den Baum aufgenommen.</translation>
     </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>Ins RAM schreiben</translation>
+    </message>
+    <message>
+        <source>Edits change the working value only: lost at power-off, the EEPROM is not written. Off: edits are stored permanently in the data set.</source>
+        <translation>Änderungen gelten nur für den Arbeitswert: nach dem Ausschalten verloren, das EEPROM wird nicht beschrieben. Aus: Änderungen werden dauerhaft im Datensatz gespeichert.</translation>
+    </message>
+    <message>
+        <source>to RAM (%1, lost at power-off)</source>
+        <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::OdEditorModel</name>
@@ -5429,6 +5546,14 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>DS %1</source>
+        <translation>DS %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
 </context>
@@ -6556,6 +6681,10 @@ Change it?</source>
     <message>
         <source>Demo NM17x displays (nodes 2, 3, 4) at canopen+slcan://127.0.0.1:%1?node=2</source>
         <translation>Demo-NM17x-Anzeigen (Knoten 2, 3, 4) unter canopen+slcan://127.0.0.1:%1?node=2</translation>
+    </message>
+    <message>
+        <source>Demo ACTIVE Cube at %1</source>
+        <translation>Demo-ACTIVE-Cube unter %1</translation>
     </message>
     <message>
         <source>Cannot start the demo drive: %1</source>
