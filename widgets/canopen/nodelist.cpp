@@ -5,6 +5,7 @@
 #include "canopen/nmtmaster.h"
 #include "nodelistmodel.h"
 #include "transport/canbus.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -49,7 +50,7 @@ NodeList::NodeList(QWidget *parent)
 
     m_broadcast->setObjectName(QStringLiteral("broadcast"));
     m_broadcast->setToolTip(tr("Send NMT commands to every node (node id 0)"));
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = new FlowLayout; // wraps in a narrow dock
     buttons->setContentsMargins(0, 0, 0, 0);
     buttons->setSpacing(2);
     const struct
@@ -78,7 +79,6 @@ NodeList::NodeList(QWidget *parent)
         buttons->addWidget(button);
         m_commandButtons.append(button);
     }
-    buttons->addStretch(1);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
