@@ -4,7 +4,7 @@
 
 namespace db::cli {
 
-// Motion commands over any CiA 402 drive (issue 5), through the PLCopen command model
+// Motion commands over any CiA 402 drive, through the PLCopen command model
 // (protocols/motion) on a Cia402Axis. Each run opens the connection, reads the factor group and
 // the drive's limits, runs one command and waits for its end, every wait bounded by --wait
 // (default kDefaultWaitMs). A command the model refuses exits with ExitDeviceError and prints

@@ -21,7 +21,7 @@ namespace db::widgets {
 class Lamp;
 class MotionForm;
 
-// Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
+// Moving an axis by hand: enable/disable/reset, hold-to-run jog (buttons and keys),
 // step jog, the motion command form, status lamps, live position/velocity and the drive's
 // limits. The panel builds a Cia402Axis and a MotionAxis on the connection it is given; it never
 // creates transports.
