@@ -3,12 +3,14 @@
 
 #include "scriptedstream.h"
 #include "vabus/vabusconnection.h"
+#include "wait.h"
 
 #include <QtTest>
 
 #include <memory>
 
 using namespace db;
+using db::test::await;
 using namespace db::vabus;
 
 namespace {
@@ -16,14 +18,6 @@ namespace {
 QByteArray hexBytes(const char *text)
 {
     return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
-}
-
-Result<QVariant> await(Reply *reply, int timeoutMs = 5000)
-{
-    std::unique_ptr<Reply> owner(reply);
-    if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
 }
 
 ObjectDef parameter(quint16 number, quint8 dataSet, DataType type, int decimals,
