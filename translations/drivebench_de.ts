@@ -3038,10 +3038,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>connection to %1 closed</source>
-        <translation>Verbindung zu %1 geschlossen</translation>
-    </message>
-    <message>
         <source>not connected to %1</source>
         <translation>nicht mit %1 verbunden</translation>
     </message>

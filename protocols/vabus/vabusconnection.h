@@ -10,16 +10,12 @@
 //          0 or absent: the inverter carrying the module (SYS 0x00)
 //   ram    writes to data sets 0-4 go to their RAM copies (5-9), sparing the EEPROM
 
-#include "core/deviceconnection.h"
+#include "transport/streamconnection.h"
 #include "vabusclient.h"
-
-namespace db {
-class ByteStream;
-}
 
 namespace db::vabus {
 
-class VabusConnection : public DeviceConnection
+class VabusConnection : public StreamConnection
 {
     Q_OBJECT
 public:
@@ -47,20 +43,16 @@ public:
     VabusClient *client() const { return m_client; }
 
 protected:
-    void doOpen() override;
-    void doClose() override;
+    QString connectedLine() const override;
     void doRead(Reply *reply, const ObjectDef *def) override;
     void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
 
 private:
     void init();
-    void onOpened();
-    void onClosed(const Error &error);
     // The description of a parameter at this address: the address's own, else that of the
     // EEPROM data set a RAM data set copies, else data set 0's.
     const ObjectDef *describe(ObjectAddress address) const;
 
-    ByteStream *m_stream = nullptr;
     VabusClient *m_client = nullptr;
     bool m_ram = false;
 };
