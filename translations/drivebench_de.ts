@@ -933,10 +933,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
         <source> (resolved for node %1)</source>
         <translation> (aufgelöst für Knoten %1)</translation>
     </message>
@@ -1492,6 +1488,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>jog, velocity: how long to move (ms).</source>
         <translation>jog, velocity: Fahrdauer (ms).</translation>
     </message>
+    <message>
+        <source>a value</source>
+        <translation>ein Wert</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -1729,6 +1729,132 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1 has %2 addresses (like %3) but %4 has %5 addresses (like %6): the same address names different objects, so they cannot be compared</source>
         <translation>%1 hat %2-Adressen (wie %3), aber %4 hat %5-Adressen (wie %6): dieselbe Adresse bezeichnet verschiedene Objekte, daher ist kein Vergleich möglich</translation>
+    </message>
+</context>
+<context>
+    <name>db::StatusSource</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli::AcuStatusSource</name>
+    <message>
+        <source>Status word (411):</source>
+        <translation>Zustandswort (411):</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Mains on</source>
+        <translation>Netz ein</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Warning 2</source>
+        <translation>Warnung 2</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Current fault (260):</source>
+        <translation>Aktueller Fehler (260):</translation>
+    </message>
+    <message>
+        <source>No fault</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Fault %1 (not in the fault table)</source>
+        <translation>Fehler %1 (nicht in der Fehlertabelle)</translation>
+    </message>
+    <message>
+        <source>%1 bit %2</source>
+        <translation>%1 Bit %2</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter reacts as parameter 388 says (not read yet).</source>
+        <translation>Steht die Verbindung 10 s still, reagiert der Umrichter wie in Parameter 388 eingestellt (noch nicht gelesen).</translation>
+    </message>
+    <message>
+        <source>keeps its operating point</source>
+        <translation>behält seinen Arbeitspunkt</translation>
+    </message>
+    <message>
+        <source>goes to fault F2714 at once</source>
+        <translation>geht sofort in Störung F2714</translation>
+    </message>
+    <message>
+        <source>switches off (disable voltage, then switch on disabled)</source>
+        <translation>schaltet ab (Spannung sperren, dann Einschaltsperre)</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then switch on disabled</source>
+        <translation>macht einen Schnellhalt, dann Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>stops, then goes to fault F2714</source>
+        <translation>hält an und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then goes to fault F2714</source>
+        <translation>macht einen Schnellhalt und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>reacts in a way this program does not know</source>
+        <translation>reagiert auf eine diesem Programm unbekannte Weise</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter %1 (parameter 388 = %2).</source>
+        <translation>Steht die Verbindung 10 s still, %1 der Umrichter (Parameter 388 = %2).</translation>
     </message>
 </context>
 <context>
@@ -2041,6 +2167,73 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::cia402::Cia402StatusSource</name>
+    <message>
+        <source>Statusword:</source>
+        <translation>Statuswort:</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>In Bewegung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Inputs (60FDh):</source>
+        <translation>Eingänge (60FDh):</translation>
+    </message>
+    <message>
+        <source>Outputs (60FEh.1):</source>
+        <translation>Ausgänge (60FEh.1):</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Position (6064h):</source>
+        <translation>Position (6064h):</translation>
+    </message>
+    <message>
+        <source>Velocity (606Ch):</source>
+        <translation>Geschwindigkeit (606Ch):</translation>
+    </message>
+    <message>
+        <source>Current (6078h):</source>
+        <translation>Strom (6078h):</translation>
+    </message>
+    <message>
+        <source>Last error (603Fh):</source>
+        <translation>Letzter Fehler (603Fh):</translation>
+    </message>
+    <message>
+        <source>No error</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Status register (1002h):</source>
+        <translation>Statusregister (1002h):</translation>
+    </message>
+    <message>
+        <source>bit %1</source>
+        <translation>Bit %1</translation>
+    </message>
+</context>
+<context>
     <name>db::common</name>
     <message>
         <source>&apos;%1&apos; is not a node id 1..127</source>
@@ -2076,14 +2269,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>cannot open %1: %2</source>
-        <translation>%1 kann nicht geöffnet werden: %2</translation>
-    </message>
-    <message>
-        <source>%1: JSON error at offset %2: %3</source>
-        <translation>%1: JSON-Fehler an Position %2: %3</translation>
     </message>
     <message>
         <source>%1 is not a drivebench device description</source>
@@ -2142,10 +2327,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 nimmt keine rohen Protokollbefehle an</translation>
     </message>
     <message>
-        <source>%1 is a folder, not a file</source>
-        <translation>%1 ist ein Ordner, keine Datei</translation>
-    </message>
-    <message>
         <source>%1 is empty</source>
         <translation>%1 ist leer</translation>
     </message>
@@ -2172,10 +2353,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>&apos;%1&apos; is not an object address; write INDEX:SUB in hex, e.g. 6041:0</source>
         <translation>„%1“ ist keine Objektadresse; INDEX:SUB hexadezimal schreiben, z. B. 6041:0</translation>
-    </message>
-    <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>&apos;\%1&apos; needs %2 hex digits</source>
@@ -2556,6 +2733,41 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>bad address &apos;%1&apos; (%2 addresses are written like %3)</source>
         <translation>ungültige Adresse „%1“ (%2-Adressen schreibt man wie %3)</translation>
+    </message>
+    <message>
+        <source>a device description</source>
+        <translation>eine Gerätebeschreibung</translation>
+    </message>
+    <message>
+        <source>%1: JSON error at %2: %3</source>
+        <translation>%1: JSON-Fehler in %2: %3</translation>
+    </message>
+    <message>
+        <source>a parameter set</source>
+        <translation>ein Parametersatz</translation>
+    </message>
+</context>
+<context>
+    <name>db::files</name>
+    <message>
+        <source>cannot read %1: it is a folder, not a file</source>
+        <translation>%1 kann nicht gelesen werden: Es ist ein Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MB, more than the %3 MB %4 may have: is it the right file?</source>
+        <translation>%1 ist %2 MB groß, mehr als die %3 MB, die %4 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>%1 is more than the %2 MB %3 may have: is it the right file?</source>
+        <translation>%1 ist größer als die %2 MB, die %3 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
     </message>
 </context>
 <context>
@@ -3410,10 +3622,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
@@ -3468,6 +3676,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>channel line without a valid id (%1 addresses are written like %2)</source>
         <translation>Kanalzeile ohne gültige Kennung (%1-Adressen werden wie %2 geschrieben)</translation>
+    </message>
+    <message>
+        <source>a recording</source>
+        <translation>eine Aufzeichnung</translation>
     </message>
 </context>
 <context>
@@ -3922,42 +4134,6 @@ Letzter Fehler: %1</translation>
 <context>
     <name>db::widgets::DriveStatusPanel</name>
     <message>
-        <source>Not ready to switch on</source>
-        <translation>Nicht einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>Einschaltsperre</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>Einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>Eingeschaltet</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>Betrieb freigegeben</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>Schnellhalt aktiv</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>Fehlerreaktion aktiv</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>Unbekannter Zustand</translation>
-    </message>
-    <message>
         <source>No device selected.</source>
         <translation>Kein Gerät ausgewählt.</translation>
     </message>
@@ -3981,36 +4157,12 @@ Letzter Fehler: %1</translation>
         <translation>Kein Status</translation>
     </message>
     <message>
-        <source>bit %1</source>
-        <translation>Bit %1</translation>
-    </message>
-    <message>
         <source>No error or warning bits</source>
         <translation>Keine Fehler- oder Warnbits</translation>
     </message>
     <message>
-        <source>No error</source>
-        <translation>Kein Fehler</translation>
-    </message>
-    <message>
         <source>Drive state</source>
         <translation>Antriebszustand</translation>
-    </message>
-    <message>
-        <source>Target reached</source>
-        <translation>Ziel erreicht</translation>
-    </message>
-    <message>
-        <source>Moving</source>
-        <translation>In Bewegung</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>Internal limit</source>
-        <translation>Interne Begrenzung</translation>
     </message>
     <message>
         <source>Statusword:</source>
@@ -4025,52 +4177,24 @@ Letzter Fehler: %1</translation>
         <translation>Istwerte</translation>
     </message>
     <message>
-        <source>Position (6064h):</source>
-        <translation>Position (6064h):</translation>
-    </message>
-    <message>
-        <source>Velocity (606Ch):</source>
-        <translation>Geschwindigkeit (606Ch):</translation>
-    </message>
-    <message>
-        <source>Current (6078h):</source>
-        <translation>Strom (6078h):</translation>
-    </message>
-    <message>
         <source>Faults</source>
         <translation>Störungen</translation>
-    </message>
-    <message>
-        <source>603Fh keeps the last error after it has been cleared.</source>
-        <translation>603Fh behält den letzten Fehler, auch nachdem er quittiert wurde.</translation>
-    </message>
-    <message>
-        <source>Status register (1002h):</source>
-        <translation>Statusregister (1002h):</translation>
-    </message>
-    <message>
-        <source>Last error (603Fh):</source>
-        <translation>Letzter Fehler (603Fh):</translation>
     </message>
     <message>
         <source>Digital I/O</source>
         <translation>Digitale E/A</translation>
     </message>
     <message>
-        <source>Inputs (60FDh):</source>
-        <translation>Eingänge (60FDh):</translation>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
     <message>
-        <source>IN%1</source>
-        <translation>IN%1</translation>
+        <source>Warnings:</source>
+        <translation>Warnungen:</translation>
     </message>
     <message>
-        <source>Outputs (60FEh.1):</source>
-        <translation>Ausgänge (60FEh.1):</translation>
-    </message>
-    <message>
-        <source>OUT%1</source>
-        <translation>OUT%1</translation>
+        <source>Fault:</source>
+        <translation>Störung:</translation>
     </message>
 </context>
 <context>
@@ -5099,6 +5223,18 @@ Letzter Fehler: %1</translation>
         <source>Objects that the device description does not list are added to the tree once read or written.</source>
         <translation>Objekte, die die Gerätebeschreibung nicht enthält, werden nach dem Lesen oder Schreiben in den Baum aufgenommen.</translation>
     </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>Ins RAM schreiben</translation>
+    </message>
+    <message>
+        <source>Edits change the working value only: lost at power-off, the EEPROM is not written. Off: edits are stored permanently in the data set.</source>
+        <translation>Änderungen gelten nur für den Arbeitswert: nach dem Ausschalten verloren, das EEPROM wird nicht beschrieben. Aus: Änderungen werden dauerhaft im Datensatz gespeichert.</translation>
+    </message>
+    <message>
+        <source>to RAM (%1, lost at power-off)</source>
+        <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::OdEditorModel</name>
@@ -5192,6 +5328,14 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>DS %1</source>
+        <translation>DS %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
 </context>
@@ -6319,6 +6463,10 @@ Change it?</source>
     <message>
         <source>Demo NM17x displays (nodes 2, 3, 4) at canopen+slcan://127.0.0.1:%1?node=2</source>
         <translation>Demo-NM17x-Anzeigen (Knoten 2, 3, 4) unter canopen+slcan://127.0.0.1:%1?node=2</translation>
+    </message>
+    <message>
+        <source>Demo ACTIVE Cube at %1</source>
+        <translation>Demo-ACTIVE-Cube unter %1</translation>
     </message>
 </context>
 <context>

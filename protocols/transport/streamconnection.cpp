@@ -44,17 +44,29 @@ void StreamConnection::initReconnect()
     connect(&m_reconnectTimer, &QTimer::timeout, this, [this] {
         if (state() != State::Disconnected)
             return;
-        Q_EMIT logLine(QStringLiteral("reconnecting to %1").arg(m_stream->peerName()));
+        Q_EMIT logLine(reconnectingLine());
         open();
     });
 }
 
-void StreamConnection::setAutoReconnect(bool enabled, int intervalMs)
+void StreamConnection::setAutoReconnect(bool enabled, int intervalMs, int windowMs)
 {
     m_autoReconnect = enabled;
-    m_reconnectTimer.setInterval(intervalMs);
+    m_windowMs = qMax(0, windowMs);
+    m_reconnectTimer.setInterval(qMax(1, intervalMs));
     if (!enabled)
-        m_reconnectTimer.stop();
+        stopReconnecting();
+}
+
+void StreamConnection::stopReconnecting()
+{
+    m_reconnectTimer.stop();
+    m_reconnectUntil.reset();
+}
+
+QString StreamConnection::reconnectingLine() const
+{
+    return QStringLiteral("reconnecting to %1").arg(m_stream->peerName());
 }
 
 QString StreamConnection::connectedLine() const
@@ -75,7 +87,7 @@ void StreamConnection::doOpen()
 
 void StreamConnection::doClose()
 {
-    m_reconnectTimer.stop();
+    stopReconnecting(); // closed by us: no reconnect
     if (m_stream->state() == ByteStream::State::Closed)
         setState(State::Disconnected);
     else
@@ -86,6 +98,7 @@ void StreamConnection::onOpened()
 {
     qCInfo(lcStreamConnection).noquote() << protocolKey() << "connected to" << m_stream->peerName();
     Q_EMIT logLine(connectedLine());
+    m_reconnectUntil.reset();
     setState(State::Connected);
 }
 
@@ -104,9 +117,15 @@ void StreamConnection::onClosed(const Error &error)
         : Error(Error::Kind::Disconnected,
                 Tr::tr("connection to %1 closed").arg(m_stream->peerName()));
     Q_EMIT logLine(QStringLiteral("! ") + why.message());
+    if (m_autoReconnect && m_windowMs > 0 && previous == State::Connected)
+        m_reconnectUntil = QDeadlineTimer(m_windowMs);
     setState(State::Disconnected, why);
-    if (m_autoReconnect)
+    if (!m_autoReconnect || state() != State::Disconnected)
+        return;
+    if (m_windowMs == 0 || (m_reconnectUntil && !m_reconnectUntil->hasExpired()))
         m_reconnectTimer.start();
+    else
+        m_reconnectUntil.reset();
 }
 
 } // namespace db

@@ -2,7 +2,10 @@
 
 #include "core/deviceconnection.h"
 
+#include <QDeadlineTimer>
 #include <QTimer>
+
+#include <optional>
 
 namespace db {
 
@@ -25,10 +28,14 @@ public:
     // For tests: an injected stream, not owned, that must outlive the connection.
     StreamConnection(const ConnectionUri &uri, ByteStream *stream, QObject *parent = nullptr);
 
-    // After a lost link (not after close()), or a failed attempt, try open() again every
-    // intervalMs. Off by default.
-    void setAutoReconnect(bool enabled, int intervalMs = kDefaultReconnectIntervalMs);
+    // After a lost link (not after close()), try open() again every intervalMs. windowMs 0: for
+    // as long as it takes, and a failed attempt (a first open() too) is tried again as well.
+    // windowMs > 0: only for a link that was up, and for that long after it was lost (a device
+    // that restarts). Off by default.
+    void setAutoReconnect(bool enabled, int intervalMs = kDefaultReconnectIntervalMs,
+                          int windowMs = 0);
     bool autoReconnect() const { return m_autoReconnect; }
+    int reconnectWindowMs() const { return m_windowMs; }
     // True while waiting to try open() again (for a "reconnecting..." hint).
     bool isReconnectScheduled() const { return m_reconnectTimer.isActive(); }
 
@@ -38,10 +45,12 @@ protected:
     void followStream();
     // The log line once the stream is open; a protocol may add what the device does from then on.
     virtual QString connectedLine() const;
+    // The log line before an automatic reconnect attempt.
+    virtual QString reconnectingLine() const;
 
     void doOpen() override;
     void doClose() override;
-    void stopReconnecting() override { m_reconnectTimer.stop(); }
+    void stopReconnecting() override;
 
 private:
     void initReconnect();
@@ -51,6 +60,8 @@ private:
     ByteStream *m_stream = nullptr;
     QTimer m_reconnectTimer;
     bool m_autoReconnect = false;
+    int m_windowMs = 0;
+    std::optional<QDeadlineTimer> m_reconnectUntil; // set when a link that was up is lost
 };
 
 } // namespace db

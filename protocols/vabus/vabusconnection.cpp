@@ -56,7 +56,21 @@ void VabusConnection::init()
     m_client->setSys(sys ? sys.value() : 0);
     m_ram = uri().hasQuery(QStringLiteral("ram"));
     connect(m_client, &VabusClient::logLine, this, &DeviceConnection::logLine);
+    setRetryAfterLoss(kPowerUpWindowMs);
     followStream();
+}
+
+QString VabusConnection::reconnectingLine() const
+{
+    return QStringLiteral("connecting to %1 again (the inverter may be starting up)")
+        .arg(stream()->peerName());
+}
+
+std::optional<ObjectAddress> VabusConnection::ramAddress(ObjectAddress address) const
+{
+    if (address.sub > kMaxReadDataSet)
+        return std::nullopt;
+    return ObjectAddress(address.index, quint8(address.sub + kRamDataSetOffset));
 }
 
 QString VabusConnection::connectedLine() const
