@@ -3651,10 +3651,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>connection to %1 closed</source>
-        <translation>Verbindung zu %1 geschlossen</translation>
-    </message>
-    <message>
         <source>not connected to %1</source>
         <translation>nicht mit %1 verbunden</translation>
     </message>
@@ -3663,12 +3659,8 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Antwort ohne Prompt zu lang (mehr als %1 Bytes)</translation>
     </message>
     <message>
-        <source>RefGo server already listens on port %1</source>
-        <translation>RefGo-Server lauscht bereits auf Port %1</translation>
-    </message>
-    <message>
-        <source>RefGo server cannot listen on %1:%2: %3</source>
-        <translation>RefGo-Server kann nicht auf %1:%2 lauschen: %3</translation>
+        <source>RefGo server</source>
+        <translation>RefGo-Server</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number</source>
@@ -4188,12 +4180,16 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Verbindung zu %1 geschlossen</translation>
     </message>
     <message>
-        <source>slcan server already listens on port %1</source>
-        <translation>SLCAN-Server lauscht bereits auf Port %1</translation>
+        <source>slcan server</source>
+        <translation>SLCAN-Server</translation>
     </message>
     <message>
-        <source>slcan server cannot listen on %1:%2: %3</source>
-        <translation>SLCAN-Server kann nicht auf %1:%2 lauschen: %3</translation>
+        <source>%1 already listens on port %2</source>
+        <translation>%1 lauscht bereits auf Port %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot listen on %2:%3: %4</source>
+        <translation>%1 kann nicht auf %2:%3 lauschen: %4</translation>
     </message>
     <message>
         <source>no TCP connection to %1 within %2 ms</source>

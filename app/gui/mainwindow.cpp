@@ -1,7 +1,7 @@
 #include "mainwindow.h"
 
 #include "cameralivesource.h"
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
@@ -342,13 +342,14 @@ void MainWindow::setCurrent(DeviceConnection *connection)
 
 void MainWindow::attachCanopen(DeviceConnection *connection)
 {
-    auto *canopen = qobject_cast<canopen::CanopenConnection *>(connection);
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    DeviceConnection *canopen = at ? connection : nullptr;
     if (canopen == m_canopen)
         return;
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
-    m_nm17xPanel->setNetwork(canopen ? canopen->network() : nullptr);
+    m_nm17xPanel->setNetwork(at.network);
 }
 
 void MainWindow::showCanMonitor()

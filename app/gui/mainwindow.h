@@ -17,10 +17,6 @@ class QStackedWidget;
 class QTabWidget;
 class QToolBar;
 
-namespace db::canopen {
-class CanopenConnection;
-}
-
 namespace db::widgets {
 class CanMonitor;
 class DeviceList;
@@ -144,8 +140,8 @@ private:
     // "URI (state)[*]": the current connection and whether it has values not stored permanently.
     void updateWindowTitle();
     void createShortcuts(QMenu *view);
-    // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
-    // else detaches them (their frames stay).
+    // Attaches the CAN monitor, node list and NM17x panel to the connection's CANopen network
+    // when it is on one, else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
     // mainwindow_motion.cpp: the Motion dock, the application-wide Esc stop and the stops on
     // window deactivation and before a connection is closed by the user.
@@ -182,7 +178,7 @@ private:
     widgets::ParamCompareView *m_compareView = nullptr;
     widgets::ParameterSetActions *m_paramActions = nullptr;
     widgets::ScopePage *m_scopePage = nullptr;
-    QPointer<canopen::CanopenConnection> m_canopen;
+    QPointer<DeviceConnection> m_canopen; // the connection whose CANopen network is shown
     QLabel *m_connectionState = nullptr;
     QPointer<QDialog> m_manual; // made on first use
     QSet<const DeviceConnection *> m_unstored; // written, not stored permanently

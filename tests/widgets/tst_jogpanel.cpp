@@ -1,6 +1,6 @@
 // Level 4: the jog/motion panel offscreen against the in-process simulated MovingCap over
 // loopback RefGo (and CANopen for the heartbeat stop), driven with QTest input and asserted on
-// the simulator's axis. Every safety stop of issue 5 has a test here: button release, key
+// the simulator's axis. Every safety stop of the panel has a test here: button release, key
 // release (auto-repeat ignored), focus loss, window deactivation, disconnect, link loss,
 // heartbeat loss, watchdog expiry and Esc anywhere in the main window.
 #include "canopen/canopenconnection.h"

@@ -1,7 +1,7 @@
 #include "canmonitor.h"
 
 #include "canmonitorlog.h"
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
@@ -181,11 +181,12 @@ void CanMonitor::setupView()
     columns->resizeSection(CanMonitorModel::Node, width(prop, "Node"));
 }
 
-void CanMonitor::setConnection(canopen::CanopenConnection *connection)
+void CanMonitor::setConnection(DeviceConnection *connection)
 {
-    setBus(connection ? connection->bus() : nullptr);
-    if (connection)
-        m_model->decoder().setDictionary(connection->node(), connection->dictionary());
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    setBus(at ? at.network->bus() : nullptr);
+    if (at)
+        m_model->decoder().setDictionary(at.node, connection->dictionary());
 }
 
 void CanMonitor::setBus(CanBus *bus)

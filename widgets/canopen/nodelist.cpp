@@ -1,7 +1,6 @@
 #include "nodelist.h"
 
 #include "canopen/cannetwork.h"
-#include "canopen/canopenconnection.h"
 #include "canopen/nmtmaster.h"
 #include "nodelistmodel.h"
 #include "transport/canbus.h"
@@ -99,15 +98,15 @@ NodeList::NodeList(QWidget *parent)
 
 NodeList::~NodeList() = default;
 
-void NodeList::setConnection(canopen::CanopenConnection *connection)
+void NodeList::setConnection(DeviceConnection *connection)
 {
-    if (!connection) {
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    if (!at) {
         setNetwork(nullptr);
         return;
     }
     const DeviceIdentity &id = connection->dictionary().identity;
-    setNetwork(connection->network(), connection->node(),
-               id.productName.isEmpty() ? id.vendorName : id.productName);
+    setNetwork(at.network, at.node, id.productName.isEmpty() ? id.vendorName : id.productName);
 }
 
 void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,

@@ -22,7 +22,7 @@ class Lamp;
 class MotionBlockBox;
 class MotionForm;
 
-// Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
+// Moving an axis by hand: enable/disable/reset, hold-to-run jog (buttons and keys),
 // step jog, the motion command form, status lamps, live position/velocity and the drive's
 // limits. The panel gets the device's axis from the axis factory (devices/axisfactory.h) and
 // builds a MotionAxis on it; it never creates transports.
