@@ -10,6 +10,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QPushButton>
 
 #include <cmath>
