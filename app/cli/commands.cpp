@@ -7,6 +7,7 @@
 #include "commands_params.h"
 #include "commands_record.h"
 
+#include "canopen/canopenconnection.h"
 #include "core/printable.h"
 #include "core/valuecodec.h"
 #include <QCoreApplication>
@@ -83,6 +84,11 @@ Result<ObjectTarget> openObject(Context &c, Session &session)
     target.address = *address;
     DeviceConnection *connection = session.connection();
     target.def = connection->dictionary().find(*address);
+    // A CANopen node without a description: say why, once, before the object is used by index.
+    if (const auto *canopen = qobject_cast<const canopen::CanopenConnection *>(connection); canopen
+        && !target.def && connection->dictionary().isEmpty()
+        && !canopen->descriptionNote().isEmpty())
+        c.err << "drivebench-cli: " << canopen->descriptionNote() << Qt::endl;
     const auto type = typeFor(c, target.def);
     if (!type)
         return type.error();

@@ -58,7 +58,9 @@ public:
     void close();
 
     const ObjectDictionary &dictionary() const { return m_dictionary; }
-    void setDictionary(const ObjectDictionary &dictionary) { m_dictionary = dictionary; }
+    // Replaces the description (e.g. one chosen from the device's identity, or one the user
+    // picked); emits dictionaryChanged().
+    void setDictionary(const ObjectDictionary &dictionary);
 
     // Per-request time limit in ms used by the protocol engine.
     int requestTimeoutMs() const { return m_timeoutMs; }
@@ -111,6 +113,8 @@ Q_SIGNALS:
     // permanently (storeNonVolatile()). Emitted once per successful write, before the reply's
     // finished() reaches other receivers connected later.
     void objectWritten(db::ObjectAddress address);
+    // setDictionary() was called: views of the objects rebuild themselves.
+    void dictionaryChanged();
 
 protected:
     virtual void doOpen() = 0;

@@ -144,10 +144,24 @@ void DriveStatusPanel::startCycle()
 {
     if (m_pending > 0 || !m_connection || !m_connection->isConnected() || !isVisible())
         return;
-    const QList<ObjectAddress> objects = polledObjects();
-    m_pending = int(objects.size());
+    // Only what the description has: a device without these objects would answer every round
+    // with errors (SDO aborts) and tell nothing.
+    const ObjectDictionary &dictionary = m_connection->dictionary();
+    QList<ObjectAddress> objects = polledObjects();
+    objects.removeIf([&dictionary](ObjectAddress a) { return !dictionary.contains(a); });
     m_fresh.clear();
     m_errors.clear();
+    if (objects.isEmpty()) {
+        render();
+        m_footer->setText(dictionary.isEmpty()
+                              ? tr("Nothing is read: the device has no description.")
+                              : tr("Nothing is read: the description has no drive status "
+                                   "objects."));
+        Q_EMIT cycleFinished();
+        scheduleNext(m_intervalMs);
+        return;
+    }
+    m_pending = int(objects.size());
     const quint64 generation = m_generation;
     for (ObjectAddress address : objects) {
         Reply *reply = m_connection->read(address);
