@@ -1,5 +1,7 @@
 #include "canmonitor.h"
 
+#include "canopen/cannetwork.h"
+
 #include "canmonitorlog.h"
 #include "canopen/canopenconnection.h"
 #include "transport/canbus.h"
@@ -178,8 +180,22 @@ void CanMonitor::setupView()
 void CanMonitor::setConnection(canopen::CanopenConnection *connection)
 {
     setBus(connection ? connection->bus() : nullptr);
-    if (connection)
+    disconnect(m_dictionaryWatch);
+    if (!connection)
+        return;
+    // Every node the network has a description of (the connected one, once it has chosen its
+    // description; the displays an NM17x line identified), now and as they come: their PDOs
+    // are shown field by field with names and units.
+    canopen::CanNetwork *network = connection->network();
+    for (const canopen::NodeId node : network->describedNodes())
+        m_model->decoder().setDictionary(node, *network->dictionary(node));
+    if (!network->dictionary(connection->node()))
         m_model->decoder().setDictionary(connection->node(), connection->dictionary());
+    m_dictionaryWatch = connect(network, &canopen::CanNetwork::dictionaryChanged, this,
+                                [this, network](canopen::NodeId node) {
+                                    if (const ObjectDictionary *d = network->dictionary(node))
+                                        m_model->decoder().setDictionary(node, *d);
+                                });
 }
 
 void CanMonitor::setBus(CanBus *bus)
