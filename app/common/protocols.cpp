@@ -83,9 +83,10 @@ canopen::CanNetworkPool &networks()
     return pool;
 }
 
+using DescriptionChoice = canopen::CanopenConnection::DescriptionChoice;
+
 // The description library's answer for a node that did not come with one.
-canopen::CanopenConnection::DescriptionChoice chooseDescription(const IdentityNumbers &identity,
-                                                                canopen::NodeId node)
+DescriptionChoice chooseDescription(const IdentityNumbers &identity, quint8 node)
 {
     DescriptionLibrary &library = descriptionLibrary();
     library.setFolder(descriptionFolder()); // the user may have added files since

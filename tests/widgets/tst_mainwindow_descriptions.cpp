@@ -122,6 +122,8 @@ private Q_SLOTS:
         QVERIFY(prompt->isVisibleTo(editor));
         QVERIFY2(prompt->text().contains(QStringLiteral("00000DB0h")), qPrintable(prompt->text()));
         watchRounds(run);
+        if (const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR"); !dir.isEmpty())
+            run.window->grab().save(dir + QStringLiteral("/screenshot-description-prompt.png"));
 
         // Browse… ends in useDescriptionFile(): the editor lists the objects, the prompt goes.
         QVERIFY(!editor->useDescriptionFile(m_library.filePath(QStringLiteral("missing.eds"))));

@@ -22,6 +22,7 @@ struct Nm17xSim::Private
     std::unique_ptr<SlcanServer> slcan;
     std::unique_ptr<QtCanBus> virtualCan;
     std::unique_ptr<QTcpServer> control;
+    int bitrate = 0; // of the SLCAN bus; 0 = any
     bool started = false;
 };
 
@@ -86,9 +87,15 @@ void Nm17xSim::startDevices()
         device->start();
 }
 
+void Nm17xSim::setBitrate(int bitsPerSecond)
+{
+    d->bitrate = bitsPerSecond;
+}
+
 Result<void> Nm17xSim::startSlcan(quint16 port)
 {
     d->slcan = std::make_unique<SlcanServer>();
+    d->slcan->setBusBitrate(d->bitrate);
     if (auto listening = d->slcan->listen(port); !listening)
         return listening;
     for (SimulatedNm17x *device : d->devices) {

@@ -46,6 +46,8 @@ public:
     void create(const QList<SimDeviceSpec> &devices);
     QList<SimulatedNm17x *> devices() const;
 
+    // The bus's bit rate for SLCAN clients (0: any; the default). Set before startSlcan().
+    void setBitrate(int bitsPerSecond);
     Result<void> startSlcan(quint16 port = 0);
     quint16 slcanPort() const;
     Result<void> startVirtualCan(const QString &interfaceName);

@@ -173,6 +173,7 @@ void SimulatedNm17x::resetNode(bool application)
     m_broadcastStep = 0;
     if (application) {
         m_spindle.stop();
+        m_oscillating = false;
         m_writes.clear();
         m_showNodeId = false;
         for (const ObjectDef &def : m_dictionary.objects()) {
@@ -343,6 +344,7 @@ void SimulatedNm17x::cycle()
         applyWrite(address, raw);
     }
     m_spindle.tick(kCycleMs, settings());
+    oscillate();
     const quint16 errors = errorWord();
     const quint8 reg = quint8(m_store->value({ 0x1001, 0 }).toUInt());
     m_store->set({ 0x1001, 0 }, errors ? (reg | kRegManufacturer) : (reg & ~kRegManufacturer));

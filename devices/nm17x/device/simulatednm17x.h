@@ -48,6 +48,8 @@ public:
     bool inAddressingMode() const { return m_addressing; }
     // The node id offered by broadcast addressing and shown on the display (0 = none).
     quint8 offeredNodeId() const { return m_offered; }
+    // Oscillating between D1 and D2 (2045h:01/02), started by 204Dh:02 = 1.
+    bool isOscillating() const { return m_oscillating; }
     qint32 position() const; // 6004h
     quint16 statusWord() const; // 204Eh:01
     quint16 errorWord() const; // 204Eh:02
@@ -95,6 +97,8 @@ private:
     void handleRpdo2(const QByteArray &d);
     void startSetpoint(qint32 target, bool release, bool loop, std::optional<Speed> speed);
     void setCorrection(qint16 correction);
+    void setOscillation(bool on);
+    void oscillate(); // the next leg, when the last one has ended
     SpindleSettings settings() const;
 
     Variant m_variant;
@@ -126,6 +130,8 @@ private:
     bool m_addressedByBroadcast = false; // took its id; ignores further node ids
     quint8 m_offered = 0;
     bool m_showNodeId = false; // 2008h
+    bool m_oscillating = false;
+    bool m_towardsD2 = true; // the leg in progress
 };
 
 } // namespace db::nm17x

@@ -79,6 +79,7 @@ private Q_SLOTS:
     void positioningWithLoop();
     void setpointBeyondEndLimitIsRefused();
     void jogUntilStopAndUntilLimit();
+    void oscillationBetweenD1AndD2();
     void txPdo2OnChange();
     void faultsShowTheirErrors();
     void heartbeatLossStopsAndReports();
@@ -277,6 +278,35 @@ void TstSimulatedNm17x::jogUntilStopAndUntilLimit()
     line.send(0x37F, "0000000000009100"); // right medium: runs into the limit and stops
     QTRY_VERIFY_WITH_TIMEOUT(!d->spindle().isMoving() && d->position() == 5000, 10000);
     QCOMPARE(d->errorWord(), quint16(0));
+}
+
+// 204Dh:02 = 1: D1 <-> D2 without loop, status bit 2; = 0: back to the setpoint 2020h:01.
+void TstSimulatedNm17x::oscillationBetweenD1AndD2()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2345200164000000"); // D1 = 1.00 mm
+    line.send(0x67F, "234520022C010000"); // D2 = 3.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 2 }).value().toInt(), 300);
+    line.send(0x67F, "2F4D200201000000"); // start oscillating
+    QTRY_VERIFY(d->statusWord() & status::Oscillating);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() >= 295, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() <= 105, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() >= 295, 10000);
+    QVERIFY(d->position() <= 305); // reversal points are approached directly, no loop beyond
+    QVERIFY(d->isOscillating());
+    line.send(0x67F, "2F4D200200000000"); // stop: back to the setpoint (10.00 mm by default)
+    QTRY_VERIFY(!(d->statusWord() & status::Oscillating));
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 1000) <= 5);
+
+    // Not in input mode Takten (2041h:03 = 1): the external switch owns the axis.
+    line.send(0x67F, "2341200301000000");
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 1u);
+    line.send(0x67F, "2F4D200201000000");
+    QTRY_COMPARE(d->read({ 0x204D, 2 }).value().toUInt(), 1u);
+    QVERIFY(!d->isOscillating());
 }
 
 void TstSimulatedNm17x::txPdo2OnChange()
