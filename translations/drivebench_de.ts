@@ -6481,6 +6481,10 @@ Change it?</source>
         <source>Type an object address such as %1.</source>
         <translation>Geben Sie eine Objektadresse wie %1 ein.</translation>
     </message>
+    <message>
+        <source>%1: cannot be written: %2</source>
+        <translation>%1: kann nicht geschrieben werden: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ScopePlot</name>

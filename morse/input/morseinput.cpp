@@ -98,6 +98,14 @@ Result<Recording> readCsv(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return ioError(QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+    Result<Recording> rec = readCsv(file, path);
+    if (file.error() != QFileDevice::NoError)
+        return ioError(QStringLiteral("%1: %2").arg(path, file.errorString()));
+    return rec;
+}
+
+Result<Recording> readCsv(QIODevice &file, const QString &path)
+{
     Recording rec;
     rec.source = QStringLiteral("csv");
     static const QRegularExpression sep(QStringLiteral("[,;\\t]"));
@@ -160,8 +168,6 @@ Result<Recording> readCsv(const QString &path)
                 QStringLiteral("more than %1 samples: cut the recording").arg(kMaxCsvSamples));
         rec.samples.push_back({ t, v });
     }
-    if (file.error() != QFileDevice::NoError)
-        return ioError(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (rec.samples.empty())
         return Error(Error::Kind::InvalidArgument, Tr::tr("%1: no samples").arg(path));
     return rec;

@@ -3,6 +3,7 @@
 #include "core/result.h"
 #include "morse/decode/morsetypes.h"
 
+#include <QIODevice>
 #include <QImage>
 #include <QRect>
 #include <QSize>
@@ -33,6 +34,8 @@ struct Recording
 // are times or brightness that are not finite, negative times, times that repeat or go back
 // (rows out of order), lines longer than kMaxCsvLine and more than kMaxCsvSamples samples.
 Result<Recording> readCsv(const QString &path);
+// The same from any open device; `origin` names it in errors.
+Result<Recording> readCsv(QIODevice &device, const QString &origin);
 constexpr int kMaxCsvLine = 256; // characters
 constexpr std::size_t kMaxCsvSamples = 10'000'000; // 160 MB; 2.7 h at 1 kHz
 

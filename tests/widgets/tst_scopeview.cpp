@@ -20,6 +20,8 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QDir>
+#include <QImage>
 #include <QLabel>
 #include <QMimeData>
 #include <QSignalSpy>
@@ -459,6 +461,18 @@ private slots:
         QVERIFY(page.exportImage(dir.filePath(QStringLiteral("plot.png"))));
         QVERIFY(page.exportImage(dir.filePath(QStringLiteral("plot.pdf"))));
         QVERIFY(!page.exportImage(dir.filePath(QStringLiteral("plot.txt"))));
+        // An export into a folder that cannot take it fails with the file named, and a
+        // successful one over an existing image replaces it whole, leaving nothing behind.
+        const Result<void> nowhere =
+            page.exportImage(dir.filePath(QStringLiteral("missing/plot.png")));
+        QVERIFY(!nowhere);
+        QVERIFY(nowhere.error().message().contains(QStringLiteral("missing/plot.png")));
+        const QString png = dir.filePath(QStringLiteral("plot.png"));
+        QVERIFY(page.exportImage(png));
+        QCOMPARE(QImage(png).isNull(), false);
+        const QStringList files =
+            QDir(dir.path()).entryList(QDir::Files | QDir::Hidden, QDir::Name);
+        QCOMPARE(files, QStringList({ "plot.pdf", "plot.png", "visible.csv", "whole.csv" }));
 
         ScopePage reopened;
         const Result<void> r = reopened.openRecording(whole);

@@ -13,6 +13,10 @@
 
 #include <qcustomplot.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -23,6 +27,7 @@
 #include <QMimeData>
 #include <QSpinBox>
 #include <QTableView>
+#include <QTemporaryFile>
 
 namespace db::widgets {
 
@@ -301,16 +306,30 @@ Result<void> ScopePage::exportImage(const QString &fileName) const
 {
     QCustomPlot *plot = m_plot->customPlot();
     const QString suffix = QFileInfo(fileName).suffix().toLower();
-    bool ok = false;
-    if (suffix == QLatin1String("pdf"))
-        ok = plot->savePdf(fileName);
-    else if (suffix == QLatin1String("png"))
-        ok = plot->savePng(fileName, 0, 0, 2.0);
-    else
+    if (suffix != QLatin1String("pdf") && suffix != QLatin1String("png"))
         return Error(Error::Kind::InvalidArgument,
                      tr("%1: choose a .png or .pdf file name").arg(fileName));
+    // QCustomPlot writes by file name, so the image goes to a temporary file next to the
+    // target that then replaces it in one rename: an export that fails or is interrupted
+    // leaves the old file as it was and no half-written image.
+    QTemporaryFile temp(QFileInfo(fileName).absolutePath() + QStringLiteral("/.XXXXXX.") + suffix);
+    if (!temp.open())
+        return Error(Error::Kind::Io,
+                     tr("%1: cannot be written: %2").arg(fileName, temp.errorString()));
+    temp.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ReadGroup
+                        | QFileDevice::ReadOther);
+    temp.close();
+    const bool ok = suffix == QLatin1String("pdf") ? plot->savePdf(temp.fileName())
+                                                   : plot->savePng(temp.fileName(), 0, 0, 2.0);
     if (!ok)
         return Error(Error::Kind::Io, tr("%1: cannot be written").arg(fileName));
+    if (std::rename(QFile::encodeName(temp.fileName()).constData(),
+                    QFile::encodeName(fileName).constData())
+        != 0)
+        return Error(
+            Error::Kind::Io,
+            tr("%1: cannot be written: %2").arg(fileName, QString::fromLocal8Bit(strerror(errno))));
+    temp.setAutoRemove(false); // renamed: nothing left to remove
     return {};
 }
 

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Runs every fuzz target (tests/fuzz/fuzz_*.cpp) with libFuzzer for SECONDS each and prints a
+# table: target, executions, corpus size, findings.
+#
+#   tools/fuzz.sh SECONDS [TARGET...]        e.g. tools/fuzz.sh 60, tools/fuzz.sh 600 vabus eds
+#
+# Builds with clang (CXX, else clang++-16) in build-fuzz/ with AddressSanitizer and
+# UndefinedBehaviorSanitizer. Each target starts from its seed corpus in tests/fuzz/corpus/ and
+# keeps what it finds in build-fuzz/corpus/<target>/ (not in the repository); a crash, leak,
+# timeout or sanitizer report is saved in build-fuzz/findings/<target>/ and counted as a finding.
+# To keep a finding as a regression input, copy it into tests/fuzz/corpus/<target>/ once fixed.
+# Exit status 1 when any target had a finding.
+set -euo pipefail
+
+if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ ]]; then
+    sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+    exit 2
+fi
+seconds=$1
+shift
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${DRIVEBENCH_FUZZ_BUILD:-$root/build-fuzz}
+cxx=${CXX:-clang++-16}
+if ! command -v "$cxx" >/dev/null; then
+    echo "fuzz.sh: $cxx not found (Debian 12: apt-get install clang-16 libclang-rt-16-dev)" >&2
+    exit 2
+fi
+
+targets=("$@")
+if [[ ${#targets[@]} -eq 0 ]]; then
+    for f in "$root"/tests/fuzz/fuzz_*.cpp; do
+        n=$(basename "$f" .cpp)
+        targets+=("${n#fuzz_}")
+    done
+fi
+
+if [[ ! -f $build/build.ninja ]]; then
+    mkdir -p "$build"
+    CXX=$cxx cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DDRIVEBENCH_FUZZ=ON -DDRIVEBENCH_SANITIZE=address,undefined \
+        -DDRIVEBENCH_BUILD_BENCH=OFF >"$build/configure.log" 2>&1 ||
+        { cat "$build/configure.log" >&2; exit 2; }
+fi
+ninja -C "$build" "${targets[@]/#/fuzz_}" >/dev/null
+
+export QT_QPA_PLATFORM=offscreen DRIVEBENCH_LANG=en
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+
+printf '%-16s %14s %8s %9s\n' target executions corpus findings
+status=0
+for t in "${targets[@]}"; do
+    corpus=$build/corpus/$t
+    findings=$build/findings/$t
+    log=$build/logs/$t.log
+    mkdir -p "$corpus" "$findings" "$(dirname "$log")"
+    dict=()
+    [[ -f $root/tests/fuzz/dict/$t.dict ]] && dict=(-dict="$root/tests/fuzz/dict/$t.dict")
+    before=$(find "$findings" -type f | wc -l)
+    # -fork keeps fuzzing after a finding, so one run reports every distinct crash it meets.
+    "$build/tests/fuzz/fuzz_$t" "$corpus" "$root/tests/fuzz/corpus/$t" "${dict[@]}" \
+        -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+        -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+        -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || true
+    execs=$(grep -Eo 'stat::number_of_executed_units: *[0-9]+' "$log" | awk '{s+=$2} END {print s+0}' || true)
+    if [[ $execs -eq 0 ]]; then
+        execs=$( (grep -Eo '^#[0-9]+' "$log" || true) | tail -1 | tr -d '#')
+    fi
+    size=$(find "$corpus" -type f | wc -l)
+    found=$(( $(find "$findings" -type f | wc -l) - before ))
+    printf '%-16s %14s %8s %9s\n' "$t" "${execs:-0}" "$size" "$found"
+    [[ $found -eq 0 ]] || status=1
+done
+exit $status
