@@ -4775,6 +4775,10 @@ Letzter Fehler: %1</translation>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
+    <message>
+        <source>%v of %m</source>
+        <translation>%v von %m</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::Nm17xLineModel</name>

@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -122,8 +123,16 @@ private Q_SLOTS:
         QVERIFY(prompt->isVisibleTo(editor));
         QVERIFY2(prompt->text().contains(QStringLiteral("00000DB0h")), qPrintable(prompt->text()));
         watchRounds(run);
-        if (const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR"); !dir.isEmpty())
+        if (const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            for (QTabWidget *tabs : run.window->findChildren<QTabWidget *>()) {
+                for (int i = 0; i < tabs->count(); ++i) {
+                    if (tabs->widget(i) == editor || tabs->widget(i)->isAncestorOf(editor))
+                        tabs->setCurrentIndex(i);
+                }
+            }
+            QTRY_VERIFY(prompt->isVisible());
             run.window->grab().save(dir + QStringLiteral("/screenshot-description-prompt.png"));
+        }
 
         // Browse… ends in useDescriptionFile(): the editor lists the objects, the prompt goes.
         QVERIFY(!editor->useDescriptionFile(m_library.filePath(QStringLiteral("missing.eds"))));

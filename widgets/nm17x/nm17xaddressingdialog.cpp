@@ -43,6 +43,7 @@ Nm17xAddressingDialog::Nm17xAddressingDialog(canopen::CanNetwork *network, QWidg
     m_start->setObjectName(QStringLiteral("start"));
     m_cancel->setObjectName(QStringLiteral("cancel"));
     m_progress->setObjectName(QStringLiteral("progress"));
+    m_progress->setFormat(tr("%v of %m"));
 
     m_first->setRange(canopen::kMinNodeId, canopen::kMaxNodeId);
     m_first->setValue(2);
@@ -88,7 +89,7 @@ Nm17xAddressingDialog::Nm17xAddressingDialog(canopen::CanNetwork *network, QWidg
 
 Nm17xAddressingDialog::~Nm17xAddressingDialog()
 {
-    if (isRunning())
+    if (m_addressing->state() == BroadcastAddressing::State::Offering)
         m_addressing->cancel(); // the displays leave addressing mode and are reset
 }
 
@@ -108,10 +109,10 @@ void Nm17xAddressingDialog::setStepSeconds(int seconds)
     m_stepSeconds->setValue(seconds);
 }
 
+// From Start until the summary is shown (finished() of the addressing comes from the event loop).
 bool Nm17xAddressingDialog::isRunning() const
 {
-    return m_addressing->state() == BroadcastAddressing::State::Offering
-        || m_addressing->state() == BroadcastAddressing::State::Finishing;
+    return m_running;
 }
 
 QString Nm17xAddressingDialog::instruction() const
@@ -151,7 +152,7 @@ void Nm17xAddressingDialog::start()
 
 void Nm17xAddressingDialog::cancel()
 {
-    if (!isRunning())
+    if (m_addressing->state() != BroadcastAddressing::State::Offering)
         return;
     addStep(tr("cancelled while node %1 was offered").arg(m_offered), true);
     m_addressing->cancel();
@@ -224,6 +225,7 @@ void Nm17xAddressingDialog::addStep(const QString &text, bool error)
 
 void Nm17xAddressingDialog::setRunning(bool running)
 {
+    m_running = running;
     m_first->setEnabled(!running);
     m_count->setEnabled(!running);
     m_stepSeconds->setEnabled(!running);

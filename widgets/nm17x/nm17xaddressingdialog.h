@@ -81,6 +81,7 @@ private:
     QTimer m_tick;
     QElapsedTimer m_stepClock;
     canopen::NodeId m_offered = 0;
+    bool m_running = false;
 };
 
 } // namespace db::widgets

@@ -1,5 +1,6 @@
 #include "descriptionprompt.h"
 
+#include "description/descriptionlibrary.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QFileDialog>
@@ -57,8 +58,11 @@ void DescriptionPrompt::showFor(const DeviceConnection *connection)
     if (id.vendorId != 0) {
         device =
             tr("It reports vendor %1, product %2").arg(hex32(id.vendorId), hex32(id.productCode));
-        device +=
-            id.revision.isEmpty() ? QStringLiteral(".") : tr(", revision %1.").arg(id.revision);
+        device += id.revision.isEmpty()
+            ? QStringLiteral(".")
+            : tr(", revision %1.")
+                  .arg(parseRevision(id.revision) ? hex32(*parseRevision(id.revision))
+                                                  : id.revision);
     } else {
         device = tr("It did not report its identity (1018h).");
     }
