@@ -3010,8 +3010,12 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>fault INDEX motor|sensor|none (Anzeigenindex, Störung)</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (list, turn, key, fault)</source>
-        <translation>unbekannter Befehl „%1“ (list, turn, key, fault)</translation>
+        <source>input INDEX F G (each 0 or 1)</source>
+        <translation>input INDEX F G (jeweils 0 oder 1)</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input)</source>
+        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input)</translation>
     </message>
 </context>
 <context>
@@ -3047,6 +3051,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>write queue to the application is full</source>
         <translation>Schreibwarteschlange zur Applikation ist voll</translation>
+    </message>
+    <message>
+        <source>D3 cannot be written while input F is active</source>
+        <translation>D3 kann nicht geschrieben werden, solange Eingang F aktiv ist</translation>
     </message>
 </context>
 <context>

@@ -213,8 +213,21 @@ QString Nm17xSim::execute(const QString &line)
             return QStringLiteral("ok");
         return QStringLiteral("error: ") + tr("fault INDEX motor|sensor|none");
     }
+    if (command == QLatin1String("input") && words.size() == 4) {
+        const auto level = [](const QString &w) -> std::optional<bool> {
+            if (w == QLatin1String("0") || w == QLatin1String("1"))
+                return w == QLatin1String("1");
+            return std::nullopt;
+        };
+        const auto f = level(words.at(2));
+        const auto g = level(words.at(3));
+        if (!f || !g)
+            return QStringLiteral("error: ") + tr("input INDEX F G (each 0 or 1)");
+        device->setInputs(*f, *g);
+        return QStringLiteral("ok");
+    }
     return QStringLiteral("error: ")
-        + tr("unknown command '%1' (list, turn, key, fault)").arg(line);
+        + tr("unknown command '%1' (list, turn, key, fault, input)").arg(line);
 }
 
 QString Nm17xSim::describe() const

@@ -174,6 +174,8 @@ void SimulatedNm17x::resetNode(bool application)
     if (application) {
         m_spindle.stop();
         m_oscillating = false;
+        m_d3Released = false; // D3 is 0 and locked after power-on
+        m_externPosiRunning = false;
         m_writes.clear();
         m_showNodeId = false;
         for (const ObjectDef &def : m_dictionary.objects()) {
@@ -345,6 +347,7 @@ void SimulatedNm17x::cycle()
     }
     m_spindle.tick(kCycleMs, settings());
     oscillate();
+    followExternPosi();
     const quint16 errors = errorWord();
     const quint8 reg = quint8(m_store->value({ 0x1001, 0 }).toUInt());
     m_store->set({ 0x1001, 0 }, errors ? (reg | kRegManufacturer) : (reg & ~kRegManufacturer));

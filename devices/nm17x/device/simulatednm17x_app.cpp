@@ -39,7 +39,7 @@ qint32 SimulatedNm17x::position() const
 quint16 SimulatedNm17x::statusWord() const
 {
     const quint16 s = m_spindle.status(settings()) | (errorWord() ? status::Error : 0)
-        | (m_oscillating ? status::Oscillating : 0);
+        | (m_oscillating ? status::Oscillating : 0) | inputStatus();
     return hasMotor(m_variant) ? s : (s & status::ArrowsActive);
 }
 
@@ -148,6 +148,11 @@ Result<void> SimulatedNm17x::checkWrite(ObjectAddress address, const QVariant &r
         if (!isJogCode(v))
             return abortWith(abort::InvalidValue, tr("11..13 or 21..23"));
         break;
+    case 0x204503:
+        if (u32({ 0x2041, 3 }) == 2 && m_inputF)
+            return abortWith(abort::General, tr("D3 cannot be written while input F is active"));
+        m_d3Released = true; // a written D3 may be used once, at once
+        break;
     default:
         break;
     }
@@ -216,10 +221,15 @@ void SimulatedNm17x::startSetpoint(qint32 target, bool release, bool loop,
 // unless the spindle is at or above it. The external mode switch (inputs F/G) is taken to be in
 // its "no oscillation" position, so the command is accepted in input modes 0 and 3. Stopping
 // positions back to the current setpoint 2020h:01 (with loop).
-void SimulatedNm17x::setOscillation(bool on)
+void SimulatedNm17x::setOscillation(bool on, bool byInputs)
 {
     const quint32 mode = u32({ 0x2041, 3 });
-    if (!hasMotor(m_variant) || on == m_oscillating || (on && mode != 0 && mode != 3))
+    // Over CAN only in modes 0 and 3, and in mode 0 only while the switch is at 00: the switch
+    // has priority.
+    const bool switchOwns = mode == 0 && (m_inputF || m_inputG);
+    if (!byInputs && (switchOwns || (on && mode != 0 && mode != 3)))
+        return;
+    if (!hasMotor(m_variant) || on == m_oscillating)
         return;
     m_oscillating = on;
     if (!on) {
@@ -252,6 +262,12 @@ void SimulatedNm17x::setCorrection(qint16 correction)
 void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
 {
     m_showNodeId = false; // any write ends the special display modes
+    if (inputsOwnAxis() && (address.index == 0x2020 || address.index == 0x204D)) {
+        // Only the official stop gets through, and only in ExternPosi (spec 6.10).
+        const bool stop = address == ObjectAddress(0x204D, 1) && raw.toLongLong() == 0;
+        if (!(stop && u32({ 0x2041, 3 }) == 2))
+            return;
+    }
     const qint32 v = raw.toInt();
     const auto speed = [this] {
         return std::optional(Speed(u32({ 0x2020, 8 }) + 1));
@@ -375,6 +391,8 @@ void SimulatedNm17x::handleRpdo2(const QByteArray &d)
         return raiseEmergency(kInvalidControlWord, kSub1);
     const bool motor = hasMotor(m_variant);
     const SpindleSettings s = settings();
+    if (inputsOwnAxis() && what->command != Command::Stop && what->command != Command::WriteD3)
+        return; // Takten / ExternPosi own the axis
     switch (what->command) {
     case Command::None:
     case Command::Reserved:
@@ -384,8 +402,10 @@ void SimulatedNm17x::handleRpdo2(const QByteArray &d)
         return m_spindle.stop();
     case Command::WriteD3:
         setCorrection(c->correction);
-        if (motor)
+        if (motor && !(u32({ 0x2041, 3 }) == 2 && m_inputF)) {
             m_store->set({ 0x2045, 3 }, c->setpoint);
+            m_d3Released = true;
+        }
         return;
     case Command::SetpointDirect:
         setCorrection(c->correction);

@@ -80,6 +80,9 @@ private Q_SLOTS:
     void setpointBeyondEndLimitIsRefused();
     void jogUntilStopAndUntilLimit();
     void oscillationBetweenD1AndD2();
+    void inputsTakten();
+    void inputsExternPosiAsInTheManual();
+    void inputsStandardOscillateAndTravel();
     void txPdo2OnChange();
     void faultsShowTheirErrors();
     void heartbeatLossStopsAndReports();
@@ -307,6 +310,91 @@ void TstSimulatedNm17x::oscillationBetweenD1AndD2()
     line.send(0x67F, "2F4D200201000000");
     QTRY_COMPARE(d->read({ 0x204D, 2 }).value().toUInt(), 1u);
     QVERIFY(!d->isOscillating());
+}
+
+// Mode 1: a rising edge of F positions to D1, of G to D2; with one input active the axis
+// belongs to the inputs (status bit 3; CAN setpoints ignored).
+void TstSimulatedNm17x::inputsTakten()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200301000000"); // 2041h:03 = 1 Takten
+    line.send(0x67F, "23452001C8000000"); // D1 = 2.00 mm
+    line.send(0x67F, "2345200290010000"); // D2 = 4.00 mm
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 1u);
+    d->setInputs(true, false);
+    QVERIFY(d->statusWord() & status::Takten);
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 200) <= 5);
+    line.send(0x67F, "23202002E8030000"); // 2020h:02 = 10.00 mm with release: ignored
+    QTRY_COMPARE(d->read({ 0x2020, 2 }).value().toInt(), 1000);
+    d->setInputs(false, false);
+    QVERIFY(!(d->statusWord() & status::Takten));
+    d->setInputs(false, true);
+    QTRY_VERIFY_WITH_TIMEOUT(qAbs(d->position() - 400) <= 5 && !d->spindle().isMoving(), 10000);
+    QVERIFY(d->statusWord() & status::InPosition);
+}
+
+// Mode 2, the manual's example (spec 6.10): D3 = 20.00 mm, F on: positioning starts; F off:
+// stop, release revoked; D3 cannot be written while F is active; D3 written again: reached.
+void TstSimulatedNm17x::inputsExternPosiAsInTheManual()
+{
+    Line line({ Variant::Nm174 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200302000000"); // 2041h:03 = 2 ExternPosi
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 2u);
+    d->setInputs(true, false); // D3 is locked after power-on: nothing moves
+    QVERIFY(d->statusWord() & status::ExternPosi);
+    QVERIFY(!d->spindle().isMoving());
+    d->setInputs(false, false);
+    line.take();
+    line.send(0x67F, "23452003D0070000"); // D3 = 20.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 3 }).value().toInt(), 2000);
+    d->setInputs(true, false);
+    QTRY_VERIFY(d->position() > 100);
+    line.take();
+    line.send(0x67F, "2345200390010000"); // D3 = 4.00 mm while F is active: refused
+    const QList<Frame> answer = line.takeId(0x5FF);
+    QCOMPARE(answer.size(), 1);
+    QCOMPARE(quint8(answer.at(0).data.at(0)), quint8(0x80));
+    d->setInputs(false, false); // released before the target: stop
+    QTRY_VERIFY(!d->spindle().isMoving());
+    const qint32 stopped = d->position();
+    QVERIFY(stopped < 2000);
+    d->setInputs(true, false); // release revoked: F alone does not restart
+    QVERIFY(!d->spindle().isMoving());
+    d->setInputs(false, false);
+    line.send(0x67F, "23452003D0070000"); // D3 = 20.00 mm again
+    QTRY_VERIFY(d->read({ 0x2045, 3 }).value().toInt() == 2000);
+    d->setInputs(true, false);
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 2000) <= 5);
+}
+
+// Mode 0: both inputs oscillate (and CAN cannot stop it), one input travels until released.
+void TstSimulatedNm17x::inputsStandardOscillateAndTravel()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2345200164000000"); // D1 = 1.00 mm
+    line.send(0x67F, "234520022C010000"); // D2 = 3.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 2 }).value().toInt(), 300);
+    d->setInputs(true, true);
+    QVERIFY(d->isOscillating());
+    line.send(0x67F, "2F4D200200000000"); // CAN stop: the switch has priority
+    QTRY_COMPARE(d->read({ 0x204D, 2 }).value().toUInt(), 0u);
+    QVERIFY(d->isOscillating());
+    d->setInputs(false, false);
+    QVERIFY(!d->isOscillating());
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    const qint32 start = d->position();
+    d->setInputs(true, false); // F alone: travel counting up
+    QTRY_VERIFY(d->position() > start + 50);
+    d->setInputs(false, false);
+    QTRY_VERIFY(!d->spindle().isMoving());
 }
 
 void TstSimulatedNm17x::txPdo2OnChange()
