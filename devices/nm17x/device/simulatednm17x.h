@@ -145,6 +145,7 @@ private:
     bool m_inputG = false;
     bool m_d3Released = false; // D3 written since its last use (locked after power-on)
     bool m_externPosiRunning = false;
+    int m_keyDown = 0; // a key held (+1 right, -1 left), 0 none
 };
 
 } // namespace db::nm17x

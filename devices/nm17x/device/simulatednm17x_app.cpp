@@ -39,7 +39,8 @@ qint32 SimulatedNm17x::position() const
 quint16 SimulatedNm17x::statusWord() const
 {
     const quint16 s = m_spindle.status(settings()) | (errorWord() ? status::Error : 0)
-        | (m_oscillating ? status::Oscillating : 0) | inputStatus();
+        | (m_oscillating ? status::Oscillating : 0) | inputStatus()
+        | (m_keyDown < 0 ? status::LeftKey : 0) | (m_keyDown > 0 ? status::RightKey : 0);
     return hasMotor(m_variant) ? s : (s & status::ArrowsActive);
 }
 

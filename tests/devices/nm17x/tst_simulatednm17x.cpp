@@ -83,6 +83,7 @@ private Q_SLOTS:
     void inputsTakten();
     void inputsExternPosiAsInTheManual();
     void inputsStandardOscillateAndTravel();
+    void heldKeyRunsAtTheKeyModeSpeed();
     void txPdo2OnChange();
     void faultsShowTheirErrors();
     void heartbeatLossStopsAndReports();
@@ -395,6 +396,33 @@ void TstSimulatedNm17x::inputsStandardOscillateAndTravel()
     QTRY_VERIFY(d->position() > start + 50);
     d->setInputs(false, false);
     QTRY_VERIFY(!d->spindle().isMoving());
+}
+
+// A key held longer than 400 ms runs the motor until it is let go (status bit 6 meanwhile), at
+// the speed of 2041h:04: fast travels farther than slow in the same time.
+void TstSimulatedNm17x::heldKeyRunsAtTheKeyModeSpeed()
+{
+    Line line({ Variant::Nm172, Variant::Nm172 });
+    SimulatedNm17x *slow = line.devices.at(0);
+    SimulatedNm17x *fast = line.devices.at(1);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200403000000"); // both: 2041h:04 = 3 fast ...
+    QTRY_COMPARE(fast->read({ 0x2041, 4 }).value().toUInt(), 3u);
+    QVERIFY(slow->write({ 0x2041, 4 }, 1u).ok()); // ... then the first one slow
+    QTRY_COMPARE(slow->read({ 0x2041, 4 }).value().toUInt(), 1u);
+    const qint32 slowStart = slow->position();
+    const qint32 fastStart = fast->position();
+    slow->pressKey(1, 600);
+    fast->pressKey(1, 600);
+    QVERIFY(slow->statusWord() & status::RightKey);
+    QTRY_VERIFY(slow->spindle().isMoving() && fast->spindle().isMoving());
+    QTRY_VERIFY_WITH_TIMEOUT(!slow->spindle().isMoving() && !fast->spindle().isMoving(), 5000);
+    QVERIFY(!(slow->statusWord() & status::RightKey));
+    QVERIFY(slow->position() > slowStart);
+    QVERIFY2(fast->position() - fastStart > 2 * (slow->position() - slowStart),
+             qPrintable(QStringLiteral("slow %1, fast %2")
+                            .arg(slow->position() - slowStart)
+                            .arg(fast->position() - fastStart)));
 }
 
 void TstSimulatedNm17x::txPdo2OnChange()
