@@ -1,4 +1,5 @@
 #include "csv.h"
+#include "core/filereader.h"
 
 #include "core/printable.h"
 
@@ -202,11 +203,11 @@ Result<void> save(const QString &fileName, const Recording &recording, double t0
 
 Result<Recording> load(const QString &fileName)
 {
-    QFile file(fileName);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io,
-                     Tr::tr("cannot read %1: %2").arg(fileName, file.errorString()));
-    Result<Recording> rec = fromCsv(file.readAll());
+    const Result<QByteArray> bytes =
+        files::readAll(fileName, files::kRecordingLimit, Tr::tr("a recording"));
+    if (!bytes)
+        return bytes.error();
+    Result<Recording> rec = fromCsv(*bytes);
     if (!rec)
         return rec.error().prefixed(fileName);
     return rec;

@@ -933,10 +933,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
         <source> (resolved for node %1)</source>
         <translation> (aufgelöst für Knoten %1)</translation>
     </message>
@@ -1522,6 +1518,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>nm17x scan: the bit rates to look at (default 125000,250000).</source>
         <translation>nm17x scan: die zu prüfenden Bitraten (Standard 125000,250000).</translation>
+    </message>
+    <message>
+        <source>a value</source>
+        <translation>ein Wert</translation>
     </message>
 </context>
 <context>
@@ -2113,14 +2113,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>cannot open %1: %2</source>
-        <translation>%1 kann nicht geöffnet werden: %2</translation>
-    </message>
-    <message>
-        <source>%1: JSON error at offset %2: %3</source>
-        <translation>%1: JSON-Fehler an Position %2: %3</translation>
-    </message>
-    <message>
         <source>%1 is not a drivebench device description</source>
         <translation>%1 ist keine drivebench-Gerätebeschreibung</translation>
     </message>
@@ -2177,10 +2169,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 nimmt keine rohen Protokollbefehle an</translation>
     </message>
     <message>
-        <source>%1 is a folder, not a file</source>
-        <translation>%1 ist ein Ordner, keine Datei</translation>
-    </message>
-    <message>
         <source>%1 is empty</source>
         <translation>%1 ist leer</translation>
     </message>
@@ -2207,10 +2195,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>&apos;%1&apos; is not an object address; write INDEX:SUB in hex, e.g. 6041:0</source>
         <translation>„%1“ ist keine Objektadresse; INDEX:SUB hexadezimal schreiben, z. B. 6041:0</translation>
-    </message>
-    <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>&apos;\%1&apos; needs %2 hex digits</source>
@@ -2591,6 +2575,41 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>bad address &apos;%1&apos; (%2 addresses are written like %3)</source>
         <translation>ungültige Adresse „%1“ (%2-Adressen schreibt man wie %3)</translation>
+    </message>
+    <message>
+        <source>a device description</source>
+        <translation>eine Gerätebeschreibung</translation>
+    </message>
+    <message>
+        <source>%1: JSON error at %2: %3</source>
+        <translation>%1: JSON-Fehler in %2: %3</translation>
+    </message>
+    <message>
+        <source>a parameter set</source>
+        <translation>ein Parametersatz</translation>
+    </message>
+</context>
+<context>
+    <name>db::files</name>
+    <message>
+        <source>cannot read %1: it is a folder, not a file</source>
+        <translation>%1 kann nicht gelesen werden: Es ist ein Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MB, more than the %3 MB %4 may have: is it the right file?</source>
+        <translation>%1 ist %2 MB groß, mehr als die %3 MB, die %4 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>%1 is more than the %2 MB %3 may have: is it the right file?</source>
+        <translation>%1 ist größer als die %2 MB, die %3 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
     </message>
 </context>
 <context>
@@ -3492,10 +3511,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
         <source>line %1: %2</source>
         <translation>Zeile %1: %2</translation>
     </message>
@@ -3550,6 +3565,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>channel line without a valid id (%1 addresses are written like %2)</source>
         <translation>Kanalzeile ohne gültige Kennung (%1-Adressen werden wie %2 geschrieben)</translation>
+    </message>
+    <message>
+        <source>a recording</source>
+        <translation>eine Aufzeichnung</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 #include "commands_canopen.h"
+#include "core/filereader.h"
 
 #include "networksession.h"
 
@@ -351,10 +352,10 @@ int saveValueToFile(Context &c, DataType type, const QVariant &raw)
 
 Result<QVariant> loadValueFromFile(const Context &c, const ObjectDef *def, DataType type)
 {
-    QFile file(c.file);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot read %1: %2").arg(c.file, file.errorString()));
-    const QByteArray bytes = file.readAll();
+    const Result<QByteArray> read = files::readAll(c.file, files::kValueLimit, Tr::tr("a value"));
+    if (!read)
+        return read.error();
+    const QByteArray &bytes = *read;
     if (!def && c.type.isEmpty())
         return QVariant(bytes); // unknown object: the bytes as they are
     if (type == DataType::VisibleString || type == DataType::UnicodeString)

@@ -13,6 +13,7 @@
 // default) or "parameter" (decimal NUMBER:DATASET, index = parameter number, sub = data set).
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
 #include "descriptionfile.h"
+#include "core/filereader.h"
 
 #include "core/objectdictionary.h"
 
@@ -67,10 +68,11 @@ Result<QVariant> rawValue(DataType type, const QJsonValue &v)
 
 Result<ObjectDictionary> loadJsonDescription(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
-    return parseJsonDescription(file.readAll(), path);
+    const Result<QByteArray> bytes =
+        files::readAll(path, files::kDescriptionLimit, Tr::tr("a device description"));
+    if (!bytes)
+        return bytes.error();
+    return parseJsonDescription(*bytes, path);
 }
 
 Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QString &origin)
@@ -79,10 +81,9 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (doc.isNull())
         return Error(Error::Kind::Malformed,
-                     Tr::tr("%1: JSON error at offset %2: %3")
-                         .arg(origin)
-                         .arg(parseError.offset)
-                         .arg(parseError.errorString()));
+                     Tr::tr("%1: JSON error at %2: %3")
+                         .arg(origin, files::textPosition(json, parseError.offset),
+                              parseError.errorString()));
     const QJsonObject root = doc.object();
     if (root.value(QLatin1String("format")).toString()
         != QLatin1String("drivebench-device-description"))

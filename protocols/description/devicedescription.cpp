@@ -1,4 +1,5 @@
 #include "devicedescription.h"
+#include "core/filereader.h"
 
 #include "descriptionfile.h"
 #include "edsloader.h"
@@ -65,12 +66,11 @@ bool DescriptionLoad::resolveNodeId(quint8 id)
 Result<DescriptionLoad> loadDeviceDescription(const QString &path,
                                               const DescriptionOptions &options)
 {
-    QFile file(path);
-    if (QFileInfo(path).isDir())
-        return Error(Error::Kind::Io, Tr::tr("%1 is a folder, not a file").arg(path));
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
-    return parseDeviceDescription(file.readAll(), path, options);
+    const Result<QByteArray> bytes =
+        files::readAll(path, files::kDescriptionLimit, Tr::tr("a device description"));
+    if (!bytes)
+        return bytes.error();
+    return parseDeviceDescription(*bytes, path, options);
 }
 
 Result<DescriptionLoad> parseDeviceDescription(const QByteArray &data, const QString &origin,

@@ -1,6 +1,7 @@
 // CiA 306 EDS/DCF loader. Section and key names are case-insensitive (CiA 306 4.1); numbers
 // are decimal, 0x-hex or octal with a leading 0 (4.6.2).
 #include "edsloader.h"
+#include "core/filereader.h"
 
 #include "edsinifile.h"
 
@@ -387,10 +388,11 @@ void EdsReader::applyValue(ObjectDef &def, const Section &s, const char *key, co
 
 Result<DescriptionLoad> loadEds(const QString &path, const DescriptionOptions &options)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
-    return parseEds(file.readAll(), path, options);
+    const Result<QByteArray> bytes =
+        files::readAll(path, files::kDescriptionLimit, Tr::tr("a device description"));
+    if (!bytes)
+        return bytes.error();
+    return parseEds(*bytes, path, options);
 }
 
 Result<DescriptionLoad> parseEds(const QByteArray &data, const QString &origin,

@@ -1,6 +1,7 @@
 // CiA 311 XDD/XDC loader. Element and attribute names follow CiA 311 (ISO 15745 profile
 // container, ProfileBody_Device_CANopen and ProfileBody_CommunicationNetwork_CANopen).
 #include "xddloader.h"
+#include "core/filereader.h"
 
 #include "xddparameter.h"
 
@@ -324,10 +325,11 @@ ObjectDef XddReader::makeDef(ObjectAddress address, const QXmlStreamAttributes &
 
 Result<DescriptionLoad> loadXdd(const QString &path, const DescriptionOptions &options)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
-    return parseXdd(file.readAll(), path, options);
+    const Result<QByteArray> bytes =
+        files::readAll(path, files::kDescriptionLimit, Tr::tr("a device description"));
+    if (!bytes)
+        return bytes.error();
+    return parseXdd(*bytes, path, options);
 }
 
 Result<DescriptionLoad> parseXdd(const QByteArray &data, const QString &origin,

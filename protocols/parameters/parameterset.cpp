@@ -1,4 +1,5 @@
 #include "parameterset.h"
+#include "core/filereader.h"
 #include "core/printable.h"
 
 #include <QFile>
@@ -173,10 +174,11 @@ Result<void> ParameterSet::save(const QString &path, const QStringList &comments
 
 Result<ParameterSet> ParameterSet::load(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Error(Error::Kind::Io, Tr::tr("cannot read %1: %2").arg(path, file.errorString()));
-    return parse(file.readAll(), path);
+    const Result<QByteArray> bytes =
+        files::readAll(path, files::kParameterSetLimit, Tr::tr("a parameter set"));
+    if (!bytes)
+        return bytes.error();
+    return parse(*bytes, path);
 }
 
 ParameterSet ParameterSet::defaults(const ObjectDictionary &dictionary)
