@@ -837,10 +837,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Störung quittieren (MC_Reset)</translation>
     </message>
     <message>
-        <source>home with a CiA 402 method, e.g. 35; prints the position</source>
-        <translation>Referenzfahrt mit einer CiA-402-Methode, z. B. 35; gibt die Position aus</translation>
-    </message>
-    <message>
         <source>move and wait for Done; prints the final actual position</source>
         <translation>fahren und auf Done warten; gibt die erreichte Istposition aus</translation>
     </message>
@@ -949,10 +945,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>--wait erwartet ms &gt; 0</translation>
     </message>
     <message>
-        <source>%1: no CiA 402 drive description (give ?eds=FILE)</source>
-        <translation>%1: keine CiA-402-Antriebsbeschreibung (?eds=DATEI angeben)</translation>
-    </message>
-    <message>
         <source>reading the scaling</source>
         <translation>Lesen der Skalierung</translation>
     </message>
@@ -983,10 +975,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>motion commands: longest wait for the end (ms, default 60000).</source>
         <translation>Bewegungsbefehle: längste Wartezeit auf das Ende (ms, Standard 60000).</translation>
-    </message>
-    <message>
-        <source>METHOD is a CiA 402 homing method number, not &apos;%1&apos;</source>
-        <translation>METHODE ist die Nummer einer CiA-402-Referenzfahrtmethode, nicht „%1“</translation>
     </message>
     <message>
         <source>move takes exactly one of --abs, --rel, --add</source>
@@ -1523,6 +1511,30 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>a value</source>
         <translation>ein Wert</translation>
     </message>
+    <message>
+        <source>home with the drive&apos;s homing method number, e.g. 35; prints the position</source>
+        <translation>mit der Referenzfahrt-Methode des Antriebs referenzieren, z. B. 35; gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>run a motion block of the drive&apos;s table (or the sequence it starts) to its end; prints the position</source>
+        <translation>einen Fahrsatz aus der Tabelle des Antriebs (oder die Folge, die er startet) bis zum Ende fahren; gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>travel: run the sequence that starts at BLOCK.</source>
+        <translation>travel: die Fahrsatzfolge ab BLOCK fahren.</translation>
+    </message>
+    <message>
+        <source>travel: resume the interrupted block.</source>
+        <translation>travel: den unterbrochenen Fahrsatz wieder aufnehmen.</translation>
+    </message>
+    <message>
+        <source>METHOD is a homing method number, not &apos;%1&apos;</source>
+        <translation>METHODE ist die Nummer einer Referenzfahrtmethode, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>BLOCK is a motion block number, not &apos;%1&apos;</source>
+        <translation>BLOCK ist eine Fahrsatznummer, nicht „%1“</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -1760,6 +1772,323 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1 has %2 addresses (like %3) but %4 has %5 addresses (like %6): the same address names different objects, so they cannot be compared</source>
         <translation>%1 hat %2-Adressen (wie %3), aber %4 hat %5-Adressen (wie %6): dieselbe Adresse bezeichnet verschiedene Objekte, daher ist kein Vergleich möglich</translation>
+    </message>
+</context>
+<context>
+    <name>db::StatusSource</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli</name>
+    <message>
+        <source>configuration %1 has no positioning control (30 is not x40): velocity mode (rpm) only</source>
+        <translation>Konfiguration %1 hat keine Lageregelung (30 ist nicht x40): nur Drehzahlmodus (1/min)</translation>
+    </message>
+    <message>
+        <source>Link watchdog off (388 = 0): the inverter keeps running when the link stops.</source>
+        <translation>Verbindungsüberwachung aus (388 = 0): der Umrichter läuft weiter, wenn die Verbindung abbricht.</translation>
+    </message>
+    <message>
+        <source>fault F2714</source>
+        <translation>Störung F2714</translation>
+    </message>
+    <message>
+        <source>switch off</source>
+        <translation>Abschalten</translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation>Schnellhalt</translation>
+    </message>
+    <message>
+        <source>stop, then fault F2714</source>
+        <translation>Stillsetzen, dann Störung F2714</translation>
+    </message>
+    <message>
+        <source>quick stop, then fault F2714</source>
+        <translation>Schnellhalt, dann Störung F2714</translation>
+    </message>
+    <message>
+        <source>Link watchdog (388 = %1): %2 10 s after the last exchange.</source>
+        <translation>Verbindungsüberwachung (388 = %1): %2 10 s nach dem letzten Datenaustausch.</translation>
+    </message>
+    <message>
+        <source>No answer for %1 s: the inverter reacts in %2 s at the latest.</source>
+        <translation>Seit %1 s keine Antwort: der Umrichter reagiert spätestens in %2 s.</translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation>Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <source>connection to %1 closed</source>
+        <translation>Verbindung zu %1 geschlossen</translation>
+    </message>
+    <message>
+        <source>the inverter did not give its configuration (30)</source>
+        <translation>der Umrichter hat seine Konfiguration (30) nicht geliefert</translation>
+    </message>
+    <message>
+        <source>superseded by %1</source>
+        <translation>ersetzt durch %1</translation>
+    </message>
+    <message>
+        <source>the inverter is not in &apos;operation enabled&apos;: enable it first</source>
+        <translation>der Umrichter ist nicht in &apos;Betrieb freigegeben&apos;: zuerst freigeben</translation>
+    </message>
+    <message>
+        <source>refused: mode change while moving</source>
+        <translation>verweigert: Betriebsartwechsel während der Bewegung</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switched on&apos; for the mode change</source>
+        <translation>der Umrichter ist für den Betriebsartwechsel nicht nach &apos;Eingeschaltet&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the inverter did not return to &apos;operation enabled&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Betrieb freigegeben&apos; zurückgekehrt</translation>
+    </message>
+    <message>
+        <source>enable</source>
+        <translation>Freigabe</translation>
+    </message>
+    <message>
+        <source>disable</source>
+        <translation>Sperren</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switch on disabled&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Einschalten gesperrt&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the inverter is in fault: reset it first</source>
+        <translation>der Umrichter ist in Störung: zuerst quittieren</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;ready to switch on&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Einschaltbereit&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>no mains voltage (status bit 4 &apos;voltage enabled&apos; is 0): the inverter cannot switch on</source>
+        <translation>keine Netzspannung (Zustandsbit 4 &apos;Spannung freigegeben&apos; ist 0): der Umrichter kann nicht einschalten</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switched on&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Eingeschaltet&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the hardware enable (STO) is off: the inverter stays in &apos;switched on&apos;</source>
+        <translation>die Hardware-Freigabe (STO) fehlt: der Umrichter bleibt in &apos;Eingeschaltet&apos;</translation>
+    </message>
+    <message>
+        <source>fault reset</source>
+        <translation>Störungsquittierung</translation>
+    </message>
+    <message>
+        <source>the fault stays after the reset: remove its cause first</source>
+        <translation>die Störung bleibt nach dem Quittieren: zuerst die Ursache beheben</translation>
+    </message>
+    <message>
+        <source>target -1 u cannot be approached: 1455 = -1 switches the override off</source>
+        <translation>Ziel -1 u kann nicht angefahren werden: 1455 = -1 schaltet den Override ab</translation>
+    </message>
+    <message>
+        <source>profile position</source>
+        <translation>Profillage</translation>
+    </message>
+    <message>
+        <source>the inverter did not clear &apos;set-point acknowledged&apos; (bit 12)</source>
+        <translation>der Umrichter hat &apos;Sollwert bestätigt&apos; (Bit 12) nicht zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>the inverter did not acknowledge the set-point (bit 12)</source>
+        <translation>der Umrichter hat den Sollwert nicht bestätigt (Bit 12)</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>velocity -1 cannot be set: -1 switches the override off</source>
+        <translation>Geschwindigkeit -1 kann nicht vorgegeben werden: -1 schaltet den Override ab</translation>
+    </message>
+    <message>
+        <source>halt</source>
+        <translation>Halt</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>homing not finished within %1 s</source>
+        <translation>Referenzfahrt nicht innerhalb von %1 s beendet</translation>
+    </message>
+    <message>
+        <source>homing error (status bit 13)</source>
+        <translation>Referenzfahrt-Fehler (Zustandsbit 13)</translation>
+    </message>
+    <message>
+        <source>the ACTIVE Cube has no torque mode over the override</source>
+        <translation>der ACTIVE Cube hat keinen Drehmomentmodus über den Override</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>motion block %1 does not exist (1-32)</source>
+        <translation>Fahrsatz %1 gibt es nicht (1-32)</translation>
+    </message>
+    <message>
+        <source>table travel block %1</source>
+        <translation>Fahrsatz %1</translation>
+    </message>
+    <message>
+        <source>the inverter did not start the motion block (status bit 8)</source>
+        <translation>der Umrichter hat den Fahrsatz nicht gestartet (Zustandsbit 8)</translation>
+    </message>
+    <message>
+        <source>the motion block did not end within %1 s</source>
+        <translation>der Fahrsatz wurde nicht innerhalb von %1 s beendet</translation>
+    </message>
+    <message>
+        <source>move away from limit switch</source>
+        <translation>Endschalter freifahren</translation>
+    </message>
+    <message>
+        <source>the limit switch was not cleared</source>
+        <translation>der Endschalter wurde nicht freigefahren</translation>
+    </message>
+    <message>
+        <source>writing %1</source>
+        <translation>Schreiben von %1</translation>
+    </message>
+    <message>
+        <source>the inverter went to fault (status word 0x%1)</source>
+        <translation>der Umrichter ist in Störung gegangen (Zustandswort 0x%1)</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli::AcuStatusSource</name>
+    <message>
+        <source>Status word (411):</source>
+        <translation>Zustandswort (411):</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Mains on</source>
+        <translation>Netz ein</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Warning 2</source>
+        <translation>Warnung 2</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Current fault (260):</source>
+        <translation>Aktueller Fehler (260):</translation>
+    </message>
+    <message>
+        <source>No fault</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Fault %1 (not in the fault table)</source>
+        <translation>Fehler %1 (nicht in der Fehlertabelle)</translation>
+    </message>
+    <message>
+        <source>%1 bit %2</source>
+        <translation>%1 Bit %2</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter reacts as parameter 388 says (not read yet).</source>
+        <translation>Steht die Verbindung 10 s still, reagiert der Umrichter wie in Parameter 388 eingestellt (noch nicht gelesen).</translation>
+    </message>
+    <message>
+        <source>keeps its operating point</source>
+        <translation>behält seinen Arbeitspunkt</translation>
+    </message>
+    <message>
+        <source>goes to fault F2714 at once</source>
+        <translation>geht sofort in Störung F2714</translation>
+    </message>
+    <message>
+        <source>switches off (disable voltage, then switch on disabled)</source>
+        <translation>schaltet ab (Spannung sperren, dann Einschaltsperre)</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then switch on disabled</source>
+        <translation>macht einen Schnellhalt, dann Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>stops, then goes to fault F2714</source>
+        <translation>hält an und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then goes to fault F2714</source>
+        <translation>macht einen Schnellhalt und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>reacts in a way this program does not know</source>
+        <translation>reagiert auf eine diesem Programm unbekannte Weise</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter %1 (parameter 388 = %2).</source>
+        <translation>Steht die Verbindung 10 s still, %1 der Umrichter (Parameter 388 = %2).</translation>
     </message>
 </context>
 <context>
@@ -2073,6 +2402,73 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>homing error</source>
         <translation>Referenzfahrtfehler</translation>
+    </message>
+</context>
+<context>
+    <name>db::cia402::Cia402StatusSource</name>
+    <message>
+        <source>Statusword:</source>
+        <translation>Statuswort:</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>In Bewegung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Inputs (60FDh):</source>
+        <translation>Eingänge (60FDh):</translation>
+    </message>
+    <message>
+        <source>Outputs (60FEh.1):</source>
+        <translation>Ausgänge (60FEh.1):</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Position (6064h):</source>
+        <translation>Position (6064h):</translation>
+    </message>
+    <message>
+        <source>Velocity (606Ch):</source>
+        <translation>Geschwindigkeit (606Ch):</translation>
+    </message>
+    <message>
+        <source>Current (6078h):</source>
+        <translation>Strom (6078h):</translation>
+    </message>
+    <message>
+        <source>Last error (603Fh):</source>
+        <translation>Letzter Fehler (603Fh):</translation>
+    </message>
+    <message>
+        <source>No error</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Status register (1002h):</source>
+        <translation>Statusregister (1002h):</translation>
+    </message>
+    <message>
+        <source>bit %1</source>
+        <translation>Bit %1</translation>
     </message>
 </context>
 <context>
@@ -2590,29 +2986,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
-    <name>db::files</name>
-    <message>
-        <source>cannot read %1: it is a folder, not a file</source>
-        <translation>%1 kann nicht gelesen werden: Es ist ein Ordner, keine Datei</translation>
-    </message>
-    <message>
-        <source>cannot read %1: %2</source>
-        <translation>%1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
-        <source>%1 is %2 MB, more than the %3 MB %4 may have: is it the right file?</source>
-        <translation>%1 ist %2 MB groß, mehr als die %3 MB, die %4 haben darf: Ist es die richtige Datei?</translation>
-    </message>
-    <message>
-        <source>%1 is more than the %2 MB %3 may have: is it the right file?</source>
-        <translation>%1 ist größer als die %2 MB, die %3 haben darf: Ist es die richtige Datei?</translation>
-    </message>
-    <message>
-        <source>line %1, column %2</source>
-        <translation>Zeile %1, Spalte %2</translation>
-    </message>
-</context>
-<context>
     <name>db::description</name>
     <message>
         <source>vendor %1, product %2</source>
@@ -2641,6 +3014,29 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>db::files</name>
+    <message>
+        <source>cannot read %1: it is a folder, not a file</source>
+        <translation>%1 kann nicht gelesen werden: Es ist ein Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MB, more than the %3 MB %4 may have: is it the right file?</source>
+        <translation>%1 ist %2 MB groß, mehr als die %3 MB, die %4 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>%1 is more than the %2 MB %3 may have: is it the right file?</source>
+        <translation>%1 ist größer als die %2 MB, die %3 haben darf: Ist es die richtige Datei?</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
     </message>
 </context>
 <context>
@@ -2965,6 +3361,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>axis not enabled or in ErrorStop</source>
         <translation>Achse nicht freigegeben oder in ErrorStop</translation>
+    </message>
+    <message>
+        <source>this drive has no table of motion blocks</source>
+        <translation>dieser Antrieb hat keine Fahrsatztabelle</translation>
     </message>
 </context>
 <context>
@@ -4054,42 +4454,6 @@ Letzter Fehler: %1</translation>
 <context>
     <name>db::widgets::DriveStatusPanel</name>
     <message>
-        <source>Not ready to switch on</source>
-        <translation>Nicht einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>Einschaltsperre</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>Einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>Eingeschaltet</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>Betrieb freigegeben</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>Schnellhalt aktiv</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>Fehlerreaktion aktiv</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>Unbekannter Zustand</translation>
-    </message>
-    <message>
         <source>No device selected.</source>
         <translation>Kein Gerät ausgewählt.</translation>
     </message>
@@ -4113,36 +4477,12 @@ Letzter Fehler: %1</translation>
         <translation>Kein Status</translation>
     </message>
     <message>
-        <source>bit %1</source>
-        <translation>Bit %1</translation>
-    </message>
-    <message>
         <source>No error or warning bits</source>
         <translation>Keine Fehler- oder Warnbits</translation>
     </message>
     <message>
-        <source>No error</source>
-        <translation>Kein Fehler</translation>
-    </message>
-    <message>
         <source>Drive state</source>
         <translation>Antriebszustand</translation>
-    </message>
-    <message>
-        <source>Target reached</source>
-        <translation>Ziel erreicht</translation>
-    </message>
-    <message>
-        <source>Moving</source>
-        <translation>In Bewegung</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>Internal limit</source>
-        <translation>Interne Begrenzung</translation>
     </message>
     <message>
         <source>Statusword:</source>
@@ -4157,60 +4497,24 @@ Letzter Fehler: %1</translation>
         <translation>Istwerte</translation>
     </message>
     <message>
-        <source>Position (6064h):</source>
-        <translation>Position (6064h):</translation>
-    </message>
-    <message>
-        <source>Velocity (606Ch):</source>
-        <translation>Geschwindigkeit (606Ch):</translation>
-    </message>
-    <message>
-        <source>Current (6078h):</source>
-        <translation>Strom (6078h):</translation>
-    </message>
-    <message>
         <source>Faults</source>
         <translation>Störungen</translation>
-    </message>
-    <message>
-        <source>603Fh keeps the last error after it has been cleared.</source>
-        <translation>603Fh behält den letzten Fehler, auch nachdem er quittiert wurde.</translation>
-    </message>
-    <message>
-        <source>Status register (1002h):</source>
-        <translation>Statusregister (1002h):</translation>
-    </message>
-    <message>
-        <source>Last error (603Fh):</source>
-        <translation>Letzter Fehler (603Fh):</translation>
     </message>
     <message>
         <source>Digital I/O</source>
         <translation>Digitale E/A</translation>
     </message>
     <message>
-        <source>Inputs (60FDh):</source>
-        <translation>Eingänge (60FDh):</translation>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
     <message>
-        <source>IN%1</source>
-        <translation>IN%1</translation>
+        <source>Warnings:</source>
+        <translation>Warnungen:</translation>
     </message>
     <message>
-        <source>Outputs (60FEh.1):</source>
-        <translation>Ausgänge (60FEh.1):</translation>
-    </message>
-    <message>
-        <source>OUT%1</source>
-        <translation>OUT%1</translation>
-    </message>
-    <message>
-        <source>Nothing is read: the device has no description.</source>
-        <translation>Es wird nichts gelesen: das Gerät hat keine Beschreibung.</translation>
-    </message>
-    <message>
-        <source>Nothing is read: the description has no drive status objects.</source>
-        <translation>Es wird nichts gelesen: die Beschreibung hat keine Objekte für den Antriebszustand.</translation>
+        <source>Fault:</source>
+        <translation>Störung:</translation>
     </message>
 </context>
 <context>
@@ -4572,6 +4876,45 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Camera &quot;%1&quot;: %2</source>
         <translation>Kamera „%1“: %2</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::MotionBlockBox</name>
+    <message>
+        <source>Motion block table</source>
+        <translation>Fahrsatztabelle</translation>
+    </message>
+    <message>
+        <source>Sequence</source>
+        <translation>Folge</translation>
+    </message>
+    <message>
+        <source>Run on through the blocks that follow this one</source>
+        <translation>Die folgenden Fahrsätze anschließend fahren</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Wiederaufnehmen</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted block instead</source>
+        <translation>Stattdessen den unterbrochenen Fahrsatz fortsetzen</translation>
+    </message>
+    <message>
+        <source>Run block</source>
+        <translation>Fahrsatz starten</translation>
+    </message>
+    <message>
+        <source>Block:</source>
+        <translation>Fahrsatz:</translation>
+    </message>
+    <message>
+        <source>Block %1 running</source>
+        <translation>Fahrsatz %1 läuft</translation>
+    </message>
+    <message>
+        <source>Block %1 done</source>
+        <translation>Fahrsatz %1 fertig</translation>
     </message>
 </context>
 <context>
@@ -5341,6 +5684,18 @@ Letzter Fehler: %1</translation>
         <source>Description: %1</source>
         <translation>Beschreibung: %1</translation>
     </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>Ins RAM schreiben</translation>
+    </message>
+    <message>
+        <source>Edits change the working value only: lost at power-off, the EEPROM is not written. Off: edits are stored permanently in the data set.</source>
+        <translation>Änderungen gelten nur für den Arbeitswert: nach dem Ausschalten verloren, das EEPROM wird nicht beschrieben. Aus: Änderungen werden dauerhaft im Datensatz gespeichert.</translation>
+    </message>
+    <message>
+        <source>to RAM (%1, lost at power-off)</source>
+        <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::OdEditorModel</name>
@@ -5434,6 +5789,14 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>DS %1</source>
+        <translation>DS %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
 </context>
@@ -6529,6 +6892,17 @@ Change it?</source>
     </message>
 </context>
 <context>
+    <name>devices</name>
+    <message>
+        <source>no connection</source>
+        <translation>keine Verbindung</translation>
+    </message>
+    <message>
+        <source>this device has no axis: %1 describes no CiA 402 drive (no 6064h; give ?eds=FILE) and is no ACTIVE Cube</source>
+        <translation>dieses Gerät hat keine Achse: %1 beschreibt keinen CiA-402-Antrieb (kein 6064h; ?eds=DATEI angeben) und ist kein ACTIVE Cube</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Commissioning tool for industrial drives.</source>
@@ -6569,6 +6943,10 @@ Change it?</source>
     <message>
         <source>%1 not added to the description library: %2</source>
         <translation>%1 nicht in die Beschreibungsbibliothek aufgenommen: %2</translation>
+    </message>
+    <message>
+        <source>Demo ACTIVE Cube at %1</source>
+        <translation>Demo-ACTIVE-Cube unter %1</translation>
     </message>
 </context>
 <context>
@@ -6711,6 +7089,14 @@ Geräte:
     <message>
         <source>nm17x: the bus&apos;s bit rate in bit/s (default 125000); SLCAN clients set to another one hear nothing.</source>
         <translation>nm17x: die Bitrate des Busses in bit/s (Standard 125000); auf eine andere eingestellte SLCAN-Clients hören nichts.</translation>
+    </message>
+    <message>
+        <source>acu: start in fault with this code (hex as parameter 260 shows it, e.g. 2714 for F2714).</source>
+        <translation>acu: mit dieser Störung starten (hexadezimal wie Parameter 260 sie zeigt, z. B. 2714 für F2714).</translation>
+    </message>
+    <message>
+        <source>acu: simulated inputs off at start, comma-separated: mains, sto, or the limit switches on: limit-pos, limit-neg.</source>
+        <translation>acu: beim Start abgeschaltete simulierte Eingänge, durch Kommas getrennt: mains, sto, oder aktive Endschalter: limit-pos, limit-neg.</translation>
     </message>
 </context>
 </TS>
