@@ -1477,6 +1477,37 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>jog, velocity: Fahrdauer (ms).</translation>
     </message>
     <message>
+        <source>--bitrates takes bit/s, e.g. 125000,250000</source>
+        <translation>--bitrates erwartet bit/s, z. B. 125000,250000</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 kbit/s: %n display(s)</source>
+        <translation>
+            <numerusform>%1 kbit/s: %n Anzeige</numerusform>
+            <numerusform>%1 kbit/s: %n Anzeigen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no NM170/NM172/NM174 display answered at %1 bit/s</source>
+        <translation>keine NM170/NM172/NM174-Anzeige hat bei %1 bit/s geantwortet</translation>
+    </message>
+    <message>
+        <source>usage: nm17x URI oscillate NODE start|stop</source>
+        <translation>Aufruf: nm17x URI oscillate KNOTEN start|stop</translation>
+    </message>
+    <message>
+        <source>node %1: 204Dh:02</source>
+        <translation>Knoten %1: 204Dh:02</translation>
+    </message>
+    <message>
+        <source>node %1: oscillation %2</source>
+        <translation>Knoten %1: Pendeln %2</translation>
+    </message>
+    <message>
+        <source>nm17x scan: the bit rates to look at (default 125000,250000).</source>
+        <translation>nm17x scan: die zu prüfenden Bitraten (Standard 125000,250000).</translation>
+    </message>
+    <message>
         <source>a value</source>
         <translation>ein Wert</translation>
     </message>
@@ -2253,6 +2284,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>no drive-side supervision on this connection; only the motion lease bounds a jog</source>
         <translation>keine antriebsseitige Überwachung auf dieser Verbindung; nur die Bewegungsfreigabe begrenzt das Tippen</translation>
     </message>
+    <message>
+        <source>node %1 did not report its identity (%2: %3)</source>
+        <translation>Knoten %1 hat seine Identität nicht gemeldet (%2: %3)</translation>
+    </message>
 </context>
 <context>
     <name>db::canopen::SdoAbort</name>
@@ -2994,6 +3029,37 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::description</name>
+    <message>
+        <source>vendor %1, product %2</source>
+        <translation>Hersteller %1, Produkt %2</translation>
+    </message>
+    <message>
+        <source>, revision %1</source>
+        <translation>, Revision %1</translation>
+    </message>
+    <message>
+        <source>%1 states no vendor id: it cannot be matched to a device</source>
+        <translation>%1 nennt keine Herstellerkennung: sie kann keinem Gerät zugeordnet werden</translation>
+    </message>
+    <message>
+        <source>no description folder is set to add %1 to</source>
+        <translation>es ist kein Beschreibungsordner eingestellt, in den %1 kommen könnte</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>der Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>db::files</name>
     <message>
         <source>cannot read %1: it is a folder, not a file</source>
@@ -3557,8 +3623,12 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>fault INDEX motor|sensor|none (Anzeigenindex, Störung)</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (list, turn, key, fault)</source>
-        <translation>unbekannter Befehl „%1“ (list, turn, key, fault)</translation>
+        <source>input INDEX F G (each 0 or 1)</source>
+        <translation>input INDEX F G (jeweils 0 oder 1)</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input)</source>
+        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input)</translation>
     </message>
 </context>
 <context>
@@ -3594,6 +3664,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>write queue to the application is full</source>
         <translation>Schreibwarteschlange zur Applikation ist voll</translation>
+    </message>
+    <message>
+        <source>D3 cannot be written while input F is active</source>
+        <translation>D3 kann nicht geschrieben werden, solange Eingang F aktiv ist</translation>
     </message>
 </context>
 <context>
@@ -4486,6 +4560,41 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::widgets::DescriptionPrompt</name>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Choose the device&apos;s description file (EDS, DCF, XDD, XDC or drivebench JSON); it is also added to the description library</source>
+        <translation>Die Beschreibungsdatei des Geräts wählen (EDS, DCF, XDD, XDC oder drivebench-JSON); sie wird auch in die Beschreibungsbibliothek aufgenommen</translation>
+    </message>
+    <message>
+        <source>Description of the device</source>
+        <translation>Beschreibung des Geräts</translation>
+    </message>
+    <message>
+        <source>Device descriptions (*.eds *.dcf *.xdd *.xdc *.json);;All files (*)</source>
+        <translation>Gerätebeschreibungen (*.eds *.dcf *.xdd *.xdc *.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>It reports vendor %1, product %2</source>
+        <translation>Es meldet Hersteller %1, Produkt %2</translation>
+    </message>
+    <message>
+        <source>, revision %1.</source>
+        <translation>, Revision %1.</translation>
+    </message>
+    <message>
+        <source>It did not report its identity (1018h).</source>
+        <translation>Es hat seine Identität (1018h) nicht gemeldet.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;No description for this device.&lt;/b&gt; %1 No description in the library matches it, so its objects are not listed; read and write them with &lt;i&gt;By index…&lt;/i&gt;, or choose its description file.</source>
+        <translation>&lt;b&gt;Keine Beschreibung für dieses Gerät.&lt;/b&gt; %1 Keine Beschreibung der Bibliothek passt, daher werden seine Objekte nicht aufgeführt; lesen und schreiben Sie sie mit &lt;i&gt;Über Index…&lt;/i&gt; oder wählen Sie seine Beschreibungsdatei.</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::DeviceList</name>
     <message>
         <source>Add…</source>
@@ -5170,6 +5279,88 @@ Letzter Fehler: %1</translation>
     </message>
 </context>
 <context>
+    <name>db::widgets::Nm17xAddressingDialog</name>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Address the displays along the line</source>
+        <translation>Anzeigen entlang der Linie adressieren</translation>
+    </message>
+    <message>
+        <source>until none answers</source>
+        <translation>bis keine mehr antwortet</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Every display on the bus will show the node id offered. The display whose shaft is turned (or whose key is pressed) takes it; then the next id is offered.</source>
+        <translation>Jede Anzeige am Bus zeigt die angebotene Knotennummer. Die Anzeige, deren Welle gedreht (oder deren Taste gedrückt) wird, übernimmt sie; dann wird die nächste angeboten.</translation>
+    </message>
+    <message>
+        <source>First node id:</source>
+        <translation>Erste Knotennummer:</translation>
+    </message>
+    <message>
+        <source>Number of displays:</source>
+        <translation>Anzahl Anzeigen:</translation>
+    </message>
+    <message>
+        <source>Time per display:</source>
+        <translation>Zeit je Anzeige:</translation>
+    </message>
+    <message>
+        <source>Addressing could not start.</source>
+        <translation>Die Adressierung konnte nicht beginnen.</translation>
+    </message>
+    <message>
+        <source>cancelled while node %1 was offered</source>
+        <translation>abgebrochen, während Knoten %1 angeboten war</translation>
+    </message>
+    <message>
+        <source>Turn the shaft (or press a key) of the display that should become node %1.</source>
+        <translation>Drehen Sie die Welle (oder drücken Sie eine Taste) der Anzeige, die Knoten %1 werden soll.</translation>
+    </message>
+    <message>
+        <source>node %1: taken by a display</source>
+        <translation>Knoten %1: von einer Anzeige übernommen</translation>
+    </message>
+    <message>
+        <source>node %1: %2</source>
+        <translation>Knoten %1: %2</translation>
+    </message>
+    <message>
+        <source>No display took a node id.</source>
+        <translation>Keine Anzeige hat eine Knotennummer übernommen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n display(s) addressed: node %1. All nodes were reset so that the new ids are in effect; find the displays again.</source>
+        <translation>
+            <numerusform>%n Anzeige adressiert: Knoten %1. Alle Knoten wurden zurückgesetzt, damit die neuen Nummern gelten; suchen Sie die Anzeigen erneut.</numerusform>
+            <numerusform>%n Anzeigen adressiert: Knoten %1. Alle Knoten wurden zurückgesetzt, damit die neuen Nummern gelten; suchen Sie die Anzeigen erneut.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 s left for node %2</source>
+        <translation>noch %1 s für Knoten %2</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>%v of %m</source>
+        <translation>%v von %m</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::Nm17xLineModel</name>
     <message>
         <source> (right)</source>
@@ -5336,6 +5527,18 @@ Letzter Fehler: %1</translation>
     <message>
         <source>every display stopped</source>
         <translation>jede Anzeige gestoppt</translation>
+    </message>
+    <message>
+        <source>Address line…</source>
+        <translation>Linie adressieren…</translation>
+    </message>
+    <message>
+        <source>Give the displays their node ids one after the other: the display whose shaft is turned takes the id offered</source>
+        <translation>Den Anzeigen nacheinander ihre Knotennummern geben: die Anzeige, deren Welle gedreht wird, übernimmt die angebotene</translation>
+    </message>
+    <message>
+        <source>Addressing finished; the displays restart with their new node ids.</source>
+        <translation>Adressierung beendet; die Anzeigen starten mit ihren neuen Knotennummern neu.</translation>
     </message>
 </context>
 <context>
@@ -5682,6 +5885,14 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Objects that the device description does not list are added to the tree once read or written.</source>
         <translation>Objekte, die die Gerätebeschreibung nicht enthält, werden nach dem Lesen oder Schreiben in den Baum aufgenommen.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation>%1 ist nicht verwendbar: %2</translation>
+    </message>
+    <message>
+        <source>Description: %1</source>
+        <translation>Beschreibung: %1</translation>
     </message>
     <message>
         <source>Write to RAM</source>
@@ -6936,6 +7147,14 @@ Change it?</source>
         <translation>Demo-NM17x-Anzeigen (Knoten 2, 3, 4) unter canopen+slcan://127.0.0.1:%1?node=2</translation>
     </message>
     <message>
+        <source>%1 added to the description library</source>
+        <translation>%1 in die Beschreibungsbibliothek aufgenommen</translation>
+    </message>
+    <message>
+        <source>%1 not added to the description library: %2</source>
+        <translation>%1 nicht in die Beschreibungsbibliothek aufgenommen: %2</translation>
+    </message>
+    <message>
         <source>Demo ACTIVE Cube at %1</source>
         <translation>Demo-ACTIVE-Cube unter %1</translation>
     </message>
@@ -6965,6 +7184,22 @@ Change it?</source>
     <message>
         <source>Bonfiglioli ACTIVE Cube over VABus/TCP</source>
         <translation>Bonfiglioli ACTIVE Cube über VABus/TCP</translation>
+    </message>
+    <message>
+        <source>no description matches node %1 (%2); its objects are read by index (give ?eds=FILE)</source>
+        <translation>keine Beschreibung passt zu Knoten %1 (%2); seine Objekte werden über den Index gelesen (?eds=DATEI angeben)</translation>
+    </message>
+    <message>
+        <source>no description matches node %1 (%2); its objects are read by index (give ?eds=FILE, or put the device&apos;s EDS into %3)</source>
+        <translation>keine Beschreibung passt zu Knoten %1 (%2); seine Objekte werden über den Index gelesen (?eds=DATEI angeben oder die EDS des Geräts nach %3 legen)</translation>
+    </message>
+    <message>
+        <source>the description %1 for node %2 does not load: %3</source>
+        <translation>die Beschreibung %1 für Knoten %2 lässt sich nicht laden: %3</translation>
+    </message>
+    <message>
+        <source>description for node %1 (%2): %3 (%4)</source>
+        <translation>Beschreibung für Knoten %1 (%2): %3 (%4)</translation>
     </message>
 </context>
 <context>
@@ -7064,6 +7299,10 @@ Geräte:
     <message>
         <source>movingcap: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on.</source>
         <translation>movingcap: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE, heartbeat off|on.</translation>
+    </message>
+    <message>
+        <source>nm17x: the bus&apos;s bit rate in bit/s (default 125000); SLCAN clients set to another one hear nothing.</source>
+        <translation>nm17x: die Bitrate des Busses in bit/s (Standard 125000); auf eine andere eingestellte SLCAN-Clients hören nichts.</translation>
     </message>
     <message>
         <source>acu: start in fault with this code (hex as parameter 260 shows it, e.g. 2714 for F2714).</source>

@@ -7,6 +7,7 @@
 #include "commands_params.h"
 #include "commands_record.h"
 
+#include "canopen/canopenconnection.h"
 #include "core/printable.h"
 #include "core/valuecodec.h"
 #include <QCoreApplication>
@@ -102,6 +103,18 @@ Result<ObjectTarget> openObject(Context &c, Session &session)
     return target;
 }
 
+// A CANopen node without a description: after a read or write by index that worked, one line on
+// stderr says why the object was not described (errors stay one line of their own). With --type
+// the object was described for the run: nothing to say.
+void noteMissingDescription(Context &c, const Session &session, const ObjectTarget &target)
+{
+    const DeviceConnection *connection = session.connection();
+    const auto *canopen = qobject_cast<const canopen::CanopenConnection *>(connection);
+    if (canopen && c.type.isEmpty() && !target.def && !canopen->descriptionNote().isEmpty()
+        && connection->dictionary().isEmpty())
+        c.err << "drivebench-cli: " << printable(canopen->descriptionNote()) << Qt::endl;
+}
+
 int read(Context &c)
 {
     Session session(c.registry, c.options);
@@ -144,6 +157,7 @@ int read(Context &c)
     } else {
         c.out << printable(text) << Qt::endl;
     }
+    noteMissingDescription(c, session, target.value());
     return ExitOk;
 }
 
@@ -171,6 +185,7 @@ int write(Context &c)
     if (c.options.verbose)
         c.out << session.addressFormat().format(target->address) << " <- "
               << codec::toText(target->type, raw.value()) << " ok" << Qt::endl;
+    noteMissingDescription(c, session, target.value());
     return ExitOk;
 }
 
@@ -224,10 +239,11 @@ const QList<Command> &commands()
           QT_TRANSLATE_NOOP("cli", "CiA 305 layer setting services"), 2, 3, lss },
         { "pdo", "URI", QT_TRANSLATE_NOOP("cli", "print the node's PDO configuration"), 1, 1, pdo },
         { "nm17x",
-          "URI list | setpoint NODE MM [--release] [--direct] [--plunge S] [--correction MM] | "
+          "URI list | scan [--bitrates B,B] | setpoint NODE MM [--release] [--direct] "
+          "[--plunge S] [--correction MM] | "
           "jog NODE left|right --speed S | stop NODE|all | broadcast unit mm|inch|show-id|"
           "preset MM|start GROUP|stop | address --broadcast FIRST [--count N] | control NODE "
-          "WORD | watch [--seconds S]",
+          "WORD | watch [--seconds S] | oscillate NODE start|stop",
           QT_TRANSLATE_NOOP(
               "cli", "Baumer NM170/NM172/NM174 displays on the bus of URI (S: slow, medium, fast)"),
           2, 4, nm17x, nm17xOptions },

@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QLoggingCategory>
+#include <QRegularExpression>
 
 namespace {
 // The context of this file's translated messages.
@@ -128,7 +129,35 @@ int main(int argc, char *argv[])
     }
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("cli", "What to do (see above)."));
-    parser.process(app);
+    // "-100" would be read as the options -1, -0, -0: a negative number that is not the value of
+    // the option before it is a positional argument (setpoint 3 -100), so it reaches the parser
+    // with a marker instead of its minus sign and gets the sign back afterwards. None of our
+    // options is a digit.
+    constexpr QChar kMinusMarker(0x2212); // MINUS SIGN, restored to '-'
+    static const QRegularExpression negativeNumber(QStringLiteral("^-\\.?[0-9]"));
+    QStringList valueOptions;
+    for (const QCommandLineOption &o : common)
+        if (!o.valueName().isEmpty())
+            for (const QString &n : o.names())
+                valueOptions += (n.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + n;
+    for (const cli::Command &c : cli::commands()) {
+        if (!c.options)
+            continue;
+        for (const QCommandLineOption &o : c.options())
+            if (!o.valueName().isEmpty())
+                for (const QString &n : o.names())
+                    valueOptions +=
+                        (n.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + n;
+    }
+    QStringList arguments = app.arguments();
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        if (arguments.at(i) == QLatin1String("--"))
+            break;
+        if (negativeNumber.match(arguments.at(i)).hasMatch()
+            && !valueOptions.contains(arguments.at(i - 1)))
+            arguments[i][0] = kMinusMarker;
+    }
+    parser.process(arguments);
     if (parser.isSet(lang) && !i18n::languages().contains(parser.value(lang))) {
         err << QCoreApplication::translate("cli", "drivebench-cli: --lang takes one of: %1")
                    .arg(i18n::languages().join(QStringLiteral(", ")))
@@ -137,6 +166,9 @@ int main(int argc, char *argv[])
     }
 
     QStringList args = parser.positionalArguments();
+    for (QString &a : args)
+        if (a.startsWith(kMinusMarker))
+            a[0] = QLatin1Char('-');
     if (args.isEmpty()) {
         err << Tr::tr("drivebench-cli: no command given; try drivebench-cli --help") << Qt::endl;
         return cli::ExitUsage;

@@ -5,6 +5,7 @@
 #include "canopen/canopenconnection.h"
 #include "cia402/cia402statussource.h"
 #include "description/devicedescription.h"
+#include "descriptions.h"
 #include "devices/bonfiglioli/acudescription.h"
 #include "devices/bonfiglioli/acustatussource.h"
 #include "refgo/refgoconnection.h"
@@ -13,6 +14,7 @@
 
 #include <QCanBus>
 #include <QCoreApplication>
+#include <QDebug>
 
 namespace db::app {
 
@@ -25,7 +27,8 @@ struct Tr
 
 // The dictionary a CANopen connection starts with: the file named by ?eds=PATH (EDS, DCF, XDD,
 // XDC or our JSON), else the MovingCap description for node 50 behind SLCAN (the MovingCap ETH
-// CANopen door, movingcap.md 4), else an empty one (objects are then read by index and type).
+// CANopen door, movingcap.md 4), else an empty one, which the connection replaces with the
+// description library's match for the node's identity once it has read 1018h.
 Result<ObjectDictionary> canopenDictionary(const ConnectionUri &uri)
 {
     const QString eds = uri.queryValue(QStringLiteral("eds"));
@@ -82,6 +85,43 @@ canopen::CanNetworkPool &networks()
     return pool;
 }
 
+using DescriptionChoice = canopen::CanopenConnection::DescriptionChoice;
+
+// The description library's answer for a node that did not come with one.
+DescriptionChoice chooseDescription(const IdentityNumbers &identity, quint8 node)
+{
+    DescriptionLibrary &library = descriptionLibrary();
+    library.setFolder(descriptionFolder()); // the user may have added files since
+    library.rescan();
+    for (const QString &warning : library.warnings())
+        qWarning().noquote() << "description library:" << warning;
+    const auto entry = library.match(identity);
+    if (!entry) {
+        const QString folder = library.folder();
+        return { std::nullopt,
+                 folder.isEmpty()
+                     ? Tr::tr("no description matches node %1 (%2); its objects are read by "
+                              "index (give ?eds=FILE)")
+                           .arg(node)
+                           .arg(identity.toString())
+                     : Tr::tr("no description matches node %1 (%2); its objects are read by "
+                              "index (give ?eds=FILE, or put the device's EDS into %3)")
+                           .arg(node)
+                           .arg(identity.toString(), folder) };
+    }
+    auto loaded = entry->load(node);
+    if (!loaded)
+        return { std::nullopt,
+                 Tr::tr("the description %1 for node %2 does not load: %3")
+                     .arg(entry->origin)
+                     .arg(node)
+                     .arg(loaded.error().toString()) };
+    return { loaded.value(),
+             Tr::tr("description for node %1 (%2): %3 (%4)")
+                 .arg(node)
+                 .arg(identity.toString(), entry->name, entry->origin) };
+}
+
 Result<std::unique_ptr<DeviceConnection>> makeCanopen(const ConnectionPlan &plan)
 {
     auto network = networks().networkFor(plan.uri);
@@ -89,6 +129,8 @@ Result<std::unique_ptr<DeviceConnection>> makeCanopen(const ConnectionPlan &plan
         return network.error();
     auto connection = std::make_unique<canopen::CanopenConnection>(plan.uri, network.value());
     connection->setDictionary(plan.dictionary);
+    if (plan.dictionary.isEmpty())
+        connection->setDescriptionChooser(chooseDescription);
     return std::unique_ptr<DeviceConnection>(std::move(connection));
 }
 

@@ -1,12 +1,14 @@
 // drivebench: the GUI's composition root. It picks the real protocols (app/common) and, with
 // --demo, runs the simulated MovingCap, an ACTIVE Cube and a line of NM17x displays in-process.
 #include "common/demodrive.h"
+#include "common/descriptions.h"
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "devices/nm17x/device/nm17xsim.h"
 #include "mainwindow.h"
 #include "translations/language.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/odeditor/odeditor.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -69,6 +71,24 @@ int main(int argc, char *argv[])
     std::unique_ptr<db::bonfiglioli::SimulatedAcu> acu; // the demo's ACTIVE Cube inverter
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
+    // A description the user picks for a device goes into the library, so that the next device
+    // with that identity gets it without asking.
+    QObject::connect(
+        window.odEditor(), &db::widgets::OdEditor::descriptionFileUsed, &window,
+        [&window](const QString &path) {
+            db::DescriptionLibrary &library = db::app::descriptionLibrary();
+            library.setFolder(db::app::descriptionFolder());
+            if (auto added = library.addFile(path); added)
+                window.logConsole()->info(
+                    QApplication::translate("main", "%1 added to the description library")
+                        .arg(*added));
+            else
+                window.logConsole()->warning(
+                    QApplication::translate("main",
+                                            "%1 not added to the description "
+                                            "library: %2")
+                        .arg(path, added.error().message()));
+        });
 
     using Remember = db::gui::MainWindow::Remember; // the demo is never a recent connection
     // The demo: from --demo or the welcome page's button. A second start reconnects to the

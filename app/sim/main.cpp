@@ -177,8 +177,14 @@ int main(int argc, char *argv[])
                                     "nm17x: line-based control socket on this TCP port (turn a "
                                     "shaft, press a key; 0 = chosen by the OS)."),
         QStringLiteral("port"));
+    const QCommandLineOption bitrate(
+        QStringLiteral("bitrate"),
+        QCoreApplication::translate("sim",
+                                    "nm17x: the bus's bit rate in bit/s (default 125000); SLCAN "
+                                    "clients set to another one hear nothing."),
+        QStringLiteral("bit/s"));
     parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
-                        devices, controlPort, fault, control });
+                        devices, controlPort, fault, control, bitrate });
     app::addAcuOptions(parser);
     parser.addPositionalArgument(QStringLiteral("device"),
                                  QCoreApplication::translate("sim", "Which device: movingcap."));
@@ -196,7 +202,7 @@ int main(int argc, char *argv[])
             return parser.isSet(o) ? std::optional<QString>(parser.value(o)) : std::nullopt;
         };
         return sim::runNm17x({ parser.value(devices), valueOf(slcanPort), valueOf(virtualCan),
-                               valueOf(controlPort) },
+                               valueOf(controlPort), valueOf(bitrate) },
                              quitOnSignalsOfApp);
     }
     if (args.size() == 1 && args.first() == QLatin1String("canopen")) {

@@ -34,15 +34,24 @@ int runNm17x(const Nm17xOptions &options, void (*quitOnSignals)())
             << Qt::endl;
         return 2;
     }
+    bool bitrateOk = true;
+    const int bitrate =
+        options.bitrate ? options.bitrate->toInt(&bitrateOk) : nm17x::kDeliveryBitrate;
+    if (!bitrateOk || bitrate <= 0) {
+        err << "drivebench-sim: --bitrate takes bit/s, e.g. 125000 or 250000" << Qt::endl;
+        return 2;
+    }
     nm17x::Nm17xSim sim;
     sim.create(specs.value());
+    sim.setBitrate(bitrate);
     if (slcan) {
         if (auto listening = sim.startSlcan(*slcan); !listening) {
             err << "drivebench-sim: " << listening.error().toString() << Qt::endl;
             return 3;
         }
         out << "nm17x: SLCAN listening on 127.0.0.1:" << sim.slcanPort() << " (" << sim.describe()
-            << ", canopen+slcan://127.0.0.1:" << sim.slcanPort() << "?bitrate=125000)" << Qt::endl;
+            << ", canopen+slcan://127.0.0.1:" << sim.slcanPort() << "?bitrate=" << bitrate << ")"
+            << Qt::endl;
     }
     if (options.virtualCan) {
         if (auto joined = sim.startVirtualCan(*options.virtualCan); !joined) {

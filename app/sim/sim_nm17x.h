@@ -13,6 +13,9 @@ struct Nm17xOptions
     std::optional<QString> slcanPort;
     std::optional<QString> virtualCan;
     std::optional<QString> controlPort;
+    // The bus's bit rate in bit/s: SLCAN clients set to another one (Sn) hear nothing. Empty:
+    // 125000, the displays' delivery rate.
+    std::optional<QString> bitrate;
 };
 
 // Runs until the event loop ends (SIGINT/SIGTERM); 2 for bad options, 3 when a door cannot open.

@@ -264,6 +264,10 @@ void Nm17xLine::readNext(Reply *outer, DisplayState state, QList<ObjectAddress> 
                 return;
             }
             state.variant = *variant;
+            // The network's readers (EMCY texts, the CAN monitor's PDO fields) learn the
+            // display's objects; a description its own connection chose stays.
+            if (!m_network->dictionary(state.node) || m_network->dictionary(state.node)->isEmpty())
+                m_network->setDictionary(state.node, dictionary(*variant, state.node));
             todo.append({ { 0x6004, 0 }, { 0x2001, 0 } });
             if (hasMotor(*variant))
                 todo.append({ { 0x204E, 1 }, { 0x204E, 2 } });

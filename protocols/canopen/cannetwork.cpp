@@ -129,6 +129,19 @@ void CanNetwork::subscribe(quint32 cobId, QObject *context, FrameHandler handler
 void CanNetwork::setDictionary(NodeId node, const ObjectDictionary &dictionary)
 {
     m_emcy->setDictionary(node, dictionary);
+    m_dictionaries.insert(node, dictionary);
+    Q_EMIT dictionaryChanged(node);
+}
+
+const ObjectDictionary *CanNetwork::dictionary(NodeId node) const
+{
+    const auto it = m_dictionaries.constFind(node);
+    return it == m_dictionaries.cend() ? nullptr : &it.value();
+}
+
+QList<NodeId> CanNetwork::describedNodes() const
+{
+    return m_dictionaries.keys();
 }
 
 void CanNetwork::dispatch(const QCanBusFrame &frame)

@@ -22,6 +22,7 @@
 #include "core/objectdictionary.h"
 
 #include <QCanBusFrame>
+#include <QMap>
 #include <QObject>
 #include <QPointer>
 
@@ -83,14 +84,20 @@ public:
     // Frames with this COB-ID (11-bit or 29-bit id) call handler until context is destroyed.
     void subscribe(quint32 cobId, QObject *context, FrameHandler handler);
 
-    // Texts for one node's EMCY codes (its description).
+    // The description of one node, for everything that reads its frames (EMCY texts, the CAN
+    // monitor's PDO fields): set by its connection, or by a device family's services that
+    // identified it (e.g. the NM17x line). Emits dictionaryChanged().
     void setDictionary(NodeId node, const ObjectDictionary &dictionary);
+    // Null for nodes nobody described.
+    const ObjectDictionary *dictionary(NodeId node) const;
+    QList<NodeId> describedNodes() const;
 
 Q_SIGNALS:
     void opened();
     void closed(const db::Error &error);
     // A bus problem that does not close it (error frame, overrun), for every user's log.
     void warning(const QString &text);
+    void dictionaryChanged(db::canopen::NodeId node);
 
 private:
     struct Subscription
@@ -113,6 +120,7 @@ private:
     HeartbeatProducer *m_heartbeat;
     NodeGuarding *m_guarding;
     std::unordered_map<quint32, std::vector<Subscription>> m_subscriptions;
+    QMap<NodeId, ObjectDictionary> m_dictionaries;
 };
 
 // A node on a CAN network: what the services that work on the bus need of a connection.

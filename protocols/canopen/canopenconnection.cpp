@@ -47,6 +47,11 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
         if (e.node == m_node)
             Q_EMIT logLine(QStringLiteral("EMCY ") + e.toString());
     });
+    // The network decodes this node's frames with the description in use.
+    connect(this, &DeviceConnection::dictionaryChanged, this, [this] {
+        if (m_nodeResult)
+            m_network->setDictionary(m_node, dictionary());
+    });
     connect(net->monitor(), &NodeMonitor::bootUp, this, [this](NodeId node) {
         if (node == m_node)
             Q_EMIT logLine(QStringLiteral("node %1 boot-up").arg(node));
@@ -215,6 +220,15 @@ void CanopenConnection::onBusOpened()
         probe();
         return;
     }
+    finishConnecting();
+}
+
+void CanopenConnection::finishConnecting()
+{
+    if (m_chooser && dictionary().isEmpty()) {
+        identify();
+        return;
+    }
     qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_network->name();
     Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
     setState(State::Connected);
@@ -256,8 +270,7 @@ void CanopenConnection::probe()
         if (reply->ok() || reply->error().kind() == Error::Kind::DeviceError) {
             Q_EMIT logLine(
                 QStringLiteral("node %1 answers on %2").arg(m_node).arg(m_network->name()));
-            setState(State::Connected);
-            watchHeartbeat();
+            finishConnecting();
             return;
         }
         const Error why = reply->error().kind() == Error::Kind::Timeout

@@ -9,15 +9,19 @@
 // segmented|block (force the SDO mode of every read and write; default auto), toolnode=N (1..127,
 // default 127: the node id of the tool's own heartbeat, which drives with 1016h watch; must differ
 // from node=; it applies to the whole bus, the last connection opened sets it).
-// Connected as soon as the bus is open (after the probe when asked for). Opening acquires the
+// Connected as soon as the bus is open (after the probe when asked for, and after choosing the
+// description when a chooser is set). Opening acquires the
 // network's bus, closing releases it: the bus closes with the last connection that used it.
 
 #include "cannetwork.h"
 #include "canopenids.h"
 #include "core/deviceconnection.h"
+#include "description/descriptionlibrary.h"
 #include "sdoclient.h"
 
+#include <functional>
 #include <memory>
+#include <optional>
 
 namespace db {
 class CanBus;
@@ -71,6 +75,24 @@ public:
     EmcyConsumer *emcy() const;
     SyncProducer *sync() const;
 
+    // A connection without a description (an empty dictionary: no ?eds=) that has a chooser
+    // identifies its node before it reports Connected: it reads 1018h sub 1..3 and takes the
+    // dictionary the chooser returns. Without one, the dictionary stays empty and carries the
+    // identity numbers that were read (objects are then read by index and type). The text goes to
+    // the log either way ("description for node 5: NM172 (built-in)").
+    struct DescriptionChoice
+    {
+        std::optional<ObjectDictionary> dictionary;
+        QString text;
+    };
+    using DescriptionChooser =
+        std::function<DescriptionChoice(const IdentityNumbers &identity, NodeId node)>;
+    void setDescriptionChooser(DescriptionChooser chooser) { m_chooser = std::move(chooser); }
+    // What the last identification found (nullopt: none done, or the node did not tell its
+    // vendor and product) and what it concluded.
+    const std::optional<IdentityNumbers> &identity() const { return m_identity; }
+    const QString &descriptionNote() const { return m_descriptionNote; }
+
     // The SDO mode of later reads and writes (Auto: by size and type, block when enabled).
     SdoClient::Mode sdoMode() const { return m_sdoMode; }
     void setSdoMode(SdoClient::Mode mode) { m_sdoMode = mode; }
@@ -94,6 +116,10 @@ private:
     void onBusOpened();
     void onBusClosed(const Error &error);
     void probe();
+    // After the bus (and the probe): identify() when a chooser waits for it, else Connected.
+    void finishConnecting();
+    void identify();
+    void onIdentified(const std::optional<IdentityNumbers> &identity, const QString &why);
     void watchHeartbeat();
     void releaseNetwork();
     void prepareSdo() const;
@@ -107,6 +133,9 @@ private:
     bool m_probe = false;
     Result<SdoClient::Mode> m_sdoModeResult = SdoClient::Mode::Auto;
     SdoClient::Mode m_sdoMode = SdoClient::Mode::Auto;
+    DescriptionChooser m_chooser;
+    std::optional<IdentityNumbers> m_identity;
+    QString m_descriptionNote;
 };
 
 } // namespace db::canopen

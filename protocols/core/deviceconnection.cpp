@@ -91,6 +91,12 @@ void DeviceConnection::close()
     doClose();
 }
 
+void DeviceConnection::setDictionary(const ObjectDictionary &dictionary)
+{
+    m_dictionary = dictionary;
+    Q_EMIT dictionaryChanged();
+}
+
 Reply *DeviceConnection::read(ObjectAddress address)
 {
     if (m_state != State::Connected)

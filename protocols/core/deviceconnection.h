@@ -59,7 +59,9 @@ public:
     void close();
 
     const ObjectDictionary &dictionary() const { return m_dictionary; }
-    void setDictionary(const ObjectDictionary &dictionary) { m_dictionary = dictionary; }
+    // Replaces the description (e.g. one chosen from the device's identity, or one the user
+    // picked); emits dictionaryChanged().
+    void setDictionary(const ObjectDictionary &dictionary);
 
     // Per-request time limit in ms used by the protocol engine.
     int requestTimeoutMs() const { return m_timeoutMs; }
@@ -127,6 +129,8 @@ Q_SIGNALS:
     // refusal, a timeout, or cancelled by a disconnect. Emitted before the reply's finished()
     // reaches receivers connected later (ConnectionHealth judges the device by these).
     void requestFinished(db::ObjectAddress address, const db::Error &error);
+    // setDictionary() was called: views of the objects rebuild themselves.
+    void dictionaryChanged();
 
 protected:
     virtual void doOpen() = 0;

@@ -80,9 +80,18 @@ void Cia402Axis::pollStatus()
 {
     if (!m_connection->isConnected() || m_roundPending > 0)
         return;
+    // Only what the description has (none without a status word): polling objects a device
+    // lacks gives an endless stream of errors and no status.
+    const ObjectDictionary &dictionary = m_connection->dictionary();
+    if (!dictionary.contains(kStatusword)) {
+        m_pollTimer.start(kStatusPollMs); // the description may still arrive
+        return;
+    }
+    QList<ObjectAddress> objects = statusObjects();
+    objects.removeIf([&dictionary](ObjectAddress a) { return !dictionary.contains(a); });
     m_round.clear();
-    m_roundPending = int(statusObjects().size());
-    for (const ObjectAddress &address : statusObjects()) {
+    m_roundPending = int(objects.size());
+    for (const ObjectAddress &address : objects) {
         Reply *r = m_connection->read(address);
         connect(r, &Reply::finished, this, [this, r, address] {
             r->deleteLater();
@@ -132,10 +141,20 @@ Reply *Cia402Axis::initialize()
     for (ObjectAddress a : profileObjects())
         if (dict.contains(a) && !objects.contains(a))
             objects.append(a);
+    // Only what the description has; without any of them the defaults stay (no scaling, no
+    // modes known).
+    objects.removeIf([&dict](ObjectAddress a) { return !dict.contains(a); });
     auto pending = std::make_shared<int>(int(objects.size()));
     auto answered = std::make_shared<bool>(false); // a value or a device's refusal
     auto silence = std::make_shared<Error>();
     QPointer<Reply> guard(result);
+    if (objects.isEmpty()) {
+        QTimer::singleShot(0, this, [guard] {
+            if (guard)
+                guard->finish();
+        });
+        return result;
+    }
     for (const ObjectAddress &address : objects) {
         Reply *r = m_connection->read(address);
         connect(r, &Reply::finished, this, [=, this] {

@@ -26,6 +26,8 @@ private Q_SLOTS:
     void emergencyShownWithText();
     void wideCorrectionGoesThrough2010();
     void usageErrors();
+    void oscillatedAndStopped();
+    void scanFindsTheBitrate();
     void thirdPartyMasterByteExact();
 
 private:
@@ -197,6 +199,15 @@ void TestCliNm17x::positionedFromTheLoopSide()
     const auto [position, status] = display(1);
     QVERIFY(qAbs(position - 1000) <= 5); // tolerance window 0.05 mm
     QVERIFY(status & 0x8000);
+
+    // A negative position needs no "--" (it is no option), also beside options with values.
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("setpoint"), QStringLiteral("3"),
+              QStringLiteral("-2.5"), QStringLiteral("--release"), QStringLiteral("--correction"),
+              QStringLiteral("-0") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(r.out.contains(QLatin1String("position -2.50 mm  status In Position")),
+             qPrintable(r.out));
+    QVERIFY(qAbs(display(1).first + 250) <= 5);
 }
 
 void TestCliNm17x::joggedAndStopped()
@@ -274,10 +285,11 @@ void TestCliNm17x::wideCorrectionGoesThrough2010()
               QStringLiteral("--type"), QStringLiteral("s32") });
     QVERIFY2(read.exitCode == 0, qPrintable(read.err));
     QCOMPARE(read.out.trimmed(), QStringLiteral("50000"));
-    const CliRun pdo =
-        cli({ QStringLiteral("read"), uri() + QStringLiteral("&node=2"), QStringLiteral("2501:2"),
-              QStringLiteral("--type"), QStringLiteral("s16") });
-    QCOMPARE(pdo.out.trimmed(), QStringLiteral("-32768"));
+    // The node's description (chosen from its identity) types 2501h:02 UNSIGNED16, as the
+    // manual does: the PDO's -32768 ("keep 2010h") reads as 8000h.
+    const CliRun pdo = cli({ QStringLiteral("read"), uri() + QStringLiteral("&node=2"),
+                             QStringLiteral("2501:2"), QStringLiteral("--hex") });
+    QCOMPARE(pdo.out.trimmed(), QStringLiteral("0x8000"));
 }
 
 void TestCliNm17x::usageErrors()
@@ -298,6 +310,61 @@ void TestCliNm17x::usageErrors()
     r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("address") });
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains(QLatin1String("--broadcast FIRST")));
+}
+
+// D1/D2 written by the generic CLI (the node's description comes from its identity), then
+// oscillation started and stopped by 204Dh:02.
+void TestCliNm17x::oscillatedAndStopped()
+{
+    const QString node3 = QStringLiteral("canopen+slcan://127.0.0.1:%1?node=3").arg(m_slcan);
+    CliRun r =
+        cli({ QStringLiteral("write"), node3, QStringLiteral("2045:1"), QStringLiteral("500") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(r.err.isEmpty(), qPrintable(r.err)); // described: no note about a missing description
+    r = cli({ QStringLiteral("write"), node3, QStringLiteral("2045:2"), QStringLiteral("900") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("oscillate"), QStringLiteral("3"),
+              QStringLiteral("start") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QTRY_VERIFY(display(1).second & 0x0004); // status bit 2: oscillating
+    // Up to D2, then on the way back down to D1 (the reversal itself is too short to catch).
+    QTRY_VERIFY_WITH_TIMEOUT(display(1).first >= 895, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(display(1).first <= 600, 10000);
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("oscillate"), QStringLiteral("3"),
+              QStringLiteral("stop") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QTRY_VERIFY(!(display(1).second & 0x0004));
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("oscillate"), QStringLiteral("3"),
+              QStringLiteral("sideways") });
+    QCOMPARE(r.exitCode, 2);
+}
+
+// A display left at 250 kbit/s (its 2100h default): list at 125 kbit/s finds nothing, scan
+// looks at both rates and tells at which it answers.
+void TestCliNm17x::scanFindsTheBitrate()
+{
+    QProcess sim;
+    const QString banner = db::test::startAndReadBanner(
+        sim, QStringLiteral(DRIVEBENCH_SIM),
+        { QStringLiteral("nm17x"), QStringLiteral("--slcan-port"), QStringLiteral("0"),
+          QStringLiteral("--devices"), QStringLiteral("nm174@127"), QStringLiteral("--bitrate"),
+          QStringLiteral("250000") },
+        1);
+    const quint16 port = db::test::listeningPort(banner, QStringLiteral("SLCAN"));
+    QVERIFY2(port, qPrintable(banner));
+    const QString at125 = QStringLiteral("canopen+slcan://127.0.0.1:%1?bitrate=125000").arg(port);
+    CliRun r = cli({ QStringLiteral("nm17x"), at125, QStringLiteral("list") });
+    QCOMPARE(r.exitCode, 4);
+    r = cli({ QStringLiteral("nm17x"), at125, QStringLiteral("scan") });
+    sim.terminate();
+    QVERIFY(sim.waitForFinished(5000));
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    const QStringList lines = r.out.split(u'\n', Qt::SkipEmptyParts);
+    QVERIFY2(lines.size() == 3, qPrintable(r.out));
+    QCOMPARE(lines.at(0), QStringLiteral("125 kbit/s: 0 display(s)"));
+    QCOMPARE(lines.at(1), QStringLiteral("250 kbit/s: 1 display(s)"));
+    QVERIFY2(lines.at(2).contains(QRegularExpression(QStringLiteral("node +127  NM174"))),
+             qPrintable(lines.at(2)));
 }
 
 // python-can (a CAN stack of its own, SLCAN over TCP) addresses a display by LSS and reads and

@@ -3,15 +3,21 @@
 #include "devices/nm17x/device/simulatednm17x.h"
 #include "devices/nm17x/nm17xcodes.h"
 #include "scriptedcanbus.h"
+#include "widgets/nm17x/nm17xaddressingdialog.h"
 #include "widgets/nm17x/nm17xlinemodel.h"
 #include "widgets/nm17x/nm17xlinepanel.h"
 
 #include "canopen/cannetwork.h"
+#include "canopen/canopenconnection.h"
 #include "canopen/sdoclient.h"
+#include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/canmonitormodel.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTest>
 
@@ -29,6 +35,9 @@ private Q_SLOTS:
     void jogAndStop();
     void broadcastsReachEveryDisplay();
     void withoutNetworkNothingIsEnabled();
+    void canMonitorNamesThePdoFieldsOfTheLine();
+    void guidedAddressingAlongTheLine();
+    void guidedAddressingTimeoutIsNamedPerStep();
     void screenshotOfARunningLine();
 
 private:
@@ -128,6 +137,116 @@ void TstNm17xLinePanel::broadcastsReachEveryDisplay()
     QTRY_COMPARE(m_displays.at(0)->read({ 0x2001, 0 }).value().toUInt(), 1u);
     QCOMPARE(m_displays.at(1)->read({ 0x2001, 0 }).value().toUInt(), 1u);
     QVERIFY(m_panel->message().contains(QLatin1String("inch")));
+}
+
+// The CAN monitor of a connection to node 2 shows the TxPDO2 of node 3, too, field by field with
+// names and units, once the line has found the displays (each is described to the network).
+void TstNm17xLinePanel::canMonitorNamesThePdoFieldsOfTheLine()
+{
+    const auto uri = ConnectionUri::parse(QStringLiteral("canopen+slcan://127.0.0.1:1?node=2"));
+    QVERIFY(uri.ok());
+    canopen::CanopenConnection connection(
+        *uri, std::shared_ptr<canopen::CanNetwork>(m_network.get(), [](canopen::CanNetwork *) {}));
+    widgets::CanMonitor monitor;
+    monitor.setConnection(&connection);
+    const auto decodedTexts = [&monitor](quint32 id) {
+        QStringList texts;
+        const QAbstractItemModel *model = monitor.model();
+        for (int row = 0; row < model->rowCount(); ++row) {
+            if (model->index(row, widgets::CanMonitorModel::Id)
+                    .data()
+                    .toString()
+                    .toUInt(nullptr, 16)
+                == id)
+                texts.append(
+                    model->index(row, widgets::CanMonitorModel::Decoded).data().toString());
+        }
+        return texts;
+    };
+
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(2.5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!decodedTexts(0x283).isEmpty(), 10000);
+    const QString text = decodedTexts(0x283).constLast();
+    QVERIFY2(text.contains(QLatin1String("Position value = ")), qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("1/100 mm")), qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("Device status")), qPrintable(text));
+}
+
+// Three displays as delivered (node 127): the dialog offers 2, 3, 4; the test turns the shaft of
+// the display that should take each (in the order 2nd, 3rd, 1st); at the end all restart with
+// their new ids.
+void TstNm17xLinePanel::guidedAddressingAlongTheLine()
+{
+    m_panel->setNetwork(nullptr);
+    qDeleteAll(m_displays);
+    m_displays.clear();
+    for (quint32 serial : { 0x200u, 0x201u, 0x202u }) {
+        auto *d =
+            new SimulatedNm17x(serial == 0x202u ? Variant::Nm174 : Variant::Nm172, serial, 127);
+        connect(m_bus, &test::ScriptedCanBus::frameWritten, d, &SimulatedNm17x::receive);
+        connect(d, &SimulatedNm17x::transmit, m_bus,
+                [this](const QCanBusFrame &f) { m_bus->feedLater(f); });
+        d->start();
+        m_displays.append(d);
+    }
+    m_panel->setNetwork(m_network.get());
+    widgets::Nm17xAddressingDialog *dialog = m_panel->openAddressing();
+    QVERIFY(dialog);
+    QVERIFY(dialog->isVisible());
+    dialog->findChild<QSpinBox *>("firstNode")->setValue(2);
+    dialog->findChild<QSpinBox *>("count")->setValue(3);
+    const QList<int> order = { 1, 2, 0 }; // which display takes 2, 3, 4
+    QTest::mouseClick(dialog->findChild<QPushButton *>("start"), Qt::LeftButton);
+    for (int step = 0; step < 3; ++step) {
+        const int node = 2 + step;
+        QTRY_VERIFY(dialog->instruction().contains(QStringLiteral("node %1").arg(node)));
+        QVERIFY(dialog->isRunning());
+        QTRY_COMPARE(int(m_displays.at(order[step])->offeredNodeId()), node);
+        const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+        if (step == 1 && !dir.isEmpty())
+            dialog->grab().save(dir + QStringLiteral("/screenshot-nm17x-addressing.png"));
+        m_displays.at(order[step])->turnShaft(5);
+        QTRY_COMPARE(dialog->findChild<QProgressBar *>("progress")->value(), step + 1);
+    }
+    QTRY_VERIFY(!dialog->isRunning());
+    QCOMPARE(dialog->assignedIds(), (QList<canopen::NodeId> { 2, 3, 4 }));
+    QCOMPARE(dialog->steps().size(), 3);
+    QVERIFY2(dialog->instruction().contains(QLatin1String("addressed: node 2, 3, 4")),
+             qPrintable(dialog->instruction()));
+    QTRY_COMPARE(int(m_displays.at(1)->nodeId()), 2);
+    QTRY_COMPARE(int(m_displays.at(2)->nodeId()), 3);
+    QTRY_COMPARE(int(m_displays.at(0)->nodeId()), 4);
+    QTest::mouseClick(dialog->findChild<QPushButton *>("cancel"), Qt::LeftButton); // "Close"
+}
+
+// No display answers the second offer within its time: the dialog names that step's error and
+// keeps the id assigned before.
+void TstNm17xLinePanel::guidedAddressingTimeoutIsNamedPerStep()
+{
+    widgets::Nm17xAddressingDialog dialog(m_network.get());
+    dialog.setFirstNode(10);
+    dialog.setCount(2);
+    dialog.setStepSeconds(1);
+    dialog.show();
+    for (SimulatedNm17x *d : std::as_const(m_displays))
+        QVERIFY(!d->inAddressingMode());
+    dialog.start();
+    QTRY_VERIFY(dialog.instruction().contains(QLatin1String("node 10")));
+    QTRY_VERIFY(m_displays.at(0)->inAddressingMode());
+    m_displays.at(0)->turnShaft(5);
+    QTRY_VERIFY(dialog.instruction().contains(QLatin1String("node 11")));
+    QTRY_VERIFY_WITH_TIMEOUT(!dialog.isRunning(), 5000);
+    QCOMPARE(dialog.assignedIds(), QList<canopen::NodeId> { 10 });
+    const QStringList steps = dialog.steps();
+    QCOMPARE(steps.size(), 2);
+    QVERIFY2(steps.at(0).startsWith(QLatin1String("node 10: taken")), qPrintable(steps.at(0)));
+    QVERIFY2(steps.at(1).startsWith(QLatin1String("node 11: ")), qPrintable(steps.at(1)));
+    QVERIFY(dialog.instruction().contains(QLatin1String("node 10")));
 }
 
 void TstNm17xLinePanel::withoutNetworkNothingIsEnabled()

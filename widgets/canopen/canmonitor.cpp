@@ -185,8 +185,22 @@ void CanMonitor::setConnection(DeviceConnection *connection)
 {
     const canopen::NetworkNode at = canopen::networkNodeOf(connection);
     setBus(at ? at.network->bus() : nullptr);
-    if (at)
+    disconnect(m_dictionaryWatch);
+    if (!at)
+        return;
+    // Every node the network has a description of (the connected one, once it has chosen its
+    // description; the displays an NM17x line identified), now and as they come: their PDOs
+    // are shown field by field with names and units.
+    canopen::CanNetwork *network = at.network;
+    for (const canopen::NodeId node : network->describedNodes())
+        m_model->decoder().setDictionary(node, *network->dictionary(node));
+    if (!network->dictionary(at.node))
         m_model->decoder().setDictionary(at.node, connection->dictionary());
+    m_dictionaryWatch = connect(network, &canopen::CanNetwork::dictionaryChanged, this,
+                                [this, network](canopen::NodeId node) {
+                                    if (const ObjectDictionary *d = network->dictionary(node))
+                                        m_model->decoder().setDictionary(node, *d);
+                                });
 }
 
 void CanMonitor::setBus(CanBus *bus)

@@ -78,6 +78,7 @@ private:
     QLineEdit *m_dataEdit = nullptr;
     QLineEdit *m_textEdit = nullptr;
     QLabel *m_status = nullptr;
+    QMetaObject::Connection m_dictionaryWatch; // the network's descriptions -> the decoder
 };
 
 } // namespace db::widgets

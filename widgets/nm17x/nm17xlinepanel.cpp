@@ -1,5 +1,7 @@
 #include "nm17xlinepanel.h"
 
+#include "nm17xaddressingdialog.h"
+
 #include "nm17xlinemodel.h"
 
 #include "canopen/cannetwork.h"
@@ -82,6 +84,10 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     auto *start =
         button(tr("Start group"), QStringLiteral("startGroup"), &Nm17xLinePanel::startGroup);
     auto *stopLine = button(tr("Stop all"), QStringLiteral("stopAll"), &Nm17xLinePanel::stopAll);
+    auto *addressLine =
+        button(tr("Address line…"), QStringLiteral("addressLine"), [this] { openAddressing(); });
+    addressLine->setToolTip(tr("Give the displays their node ids one after the other: the "
+                               "display whose shaft is turned takes the id offered"));
     m_setpoint->setObjectName(QStringLiteral("setpoint"));
     m_kind->setObjectName(QStringLiteral("kind"));
     m_speed->setObjectName(QStringLiteral("speed"));
@@ -90,9 +96,9 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     connect(m_unit, &QComboBox::activated, this, [this](int i) { setInch(i == 1); });
 
     auto *lineRow = new QHBoxLayout;
-    for (QWidget *w :
-         std::initializer_list<QWidget *> { find, new QLabel(tr("Unit:"), this), m_unit, ids,
-                                            m_preset, preset, m_group, start, stopLine })
+    for (QWidget *w : std::initializer_list<QWidget *> {
+             find, addressLine, new QLabel(tr("Unit:"), this), m_unit, ids, m_preset, preset,
+             m_group, start, stopLine })
         lineRow->addWidget(w);
     lineRow->addStretch();
     auto *nodeRow = new QHBoxLayout;
@@ -107,7 +113,7 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     layout->addLayout(nodeRow);
     layout->addWidget(m_message);
     m_nodeButtons = { send, left, right, stopOne };
-    m_lineControls = { find, m_unit, ids, preset, start, stopLine };
+    m_lineControls = { find, addressLine, m_unit, ids, preset, start, stopLine };
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &Nm17xLinePanel::updateActions);
     connect(m_model, &QAbstractItemModel::modelReset, this, &Nm17xLinePanel::updateActions);
@@ -115,6 +121,20 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
 }
 
 Nm17xLinePanel::~Nm17xLinePanel() = default;
+
+Nm17xAddressingDialog *Nm17xLinePanel::openAddressing()
+{
+    if (!m_network)
+        return nullptr;
+    auto *dialog = new Nm17xAddressingDialog(m_network, this);
+    dialog->setObjectName(QStringLiteral("addressingDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &Nm17xAddressingDialog::addressingFinished, this, [this](bool) {
+        report(tr("Addressing finished; the displays restart with their new node ids."));
+    });
+    dialog->show();
+    return dialog;
+}
 
 void Nm17xLinePanel::setNetwork(canopen::CanNetwork *network)
 {

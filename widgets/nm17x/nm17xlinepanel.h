@@ -3,7 +3,8 @@
 // The NM17x line panel: every NM170/NM172/NM174 display on a CAN network in one table, live from
 // their TxPDOs, with commands for the selected display (setpoint standard / with release /
 // direct / plunge cut, jog left/right at a speed, stop) and for the whole line by broadcast
-// (mm/inch, show node ids, preset all, start group, stop all). Commands are built only from the
+// (mm/inch, show node ids, preset all, start group, stop all), and the guided addressing of
+// the line (Nm17xAddressingDialog). Commands are built only from the
 // control words the displays accept; the panel starts a node (NMT) before its first PDO, since
 // the displays execute PDOs in Operational only. It receives the network and never creates a
 // transport.
@@ -29,6 +30,7 @@ class Nm17xLine;
 
 namespace db::widgets {
 
+class Nm17xAddressingDialog;
 class Nm17xLineModel;
 
 class Nm17xLinePanel : public QWidget
@@ -59,6 +61,8 @@ public Q_SLOTS:
     void presetAll();
     void startGroup();
     void stopAll();
+    // The guided broadcast addressing (a non-modal dialog, deleted when closed).
+    Nm17xAddressingDialog *openAddressing();
 
 private:
     void report(const QString &text);

@@ -1,5 +1,7 @@
 #include "odeditor.h"
 
+#include "description/devicedescription.h"
+#include "descriptionprompt.h"
 #include "objectaccessbox.h"
 #include "odeditorbits.h"
 #include "odeditordelegate.h"
@@ -56,6 +58,7 @@ OdEditor::OdEditor(QWidget *parent)
     , m_details(new OdBitFieldView(this))
     , m_counts(new QLabel(this))
     , m_status(new QLabel(this))
+    , m_prompt(new DescriptionPrompt(this))
 {
     m_filterEdit->setObjectName(QStringLiteral("filter"));
     m_hex->setObjectName(QStringLiteral("hex"));
@@ -142,6 +145,7 @@ OdEditor::OdEditor(QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(m_tools);
+    layout->addWidget(m_prompt);
     layout->addWidget(splitter, 1);
     layout->addLayout(statusRow);
 
@@ -156,6 +160,7 @@ OdEditor::OdEditor(QWidget *parent)
     connect(m_rate, &QComboBox::currentIndexChanged, this,
             [this] { m_poller->setPeriodMs(m_rate->currentData().toInt()); });
     connect(readAllButton, &QToolButton::clicked, this, &OdEditor::readAll);
+    connect(m_prompt, &DescriptionPrompt::fileChosen, this, &OdEditor::useDescriptionFile);
     connect(byIndexButton, &QToolButton::clicked, this, &OdEditor::showAccessByIndex);
     connect(m_model, &OdEditorModel::writeRequested, this, &OdEditor::onWriteRequested);
     connect(m_model, &OdEditorModel::editRefused, this,
@@ -200,6 +205,7 @@ OdEditor::OdEditor(QWidget *parent)
 OdEditor::~OdEditor()
 {
     disconnect(m_stateConnection);
+    disconnect(m_dictionaryConnection);
     // An editor still open is committed while the view dies: that must not write anything.
     disconnect(m_model, nullptr, this, nullptr);
     disconnect(m_delegate, nullptr, this, nullptr);
@@ -211,6 +217,7 @@ void OdEditor::setConnection(DeviceConnection *connection)
     if (connection && connection == m_connection)
         return;
     disconnect(m_stateConnection);
+    disconnect(m_dictionaryConnection);
     ++m_generation;
     m_poller->setConnection(connection);
     m_connection = connection;
@@ -223,6 +230,8 @@ void OdEditor::setConnection(DeviceConnection *connection)
     if (connection) {
         m_stateConnection =
             connect(connection, &DeviceConnection::stateChanged, this, &OdEditor::onStateChanged);
+        m_dictionaryConnection = connect(connection, &DeviceConnection::dictionaryChanged, this,
+                                         &OdEditor::onDictionaryChanged);
     }
     showStatus(connection ? QString() : tr("No device"));
     onStateChanged();
@@ -232,6 +241,7 @@ void OdEditor::onStateChanged()
 {
     const bool connected = m_connection && m_connection->isConnected();
     m_model->setEditable(connected);
+    m_prompt->showFor(m_connection);
     if (!connected) {
         m_poller->clear();
         return;
@@ -242,6 +252,35 @@ void OdEditor::onStateChanged()
         || dict.identity.descriptionFile != m_model->dictionary().identity.descriptionFile)
         m_model->setDictionary(dict);
     readAll();
+}
+
+void OdEditor::onDictionaryChanged()
+{
+    if (!m_connection)
+        return;
+    m_model->setDictionary(m_connection->dictionary());
+    m_prompt->showFor(m_connection);
+    if (m_connection->isConnected())
+        readAll();
+}
+
+bool OdEditor::useDescriptionFile(const QString &path)
+{
+    if (!m_connection)
+        return false;
+    DescriptionOptions options;
+    const int node = m_connection->networkAddress();
+    if (node >= 1 && node <= 127)
+        options.nodeId = quint8(node);
+    auto loaded = loadDeviceDescription(path, options);
+    if (!loaded) {
+        m_prompt->showProblem(tr("%1 cannot be used: %2").arg(path, loaded.error().message()));
+        return false;
+    }
+    m_connection->setDictionary(loaded->dictionary);
+    showStatus(tr("Description: %1").arg(path));
+    Q_EMIT descriptionFileUsed(path);
+    return true;
 }
 
 void OdEditor::readAll()

@@ -14,6 +14,7 @@ class QTreeView;
 
 namespace db::widgets {
 
+class DescriptionPrompt;
 class FlowLayout;
 class OdBitFieldView;
 class OdEditorDelegate;
@@ -67,6 +68,11 @@ public:
     QString statusText() const;
     // The addresses of the rows currently on screen (what a refresh round reads).
     QList<ObjectAddress> visibleAddresses() const;
+    // Shown instead of an empty table when the connected device has no description.
+    DescriptionPrompt *descriptionPrompt() const { return m_prompt; }
+    // Loads the file as the description of the current device (its node id resolves $NODEID)
+    // and emits descriptionFileUsed(); a file that does not load is named in the prompt.
+    bool useDescriptionFile(const QString &path);
 
 public Q_SLOTS:
     void readAll();
@@ -76,9 +82,13 @@ public Q_SLOTS:
 Q_SIGNALS:
     // After every write the editor sent: ok, or the device's (or connection's) error.
     void writeFinished(db::ObjectAddress address, bool ok, const QString &message);
+    // The user chose this file as the current device's description (e.g. to add it to the
+    // description library).
+    void descriptionFileUsed(const QString &path);
 
 private:
     void onStateChanged();
+    void onDictionaryChanged();
     void onWriteRequested(ObjectAddress address, const QVariant &raw);
     void onCurrentChanged();
     // Data-set columns next to the value column, with the value delegate.
@@ -89,6 +99,7 @@ private:
 
     QPointer<DeviceConnection> m_connection;
     QMetaObject::Connection m_stateConnection;
+    QMetaObject::Connection m_dictionaryConnection;
     quint64 m_generation = 0;
 
     OdEditorModel *m_model;
@@ -104,6 +115,7 @@ private:
     OdBitFieldView *m_details;
     QLabel *m_counts;
     QLabel *m_status;
+    DescriptionPrompt *m_prompt;
 };
 
 } // namespace db::widgets

@@ -22,6 +22,7 @@ struct Nm17xSim::Private
     std::unique_ptr<SlcanServer> slcan;
     std::unique_ptr<QtCanBus> virtualCan;
     std::unique_ptr<QTcpServer> control;
+    int bitrate = 0; // of the SLCAN bus; 0 = any
     bool started = false;
 };
 
@@ -86,9 +87,15 @@ void Nm17xSim::startDevices()
         device->start();
 }
 
+void Nm17xSim::setBitrate(int bitsPerSecond)
+{
+    d->bitrate = bitsPerSecond;
+}
+
 Result<void> Nm17xSim::startSlcan(quint16 port)
 {
     d->slcan = std::make_unique<SlcanServer>();
+    d->slcan->setBusBitrate(d->bitrate);
     if (auto listening = d->slcan->listen(port); !listening)
         return listening;
     for (SimulatedNm17x *device : d->devices) {
@@ -206,8 +213,21 @@ QString Nm17xSim::execute(const QString &line)
             return QStringLiteral("ok");
         return QStringLiteral("error: ") + tr("fault INDEX motor|sensor|none");
     }
+    if (command == QLatin1String("input") && words.size() == 4) {
+        const auto level = [](const QString &w) -> std::optional<bool> {
+            if (w == QLatin1String("0") || w == QLatin1String("1"))
+                return w == QLatin1String("1");
+            return std::nullopt;
+        };
+        const auto f = level(words.at(2));
+        const auto g = level(words.at(3));
+        if (!f || !g)
+            return QStringLiteral("error: ") + tr("input INDEX F G (each 0 or 1)");
+        device->setInputs(*f, *g);
+        return QStringLiteral("ok");
+    }
     return QStringLiteral("error: ")
-        + tr("unknown command '%1' (list, turn, key, fault)").arg(line);
+        + tr("unknown command '%1' (list, turn, key, fault, input)").arg(line);
 }
 
 QString Nm17xSim::describe() const

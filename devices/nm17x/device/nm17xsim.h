@@ -9,6 +9,7 @@
 //   key INDEX left|right [MS] press a key for MS ms (default 100)
 //   fault INDEX motor|sensor|none   motor fault (Er 4 on the next drive command), sensor fault
 //                             (NM174: Er C, motor off), or none
+//   input INDEX F G           the levels (0/1) of the external inputs F and G (2041h:03 modes)
 // Every command is answered with "ok" or "error: <cause>" on its own line.
 
 #include "devices/nm17x/nm17xdescription.h"
@@ -46,6 +47,8 @@ public:
     void create(const QList<SimDeviceSpec> &devices);
     QList<SimulatedNm17x *> devices() const;
 
+    // The bus's bit rate for SLCAN clients (0: any; the default). Set before startSlcan().
+    void setBitrate(int bitsPerSecond);
     Result<void> startSlcan(quint16 port = 0);
     quint16 slcanPort() const;
     Result<void> startVirtualCan(const QString &interfaceName);

@@ -173,6 +173,9 @@ void SimulatedNm17x::resetNode(bool application)
     m_broadcastStep = 0;
     if (application) {
         m_spindle.stop();
+        m_oscillating = false;
+        m_d3Released = false; // D3 is 0 and locked after power-on
+        m_externPosiRunning = false;
         m_writes.clear();
         m_showNodeId = false;
         for (const ObjectDef &def : m_dictionary.objects()) {
@@ -318,10 +321,26 @@ void SimulatedNm17x::pressKey(int direction, int ms)
     if (m_spindle.isMoving())
         return m_spindle.abortByKey();
     constexpr int kShortPressMs = 400;
-    if (ms < kShortPressMs) {
+    const int counting = u32({ 0x2040, 1 }) == 0 ? direction : -direction;
+    if (ms >= kShortPressMs) {
+        // A held key runs the motor until it is let go, at the speed of the key mode 2041h:04
+        // (1 slow, 2 middle, 3 fast; 0 standard: slow, our reading of "slow and fast, switched by
+        // briefly releasing the key" for one press). The press (status bits 5/6) lasts ms.
+        const quint32 mode = u32({ 0x2041, 4 });
+        m_keyDown = direction;
+        m_spindle.jog(counting, mode == 0 ? Speed::Slow : Speed(mode), settings());
+        QTimer::singleShot(ms, this, [this, direction] {
+            if (m_keyDown != direction)
+                return;
+            m_keyDown = 0;
+            if (m_spindle.isJogging())
+                m_spindle.stop();
+        });
+        return;
+    }
+    {
         // Jog step (2046h; 0 = 50) in the direction the key counts, when 2040h:03 allows it.
         const quint32 activation = u32({ 0x2040, 3 });
-        const int counting = u32({ 0x2040, 1 }) == 0 ? direction : -direction;
         const bool allowed = activation == 2 || (activation == 0 && counting > 0)
             || (activation == 1 && counting < 0);
         if (!allowed)
@@ -343,6 +362,8 @@ void SimulatedNm17x::cycle()
         applyWrite(address, raw);
     }
     m_spindle.tick(kCycleMs, settings());
+    oscillate();
+    followExternPosi();
     const quint16 errors = errorWord();
     const quint8 reg = quint8(m_store->value({ 0x1001, 0 }).toUInt());
     m_store->set({ 0x1001, 0 }, errors ? (reg | kRegManufacturer) : (reg & ~kRegManufacturer));

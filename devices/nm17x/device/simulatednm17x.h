@@ -48,6 +48,12 @@ public:
     bool inAddressingMode() const { return m_addressing; }
     // The node id offered by broadcast addressing and shown on the display (0 = none).
     quint8 offeredNodeId() const { return m_offered; }
+    // Oscillating between D1 and D2 (2045h:01/02), started by 204Dh:02 = 1 or the inputs.
+    bool isOscillating() const { return m_oscillating; }
+    // The external inputs F and G (motor cable pins F/G), as the operator's switch sets them;
+    // their function follows 2041h:03 (spec 6.10): 0 standard (one input: travel, both:
+    // oscillation), 1 Takten (F: D1, G: D2), 2 ExternPosi (F: D3 while held), 3 off.
+    void setInputs(bool f, bool g);
     qint32 position() const; // 6004h
     quint16 statusWord() const; // 204Eh:01
     quint16 errorWord() const; // 204Eh:02
@@ -95,6 +101,13 @@ private:
     void handleRpdo2(const QByteArray &d);
     void startSetpoint(qint32 target, bool release, bool loop, std::optional<Speed> speed);
     void setCorrection(qint16 correction);
+    void setOscillation(bool on, bool byInputs = false);
+    // Takten with one input active, or ExternPosi with F active: CAN setpoints and drive commands
+    // are ignored.
+    bool inputsOwnAxis() const;
+    quint16 inputStatus() const; // status bits 3 and 4
+    void followExternPosi(); // in the cycle: the release ends at the target
+    void oscillate(); // the next leg, when the last one has ended
     SpindleSettings settings() const;
 
     Variant m_variant;
@@ -126,6 +139,13 @@ private:
     bool m_addressedByBroadcast = false; // took its id; ignores further node ids
     quint8 m_offered = 0;
     bool m_showNodeId = false; // 2008h
+    bool m_oscillating = false;
+    bool m_towardsD2 = true; // the leg in progress
+    bool m_inputF = false;
+    bool m_inputG = false;
+    bool m_d3Released = false; // D3 written since its last use (locked after power-on)
+    bool m_externPosiRunning = false;
+    int m_keyDown = 0; // a key held (+1 right, -1 left), 0 none
 };
 
 } // namespace db::nm17x

@@ -38,7 +38,9 @@ qint32 SimulatedNm17x::position() const
 
 quint16 SimulatedNm17x::statusWord() const
 {
-    const quint16 s = m_spindle.status(settings()) | (errorWord() ? status::Error : 0);
+    const quint16 s = m_spindle.status(settings()) | (errorWord() ? status::Error : 0)
+        | (m_oscillating ? status::Oscillating : 0) | inputStatus()
+        | (m_keyDown < 0 ? status::LeftKey : 0) | (m_keyDown > 0 ? status::RightKey : 0);
     return hasMotor(m_variant) ? s : (s & status::ArrowsActive);
 }
 
@@ -147,6 +149,11 @@ Result<void> SimulatedNm17x::checkWrite(ObjectAddress address, const QVariant &r
         if (!isJogCode(v))
             return abortWith(abort::InvalidValue, tr("11..13 or 21..23"));
         break;
+    case 0x204503:
+        if (u32({ 0x2041, 3 }) == 2 && m_inputF)
+            return abortWith(abort::General, tr("D3 cannot be written while input F is active"));
+        m_d3Released = true; // a written D3 may be used once, at once
+        break;
     default:
         break;
     }
@@ -210,6 +217,42 @@ void SimulatedNm17x::startSetpoint(qint32 target, bool release, bool loop,
         m_spindle.release(s);
 }
 
+// Oscillation (spec 6.10, mode 0): continuous positioning between D1 (lower) and D2 (upper),
+// each leg direct (no loop) with the usual speed stages; our reading: the first leg goes to D2
+// unless the spindle is at or above it. The external mode switch (inputs F/G) is taken to be in
+// its "no oscillation" position, so the command is accepted in input modes 0 and 3. Stopping
+// positions back to the current setpoint 2020h:01 (with loop).
+void SimulatedNm17x::setOscillation(bool on, bool byInputs)
+{
+    const quint32 mode = u32({ 0x2041, 3 });
+    // Over CAN only in modes 0 and 3, and in mode 0 only while the switch is at 00: the switch
+    // has priority.
+    const bool switchOwns = mode == 0 && (m_inputF || m_inputG);
+    if (!byInputs && (switchOwns || (on && mode != 0 && mode != 3)))
+        return;
+    if (!hasMotor(m_variant) || on == m_oscillating)
+        return;
+    m_oscillating = on;
+    if (!on) {
+        m_spindle.stop();
+        return startSetpoint(m_store->value({ 0x2020, 1 }).toInt(), true, true, {});
+    }
+    m_towardsD2 = position() < m_store->value({ 0x2045, 2 }).toInt();
+    const qint32 target = m_store->value({ 0x2045, m_towardsD2 ? quint8(2) : quint8(1) }).toInt();
+    if (m_spindle.start(target, false, {}, settings()))
+        m_oscillating = false; // Er 8/9/b: the reversal point is out of the limits
+}
+
+void SimulatedNm17x::oscillate()
+{
+    if (!m_oscillating || m_spindle.isMoving())
+        return;
+    m_towardsD2 = !m_towardsD2;
+    const qint32 target = m_store->value({ 0x2045, m_towardsD2 ? quint8(2) : quint8(1) }).toInt();
+    if (m_spindle.start(target, false, {}, settings()))
+        m_oscillating = false;
+}
+
 void SimulatedNm17x::setCorrection(qint16 correction)
 {
     if (correction != kKeepCorrection)
@@ -220,6 +263,12 @@ void SimulatedNm17x::setCorrection(qint16 correction)
 void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
 {
     m_showNodeId = false; // any write ends the special display modes
+    if (inputsOwnAxis() && (address.index == 0x2020 || address.index == 0x204D)) {
+        // Only the official stop gets through, and only in ExternPosi (spec 6.10).
+        const bool stop = address == ObjectAddress(0x204D, 1) && raw.toLongLong() == 0;
+        if (!(stop && u32({ 0x2041, 3 }) == 2))
+            return;
+    }
     const qint32 v = raw.toInt();
     const auto speed = [this] {
         return std::optional(Speed(u32({ 0x2020, 8 }) + 1));
@@ -283,12 +332,18 @@ void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
         m_showNodeId = v == 1;
         return;
     case 0x204D01:
-        if (v == 0)
+        if (v == 0) {
+            m_oscillating = false; // the official stop ends everything
             return m_spindle.stop();
+        }
         if (quint32(v) == u32({ 0x2040, 4 }) + 1)
             m_spindle.release(settings());
         return;
+    case 0x204D02:
+        m_store->set(address, v);
+        return setOscillation(v == 1);
     case 0x204D03:
+        m_oscillating = false;
         m_store->set(address, v);
         return m_spindle.jog(v < 20 ? 1 : -1, Speed(v % 10), settings());
     default:
@@ -337,16 +392,21 @@ void SimulatedNm17x::handleRpdo2(const QByteArray &d)
         return raiseEmergency(kInvalidControlWord, kSub1);
     const bool motor = hasMotor(m_variant);
     const SpindleSettings s = settings();
+    if (inputsOwnAxis() && what->command != Command::Stop && what->command != Command::WriteD3)
+        return; // Takten / ExternPosi own the axis
     switch (what->command) {
     case Command::None:
     case Command::Reserved:
         return;
     case Command::Stop:
+        m_oscillating = false;
         return m_spindle.stop();
     case Command::WriteD3:
         setCorrection(c->correction);
-        if (motor)
+        if (motor && !(u32({ 0x2041, 3 }) == 2 && m_inputF)) {
             m_store->set({ 0x2045, 3 }, c->setpoint);
+            m_d3Released = true;
+        }
         return;
     case Command::SetpointDirect:
         setCorrection(c->correction);

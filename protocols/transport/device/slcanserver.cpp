@@ -37,6 +37,7 @@ struct SlcanServer::Private
         slcan::Decoder decoder;
         bool channelOpen = false;
         bool timestamps = false;
+        int bitrate = 0; // from its Sn command; 0 = never set
     };
 
     Private()
@@ -48,12 +49,19 @@ struct SlcanServer::Private
     QHash<QTcpSocket *, Client> clients;
     TransmitAck ack = TransmitAck::Lawicel;
     bool requireOpen = false;
+    int busBitrate = 0; // 0: any
     QElapsedTimer clock;
     qint64 dropped = 0;
 
     void read(QTcpSocket *socket);
     QByteArray answer(Client &client, const slcan::Message &m);
-    bool receives(const Client &client) const { return !requireOpen || client.channelOpen; }
+    // A client set to another bit rate than the bus's hears nothing and is heard by nobody, as
+    // on a real bus (where its frames would be errors); one that never said is taken as right.
+    bool receives(const Client &client) const
+    {
+        return (!requireOpen || client.channelOpen)
+            && (busBitrate == 0 || client.bitrate == 0 || client.bitrate == busBitrate);
+    }
 };
 
 SlcanServer::SlcanServer(QObject *parent)
@@ -139,6 +147,16 @@ SlcanServer::TransmitAck SlcanServer::transmitAck() const
 void SlcanServer::setRequireOpen(bool require)
 {
     d->requireOpen = require;
+}
+
+void SlcanServer::setBusBitrate(int bitsPerSecond)
+{
+    d->busBitrate = qMax(0, bitsPerSecond);
+}
+
+int SlcanServer::busBitrate() const
+{
+    return d->busBitrate;
 }
 
 int SlcanServer::send(const QCanBusFrame &frame)
@@ -231,7 +249,10 @@ QByteArray SlcanServer::Private::answer(Client &client, const slcan::Message &m)
             return kSerialReply + ok;
         case 'F':
             return kStatusReply + ok;
-        default: // L, S, s: accepted, nothing to do on TCP
+        case 'S':
+            client.bitrate = slcan::bitrateForCode(m.argument.toInt()).value_or(0);
+            return ok;
+        default: // L, s: accepted, nothing to do on TCP
             return ok;
         }
     case slcan::Message::Kind::Ack:

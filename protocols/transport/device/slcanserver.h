@@ -58,6 +58,11 @@ public:
     // frame from a closed channel gets BEL, as a Lawicel adapter does. Off by default: the drive's
     // behaviour is not documented (spec 4.1), and a client that never sends O still works.
     void setRequireOpen(bool require);
+    // The simulated bus's bit rate (0, the default: any). A client whose Sn command names another
+    // one exchanges no frames, as a node at the wrong bit rate on a real bus; a client that sent
+    // no Sn is taken to be right.
+    void setBusBitrate(int bitsPerSecond);
+    int busBitrate() const;
 
     // Device -> clients. Returns how many clients got the frame.
     int send(const QCanBusFrame &frame);

@@ -79,6 +79,11 @@ private Q_SLOTS:
     void positioningWithLoop();
     void setpointBeyondEndLimitIsRefused();
     void jogUntilStopAndUntilLimit();
+    void oscillationBetweenD1AndD2();
+    void inputsTakten();
+    void inputsExternPosiAsInTheManual();
+    void inputsStandardOscillateAndTravel();
+    void heldKeyRunsAtTheKeyModeSpeed();
     void txPdo2OnChange();
     void faultsShowTheirErrors();
     void heartbeatLossStopsAndReports();
@@ -283,6 +288,147 @@ void TstSimulatedNm17x::jogUntilStopAndUntilLimit()
     line.send(0x37F, "0000000000009100"); // right medium: runs into the limit and stops
     QTRY_VERIFY_WITH_TIMEOUT(!d->spindle().isMoving() && d->position() == 5000, 10000);
     QCOMPARE(d->errorWord(), quint16(0));
+}
+
+// 204Dh:02 = 1: D1 <-> D2 without loop, status bit 2; = 0: back to the setpoint 2020h:01.
+void TstSimulatedNm17x::oscillationBetweenD1AndD2()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2345200164000000"); // D1 = 1.00 mm
+    line.send(0x67F, "234520022C010000"); // D2 = 3.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 2 }).value().toInt(), 300);
+    line.send(0x67F, "2F4D200201000000"); // start oscillating
+    QTRY_VERIFY(d->statusWord() & status::Oscillating);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() >= 295, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() <= 105, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(d->position() >= 295, 10000);
+    QVERIFY(d->position() <= 305); // reversal points are approached directly, no loop beyond
+    QVERIFY(d->isOscillating());
+    line.send(0x67F, "2F4D200200000000"); // stop: back to the setpoint (10.00 mm by default)
+    QTRY_VERIFY(!(d->statusWord() & status::Oscillating));
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 1000) <= 5);
+
+    // Not in input mode Takten (2041h:03 = 1): the external switch owns the axis.
+    line.send(0x67F, "2341200301000000");
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 1u);
+    line.send(0x67F, "2F4D200201000000");
+    QTRY_COMPARE(d->read({ 0x204D, 2 }).value().toUInt(), 1u);
+    QVERIFY(!d->isOscillating());
+}
+
+// Mode 1: a rising edge of F positions to D1, of G to D2; with one input active the axis
+// belongs to the inputs (status bit 3; CAN setpoints ignored).
+void TstSimulatedNm17x::inputsTakten()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200301000000"); // 2041h:03 = 1 Takten
+    line.send(0x67F, "23452001C8000000"); // D1 = 2.00 mm
+    line.send(0x67F, "2345200290010000"); // D2 = 4.00 mm
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 1u);
+    d->setInputs(true, false);
+    QVERIFY(d->statusWord() & status::Takten);
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 200) <= 5);
+    line.send(0x67F, "23202002E8030000"); // 2020h:02 = 10.00 mm with release: ignored
+    QTRY_COMPARE(d->read({ 0x2020, 2 }).value().toInt(), 1000);
+    d->setInputs(false, false);
+    QVERIFY(!(d->statusWord() & status::Takten));
+    d->setInputs(false, true);
+    QTRY_VERIFY_WITH_TIMEOUT(qAbs(d->position() - 400) <= 5 && !d->spindle().isMoving(), 10000);
+    QVERIFY(d->statusWord() & status::InPosition);
+}
+
+// Mode 2, the manual's example (spec 6.10): D3 = 20.00 mm, F on: positioning starts; F off:
+// stop, release revoked; D3 cannot be written while F is active; D3 written again: reached.
+void TstSimulatedNm17x::inputsExternPosiAsInTheManual()
+{
+    Line line({ Variant::Nm174 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200302000000"); // 2041h:03 = 2 ExternPosi
+    QTRY_COMPARE(d->read({ 0x2041, 3 }).value().toUInt(), 2u);
+    d->setInputs(true, false); // D3 is locked after power-on: nothing moves
+    QVERIFY(d->statusWord() & status::ExternPosi);
+    QVERIFY(!d->spindle().isMoving());
+    d->setInputs(false, false);
+    line.take();
+    line.send(0x67F, "23452003D0070000"); // D3 = 20.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 3 }).value().toInt(), 2000);
+    d->setInputs(true, false);
+    QTRY_VERIFY(d->position() > 100);
+    line.take();
+    line.send(0x67F, "2345200390010000"); // D3 = 4.00 mm while F is active: refused
+    const QList<Frame> answer = line.takeId(0x5FF);
+    QCOMPARE(answer.size(), 1);
+    QCOMPARE(quint8(answer.at(0).data.at(0)), quint8(0x80));
+    d->setInputs(false, false); // released before the target: stop
+    QTRY_VERIFY(!d->spindle().isMoving());
+    const qint32 stopped = d->position();
+    QVERIFY(stopped < 2000);
+    d->setInputs(true, false); // release revoked: F alone does not restart
+    QVERIFY(!d->spindle().isMoving());
+    d->setInputs(false, false);
+    line.send(0x67F, "23452003D0070000"); // D3 = 20.00 mm again
+    QTRY_VERIFY(d->read({ 0x2045, 3 }).value().toInt() == 2000);
+    d->setInputs(true, false);
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    QVERIFY(qAbs(d->position() - 2000) <= 5);
+}
+
+// Mode 0: both inputs oscillate (and CAN cannot stop it), one input travels until released.
+void TstSimulatedNm17x::inputsStandardOscillateAndTravel()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2345200164000000"); // D1 = 1.00 mm
+    line.send(0x67F, "234520022C010000"); // D2 = 3.00 mm
+    QTRY_COMPARE(d->read({ 0x2045, 2 }).value().toInt(), 300);
+    d->setInputs(true, true);
+    QVERIFY(d->isOscillating());
+    line.send(0x67F, "2F4D200200000000"); // CAN stop: the switch has priority
+    QTRY_COMPARE(d->read({ 0x204D, 2 }).value().toUInt(), 0u);
+    QVERIFY(d->isOscillating());
+    d->setInputs(false, false);
+    QVERIFY(!d->isOscillating());
+    QTRY_VERIFY_WITH_TIMEOUT(d->statusWord() & status::InPosition, 10000);
+    const qint32 start = d->position();
+    d->setInputs(true, false); // F alone: travel counting up
+    QTRY_VERIFY(d->position() > start + 50);
+    d->setInputs(false, false);
+    QTRY_VERIFY(!d->spindle().isMoving());
+}
+
+// A key held longer than 400 ms runs the motor until it is let go (status bit 6 meanwhile), at
+// the speed of 2041h:04: fast travels farther than slow in the same time.
+void TstSimulatedNm17x::heldKeyRunsAtTheKeyModeSpeed()
+{
+    Line line({ Variant::Nm172, Variant::Nm172 });
+    SimulatedNm17x *slow = line.devices.at(0);
+    SimulatedNm17x *fast = line.devices.at(1);
+    line.send(0x000, "017F");
+    line.send(0x67F, "2341200403000000"); // both: 2041h:04 = 3 fast ...
+    QTRY_COMPARE(fast->read({ 0x2041, 4 }).value().toUInt(), 3u);
+    QVERIFY(slow->write({ 0x2041, 4 }, 1u).ok()); // ... then the first one slow
+    QTRY_COMPARE(slow->read({ 0x2041, 4 }).value().toUInt(), 1u);
+    const qint32 slowStart = slow->position();
+    const qint32 fastStart = fast->position();
+    slow->pressKey(1, 600);
+    fast->pressKey(1, 600);
+    QVERIFY(slow->statusWord() & status::RightKey);
+    QTRY_VERIFY(slow->spindle().isMoving() && fast->spindle().isMoving());
+    QTRY_VERIFY_WITH_TIMEOUT(!slow->spindle().isMoving() && !fast->spindle().isMoving(), 5000);
+    QVERIFY(!(slow->statusWord() & status::RightKey));
+    QVERIFY(slow->position() > slowStart);
+    QVERIFY2(fast->position() - fastStart > 2 * (slow->position() - slowStart),
+             qPrintable(QStringLiteral("slow %1, fast %2")
+                            .arg(slow->position() - slowStart)
+                            .arg(fast->position() - fastStart)));
 }
 
 void TstSimulatedNm17x::txPdo2OnChange()
