@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 using namespace db;
 using namespace db::canopen;
@@ -88,18 +89,21 @@ void expedited(SdoClient &sdo, NodeId node, ObjectAddress object, int count)
                 loop.quit();
         });
     };
+    const std::clock_t cpuStart = std::clock();
     total.start();
     next();
     loop.exec();
     const double seconds = total.nsecsElapsed() / 1e9;
+    const double cpuUs = double(std::clock() - cpuStart) * 1e6 / CLOCKS_PER_SEC / count;
     std::sort(latencies.begin(), latencies.end());
     const auto pct = [&](double p) {
         return latencies.at(qMin(qsizetype(p * latencies.size()), latencies.size() - 1));
     };
     const auto stalls = std::count_if(latencies.cbegin(), latencies.cend(),
                                       [](double ms) { return ms >= kStallMs; });
-    std::printf("expedited upload:   %d round trips in %.3f s = %.0f/s  (failed %d)\n", count,
-                seconds, count / seconds, failed);
+    std::printf("expedited upload:   %d round trips in %.3f s = %.0f/s, cpu %.1f us per round "
+                "trip  (failed %d)\n",
+                count, seconds, count / seconds, cpuUs, failed);
     std::printf("  latency ms: p50 %.3f  p90 %.3f  p99 %.3f  max %.3f  stalls >= %d ms: %ld\n",
                 pct(0.5), pct(0.9), pct(0.99), latencies.last(), kStallMs, long(stalls));
 }

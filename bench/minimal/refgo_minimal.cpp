@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 
 int main(int argc, char **argv)
@@ -55,6 +56,7 @@ int main(int argc, char **argv)
     request.replace(request.find(':'), 1, ",");
     char buffer[4096];
     std::string first; // the first answer, checked once: the object must exist
+    const std::clock_t cpuStart = std::clock();
     const auto start = std::chrono::steady_clock::now();
     for (long i = 0; i < count; ++i) {
         if (write(fd, request.data(), request.size()) != ssize_t(request.size()))
@@ -73,8 +75,9 @@ int main(int argc, char **argv)
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("refgo minimal: %ld round trips in %.3f s = %.0f/s\n", count, seconds,
-                count / seconds);
+    const double cpuUs = double(std::clock() - cpuStart) * 1e6 / CLOCKS_PER_SEC / double(count);
+    std::printf("refgo minimal: %ld round trips in %.3f s = %.0f/s, cpu %.1f us per round trip\n",
+                count, seconds, double(count) / seconds, cpuUs);
     close(fd);
     return 0;
 }

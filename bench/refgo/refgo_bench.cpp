@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 
 using namespace db;
@@ -82,10 +83,12 @@ bool roundTrips(const char *label, int count, const std::function<Reply *()> &re
                 loop.quit();
         });
     };
+    const std::clock_t cpuStart = std::clock();
     total.start();
     next();
     loop.exec();
     const double seconds = double(total.nsecsElapsed()) / 1e9;
+    const double cpuUs = double(std::clock() - cpuStart) * 1e6 / CLOCKS_PER_SEC / count;
     if (!failure.isEmpty()) {
         std::fprintf(stderr, "refgo_bench: %s: %s\n", label, qPrintable(failure));
         return false;
@@ -96,8 +99,8 @@ bool roundTrips(const char *label, int count, const std::function<Reply *()> &re
     const auto pct = [&](double p) {
         return latencies.at(qMin(qsizetype(p * double(latencies.size())), latencies.size() - 1));
     };
-    std::printf("%-18s %d round trips in %.3f s = %.0f/s\n", label, count, seconds,
-                count / seconds);
+    std::printf("%-18s %d round trips in %.3f s = %.0f/s, cpu %.1f us per round trip\n", label,
+                count, seconds, count / seconds, cpuUs);
     std::printf("  latency ms: p50 %.3f  p90 %.3f  p99 %.3f  max %.3f\n", pct(0.5), pct(0.9),
                 pct(0.99), latencies.last());
     return true;
