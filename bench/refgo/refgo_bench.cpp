@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <memory>
 
 using namespace db;
 
@@ -69,6 +70,7 @@ bool roundTrips(const char *label, int count, const std::function<Reply *()> &re
     QElapsedTimer one;
     int done = 0;
     QString failure;
+    std::unique_ptr<Reply> previous; // the reply whose finished() ran last
     std::function<void()> next = [&] {
         one.start();
         Reply *r = request();
@@ -76,7 +78,9 @@ bool roundTrips(const char *label, int count, const std::function<Reply *()> &re
             latencies.append(double(one.nsecsElapsed()) / 1e6);
             if (!r->ok() && failure.isEmpty())
                 failure = r->error().toString();
-            r->deleteLater();
+            // The previous reply is done with (its finished() has returned): deleting it here
+            // saves a deferred-delete event per round trip, which would cost the loop a wake-up.
+            previous.reset(r);
             if (++done < count && failure.isEmpty())
                 next();
             else
