@@ -141,7 +141,23 @@ def group(n):
     return 'Other'
 
 
+def warning_bits():
+    """Bit names of the warning words 270 and 274 from the fault table (P270:0x0001, ...)."""
+    bits = {270: [None] * 16, 274: [None] * 16}
+    with open(os.path.join(SPECS, 'vabus_faults.csv'), newline='') as f:
+        for row in csv.DictReader(f):
+            m = re.fullmatch(r'P(270|274):0x([0-9A-Fa-f]{4})', row['code'])
+            if not m:
+                continue
+            mask = int(m.group(2), 16)
+            name = row['name'].split(' / ')[-1].strip()
+            if mask and not mask & (mask - 1) and name.lower() != 'reserved':
+                bits[int(m.group(1))][mask.bit_length() - 1] = name
+    return bits
+
+
 def main():
+    BITS.update(warning_bits())
     objects = []
     with open(os.path.join(SPECS, 'vabus_parameters.csv'), newline='') as f:
         for row in csv.DictReader(f):

@@ -1732,6 +1732,132 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::StatusSource</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>Nicht einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>Einschaltbereit</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>Eingeschaltet</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>Schnellhalt aktiv</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>Fehlerreaktion aktiv</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli::AcuStatusSource</name>
+    <message>
+        <source>Status word (411):</source>
+        <translation>Zustandswort (411):</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Mains on</source>
+        <translation>Netz ein</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>Fernsteuerung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Warning 2</source>
+        <translation>Warnung 2</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Current fault (260):</source>
+        <translation>Aktueller Fehler (260):</translation>
+    </message>
+    <message>
+        <source>No fault</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Fault %1 (not in the fault table)</source>
+        <translation>Fehler %1 (nicht in der Fehlertabelle)</translation>
+    </message>
+    <message>
+        <source>%1 bit %2</source>
+        <translation>%1 Bit %2</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter reacts as parameter 388 says (not read yet).</source>
+        <translation>Steht die Verbindung 10 s still, reagiert der Umrichter wie in Parameter 388 eingestellt (noch nicht gelesen).</translation>
+    </message>
+    <message>
+        <source>keeps its operating point</source>
+        <translation>behält seinen Arbeitspunkt</translation>
+    </message>
+    <message>
+        <source>goes to fault F2714 at once</source>
+        <translation>geht sofort in Störung F2714</translation>
+    </message>
+    <message>
+        <source>switches off (disable voltage, then switch on disabled)</source>
+        <translation>schaltet ab (Spannung sperren, dann Einschaltsperre)</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then switch on disabled</source>
+        <translation>macht einen Schnellhalt, dann Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>stops, then goes to fault F2714</source>
+        <translation>hält an und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>makes a quick stop, then goes to fault F2714</source>
+        <translation>macht einen Schnellhalt und geht dann in Störung F2714</translation>
+    </message>
+    <message>
+        <source>reacts in a way this program does not know</source>
+        <translation>reagiert auf eine diesem Programm unbekannte Weise</translation>
+    </message>
+    <message>
+        <source>When the link stops for 10 s the inverter %1 (parameter 388 = %2).</source>
+        <translation>Steht die Verbindung 10 s still, %1 der Umrichter (Parameter 388 = %2).</translation>
+    </message>
+</context>
+<context>
     <name>db::canopen</name>
     <message>
         <source>%1 is not a CANopen URI (canopen+socketcan://, canopen+virtualcan://, canopen+slcan://)</source>
@@ -2038,6 +2164,73 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>homing error</source>
         <translation>Referenzfahrtfehler</translation>
+    </message>
+</context>
+<context>
+    <name>db::cia402::Cia402StatusSource</name>
+    <message>
+        <source>Statusword:</source>
+        <translation>Statuswort:</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>In Bewegung</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Internal limit</source>
+        <translation>Interne Begrenzung</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>Störung</translation>
+    </message>
+    <message>
+        <source>Inputs (60FDh):</source>
+        <translation>Eingänge (60FDh):</translation>
+    </message>
+    <message>
+        <source>Outputs (60FEh.1):</source>
+        <translation>Ausgänge (60FEh.1):</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Position (6064h):</source>
+        <translation>Position (6064h):</translation>
+    </message>
+    <message>
+        <source>Velocity (606Ch):</source>
+        <translation>Geschwindigkeit (606Ch):</translation>
+    </message>
+    <message>
+        <source>Current (6078h):</source>
+        <translation>Strom (6078h):</translation>
+    </message>
+    <message>
+        <source>Last error (603Fh):</source>
+        <translation>Letzter Fehler (603Fh):</translation>
+    </message>
+    <message>
+        <source>No error</source>
+        <translation>Kein Fehler</translation>
+    </message>
+    <message>
+        <source>Status register (1002h):</source>
+        <translation>Statusregister (1002h):</translation>
+    </message>
+    <message>
+        <source>bit %1</source>
+        <translation>Bit %1</translation>
     </message>
 </context>
 <context>
@@ -3945,42 +4138,6 @@ Letzter Fehler: %1</translation>
 <context>
     <name>db::widgets::DriveStatusPanel</name>
     <message>
-        <source>Not ready to switch on</source>
-        <translation>Nicht einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>Einschaltsperre</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>Einschaltbereit</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>Eingeschaltet</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>Betrieb freigegeben</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>Schnellhalt aktiv</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>Fehlerreaktion aktiv</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>Störung</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>Unbekannter Zustand</translation>
-    </message>
-    <message>
         <source>No device selected.</source>
         <translation>Kein Gerät ausgewählt.</translation>
     </message>
@@ -4004,36 +4161,12 @@ Letzter Fehler: %1</translation>
         <translation>Kein Status</translation>
     </message>
     <message>
-        <source>bit %1</source>
-        <translation>Bit %1</translation>
-    </message>
-    <message>
         <source>No error or warning bits</source>
         <translation>Keine Fehler- oder Warnbits</translation>
     </message>
     <message>
-        <source>No error</source>
-        <translation>Kein Fehler</translation>
-    </message>
-    <message>
         <source>Drive state</source>
         <translation>Antriebszustand</translation>
-    </message>
-    <message>
-        <source>Target reached</source>
-        <translation>Ziel erreicht</translation>
-    </message>
-    <message>
-        <source>Moving</source>
-        <translation>In Bewegung</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>Internal limit</source>
-        <translation>Interne Begrenzung</translation>
     </message>
     <message>
         <source>Statusword:</source>
@@ -4048,52 +4181,24 @@ Letzter Fehler: %1</translation>
         <translation>Istwerte</translation>
     </message>
     <message>
-        <source>Position (6064h):</source>
-        <translation>Position (6064h):</translation>
-    </message>
-    <message>
-        <source>Velocity (606Ch):</source>
-        <translation>Geschwindigkeit (606Ch):</translation>
-    </message>
-    <message>
-        <source>Current (6078h):</source>
-        <translation>Strom (6078h):</translation>
-    </message>
-    <message>
         <source>Faults</source>
         <translation>Störungen</translation>
-    </message>
-    <message>
-        <source>603Fh keeps the last error after it has been cleared.</source>
-        <translation>603Fh behält den letzten Fehler, auch nachdem er quittiert wurde.</translation>
-    </message>
-    <message>
-        <source>Status register (1002h):</source>
-        <translation>Statusregister (1002h):</translation>
-    </message>
-    <message>
-        <source>Last error (603Fh):</source>
-        <translation>Letzter Fehler (603Fh):</translation>
     </message>
     <message>
         <source>Digital I/O</source>
         <translation>Digitale E/A</translation>
     </message>
     <message>
-        <source>Inputs (60FDh):</source>
-        <translation>Eingänge (60FDh):</translation>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
     <message>
-        <source>IN%1</source>
-        <translation>IN%1</translation>
+        <source>Warnings:</source>
+        <translation>Warnungen:</translation>
     </message>
     <message>
-        <source>Outputs (60FEh.1):</source>
-        <translation>Ausgänge (60FEh.1):</translation>
-    </message>
-    <message>
-        <source>OUT%1</source>
-        <translation>OUT%1</translation>
+        <source>Fault:</source>
+        <translation>Störung:</translation>
     </message>
 </context>
 <context>
@@ -5122,6 +5227,18 @@ Letzter Fehler: %1</translation>
         <source>Objects that the device description does not list are added to the tree once read or written.</source>
         <translation>Objekte, die die Gerätebeschreibung nicht enthält, werden nach dem Lesen oder Schreiben in den Baum aufgenommen.</translation>
     </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>Ins RAM schreiben</translation>
+    </message>
+    <message>
+        <source>Edits change the working value only: lost at power-off, the EEPROM is not written. Off: edits are stored permanently in the data set.</source>
+        <translation>Änderungen gelten nur für den Arbeitswert: nach dem Ausschalten verloren, das EEPROM wird nicht beschrieben. Aus: Änderungen werden dauerhaft im Datensatz gespeichert.</translation>
+    </message>
+    <message>
+        <source>to RAM (%1, lost at power-off)</source>
+        <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::OdEditorModel</name>
@@ -5215,6 +5332,14 @@ Letzter Fehler: %1</translation>
     </message>
     <message>
         <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>DS %1</source>
+        <translation>DS %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
 </context>
@@ -6342,6 +6467,10 @@ Change it?</source>
     <message>
         <source>Demo NM17x displays (nodes 2, 3, 4) at canopen+slcan://127.0.0.1:%1?node=2</source>
         <translation>Demo-NM17x-Anzeigen (Knoten 2, 3, 4) unter canopen+slcan://127.0.0.1:%1?node=2</translation>
+    </message>
+    <message>
+        <source>Demo ACTIVE Cube at %1</source>
+        <translation>Demo-ACTIVE-Cube unter %1</translation>
     </message>
 </context>
 <context>

@@ -3,8 +3,10 @@
 #include "canopen/canbusfactory.h"
 #include "canopen/cannetworkpool.h"
 #include "canopen/canopenconnection.h"
+#include "cia402/cia402statussource.h"
 #include "description/devicedescription.h"
 #include "devices/bonfiglioli/acudescription.h"
+#include "devices/bonfiglioli/acustatussource.h"
 #include "refgo/refgoconnection.h"
 #include "resources/builtindescriptions.h"
 #include "vabus/vabusconnection.h"
@@ -115,6 +117,7 @@ ProtocolRegistry makeRegistry()
         [](const ConnectionPlan &plan) -> Result<std::unique_ptr<DeviceConnection>> {
             auto connection = std::make_unique<refgo::RefgoConnection>(plan.uri);
             connection->setDictionary(resources::movingCapDictionary());
+            connection->setStatusSource(new cia402::Cia402StatusSource(connection.get()));
             return std::unique_ptr<DeviceConnection>(std::move(connection));
         },
         {},
@@ -130,6 +133,7 @@ ProtocolRegistry makeRegistry()
             auto connection = std::make_unique<vabus::VabusConnection>(plan.uri);
             connection->setDictionary(plan.hasDictionary ? plan.dictionary
                                                          : bonfiglioli::acuDictionary());
+            connection->setStatusSource(new bonfiglioli::AcuStatusSource(connection.get()));
             return std::unique_ptr<DeviceConnection>(std::move(connection));
         },
         .check = vabus::VabusConnection::checkUri,

@@ -1,7 +1,8 @@
 // drivebench: the GUI's composition root. It picks the real protocols (app/common) and, with
-// --demo, runs the simulated MovingCap and a line of NM17x displays in-process.
+// --demo, runs the simulated MovingCap, an ACTIVE Cube and a line of NM17x displays in-process.
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/bonfiglioli/simulatedacu.h"
 #include "devices/nm17x/device/nm17xsim.h"
 #include "mainwindow.h"
 #include "translations/language.h"
@@ -61,10 +62,20 @@ int main(int argc, char *argv[])
     const db::ProtocolRegistry &registry = db::app::protocolRegistry();
     std::unique_ptr<db::app::DemoDrive> demo; // outlives the window and its connections
     std::unique_ptr<db::nm17x::Nm17xSim> displays; // the demo's line of NM17x displays
+    std::unique_ptr<db::bonfiglioli::SimulatedAcu> acu; // the demo's ACTIVE Cube inverter
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
 
     if (parser.isSet(demoOption)) {
+        // An ACTIVE Cube inverter over VABus/TCP, opened first so that the MovingCap stays the
+        // device shown at start.
+        acu = std::make_unique<db::bonfiglioli::SimulatedAcu>();
+        if (auto started = acu->listen(0); started) {
+            const QString uri = QStringLiteral("vabus://127.0.0.1:%1").arg(acu->port());
+            window.logConsole()->info(
+                QApplication::translate("main", "Demo ACTIVE Cube at %1").arg(uri));
+            window.openConnection(uri);
+        }
         demo = std::make_unique<db::app::DemoDrive>();
         if (auto started = demo->startRefgo(0); !started) {
             std::fprintf(stderr, "drivebench: cannot start the demo drive: %s\n",

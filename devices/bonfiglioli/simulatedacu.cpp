@@ -155,6 +155,21 @@ void SimulatedAcu::powerCycle()
     m_controlWord = 0;
 }
 
+void SimulatedAcu::restart(int offMs)
+{
+    const quint16 port = m_server.port();
+    m_server.close();
+    powerCycle();
+    Q_EMIT logLine(QStringLiteral("power off for %1 ms").arg(offMs));
+    QTimer::singleShot(qMax(0, offMs), this, [this, port] {
+        if (auto listening = m_server.listen(port); !listening)
+            Q_EMIT logLine(
+                QStringLiteral("cannot listen again: %1").arg(listening.error().toString()));
+        else
+            Q_EMIT logLine(QStringLiteral("power on, listening on port %1").arg(port));
+    });
+}
+
 quint16 SimulatedAcu::statusWord() const
 {
     quint16 status = m_fault ? kFault : m_running ? kOperationEnabled : kSwitchOnDisabled;

@@ -51,6 +51,10 @@ public:
     quint64 eepromWrites() const { return m_store.eepromWrites(); }
     // RAM values, the block definition and the fault are lost; the watchdog disarms.
     void powerCycle();
+    // Switched off and on: the PLC connection drops, the port refuses connections for offMs
+    // (power off and the module starting up), then the inverter runs as after powerCycle().
+    // Returns at once.
+    void restart(int offMs);
 
     // Status (411) and diagnostics (260, 270, 274).
     quint16 statusWord() const;

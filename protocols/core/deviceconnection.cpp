@@ -1,6 +1,7 @@
 #include "deviceconnection.h"
 
 #include "logging.h"
+#include "statussource.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -26,7 +27,18 @@ DeviceConnection::DeviceConnection(const ConnectionUri &uri, QObject *parent)
 
 DeviceConnection::~DeviceConnection()
 {
+    delete m_statusSource; // before its replies fail: it must not see a half-destroyed connection
     failPending(Error(Error::Kind::Cancelled, Tr::tr("connection deleted")));
+}
+
+void DeviceConnection::setStatusSource(StatusSource *source)
+{
+    if (m_statusSource == source)
+        return;
+    delete m_statusSource;
+    m_statusSource = source;
+    if (source)
+        source->setParent(this);
 }
 
 void DeviceConnection::open()

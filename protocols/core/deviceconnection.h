@@ -4,6 +4,7 @@
 #include "connectionuri.h"
 #include "objectdictionary.h"
 #include "reply.h"
+#include "statussource.h"
 
 #include <QList>
 #include <QObject>
@@ -98,6 +99,17 @@ public:
     // The default is the dictionary's (CANopen's unless its description says otherwise).
     virtual const AddressFormat &addressFormat() const { return m_dictionary.addressFormat(); }
 
+    // The address that changes the same parameter in the device's working memory only (lost
+    // at power-off, sparing its EEPROM), for devices whose protocol has one (a VABus data set n
+    // is n + 5 in RAM); none otherwise. write() to it is checked as the parameter itself.
+    virtual std::optional<ObjectAddress> ramAddress(ObjectAddress) const { return std::nullopt; }
+
+    // The drive's live status (state, faults, actual values) as its device family reads it, one
+    // per connection and shared by everyone who shows it; null when nobody provided one. The
+    // connection owns the source (it becomes its child); a new one replaces the old.
+    StatusSource *statusSource() const { return m_statusSource; }
+    void setStatusSource(StatusSource *source);
+
 Q_SIGNALS:
     void stateChanged(db::DeviceConnection::State state);
     // Connection-level problems (refused, lost, garbage); request errors go to their replies.
@@ -136,6 +148,7 @@ private:
     int m_timeoutMs = 1000;
     int m_connectTimeoutMs = 3000;
     QList<QPointer<Reply>> m_pending;
+    QPointer<StatusSource> m_statusSource;
 };
 
 Q_DECLARE_OPERATORS_FOR_FLAGS(DeviceConnection::Capabilities)

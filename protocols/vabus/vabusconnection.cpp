@@ -61,12 +61,36 @@ void VabusConnection::init()
     connect(m_client, &VabusClient::logLine, this, &DeviceConnection::logLine);
     connect(m_stream, &ByteStream::opened, this, &VabusConnection::onOpened);
     connect(m_stream, &ByteStream::closed, this, &VabusConnection::onClosed);
+    m_retryTimer.setSingleShot(true);
+    m_retryTimer.setInterval(kRetryIntervalMs);
+    connect(&m_retryTimer, &QTimer::timeout, this, [this] {
+        if (state() != State::Disconnected)
+            return;
+        Q_EMIT logLine(QStringLiteral("connecting to %1 again (the inverter may be starting up)")
+                           .arg(m_stream->peerName()));
+        open();
+    });
+}
+
+void VabusConnection::setRetryAfterLoss(int windowMs, int intervalMs)
+{
+    m_retryWindowMs = qMax(0, windowMs);
+    m_retryTimer.setInterval(qMax(1, intervalMs));
+    if (m_retryWindowMs == 0)
+        stopReconnecting();
+}
+
+void VabusConnection::stopReconnecting()
+{
+    m_retryTimer.stop();
+    m_retryUntil.reset();
 }
 
 void VabusConnection::doOpen()
 {
     Q_EMIT logLine(QStringLiteral("connecting to %1").arg(m_stream->peerName()));
     m_stream->setConnectTimeoutMs(connectTimeoutMs());
+    m_retryTimer.stop();
     if (m_stream->isOpen())
         onOpened();
     else
@@ -75,6 +99,7 @@ void VabusConnection::doOpen()
 
 void VabusConnection::doClose()
 {
+    stopReconnecting(); // closed by us: no retry
     if (m_stream->state() == ByteStream::State::Closed)
         setState(State::Disconnected);
     else
@@ -87,6 +112,7 @@ void VabusConnection::onOpened()
     Q_EMIT logLine(QStringLiteral("connected to %1; the inverter reacts as parameter 388 says "
                                   "10 s after the last exchange once the link stops")
                        .arg(m_stream->peerName()));
+    m_retryUntil.reset();
     setState(State::Connected);
 }
 
@@ -105,7 +131,20 @@ void VabusConnection::onClosed(const Error &error)
         : Error(Error::Kind::Disconnected,
                 QStringLiteral("connection to %1 closed").arg(m_stream->peerName()));
     Q_EMIT logLine(QStringLiteral("! ") + why.message());
+    if (previous == State::Connected && m_retryWindowMs > 0)
+        m_retryUntil = QDeadlineTimer(m_retryWindowMs);
     setState(State::Disconnected, why);
+    if (m_retryUntil && !m_retryUntil->hasExpired() && state() == State::Disconnected)
+        m_retryTimer.start();
+    else
+        m_retryUntil.reset();
+}
+
+std::optional<ObjectAddress> VabusConnection::ramAddress(ObjectAddress address) const
+{
+    if (address.sub > kMaxReadDataSet)
+        return std::nullopt;
+    return ObjectAddress(address.index, quint8(address.sub + kRamDataSetOffset));
 }
 
 const ObjectDef *VabusConnection::describe(ObjectAddress address) const

@@ -13,6 +13,9 @@
 #include "core/deviceconnection.h"
 #include "vabusclient.h"
 
+#include <QDeadlineTimer>
+#include <QTimer>
+
 namespace db {
 class ByteStream;
 }
@@ -24,6 +27,9 @@ class VabusConnection : public DeviceConnection
     Q_OBJECT
 public:
     static constexpr int kDefaultPort = 17220; // the PLC port of the module
+    // After power-on the inverter and its module need up to 20 s before they communicate (3.2).
+    static constexpr int kPowerUpWindowMs = 20000;
+    static constexpr int kRetryIntervalMs = 1000;
 
     // Makes its own TcpStream to uri.host():uri.portOr(17220).
     explicit VabusConnection(const ConnectionUri &uri, QObject *parent = nullptr);
@@ -39,9 +45,20 @@ public:
     // The SYS byte ?sys= asks for.
     static Result<quint8> sysFromUri(const ConnectionUri &uri);
 
+    // Data sets 0-4 -> 5-9.
+    std::optional<ObjectAddress> ramAddress(ObjectAddress address) const override;
+
     // True when writes to data sets 0-4 go to RAM (?ram).
     bool writesToRam() const { return m_ram; }
     void setWritesToRam(bool ram) { m_ram = ram; }
+
+    // When a link that was up is lost (not closed by us), open() is tried again every intervalMs
+    // for windowMs: an inverter that was switched off and on answers again within 20 s. 0 turns
+    // it off. A first open() that fails is not retried.
+    void setRetryAfterLoss(int windowMs, int intervalMs = kRetryIntervalMs);
+    int retryWindowMs() const { return m_retryWindowMs; }
+    // True while waiting for the next attempt.
+    bool isRetryScheduled() const { return m_retryTimer.isActive(); }
 
     // The engine, for block access and diagnostics. Owned by the connection.
     VabusClient *client() const { return m_client; }
@@ -51,6 +68,7 @@ protected:
     void doClose() override;
     void doRead(Reply *reply, const ObjectDef *def) override;
     void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
+    void stopReconnecting() override;
 
 private:
     void init();
@@ -63,6 +81,10 @@ private:
     ByteStream *m_stream = nullptr;
     VabusClient *m_client = nullptr;
     bool m_ram = false;
+    int m_retryWindowMs = kPowerUpWindowMs;
+    QTimer m_retryTimer;
+    // Set when a link was lost: retries go on until it expires.
+    std::optional<QDeadlineTimer> m_retryUntil;
 };
 
 } // namespace db::vabus

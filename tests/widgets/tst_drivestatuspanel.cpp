@@ -1,3 +1,5 @@
+#include "devices/bonfiglioli/acudescription.h"
+#include "devices/bonfiglioli/acustatussource.h"
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
 #include "widgets/common/lamp.h"
@@ -203,6 +205,94 @@ private Q_SLOTS:
         QVERIFY(panel.connection() == nullptr);
         panel.setConnection(nullptr);
         QCOMPARE(labelText(panel, "pollStatus"), QStringLiteral("No device selected."));
+    }
+
+    // An ACTIVE Cube: the same panel, filled from its family's source (411, 260, 270/274, 388,
+    // actual values), addresses written as parameter numbers.
+    void activeCubeFaultWarningsAndLinkLoss()
+    {
+        FakeConnection fake;
+        fake.setDictionary(bonfiglioli::acuDictionary());
+        fake.setAddressFormat(AddressFormat::parameter());
+        const auto u = [](qulonglong v) {
+            return QVariant::fromValue(v);
+        };
+        const auto i = [](qlonglong v) {
+            return QVariant::fromValue(v);
+        };
+        fake.setValue({ 411, 0 }, u(0x0098)); // fault + voltage enabled + warning
+        fake.setValue({ 260, 0 }, u(0x2714));
+        fake.setValue({ 270, 0 }, u(0x8004));
+        fake.setValue({ 274, 0 }, u(0x0020));
+        fake.setValue({ 388, 0 }, u(4));
+        fake.setValue({ 210, 0 }, i(5000));
+        fake.setValue({ 211, 0 }, i(-12));
+        fake.setValue({ 213, 0 }, i(15));
+        fake.setValue({ 240, 0 }, i(1480));
+        fake.setValue({ 228, 0 }, i(5000));
+        fake.setValue({ 249, 0 }, u(2));
+        fake.setStatusSource(new bonfiglioli::AcuStatusSource(&fake));
+        DriveStatusPanel panel;
+        panel.setConnection(&fake);
+        panel.show();
+        fake.open();
+        QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Fault"));
+        QCOMPARE(labelText(panel, "statusword"), QStringLiteral("0x0098"));
+        QCOMPARE(labelText(panel, "lastErrorCode"), QStringLiteral("F2714"));
+        QCOMPARE(labelText(panel, "lastErrorText"), QStringLiteral("Communication loss to PLC"));
+        QCOMPARE(labelText(panel, "statusRegisterWarnings"),
+                 QStringLiteral("Warning long-term Ixt\nFollowing error"));
+        QCOMPARE(labelText(panel, "frequency"), QStringLiteral("50.00 Hz"));
+        QCOMPARE(labelText(panel, "current"), QStringLiteral("-1.2 A"));
+        QCOMPARE(labelText(panel, "speed"), QStringLiteral("1480 rpm"));
+        QVERIFY2(labelText(panel, "linkLoss").contains(QStringLiteral("388 = 4")),
+                 qPrintable(labelText(panel, "linkLoss")));
+        QVERIFY(labelText(panel, "linkLoss").contains(QStringLiteral("stops, then goes to fault")));
+        QVERIFY(lamp(panel, QStringLiteral("bit_0008"))->isOn()); // fault
+        QVERIFY(lamp(panel, QStringLiteral("bit_0080"))->isOn()); // warning
+        QVERIFY(!lamp(panel, QStringLiteral("bit_0400"))->isOn()); // target reached
+        QVERIFY(!panel.findChild<QLabel *>(QStringLiteral("position"))); // no CiA 402 rows
+        QVERIFY(!lamp(panel, QStringLiteral("IN1"))); // no I/O on this family
+
+        // A failed read names the parameter as the drive's documentation writes it.
+        fake.setFailure({ 211, 0 }, Error(Error::Kind::Timeout, QStringLiteral("no answer")));
+        QTRY_VERIFY(panel.isStale({ 211, 0 }));
+        QVERIFY2(labelText(panel, "pollStatus").contains(QStringLiteral("211:")),
+                 qPrintable(labelText(panel, "pollStatus")));
+        QCOMPARE(labelText(panel, "current"), QStringLiteral("-1.2 A"));
+
+        // Fault cleared, drive running.
+        fake.clearFailure({ 211, 0 });
+        fake.setValue({ 411, 0 }, u(0x0637));
+        fake.setValue({ 260, 0 }, u(0));
+        fake.setValue({ 270, 0 }, u(0));
+        fake.setValue({ 274, 0 }, u(0));
+        QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Operation enabled"));
+        QTRY_COMPARE(labelText(panel, "lastErrorText"), QStringLiteral("No fault"));
+        QVERIFY(lamp(panel, QStringLiteral("bit_0400"))->isOn());
+    }
+
+    // Two views of one connection share its source: one poller, one read per object per cycle.
+    void viewsShareOnePoller()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        DriveStatusPanel first;
+        DriveStatusPanel second;
+        first.setConnection(&fake);
+        second.setConnection(&fake);
+        QCOMPARE(first.source(), second.source());
+        first.show();
+        second.show();
+        fake.open();
+        QTRY_VERIFY(first.source()->cycles() >= 3);
+        const int cycles = first.source()->cycles();
+        QVERIFY(fake.readCount <= (cycles + 1) * int(DriveStatusPanel::polledObjects().size()));
+        QCOMPARE(labelText(second, "stateName"), QStringLiteral("Operation enabled"));
+        first.hide();
+        QVERIFY(second.isPolling()); // still held by the other view
+        second.hide();
+        QTRY_VERIFY(!first.source()->isPolling());
     }
 };
 

@@ -1,10 +1,15 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/bonfiglioli/simulatedacu.h"
 #include "mainwindow.h"
 #include "widgets/connection/drivestatuspanel.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/scope/scopepage.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -47,6 +52,76 @@ private Q_SLOTS:
 
         window.close();
         QCOMPARE(opened.value()->state(), DeviceConnection::State::Disconnected);
+    }
+
+    // The demo's ACTIVE Cube: its family's status (411, 260, 388) in the same panel, and polling
+    // that never writes the EEPROM.
+    void statusPanelShowsTheDemoAcu()
+    {
+        bonfiglioli::SimulatedAcu acu;
+        QVERIFY(acu.listen(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto opened = window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port()));
+        QVERIFY2(opened.ok(), qPrintable(opened.error().toString()));
+        widgets::DriveStatusPanel *panel = window.statusPanel();
+        const auto text = [panel](const char *name) {
+            auto *label = panel->findChild<QLabel *>(QLatin1String(name));
+            return label ? label->text() : QStringLiteral("<no %1>").arg(QLatin1String(name));
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isStale(ObjectAddress(411, 0)), 10000);
+        QCOMPARE(text("stateName"), QStringLiteral("Switch on disabled"));
+        QCOMPARE(text("lastErrorText"), QStringLiteral("No fault"));
+        QCOMPARE(text("frequency"), QStringLiteral("108.45 Hz"));
+        QVERIFY2(text("linkLoss").contains(QStringLiteral("388 = 1")),
+                 qPrintable(text("linkLoss")));
+
+        acu.raiseFault(0x2714);
+        QTRY_COMPARE(text("lastErrorCode"), QStringLiteral("F2714"));
+        QCOMPARE(text("stateName"), QStringLiteral("Fault"));
+        QCOMPARE(acu.eepromWrites(), quint64(0));
+        window.close();
+    }
+
+    // Not a check: with DRIVEBENCH_SCREENSHOT_ACU=DIR (under xvfb-run) it saves the main window
+    // at 1366x768 on the simulated ACTIVE Cube: DIR/acu-status.png, acu-editor.png and
+    // acu-scope.png (stator frequency 210 and RMS current 211 while the drive runs).
+    void screenshotsOfTheAcu()
+    {
+        const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_ACU");
+        if (dir.isEmpty())
+            QSKIP("set DRIVEBENCH_SCREENSHOT_ACU=DIR to save the screenshots");
+        bonfiglioli::SimulatedAcu acu;
+        QVERIFY(acu.listen(0).ok());
+        acu.setWarnings(0x0080); // motor temperature, so that the panel shows a warning
+        MainWindow window(app::protocolRegistry());
+        window.resize(1366, 768);
+        window.show();
+        // The page in question gets the room: no log or motion docks in these pictures.
+        for (QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+            const Qt::DockWidgetArea area = window.dockWidgetArea(dock);
+            if (area == Qt::BottomDockWidgetArea || area == Qt::RightDockWidgetArea)
+                dock->hide();
+        }
+        QVERIFY(window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port())));
+        widgets::DriveStatusPanel *panel = window.statusPanel();
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isStale(ObjectAddress(411, 0)), 10000);
+        QTest::qWait(300);
+        QVERIFY(window.grab().save(dir + QStringLiteral("/acu-status.png")));
+
+        window.pages()->setCurrentWidget(window.odEditor());
+        window.odEditor()->setFilterText(QStringLiteral("fixed frequency"));
+        QTest::qWait(1500);
+        QVERIFY(window.grab().save(dir + QStringLiteral("/acu-editor.png")));
+
+        window.pages()->setCurrentWidget(window.scopePage());
+        QVERIFY(window.scopePage()->addChannels({ { 210, 0 }, { 211, 0 } }, 20).ok());
+        window.scopePage()->start();
+        QTest::qWait(4000);
+        window.scopePage()->stop();
+        QTest::qWait(300);
+        QVERIFY(window.grab().save(dir + QStringLiteral("/acu-scope.png")));
+        window.close();
     }
 };
 

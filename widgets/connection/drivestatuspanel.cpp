@@ -1,41 +1,36 @@
 #include "drivestatuspanel.h"
 
+#include "cia402/cia402statussource.h"
 #include "widgets/common/lamp.h"
 #include "widgets/common/widgetstyle.h"
 
-#include <QDateTime>
 #include <QLabel>
+#include <QTime>
 
 namespace db::widgets {
 
 namespace {
 
-constexpr ObjectAddress kStatusword { 0x6041, 0 };
-constexpr ObjectAddress kModeDisplay { 0x6061, 0 };
-constexpr ObjectAddress kPosition { 0x6064, 0 };
-constexpr ObjectAddress kVelocity { 0x606C, 0 };
-constexpr ObjectAddress kCurrent { 0x6078, 0 };
-constexpr ObjectAddress kStatusRegister { 0x1002, 0 };
-constexpr ObjectAddress kErrorCode { 0x603F, 0 };
-constexpr ObjectAddress kInputs { 0x60FD, 0 };
-constexpr ObjectAddress kOutputs { 0x60FE, 1 };
-
-constexpr int kIoFirstBit = 16; // IN1 = 60FDh bit 16, OUT1 = 60FEh.1 bit 16 (movingcap.md 6.5)
-constexpr int kErrorBitCount = 16; // 1002h bits 0-15 are errors, 16+ warnings (movingcap.md 7.2)
-
-QColor stateColor(cia402::State state)
+QColor stateColor(StatusSource::State state)
 {
     switch (state) {
-    case cia402::State::OperationEnabled:
+    case StatusSource::State::OperationEnabled:
         return style::okColor();
-    case cia402::State::Fault:
-    case cia402::State::FaultReactionActive:
+    case StatusSource::State::Fault:
+    case StatusSource::State::FaultReactionActive:
         return style::errorColor();
-    case cia402::State::QuickStopActive:
+    case StatusSource::State::QuickStopActive:
         return style::warningColor();
     default:
         return QColor(0x45, 0x5a, 0x64);
     }
+}
+
+void showValue(QLabel *label, const StatusValue &value)
+{
+    label->setText(value.text.isEmpty() ? QStringLiteral("—") : value.text);
+    label->setToolTip(value.error);
+    style::setStale(label, !value.fresh);
 }
 
 } // namespace
@@ -43,150 +38,91 @@ QColor stateColor(cia402::State state)
 DriveStatusPanel::DriveStatusPanel(QWidget *parent)
     : QWidget(parent)
 {
-    m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, &DriveStatusPanel::startCycle);
     buildUi();
-    markAllStale();
+    buildFamilyUi();
+    render();
+}
+
+DriveStatusPanel::~DriveStatusPanel()
+{
+    hold(false);
 }
 
 QList<ObjectAddress> DriveStatusPanel::polledObjects()
 {
-    return { kStatusword,     kModeDisplay, kPosition, kVelocity, kCurrent,
-             kStatusRegister, kErrorCode,   kInputs,   kOutputs };
-}
-
-QString DriveStatusPanel::stateText(cia402::State state)
-{
-    switch (state) {
-    case cia402::State::NotReadyToSwitchOn:
-        return tr("Not ready to switch on");
-    case cia402::State::SwitchOnDisabled:
-        return tr("Switch on disabled");
-    case cia402::State::ReadyToSwitchOn:
-        return tr("Ready to switch on");
-    case cia402::State::SwitchedOn:
-        return tr("Switched on");
-    case cia402::State::OperationEnabled:
-        return tr("Operation enabled");
-    case cia402::State::QuickStopActive:
-        return tr("Quick stop active");
-    case cia402::State::FaultReactionActive:
-        return tr("Fault reaction active");
-    case cia402::State::Fault:
-        return tr("Fault");
-    case cia402::State::Unknown:
-        break;
-    }
-    return tr("Unknown state");
+    return cia402::Cia402StatusSource::objects();
 }
 
 void DriveStatusPanel::setConnection(DeviceConnection *connection)
 {
     if (connection && m_connection == connection)
         return;
-    for (const auto &c : std::as_const(m_connectionSignals))
+    hold(false);
+    for (const auto &c : std::as_const(m_signals))
         disconnect(c);
-    m_connectionSignals.clear();
-    ++m_generation; // replies still in flight belong to the old connection
-    m_pending = 0;
-    m_timer.stop();
-    m_values.clear();
-    m_errors.clear();
+    m_signals.clear();
     m_connection = connection;
+    m_source = nullptr;
     if (connection) {
-        m_connectionSignals = {
+        if (!connection->statusSource())
+            connection->setStatusSource(new cia402::Cia402StatusSource(connection));
+        m_source = connection->statusSource();
+        m_source->setIntervalMs(m_intervalMs);
+        m_signals = {
+            connect(m_source, &StatusSource::updated, this, &DriveStatusPanel::onUpdated),
             connect(connection, &DeviceConnection::stateChanged, this,
                     &DriveStatusPanel::onStateChanged),
             // A destroyed connection is forgotten as if setConnection(nullptr) was called.
             connect(connection, &QObject::destroyed, this, [this] { setConnection(nullptr); }),
         };
     }
+    buildFamilyUi();
+    hold(isVisible());
     onStateChanged();
 }
 
 void DriveStatusPanel::setPollInterval(int ms)
 {
     m_intervalMs = qMax(10, ms);
-    if (m_timer.isActive())
-        m_timer.start(m_intervalMs);
+    if (m_source)
+        m_source->setIntervalMs(m_intervalMs);
+}
+
+void DriveStatusPanel::hold(bool on)
+{
+    if (on == m_held || (on && !m_source))
+        return;
+    m_held = on;
+    if (!m_source)
+        return;
+    if (on)
+        m_source->acquire();
+    else
+        m_source->release();
 }
 
 void DriveStatusPanel::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    scheduleNext(0);
+    hold(true);
 }
 
 void DriveStatusPanel::hideEvent(QHideEvent *event)
 {
     QWidget::hideEvent(event);
-    m_timer.stop(); // a cycle in flight finishes; scheduleNext() then does nothing
+    hold(false); // a cycle in flight finishes; then the source stops unless others hold it
 }
 
 void DriveStatusPanel::onStateChanged()
 {
-    if (m_connection && m_connection->isConnected()) {
-        scheduleNext(0);
-        return;
-    }
-    m_timer.stop();
-    markAllStale();
-}
-
-void DriveStatusPanel::scheduleNext(int delayMs)
-{
-    if (m_pending > 0 || !m_connection || !m_connection->isConnected() || !isVisible())
-        return;
-    m_timer.start(delayMs);
-}
-
-void DriveStatusPanel::startCycle()
-{
-    if (m_pending > 0 || !m_connection || !m_connection->isConnected() || !isVisible())
-        return;
-    const QList<ObjectAddress> objects = polledObjects();
-    m_pending = int(objects.size());
-    m_fresh.clear();
-    m_errors.clear();
-    const quint64 generation = m_generation;
-    for (ObjectAddress address : objects) {
-        Reply *reply = m_connection->read(address);
-        reply->setParent(this); // deleted with the panel if it never finishes in time
-        connect(reply, &Reply::finished, this,
-                [this, reply, generation] { onReplyFinished(reply, generation); });
-    }
-}
-
-void DriveStatusPanel::onReplyFinished(Reply *reply, quint64 generation)
-{
-    reply->deleteLater();
-    if (generation != m_generation)
-        return;
-    if (reply->ok()) {
-        m_values.insert(reply->address(), reply->value());
-        m_fresh.insert(reply->address());
-    } else {
-        m_errors.insert(reply->address(), reply->error().toString());
-    }
-    if (--m_pending > 0)
-        return;
-    if (m_connection && m_connection->isConnected())
-        render();
-    else
-        markAllStale(); // the link went away during the cycle
-    Q_EMIT cycleFinished();
-    scheduleNext(m_intervalMs);
-}
-
-void DriveStatusPanel::markAllStale()
-{
-    m_fresh.clear();
     render();
-    if (!m_connection)
-        m_footer->setText(tr("No device selected."));
-    else if (!m_connection->isConnected())
-        m_footer->setText(
-            tr("%1 is %2.").arg(m_connection->uri().toString(), stateName(m_connection->state())));
+}
+
+void DriveStatusPanel::onUpdated()
+{
+    render();
+    if (m_connection && m_connection->isConnected())
+        Q_EMIT cycleFinished();
 }
 
 void DriveStatusPanel::render()
@@ -195,144 +131,126 @@ void DriveStatusPanel::render()
     renderValues();
     renderFaults();
     renderIo();
-    if (!m_errors.isEmpty()) {
-        const auto first = m_errors.constBegin();
-        m_footer->setText(tr("%n read(s) failed; %1: %2", nullptr, int(m_errors.size()))
-                              .arg(first.key().toString(), first.value()));
-    } else if (!m_fresh.isEmpty()) {
+    renderFooter();
+}
+
+void DriveStatusPanel::renderFooter()
+{
+    if (!m_connection) {
+        m_footer->setText(tr("No device selected."));
+    } else if (!m_connection->isConnected()) {
+        m_footer->setText(
+            tr("%1 is %2.").arg(m_connection->uri().toString(), stateName(m_connection->state())));
+    } else if (m_source && !m_source->errors().isEmpty()) {
+        const auto first = m_source->errors().constBegin();
+        m_footer->setText(
+            tr("%n read(s) failed; %1: %2", nullptr, int(m_source->errors().size()))
+                .arg(m_connection->addressFormat().format(first.key()), first.value()));
+    } else if (m_source && m_source->cycles() > 0) {
         m_footer->setText(tr("Updated %1, every %2 ms")
                               .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")))
                               .arg(m_intervalMs));
     }
 }
 
-QString DriveStatusPanel::valueText(ObjectAddress address) const
-{
-    const QVariant raw = m_values.value(address);
-    if (!raw.isValid())
-        return QStringLiteral("—");
-    const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
-    return def ? def->displayText(raw) : raw.toString();
-}
-
 void DriveStatusPanel::renderState()
 {
-    const QVariant raw = m_values.value(kStatusword);
-    const bool stale = isStale(kStatusword);
-    const auto sw = quint16(raw.toUInt());
-    const cia402::State state = raw.isValid() ? cia402::decodeState(sw) : cia402::State::Unknown;
-    m_stateLabel->setText(raw.isValid() ? stateText(state) : tr("No status"));
-    const QColor badge = raw.isValid() && !stale ? stateColor(state) : style::inactiveColor();
+    const StatusValue word = m_source ? m_source->statusWordValue() : StatusValue();
+    const bool valid = word.raw.isValid();
+    const bool stale = !word.fresh;
+    const StatusSource::State state = m_source ? m_source->state() : StatusSource::State::Unknown;
+    m_stateLabel->setText(valid ? StatusSource::stateText(state) : tr("No status"));
+    const QColor badge = valid && !stale ? stateColor(state) : style::inactiveColor();
     m_stateLabel->setStyleSheet(
         QStringLiteral("QLabel { color: white; background: %1; border-radius: 5px; "
                        "padding: 8px 16px; }")
             .arg(badge.name()));
-    m_stateLabel->setToolTip(m_errors.value(kStatusword));
-    m_statuswordLabel->setText(raw.isValid()
-                                   ? QStringLiteral("0x%1").arg(sw, 4, 16, QLatin1Char('0'))
-                                   : QStringLiteral("—"));
-    style::setStale(m_statuswordLabel, stale);
+    m_stateLabel->setToolTip(word.error);
+    showValue(m_statuswordLabel, word);
+    const quint32 sw = quint32(word.raw.toULongLong());
     for (Lamp *lamp : std::as_const(m_bitLamps)) {
-        if (raw.isValid())
+        if (valid)
             lamp->setOn(sw & lamp->property("mask").toUInt());
         lamp->setStale(stale);
     }
-
-    const QVariant mode = m_values.value(kModeDisplay);
-    m_modeLabel->setText(
-        mode.isValid()
-            ? QStringLiteral("%1 (%2)").arg(cia402::modeName(mode.toInt())).arg(mode.toInt())
-            : QStringLiteral("—"));
-    style::setStale(m_modeLabel, isStale(kModeDisplay));
+    if (m_source && !m_source->mode().key.isEmpty())
+        showValue(m_modeLabel, m_source->mode());
 }
 
 void DriveStatusPanel::renderValues()
 {
-    const std::pair<QLabel *, ObjectAddress> rows[] = { { m_positionLabel, kPosition },
-                                                        { m_velocityLabel, kVelocity },
-                                                        { m_currentLabel, kCurrent } };
-    for (const auto &[label, address] : rows) {
-        label->setText(valueText(address));
-        label->setToolTip(m_errors.value(address));
-        style::setStale(label, isStale(address));
-    }
+    if (!m_source)
+        return;
+    const QList<StatusValue> values = m_source->actualValues();
+    for (qsizetype i = 0; i < values.size() && i < m_valueLabels.size(); ++i)
+        showValue(m_valueLabels[i], values[i]);
 }
 
 void DriveStatusPanel::renderFaults()
 {
-    const QVariant reg = m_values.value(kStatusRegister);
-    const quint32 bits = reg.toUInt();
-    m_registerLabel->setText(reg.isValid()
-                                 ? QStringLiteral("0x%1").arg(bits, 8, 16, QLatin1Char('0'))
-                                 : QStringLiteral("—"));
-    m_registerLabel->setToolTip(m_errors.value(kStatusRegister));
-    style::setStale(m_registerLabel, isStale(kStatusRegister));
-
-    const ObjectDef *def =
-        m_connection ? m_connection->dictionary().find(kStatusRegister) : nullptr;
-    QStringList errors;
-    QStringList warnings;
-    for (int bit = 0; bit < 32; ++bit) {
-        if (!(bits & (1u << bit)))
-            continue;
-        QString name = tr("bit %1").arg(bit);
-        if (def) {
-            for (const BitField &field : def->bitFields) {
-                if (field.bit == bit)
-                    name = field.name;
-            }
-        }
-        (bit < kErrorBitCount ? errors : warnings).append(name);
+    if (!m_source) {
+        m_lastErrorLabel->setText(QStringLiteral("—"));
+        m_lastErrorText->clear();
+        m_registerBitsLabel->hide();
+        m_warningBitsLabel->clear();
+        m_linkLossLabel->hide();
+        return;
     }
-    const bool stale = isStale(kStatusRegister);
-    if (reg.isValid() && errors.isEmpty() && warnings.isEmpty())
-        m_registerBitsLabel->setText(tr("No error or warning bits"));
-    else
-        m_registerBitsLabel->setText(errors.join(QLatin1Char('\n')));
+    const StatusValue reg = m_source->faultRegister();
+    const QStringList errors = m_source->errorBits();
+    const QStringList warnings = m_source->warnings();
+    if (!reg.key.isEmpty()) {
+        showValue(m_registerLabel, reg);
+        if (reg.raw.isValid() && errors.isEmpty() && warnings.isEmpty())
+            m_registerBitsLabel->setText(tr("No error or warning bits"));
+        else
+            m_registerBitsLabel->setText(errors.join(QLatin1Char('\n')));
+        style::setTextColor(m_registerBitsLabel,
+                            !reg.fresh             ? style::inactiveColor()
+                                : errors.isEmpty() ? QColor()
+                                                   : style::errorColor());
+    } else {
+        m_registerBitsLabel->clear();
+    }
     m_registerBitsLabel->setVisible(!m_registerBitsLabel->text().isEmpty());
-    m_warningBitsLabel->setText(warnings.join(QLatin1Char('\n')));
-    m_warningBitsLabel->setVisible(!warnings.isEmpty());
-    style::setTextColor(m_registerBitsLabel,
-                        stale                  ? style::inactiveColor()
-                            : errors.isEmpty() ? QColor()
-                                               : style::errorColor());
-    style::setTextColor(m_warningBitsLabel, stale ? style::inactiveColor() : style::warningColor());
 
-    const QVariant code = m_values.value(kErrorCode);
-    const quint32 c = code.toUInt();
-    QString codeText = QStringLiteral("—");
-    QString text;
-    if (code.isValid() && c == 0) {
-        codeText = QStringLiteral("0x0000");
-        text = tr("No error");
-    } else if (code.isValid()) {
-        codeText = QStringLiteral("0x%1").arg(c, 4, 16, QLatin1Char('0'));
-        if (m_connection) {
-            if (const auto known = m_connection->dictionary().errorCode(c))
-                codeText += QLatin1Char(' ') + known->name;
-            text = m_connection->dictionary().errorText(c);
-        }
-    }
-    m_lastErrorLabel->setText(codeText);
-    m_lastErrorLabel->setToolTip(m_errors.value(kErrorCode));
-    m_lastErrorText->setText(text);
-    style::setStale(m_lastErrorLabel, isStale(kErrorCode));
-    style::setTextColor(m_lastErrorText, isStale(kErrorCode) ? style::inactiveColor() : QColor());
+    const StatusValue fault = m_source->fault();
+    showValue(m_lastErrorLabel, fault);
+    m_lastErrorText->setText(m_source->faultText());
+    style::setTextColor(m_lastErrorText,
+                        !fault.fresh                  ? style::inactiveColor()
+                            : m_source->faultActive() ? style::errorColor()
+                                                      : QColor());
+
+    m_warningBitsLabel->setText(warnings.isEmpty() ? tr("none") : warnings.join(QLatin1Char('\n')));
+    // Only the warnings are stale-greyed with the fault; their source objects vary by family.
+    style::setTextColor(m_warningBitsLabel,
+                        !fault.fresh             ? style::inactiveColor()
+                            : warnings.isEmpty() ? QColor()
+                                                 : style::warningColor());
+
+    const QString linkLoss = m_source->linkLossText();
+    m_linkLossLabel->setText(linkLoss);
+    m_linkLossLabel->setVisible(!linkLoss.isEmpty());
 }
 
 void DriveStatusPanel::renderIo()
 {
-    const auto update = [this](const QList<Lamp *> &lamps, ObjectAddress address) {
-        const QVariant raw = m_values.value(address);
-        for (int i = 0; i < lamps.size(); ++i) {
+    if (!m_source)
+        return;
+    const QList<StatusIoRow> rows = m_source->ioRows();
+    for (qsizetype r = 0; r < rows.size() && r < m_ioLamps.size(); ++r) {
+        const QVariant raw = m_source->value(rows[r].address);
+        const bool stale = !m_source->isFresh(rows[r].address);
+        const QString error = m_source->errors().value(rows[r].address);
+        const QList<Lamp *> &lamps = m_ioLamps[r];
+        for (qsizetype i = 0; i < lamps.size(); ++i) {
             if (raw.isValid())
-                lamps[i]->setOn(raw.toULongLong() & (1ull << (kIoFirstBit + i)));
-            lamps[i]->setStale(isStale(address));
-            lamps[i]->setToolTip(m_errors.value(address));
+                lamps[i]->setOn(raw.toULongLong() & (1ull << (rows[r].firstBit + i)));
+            lamps[i]->setStale(stale);
+            lamps[i]->setToolTip(error);
         }
-    };
-    update(m_inputLamps, kInputs);
-    update(m_outputLamps, kOutputs);
+    }
 }
 
 } // namespace db::widgets

@@ -1,54 +1,55 @@
 #pragma once
 
-#include "cia402/statusword.h"
 #include "core/deviceconnection.h"
+#include "core/statussource.h"
 
-#include <QHash>
 #include <QPointer>
-#include <QSet>
-#include <QTimer>
 #include <QWidget>
 
+class QFormLayout;
+class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 
 namespace db::widgets {
 
 class Lamp;
 
-// The live status of a CiA 402 drive (movingcap.md 5, 7, 8.1): PDS state, statusword bits, mode,
-// actual values, faults (1002h bits, 603Fh with its text) and the digital I/O.
+// The live status of a drive of any family, as its connection's StatusSource reads it: the
+// state as a coloured badge, the status word and its bits, the mode, actual values, the current
+// fault with its text, warnings, digital I/O where the family has them, and what the drive does
+// when the link stops. A connection without a source gets the CiA 402 one.
 //
-// Polling contract: one cycle reads every object in polledObjects(); the next cycle starts
-// pollInterval() ms after the last reply of the previous one finished, so a slow device is never
-// flooded. Polling runs only while the connection is Connected and the panel is visible. Failed
-// reads leave the old value greyed out (stale) with the error as tool tip; nothing pops up.
+// The panel holds the source (it polls) only while it is visible; several views of one
+// connection share one poller. Failed reads leave the old value greyed out (stale) with the error
+// as tool tip; nothing pops up.
 class DriveStatusPanel : public QWidget
 {
     Q_OBJECT
 public:
-    static constexpr int kDefaultPollIntervalMs = 200;
-    static constexpr int kInputCount = 10; // IN1..IN10 = 60FDh bits 16..25 (movingcap.md 8.1)
-    static constexpr int kOutputCount = 4; // OUT1..OUT4 = 60FEh.1 bits 16..19
+    static constexpr int kDefaultPollIntervalMs = StatusSource::kDefaultIntervalMs;
 
     explicit DriveStatusPanel(QWidget *parent = nullptr);
+    ~DriveStatusPanel() override;
 
     // May be null. The panel does not own the connection and copes with its destruction.
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
+    StatusSource *source() const { return m_source; }
 
     int pollInterval() const { return m_intervalMs; }
     void setPollInterval(int ms);
-    bool isPolling() const { return m_timer.isActive() || m_pending > 0; }
+    bool isPolling() const { return m_source && m_held && m_source->isPolling(); }
 
-    // The objects read every cycle: 6041h, 6061h, 6064h, 606Ch, 6078h, 1002h, 603Fh, 60FDh,
-    // 60FEh.1.
+    // The objects a CiA 402 drive's cycle reads: 6041h, 6061h, 6064h, 606Ch, 6078h, 1002h,
+    // 603Fh, 60FDh, 60FEh.1.
     static QList<ObjectAddress> polledObjects();
     // The last raw value read (invalid before the first successful read).
-    QVariant value(ObjectAddress address) const { return m_values.value(address); }
-    bool isStale(ObjectAddress address) const { return !m_fresh.contains(address); }
-
-    // The CiA 402 state name as shown ("Operation enabled"), translated.
-    static QString stateText(cia402::State state);
+    QVariant value(ObjectAddress address) const
+    {
+        return m_source ? m_source->value(address) : QVariant();
+    }
+    bool isStale(ObjectAddress address) const { return !m_source || !m_source->isFresh(address); }
 
 Q_SIGNALS:
     // After every completed poll cycle, whether all reads succeeded or not.
@@ -60,42 +61,44 @@ protected:
 
 private:
     void buildUi();
+    void buildFamilyUi();
+    void hold(bool on);
+    void onUpdated();
     void onStateChanged();
-    void scheduleNext(int delayMs);
-    void startCycle();
-    void onReplyFinished(class Reply *reply, quint64 generation);
     void render();
     void renderState();
     void renderValues();
     void renderFaults();
     void renderIo();
-    void markAllStale();
-    QString valueText(ObjectAddress address) const;
+    void renderFooter();
 
     QPointer<DeviceConnection> m_connection;
-    QList<QMetaObject::Connection> m_connectionSignals;
-    QTimer m_timer;
+    QPointer<StatusSource> m_source;
+    QList<QMetaObject::Connection> m_signals;
     int m_intervalMs = kDefaultPollIntervalMs;
-    int m_pending = 0;
-    quint64 m_generation = 0;
-    QHash<ObjectAddress, QVariant> m_values;
-    QHash<ObjectAddress, QString> m_errors;
-    QSet<ObjectAddress> m_fresh;
+    bool m_held = false;
 
     QLabel *m_stateLabel = nullptr;
+    QLabel *m_statusWordName = nullptr;
     QLabel *m_statuswordLabel = nullptr;
+    QLabel *m_modeName = nullptr;
     QLabel *m_modeLabel = nullptr;
+    QHBoxLayout *m_bitRow = nullptr;
     QList<Lamp *> m_bitLamps;
-    QLabel *m_positionLabel = nullptr;
-    QLabel *m_velocityLabel = nullptr;
-    QLabel *m_currentLabel = nullptr;
+    QGroupBox *m_valuesBox = nullptr;
+    QFormLayout *m_valuesForm = nullptr;
+    QList<QLabel *> m_valueLabels;
+    QGroupBox *m_ioBox = nullptr;
+    QList<QList<Lamp *>> m_ioLamps;
+    QGroupBox *m_faultBox = nullptr;
+    QLabel *m_registerName = nullptr;
     QLabel *m_registerLabel = nullptr;
     QLabel *m_registerBitsLabel = nullptr;
     QLabel *m_warningBitsLabel = nullptr;
+    QLabel *m_lastErrorName = nullptr;
     QLabel *m_lastErrorLabel = nullptr;
     QLabel *m_lastErrorText = nullptr;
-    QList<Lamp *> m_inputLamps;
-    QList<Lamp *> m_outputLamps;
+    QLabel *m_linkLossLabel = nullptr;
     QLabel *m_footer = nullptr;
 };
 

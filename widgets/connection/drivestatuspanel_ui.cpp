@@ -1,4 +1,5 @@
-// DriveStatusPanel's widget tree, apart from its polling and rendering (drivestatuspanel.cpp).
+// DriveStatusPanel's widget tree, apart from its rendering (drivestatuspanel.cpp): the fixed
+// frame, and the parts that depend on the device family (lamps, actual values, I/O).
 #include "drivestatuspanel.h"
 
 #include "widgets/common/lamp.h"
@@ -15,13 +16,6 @@ namespace db::widgets {
 
 namespace {
 
-struct StatusBit
-{
-    quint16 mask;
-    const char *name;
-    QColor color;
-};
-
 QLabel *valueLabel(const QString &name, QWidget *parent)
 {
     auto *label = new QLabel(parent);
@@ -32,11 +26,43 @@ QLabel *valueLabel(const QString &name, QWidget *parent)
     return label;
 }
 
+QLabel *textLabel(const QString &name, QWidget *parent)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    return label;
+}
+
+QColor lampColor(StatusLamp::Kind kind)
+{
+    switch (kind) {
+    case StatusLamp::Kind::Ok:
+        return style::okColor();
+    case StatusLamp::Kind::Warning:
+        return style::warningColor();
+    case StatusLamp::Kind::Error:
+        return style::errorColor();
+    case StatusLamp::Kind::Info:
+        break;
+    }
+    return QColor(0x1e, 0x6f, 0xd9);
+}
+
+QVBoxLayout *stacked(std::initializer_list<QWidget *> widgets)
+{
+    auto *column = new QVBoxLayout;
+    column->setSpacing(2);
+    for (QWidget *w : widgets)
+        column->addWidget(w);
+    return column;
+}
+
 } // namespace
 
 void DriveStatusPanel::buildUi()
 {
-    // State: the CiA 402 state as a coloured badge, statusword and mode beside it.
+    // State: the state as a coloured badge, status word and mode beside it, bit lamps below.
     auto *stateBox = new QGroupBox(tr("Drive state"), this);
     m_stateLabel = new QLabel(stateBox);
     m_stateLabel->setObjectName(QStringLiteral("stateName"));
@@ -45,98 +71,50 @@ void DriveStatusPanel::buildUi()
     big.setBold(true);
     m_stateLabel->setFont(big);
     m_stateLabel->setAlignment(Qt::AlignCenter);
-    m_stateLabel->setMinimumWidth(
-        QFontMetrics(big).horizontalAdvance(stateText(cia402::State::FaultReactionActive)) + 40);
+    m_stateLabel->setMinimumWidth(QFontMetrics(big).horizontalAdvance(StatusSource::stateText(
+                                      StatusSource::State::FaultReactionActive))
+                                  + 40);
     m_statuswordLabel = valueLabel(QStringLiteral("statusword"), stateBox);
+    m_statusWordName = new QLabel(tr("Statusword:"), stateBox);
     m_modeLabel = new QLabel(stateBox);
     m_modeLabel->setObjectName(QStringLiteral("mode"));
-
-    const StatusBit bits[] = {
-        { cia402::sw::TargetReached, QT_TR_NOOP("Target reached"), style::okColor() },
-        { cia402::sw::Moving, QT_TR_NOOP("Moving"), QColor(0x1e, 0x6f, 0xd9) },
-        { cia402::sw::Warning, QT_TR_NOOP("Warning"), style::warningColor() },
-        { cia402::sw::InternalLimitActive, QT_TR_NOOP("Internal limit"), style::warningColor() },
-        { cia402::sw::Fault, QT_TR_NOOP("Fault"), style::errorColor() },
-    };
-    auto *bitRow = new QHBoxLayout;
-    for (const StatusBit &bit : bits) {
-        auto *lamp = new Lamp(tr(bit.name), bit.color, stateBox);
-        lamp->setProperty("mask", bit.mask);
-        lamp->setObjectName(QStringLiteral("bit_%1").arg(bit.mask, 4, 16, QLatin1Char('0')));
-        m_bitLamps.append(lamp);
-        bitRow->addWidget(lamp);
-    }
-    bitRow->addStretch();
+    m_modeName = new QLabel(tr("Mode:"), stateBox);
+    m_bitRow = new QHBoxLayout;
 
     auto *stateForm = new QFormLayout;
-    stateForm->addRow(tr("Statusword:"), m_statuswordLabel);
-    stateForm->addRow(tr("Mode:"), m_modeLabel);
+    stateForm->addRow(m_statusWordName, m_statuswordLabel);
+    stateForm->addRow(m_modeName, m_modeLabel);
     auto *stateTop = new QHBoxLayout;
     stateTop->addWidget(m_stateLabel);
     stateTop->addSpacing(12);
     stateTop->addLayout(stateForm, 1);
     auto *stateLayout = new QVBoxLayout(stateBox);
     stateLayout->addLayout(stateTop);
-    stateLayout->addLayout(bitRow);
+    stateLayout->addLayout(m_bitRow);
 
-    // Actual values.
-    auto *valuesBox = new QGroupBox(tr("Actual values"), this);
-    m_positionLabel = valueLabel(QStringLiteral("position"), valuesBox);
-    m_velocityLabel = valueLabel(QStringLiteral("velocity"), valuesBox);
-    m_currentLabel = valueLabel(QStringLiteral("current"), valuesBox);
-    auto *valuesForm = new QFormLayout(valuesBox);
-    valuesForm->addRow(tr("Position (6064h):"), m_positionLabel);
-    valuesForm->addRow(tr("Velocity (606Ch):"), m_velocityLabel);
-    valuesForm->addRow(tr("Current (6078h):"), m_currentLabel);
+    // Actual values: rows per family.
+    m_valuesBox = new QGroupBox(tr("Actual values"), this);
+    m_valuesForm = new QFormLayout(m_valuesBox);
 
-    // Faults.
-    auto *faultBox = new QGroupBox(tr("Faults"), this);
-    m_registerLabel = valueLabel(QStringLiteral("statusRegister"), faultBox);
-    m_registerBitsLabel = new QLabel(faultBox);
-    m_registerBitsLabel->setObjectName(QStringLiteral("statusRegisterBits"));
-    m_registerBitsLabel->setWordWrap(true);
-    m_warningBitsLabel = new QLabel(faultBox);
-    m_warningBitsLabel->setObjectName(QStringLiteral("statusRegisterWarnings"));
-    m_warningBitsLabel->setWordWrap(true);
-    m_lastErrorLabel = valueLabel(QStringLiteral("lastErrorCode"), faultBox);
-    m_lastErrorText = new QLabel(faultBox);
-    m_lastErrorText->setObjectName(QStringLiteral("lastErrorText"));
-    m_lastErrorText->setWordWrap(true);
-    m_lastErrorText->setToolTip(tr("603Fh keeps the last error after it has been cleared."));
-    const auto stacked = [](std::initializer_list<QWidget *> widgets) {
-        auto *column = new QVBoxLayout;
-        column->setSpacing(2);
-        for (QWidget *w : widgets)
-            column->addWidget(w);
-        return column;
-    };
-    auto *faultForm = new QFormLayout(faultBox);
-    faultForm->addRow(tr("Status register (1002h):"),
-                      stacked({ m_registerLabel, m_registerBitsLabel, m_warningBitsLabel }));
-    faultForm->addRow(tr("Last error (603Fh):"), stacked({ m_lastErrorLabel, m_lastErrorText }));
+    // Digital I/O, where the family has them.
+    m_ioBox = new QGroupBox(tr("Digital I/O"), this);
+    new QGridLayout(m_ioBox);
 
-    // Digital I/O: inputs in two rows of five, outputs below.
-    auto *ioBox = new QGroupBox(tr("Digital I/O"), this);
-    auto *ioGrid = new QGridLayout(ioBox);
-    constexpr int kPerRow = 5;
-    ioGrid->addWidget(new QLabel(tr("Inputs (60FDh):"), ioBox), 0, 0);
-    for (int i = 0; i < kInputCount; ++i) {
-        auto *lamp = new Lamp(tr("IN%1").arg(i + 1), style::okColor(), ioBox);
-        lamp->setObjectName(QStringLiteral("IN%1").arg(i + 1));
-        m_inputLamps.append(lamp);
-        ioGrid->addWidget(lamp, i / kPerRow, 1 + i % kPerRow);
-    }
-    const int outputRow = (kInputCount + kPerRow - 1) / kPerRow;
-    ioGrid->addWidget(new QLabel(tr("Outputs (60FEh.1):"), ioBox), outputRow, 0);
-    for (int i = 0; i < kOutputCount; ++i) {
-        auto *lamp = new Lamp(tr("OUT%1").arg(i + 1), QColor(0xe0, 0x9b, 0x00), ioBox);
-        lamp->setObjectName(QStringLiteral("OUT%1").arg(i + 1));
-        m_outputLamps.append(lamp);
-        ioGrid->addWidget(lamp, outputRow, 1 + i);
-    }
-    ioGrid->setColumnStretch(kPerRow + 1, 1);
-    ioGrid->setRowStretch(outputRow + 1, 1);
-    ioGrid->setHorizontalSpacing(12);
+    // Faults and warnings.
+    m_faultBox = new QGroupBox(tr("Faults"), this);
+    m_registerLabel = valueLabel(QStringLiteral("statusRegister"), m_faultBox);
+    m_registerBitsLabel = textLabel(QStringLiteral("statusRegisterBits"), m_faultBox);
+    m_warningBitsLabel = textLabel(QStringLiteral("statusRegisterWarnings"), m_faultBox);
+    m_lastErrorLabel = valueLabel(QStringLiteral("lastErrorCode"), m_faultBox);
+    m_lastErrorText = textLabel(QStringLiteral("lastErrorText"), m_faultBox);
+    m_linkLossLabel = textLabel(QStringLiteral("linkLoss"), m_faultBox);
+    m_registerName = new QLabel(m_faultBox);
+    m_lastErrorName = new QLabel(m_faultBox);
+    auto *faultForm = new QFormLayout(m_faultBox);
+    faultForm->addRow(m_registerName, stacked({ m_registerLabel, m_registerBitsLabel }));
+    faultForm->addRow(m_lastErrorName, stacked({ m_lastErrorLabel, m_lastErrorText }));
+    faultForm->addRow(tr("Warnings:"), m_warningBitsLabel);
+    faultForm->addRow(m_linkLossLabel);
 
     m_footer = new QLabel(this);
     m_footer->setObjectName(QStringLiteral("pollStatus"));
@@ -144,13 +122,82 @@ void DriveStatusPanel::buildUi()
 
     auto *grid = new QGridLayout(this);
     grid->addWidget(stateBox, 0, 0, 1, 2);
-    grid->addWidget(valuesBox, 1, 0);
-    grid->addWidget(ioBox, 1, 1);
-    grid->addWidget(faultBox, 2, 0, 1, 2);
+    grid->addWidget(m_valuesBox, 1, 0);
+    grid->addWidget(m_ioBox, 1, 1);
+    grid->addWidget(m_faultBox, 2, 0, 1, 2);
     grid->addWidget(m_footer, 3, 0, 1, 2);
     grid->setRowStretch(4, 1);
     grid->setColumnStretch(0, 1);
     grid->setColumnStretch(1, 1);
+}
+
+// The parts that depend on the source: lamps, value rows, I/O rows and the row names.
+void DriveStatusPanel::buildFamilyUi()
+{
+    qDeleteAll(m_bitLamps);
+    m_bitLamps.clear();
+    while (QLayoutItem *item = m_bitRow->takeAt(0))
+        delete item;
+    while (m_valuesForm->rowCount() > 0)
+        m_valuesForm->removeRow(0);
+    m_valueLabels.clear();
+    for (const auto &row : std::as_const(m_ioLamps))
+        qDeleteAll(row);
+    m_ioLamps.clear();
+    auto *ioGrid = static_cast<QGridLayout *>(m_ioBox->layout());
+    while (QLayoutItem *item = ioGrid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+
+    StatusSource *source = m_source;
+    if (source) {
+        for (const StatusLamp &bit : source->lamps()) {
+            auto *lamp = new Lamp(bit.name, lampColor(bit.kind), this);
+            lamp->setProperty("mask", bit.mask);
+            lamp->setObjectName(QStringLiteral("bit_%1").arg(bit.mask, 4, 16, QLatin1Char('0')));
+            m_bitLamps.append(lamp);
+            m_bitRow->addWidget(lamp);
+        }
+        for (const StatusValue &value : source->actualValues()) {
+            QLabel *label = valueLabel(value.key, m_valuesBox);
+            m_valueLabels.append(label);
+            m_valuesForm->addRow(value.label, label);
+        }
+        // Inputs in rows of five, each row of outputs below.
+        constexpr int kPerRow = 5;
+        int row = 0;
+        for (const StatusIoRow &io : source->ioRows()) {
+            ioGrid->addWidget(new QLabel(io.label, m_ioBox), row, 0);
+            QList<Lamp *> lamps;
+            const bool input = io.prefix == QLatin1String("IN");
+            for (int i = 0; i < io.count; ++i) {
+                const QString name = QStringLiteral("%1%2").arg(io.prefix).arg(i + 1);
+                auto *lamp =
+                    new Lamp(name, input ? style::okColor() : QColor(0xe0, 0x9b, 0x00), m_ioBox);
+                lamp->setObjectName(name);
+                lamps.append(lamp);
+                ioGrid->addWidget(lamp, row + i / kPerRow, 1 + i % kPerRow);
+            }
+            m_ioLamps.append(lamps);
+            row += (io.count + kPerRow - 1) / kPerRow;
+        }
+        ioGrid->setColumnStretch(kPerRow + 1, 1);
+        ioGrid->setRowStretch(row, 1);
+        ioGrid->setHorizontalSpacing(12);
+        m_statusWordName->setText(source->statusWordLabel());
+    }
+    m_bitRow->addStretch();
+    m_ioBox->setVisible(source && !source->ioRows().isEmpty());
+    m_valuesBox->setVisible(!source || !m_valueLabels.isEmpty());
+    const bool hasMode = source && !source->mode().key.isEmpty();
+    m_modeName->setVisible(!source || hasMode);
+    m_modeLabel->setVisible(!source || hasMode);
+    const bool hasRegister = source && !source->faultRegister().key.isEmpty();
+    m_registerName->setVisible(hasRegister);
+    m_registerLabel->setVisible(hasRegister);
+    m_registerName->setText(hasRegister ? source->faultRegister().label : QString());
+    m_lastErrorName->setText(source ? source->fault().label : tr("Fault:"));
 }
 
 } // namespace db::widgets

@@ -48,6 +48,7 @@ OdEditor::OdEditor(QWidget *parent)
     , m_delegate(new OdEditorDelegate(m_model, this))
     , m_filterEdit(new QLineEdit(this))
     , m_hex(new QCheckBox(tr("He&x"), this))
+    , m_ram(new QCheckBox(tr("Write to RAM"), this))
     , m_rate(new QComboBox(this))
     , m_tools(new QHBoxLayout)
     , m_view(new QTreeView(this))
@@ -57,6 +58,10 @@ OdEditor::OdEditor(QWidget *parent)
 {
     m_filterEdit->setObjectName(QStringLiteral("filter"));
     m_hex->setObjectName(QStringLiteral("hex"));
+    m_ram->setObjectName(QStringLiteral("ramWrites"));
+    m_ram->setToolTip(tr("Edits change the working value only: lost at power-off, the EEPROM is "
+                         "not written. Off: edits are stored permanently in the data set."));
+    m_ram->hide();
     m_rate->setObjectName(QStringLiteral("refreshRate"));
     m_view->setObjectName(QStringLiteral("objects"));
     m_status->setObjectName(QStringLiteral("status"));
@@ -80,6 +85,7 @@ OdEditor::OdEditor(QWidget *parent)
 
     m_tools->addWidget(m_filterEdit, 1);
     m_tools->addWidget(m_hex);
+    m_tools->addWidget(m_ram);
     m_tools->addSpacing(8);
     m_tools->addWidget(new QLabel(tr("Refresh:"), this));
     m_tools->addWidget(m_rate);
@@ -165,6 +171,7 @@ OdEditor::OdEditor(QWidget *parent)
     connect(m_filter, &QAbstractItemModel::layoutChanged, this, spanGroups);
     connect(m_filter, &QAbstractItemModel::rowsInserted, this, spanGroups);
     connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
+        arrangeColumns();
         m_view->expandToDepth(0);
         onCurrentChanged();
         updateCounts();
@@ -206,6 +213,8 @@ void OdEditor::setConnection(DeviceConnection *connection)
     m_details->setAddressFormat(connection ? connection->addressFormat()
                                            : AddressFormat::canopen());
     m_model->setDictionary(connection ? connection->dictionary() : ObjectDictionary());
+    m_ram->setChecked(false);
+    m_ram->setVisible(connection && connection->ramAddress(ObjectAddress(1, 1)).has_value());
     if (connection) {
         m_stateConnection =
             connect(connection, &DeviceConnection::stateChanged, this, &OdEditor::onStateChanged);
@@ -293,10 +302,39 @@ QList<ObjectAddress> OdEditor::visibleAddresses() const
     for (QModelIndex i = m_view->indexAt(QPoint(1, 1)); i.isValid(); i = m_view->indexBelow(i)) {
         if (m_view->visualRect(i).top() > bottom)
             break;
-        if (const auto a = m_model->addressAt(m_filter->mapToSource(i)))
-            result.append(*a);
+        result.append(m_model->valueAddressesAt(m_filter->mapToSource(i)));
     }
     return result;
+}
+
+void OdEditor::setWritesToRam(bool ram)
+{
+    m_ram->setChecked(ram);
+}
+
+bool OdEditor::writesToRam() const
+{
+    return m_ram->isChecked() && m_ram->isVisibleTo(this);
+}
+
+void OdEditor::arrangeColumns()
+{
+    QHeaderView *header = m_view->header();
+    // Parameter lists have no PDOs; their five value columns need the room of type and
+    // default (both stay in the details pane).
+    for (int column : { OdEditorModel::Pdo, OdEditorModel::Type, OdEditorModel::Default })
+        header->setSectionHidden(column, m_model->hasDataSetColumns());
+    if (!m_model->hasDataSetColumns())
+        return;
+    const int ch = QFontMetrics(style::monospaceFont()).horizontalAdvance(QLatin1Char('0'));
+    for (int k = 0; k < 4; ++k) {
+        const int column = OdEditorModel::DataSet1 + k;
+        header->moveSection(header->visualIndex(column),
+                            header->visualIndex(OdEditorModel::Value) + 1 + k);
+        header->resizeSection(column, ch * 12);
+        m_view->setItemDelegateForColumn(column, m_delegate);
+    }
+    header->resizeSection(OdEditorModel::Value, ch * 12);
 }
 
 void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
@@ -306,10 +344,15 @@ void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
         return;
     }
     m_model->setWriting(address, raw);
-    Reply *reply = m_connection->write(address, raw);
+    // RAM: the same parameter at its working-memory address; the cell is the data set's.
+    const auto ram = writesToRam() ? m_connection->ramAddress(address) : std::nullopt;
+    Reply *reply = m_connection->write(ram.value_or(address), raw);
     reply->setParent(this);
     const quint64 generation = m_generation;
-    const QString shown = m_model->data(m_model->indexOf(address, OdEditorModel::Name)).toString();
+    QString shown = m_model->data(m_model->indexOf(address, OdEditorModel::Name)).toString();
+    if (ram)
+        shown += QLatin1Char(' ')
+            + tr("to RAM (%1, lost at power-off)").arg(m_model->addressFormat().format(*ram));
     showStatus(tr("Writing %1 %2…").arg(m_model->addressFormat().format(address), shown));
     connect(reply, &Reply::finished, this, [this, reply, generation, address, shown] {
         reply->deleteLater();

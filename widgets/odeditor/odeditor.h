@@ -55,6 +55,11 @@ public:
     // Puts the keyboard focus into the filter field, its text selected (Ctrl+F).
     void focusFilter();
     void setHex(bool hex);
+    // Edits go to the device's RAM only (lost at power-off, sparing its EEPROM) instead of the
+    // permanent data set; offered only for devices that have such addresses
+    // (DeviceConnection::ramAddress()). Off by default.
+    void setWritesToRam(bool ram);
+    bool writesToRam() const;
     // One of OdEditorPoller::kPeriodsMs (0 = off); other values pick the nearest.
     void setRefreshPeriodMs(int ms);
     int refreshPeriodMs() const;
@@ -76,6 +81,8 @@ private:
     void onStateChanged();
     void onWriteRequested(ObjectAddress address, const QVariant &raw);
     void onCurrentChanged();
+    // Data-set columns next to the value column, with the value delegate.
+    void arrangeColumns();
     void onModelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight);
     void showStatus(const QString &text, const QColor &color = {});
     void updateCounts();
@@ -90,6 +97,7 @@ private:
     OdEditorDelegate *m_delegate;
     QLineEdit *m_filterEdit;
     QCheckBox *m_hex;
+    QCheckBox *m_ram;
     QComboBox *m_rate;
     QHBoxLayout *m_tools;
     QTreeView *m_view;

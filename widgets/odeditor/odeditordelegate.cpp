@@ -74,7 +74,7 @@ QWidget *OdEditorDelegate::createEditor(QWidget *parent, const QStyleOptionViewI
                                         const QModelIndex &index) const
 {
     const ObjectDef *def = definitionAt(m_model, index);
-    if (!def || index.column() != OdEditorModel::Value)
+    if (!def || !m_model->isValueColumn(index.column()))
         return QStyledItemDelegate::createEditor(parent, option, index);
     if (!def->enumeration.isEmpty() || def->type == DataType::Boolean) {
         auto *combo = new QComboBox(parent);

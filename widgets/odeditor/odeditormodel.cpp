@@ -7,6 +7,16 @@
 namespace db::widgets {
 
 namespace {
+// A parameter described at data sets 1-4 (inverter parameter lists: four data sets).
+bool hasAllDataSets(const ObjectDictionary &dictionary, quint16 parameter)
+{
+    for (quint8 ds = 1; ds <= 4; ++ds) {
+        if (!dictionary.find(ObjectAddress(parameter, ds)))
+            return false;
+    }
+    return true;
+}
+
 OdEditorModel::Group groupOf(quint16 index, const AddressFormat &format)
 {
     if (format.key() != AddressFormat::canopen().key())
@@ -71,12 +81,25 @@ const ObjectDef *OdEditorModel::definition(ObjectAddress address) const
     return it == m_extra.cend() ? nullptr : &*it;
 }
 
+namespace {
+// A data-set row's data sets 1-4, or the row's one address.
+QList<ObjectAddress> rowAddresses(ObjectAddress address, bool dataSets)
+{
+    if (!dataSets)
+        return { address };
+    QList<ObjectAddress> result;
+    for (quint8 ds = 1; ds <= 4; ++ds)
+        result.append(ObjectAddress(address.index, ds));
+    return result;
+}
+} // namespace
+
 QList<ObjectAddress> OdEditorModel::addresses() const
 {
     QList<ObjectAddress> result;
     for (const Node &node : m_nodes) {
         if (node.address)
-            result.append(*node.address);
+            result.append(rowAddresses(*node.address, node.dataSets));
     }
     return result;
 }
@@ -87,6 +110,15 @@ void OdEditorModel::rebuild()
     m_nodes.clear();
     m_leafNode.clear();
     m_nodes.append(Node {});
+    m_dataSetColumns = false;
+    if (addressFormat().key() == AddressFormat::parameter().key()) {
+        for (const ObjectDef &def : m_dictionary.objects()) {
+            if (def.address.sub == 4 && hasAllDataSets(m_dictionary, def.address.index)) {
+                m_dataSetColumns = true;
+                break;
+            }
+        }
+    }
     // Objects in address order, each object's sub-indices together.
     const auto addAll = [this](const QList<ObjectDef> &defs, bool extra) {
         QList<ObjectDef> subs;
@@ -114,8 +146,12 @@ int OdEditorModel::addNode(Node node)
 {
     const int id = int(m_nodes.size());
     m_nodes[node.parent].children.append(id);
-    if (node.address)
+    if (node.address && node.dataSets) {
+        for (quint8 ds = 0; ds <= 4; ++ds)
+            m_leafNode.insert(ObjectAddress(node.address->index, ds), id);
+    } else if (node.address) {
         m_leafNode.insert(*node.address, id);
+    }
     m_nodes.append(std::move(node));
     return id;
 }
@@ -140,6 +176,15 @@ void OdEditorModel::insertObject(int group, const QList<ObjectDef> &subs)
     object.group = m_nodes[group].group;
     object.index = subs.first().address.index;
     const ObjectDef &first = subs.first();
+    const bool dataSets = m_dataSetColumns && hasAllDataSets(m_dictionary, object.index);
+    if (dataSets) {
+        // One row; its data sets are columns (data set 0, "all four", is not shown).
+        object.address = ObjectAddress(object.index, 1);
+        object.dataSets = true;
+        object.title = first.objectName.isEmpty() ? first.name : first.objectName;
+        addNode(object);
+        return;
+    }
     if (subs.size() == 1 && first.address.sub == 0) {
         object.address = first.address; // a plain variable: the object row is the value row
         addNode(object);
@@ -181,7 +226,7 @@ QModelIndex OdEditorModel::indexOfNode(int node, int column) const
 QModelIndex OdEditorModel::index(int row, int column, const QModelIndex &parent) const
 {
     const int p = nodeOf(parent);
-    if (row < 0 || column < 0 || column >= ColumnCount || row >= m_nodes[p].children.size())
+    if (row < 0 || column < 0 || column >= columnCount() || row >= m_nodes[p].children.size())
         return {};
     return createIndex(row, column, quintptr(m_nodes[p].children[row]));
 }
@@ -200,17 +245,45 @@ int OdEditorModel::rowCount(const QModelIndex &parent) const
 
 int OdEditorModel::columnCount(const QModelIndex &) const
 {
-    return ColumnCount;
+    return m_dataSetColumns ? DataSetColumnCount : ColumnCount;
 }
 
 QModelIndex OdEditorModel::indexOf(ObjectAddress address, int column) const
 {
-    return indexOfNode(m_leafNode.value(address, -1), column);
+    const int node = m_leafNode.value(address, -1);
+    if (node > 0 && column == Value && m_nodes[node].dataSets && address.sub >= 1
+        && address.sub <= 4)
+        column = DataSet1 + address.sub - 1;
+    return indexOfNode(node, column);
+}
+
+std::optional<ObjectAddress> OdEditorModel::cellAddress(const Node &node, int column) const
+{
+    if (!node.address)
+        return std::nullopt;
+    if (!node.dataSets)
+        return column == Value ? node.address : std::nullopt;
+    if (column >= DataSet1 && column < DataSetColumnCount)
+        return ObjectAddress(node.address->index, quint8(column - DataSet1 + 1));
+    return std::nullopt;
 }
 
 std::optional<ObjectAddress> OdEditorModel::addressAt(const QModelIndex &index) const
 {
-    return index.isValid() ? m_nodes[nodeOf(index)].address : std::nullopt;
+    if (!index.isValid())
+        return std::nullopt;
+    const Node &node = m_nodes[nodeOf(index)];
+    if (const auto cell = cellAddress(node, index.column()))
+        return cell;
+    return node.address;
+}
+
+QList<ObjectAddress> OdEditorModel::valueAddressesAt(const QModelIndex &index) const
+{
+    if (!index.isValid())
+        return {};
+    const Node &node = m_nodes[nodeOf(index)];
+    return node.address ? rowAddresses(*node.address, node.dataSets) : QList<ObjectAddress>();
 }
 
 QList<ObjectAddress> OdEditorModel::addressesUnder(const QModelIndexList &indexes) const
@@ -218,8 +291,12 @@ QList<ObjectAddress> OdEditorModel::addressesUnder(const QModelIndexList &indexe
     QList<ObjectAddress> result;
     for (const QModelIndex &index : indexes) {
         const Node &node = m_nodes[nodeOf(index)];
-        if (node.address && !result.contains(*node.address))
-            result.append(*node.address);
+        if (node.address) {
+            for (ObjectAddress a : rowAddresses(*node.address, node.dataSets)) {
+                if (!result.contains(a))
+                    result.append(a);
+            }
+        }
         if (node.parent == 0)
             continue; // a whole group is too much to drag
         for (int child : node.children) {
@@ -236,12 +313,27 @@ QVariant OdEditorModel::data(const QModelIndex &index, int role) const
     if (!index.isValid())
         return {};
     const Node &node = m_nodes[nodeOf(index)];
-    if (node.address) {
+    const int column = index.column();
+    if (node.address && m_dataSetColumns && isValueColumn(column)) {
+        // A value cell: data set 0 of a single parameter, or one data set of a data-set row.
+        const auto address = cellAddress(node, column);
+        const ObjectDef *def = address ? definition(*address) : nullptr;
+        return def ? leafData(*def, Value, role) : QVariant();
+    }
+    if (node.address && node.dataSets) {
+        // The parameter as a whole: its number and name; type, limits from data set 1.
+        if ((column == Address || column == Name) && role != FilterTextRole)
+            return objectData(node, column, role);
         if (const ObjectDef *def = definition(*node.address))
-            return leafData(*def, index.column(), role);
+            return leafData(*def, column, role);
         return {};
     }
-    return objectData(node, index.column(), role);
+    if (node.address) {
+        if (const ObjectDef *def = definition(*node.address))
+            return leafData(*def, column, role);
+        return {};
+    }
+    return objectData(node, column, role);
 }
 
 QVariant OdEditorModel::objectData(const Node &node, int column, int role) const
@@ -273,7 +365,7 @@ QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int
         return {};
     switch (section) {
     case Address:
-        return tr("Index:Sub");
+        return m_dataSetColumns ? tr("Parameter") : tr("Index:Sub");
     case Name:
         return tr("Name");
     case Type:
@@ -281,7 +373,7 @@ QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int
     case AccessColumn:
         return tr("Access");
     case Value:
-        return tr("Value");
+        return m_dataSetColumns ? tr("DS %1").arg(0) : tr("Value");
     case Default:
         return tr("Default");
     case Limits:
@@ -289,6 +381,8 @@ QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int
     case Pdo:
         return tr("PDO");
     }
+    if (m_dataSetColumns && section >= DataSet1 && section < DataSetColumnCount)
+        return tr("DS %1").arg(section - DataSet1 + 1);
     return {};
 }
 
@@ -300,9 +394,9 @@ Qt::ItemFlags OdEditorModel::flags(const QModelIndex &index) const
     const Node &node = m_nodes[nodeOf(index)];
     if (node.parent != 0)
         f |= Qt::ItemIsDragEnabled;
-    if (node.address && index.column() == Value && m_editable
-        && state(*node.address) != CellState::Writing) {
-        const ObjectDef *def = definition(*node.address);
+    const auto address = cellAddress(node, index.column());
+    if (address && m_editable && state(*address) != CellState::Writing) {
+        const ObjectDef *def = definition(*address);
         if (def && def->writable())
             f |= Qt::ItemIsEditable;
     }
@@ -311,9 +405,10 @@ Qt::ItemFlags OdEditorModel::flags(const QModelIndex &index) const
 
 bool OdEditorModel::setData(const QModelIndex &index, const QVariant &value, int role)
 {
-    const auto address = addressAt(index);
+    const auto address =
+        index.isValid() ? cellAddress(m_nodes[nodeOf(index)], index.column()) : std::nullopt;
     const ObjectDef *def = address ? definition(*address) : nullptr;
-    if (role != Qt::EditRole || index.column() != Value || !def)
+    if (role != Qt::EditRole || !def)
         return false;
     if (!m_editable) {
         Q_EMIT editRefused(*address, tr("not connected"));

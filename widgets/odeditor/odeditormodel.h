@@ -34,7 +34,21 @@ class OdEditorModel : public QAbstractItemModel
 {
     Q_OBJECT
 public:
-    enum Column { Address, Name, Type, AccessColumn, Value, Default, Limits, Pdo, ColumnCount };
+    enum Column {
+        Address,
+        Name,
+        Type,
+        AccessColumn,
+        Value,
+        Default,
+        Limits,
+        Pdo,
+        ColumnCount,
+        // Parameter lists with data sets (hasDataSetColumns()): one value column per data set
+        // after the others; Value is then data set 0 (single parameters).
+        DataSet1 = ColumnCount,
+        DataSetColumnCount = DataSet1 + 4,
+    };
     enum Role {
         AddressRole = Qt::UserRole + 1, // ObjectAddress of a sub-index row (invalid otherwise)
         StatusTextRole, // "writing…", the device's error; shown next to the value
@@ -64,6 +78,16 @@ public:
     // Adds an object the description does not know (read/write by index), in group "Not in
     // description". Known addresses are left as they are.
     void addExtraObject(const ObjectDef &def);
+    // True for parameter lists whose parameters have data sets (NUMBER:1 .. NUMBER:4): a
+    // parameter is one row, its data sets 1-4 are columns DataSet1.., and Value holds single
+    // parameters (data set 0).
+    bool hasDataSetColumns() const { return m_dataSetColumns; }
+    // Value and, with data-set columns, DataSet1..4.
+    bool isValueColumn(int column) const
+    {
+        return column == Value
+            || (m_dataSetColumns && column >= DataSet1 && column < DataSetColumnCount);
+    }
     // Null for addresses not in the tree.
     const ObjectDef *definition(ObjectAddress address) const;
     QList<ObjectAddress> addresses() const; // every sub-index, in tree order
@@ -89,7 +113,11 @@ public:
 
     QModelIndex indexOf(ObjectAddress address, int column = Address) const;
     // The sub-index of a row, or nothing for group rows and objects with several sub-indices.
+    // With data-set columns: the data set of a DataSet column's cell, else the parameter's
+    // first value (data set 0 of a single parameter, data set 1 otherwise).
     std::optional<ObjectAddress> addressAt(const QModelIndex &index) const;
+    // Every value address of a row: its data sets 1-4 with data-set columns, else addressAt().
+    QList<ObjectAddress> valueAddressesAt(const QModelIndex &index) const;
     // Every sub-index under the rows of `indexes` (objects give all their sub-indices).
     QList<ObjectAddress> addressesUnder(const QModelIndexList &indexes) const;
 
@@ -121,6 +149,7 @@ private:
         quint16 index = 0; // object rows
         std::optional<ObjectAddress> address; // leaf rows (sub-index or single sub 0 object)
         QString title; // group and object rows
+        bool dataSets = false; // a parameter row with data-set columns (address is data set 1)
     };
     struct Cell
     {
@@ -138,6 +167,8 @@ private:
     void cellChanged(ObjectAddress address);
     QVariant leafData(const ObjectDef &def, int column, int role) const;
     QVariant objectData(const Node &node, int column, int role) const;
+    // The address of a value cell (Value or a DataSet column), nothing for other cells.
+    std::optional<ObjectAddress> cellAddress(const Node &node, int column) const;
 
     ObjectDictionary m_dictionary;
     const AddressFormat *m_addressFormat = nullptr; // null: the dictionary's
@@ -147,6 +178,7 @@ private:
     QHash<ObjectAddress, Cell> m_cells;
     bool m_hex = false;
     bool m_editable = false;
+    bool m_dataSetColumns = false;
 };
 
 QString groupName(OdEditorModel::Group group);

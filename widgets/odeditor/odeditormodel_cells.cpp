@@ -85,7 +85,8 @@ void OdEditorModel::setHex(bool hex)
     const auto each = [this](auto &&self, int node) -> void {
         for (int child : std::as_const(m_nodes[node].children)) {
             if (m_nodes[child].address) {
-                Q_EMIT dataChanged(indexOfNode(child, Value), indexOfNode(child, Limits));
+                Q_EMIT dataChanged(indexOfNode(child, Value),
+                                   indexOfNode(child, columnCount() - 1));
             }
             self(self, child);
         }

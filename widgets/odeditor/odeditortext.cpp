@@ -31,6 +31,9 @@ QString number(const ObjectDef &def, const QVariant &raw, bool hex)
 {
     if ((hex || isBitWord(def)) && datatype::isInteger(def.type))
         return codec::toText(def.type, raw, codec::TextFormat::Hex);
+    // Fixed-point parameters show exactly their decimals ("10.00"), as the drive's lists do.
+    if (isScaled(def) && def.decimals >= 0)
+        return QString::number(codec::toPhysical(raw, def.factor, def.offset), 'f', def.decimals);
     if (isScaled(def))
         return QString::number(codec::toPhysical(raw, def.factor, def.offset), 'g', 10);
     return codec::toText(def.type, raw, codec::TextFormat::Decimal);

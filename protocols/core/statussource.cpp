@@ -1,0 +1,227 @@
+#include "statussource.h"
+
+#include "deviceconnection.h"
+#include "reply.h"
+
+#include <QCoreApplication>
+
+namespace db {
+
+StatusSource::StatusSource(DeviceConnection *connection, QObject *parent)
+    : QObject(parent)
+    , m_connection(connection)
+{
+    m_timer.setSingleShot(true);
+    connect(&m_timer, &QTimer::timeout, this, &StatusSource::start);
+    if (connection)
+        connect(connection, &DeviceConnection::stateChanged, this, &StatusSource::onStateChanged);
+}
+
+StatusSource::~StatusSource() = default;
+
+DeviceConnection *StatusSource::connection() const
+{
+    return m_connection;
+}
+
+void StatusSource::acquire()
+{
+    if (++m_users == 1)
+        schedule(0);
+}
+
+void StatusSource::release()
+{
+    if (m_users == 0)
+        return;
+    if (--m_users == 0)
+        m_timer.stop(); // a cycle in flight finishes; schedule() then does nothing
+}
+
+void StatusSource::setIntervalMs(int ms)
+{
+    m_intervalMs = qMax(10, ms);
+    if (m_timer.isActive())
+        m_timer.start(m_intervalMs);
+}
+
+void StatusSource::onStateChanged()
+{
+    ++m_generation; // replies still in flight belong to the old link
+    m_busy = false;
+    m_pending = 0;
+    m_timer.stop();
+    m_fresh.clear();
+    if (m_connection && m_connection->isConnected()) {
+        m_errors.clear();
+        m_cycles = 0;
+        connectionMade();
+        schedule(0);
+        return;
+    }
+    Q_EMIT updated();
+}
+
+void StatusSource::schedule(int delayMs)
+{
+    if (m_busy || m_users == 0 || !m_connection || !m_connection->isConnected())
+        return;
+    m_timer.start(delayMs);
+}
+
+void StatusSource::start()
+{
+    if (m_busy || m_users == 0 || !m_connection || !m_connection->isConnected())
+        return;
+    m_busy = true;
+    m_fresh.clear();
+    m_errors.clear();
+    poll();
+}
+
+void StatusSource::readEach(const QList<ObjectAddress> &addresses)
+{
+    if (addresses.isEmpty()) {
+        finishCycle();
+        return;
+    }
+    m_pending = int(addresses.size());
+    const quint64 generation = m_generation;
+    for (ObjectAddress address : addresses) {
+        Reply *reply = m_connection->read(address);
+        reply->setParent(this); // deleted with the source if it never finishes in time
+        connect(reply, &Reply::finished, this, [this, reply, generation] {
+            reply->deleteLater();
+            if (generation != m_generation)
+                return;
+            if (reply->ok())
+                store(reply->address(), reply->value());
+            else
+                storeError(reply->address(), reply->error().toString());
+            if (--m_pending == 0)
+                finishCycle();
+        });
+    }
+}
+
+void StatusSource::store(ObjectAddress address, const QVariant &raw)
+{
+    m_values.insert(address, raw);
+    m_fresh.insert(address);
+    m_errors.remove(address);
+}
+
+void StatusSource::storeError(ObjectAddress address, const QString &error)
+{
+    m_fresh.remove(address);
+    m_errors.insert(address, error);
+}
+
+void StatusSource::finishCycle()
+{
+    if (!m_busy)
+        return;
+    m_busy = false;
+    if (!m_connection || !m_connection->isConnected())
+        m_fresh.clear(); // the link went away during the cycle
+    ++m_cycles;
+    Q_EMIT updated();
+    schedule(m_intervalMs);
+}
+
+std::optional<quint32> StatusSource::statusWord() const
+{
+    const QVariant raw = m_values.value(m_statusWordAddress);
+    if (!raw.isValid())
+        return std::nullopt;
+    return quint32(raw.toULongLong());
+}
+
+StatusValue StatusSource::statusWordValue() const
+{
+    StatusValue v = makeValue(QStringLiteral("statusword"), statusWordLabel(), m_statusWordAddress);
+    if (const auto word = statusWord())
+        v.text = QStringLiteral("0x%1").arg(*word, 4, 16, QLatin1Char('0'));
+    return v;
+}
+
+StatusSource::State StatusSource::state() const
+{
+    const auto word = statusWord();
+    return word ? decodeState(*word) : State::Unknown;
+}
+
+StatusSource::State StatusSource::decodeState(quint32 sw)
+{
+    // Bit 5 (quick stop) only matters where the pattern says so: mask 0x4F first.
+    switch (sw & 0x4F) {
+    case 0x00:
+        return State::NotReadyToSwitchOn;
+    case 0x40:
+        return State::SwitchOnDisabled;
+    case 0x0F:
+        return State::FaultReactionActive;
+    case 0x08:
+        return State::Fault;
+    default:
+        break;
+    }
+    switch (sw & 0x6F) {
+    case 0x21:
+        return State::ReadyToSwitchOn;
+    case 0x23:
+        return State::SwitchedOn;
+    case 0x27:
+        return State::OperationEnabled;
+    case 0x07:
+        return State::QuickStopActive;
+    default:
+        return State::Unknown;
+    }
+}
+
+QString StatusSource::stateText(State state)
+{
+    switch (state) {
+    case State::NotReadyToSwitchOn:
+        return tr("Not ready to switch on");
+    case State::SwitchOnDisabled:
+        return tr("Switch on disabled");
+    case State::ReadyToSwitchOn:
+        return tr("Ready to switch on");
+    case State::SwitchedOn:
+        return tr("Switched on");
+    case State::OperationEnabled:
+        return tr("Operation enabled");
+    case State::QuickStopActive:
+        return tr("Quick stop active");
+    case State::FaultReactionActive:
+        return tr("Fault reaction active");
+    case State::Fault:
+        return tr("Fault");
+    case State::Unknown:
+        break;
+    }
+    return tr("Unknown state");
+}
+
+StatusValue StatusSource::makeValue(const QString &key, const QString &label,
+                                    ObjectAddress address) const
+{
+    StatusValue v;
+    v.key = key;
+    v.label = label;
+    v.address = address;
+    v.raw = m_values.value(address);
+    v.fresh = m_fresh.contains(address);
+    v.error = m_errors.value(address);
+    if (!v.raw.isValid()) {
+        v.text = QStringLiteral("—");
+    } else {
+        const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
+        v.text = def ? def->displayText(v.raw) : v.raw.toString();
+    }
+    return v;
+}
+
+} // namespace db

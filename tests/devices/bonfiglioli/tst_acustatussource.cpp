@@ -1,0 +1,214 @@
+// Level 3: the ACTIVE Cube status source against the simulated ACU over loopback TCP: one block
+// telegram per poll cycle, the block defined again after an inverter reset and after every
+// reconnect, the state, fault, warnings and actual values as the drive reports them, and no
+// EEPROM write from status polling, scope polling or the keep-alive.
+
+#include "devices/bonfiglioli/acudescription.h"
+#include "devices/bonfiglioli/acustatussource.h"
+#include "devices/bonfiglioli/simulatedacu.h"
+#include "scope/pollingsource.h"
+#include "vabus/vabusclient.h"
+#include "vabus/vabusconnection.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <memory>
+
+using namespace db;
+using db::bonfiglioli::AcuStatusSource;
+using db::bonfiglioli::SimulatedAcu;
+
+namespace {
+
+QString textOf(const QList<StatusValue> &values, const QString &key)
+{
+    for (const StatusValue &v : values) {
+        if (v.key == key)
+            return v.text;
+    }
+    return QStringLiteral("<no %1>").arg(key);
+}
+
+} // namespace
+
+class TstAcuStatusSource : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init()
+    {
+        m_acu = std::make_unique<SimulatedAcu>();
+        QVERIFY(m_acu->listen(0).ok());
+        m_requests.clear();
+        connect(&m_acu->server(), &vabus::Server::requestHandled, this,
+                [this](const vabus::Telegram &request) {
+                    m_requests.append({ request.parameter, request.write });
+                });
+        m_connection = std::make_unique<vabus::VabusConnection>(
+            ConnectionUri::parse(QStringLiteral("vabus://127.0.0.1:%1").arg(m_acu->port()))
+                .value());
+        m_connection->setDictionary(bonfiglioli::acuDictionary());
+        m_source = new AcuStatusSource(m_connection.get());
+        m_connection->setStatusSource(m_source);
+        m_source->setIntervalMs(20);
+        QVERIFY(m_connection->openAndWait(3000).ok());
+    }
+    void cleanup()
+    {
+        m_connection.reset();
+        m_acu.reset();
+    }
+
+    void oneBlockTelegramPerCycle()
+    {
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 5);
+        m_source->release();
+        QTRY_VERIFY(!m_source->isPolling());
+        QVERIFY(m_source->usesBlock());
+        QCOMPARE(m_source->blockDefinitions(), 1);
+        int definitions = 0;
+        int blockReads = 0;
+        for (const auto &[parameter, write] : std::as_const(m_requests)) {
+            if (parameter == 17 && write)
+                ++definitions;
+            else if (parameter == 19 && !write)
+                ++blockReads;
+            else
+                QFAIL(qPrintable(QStringLiteral("unexpected telegram for %1").arg(parameter)));
+        }
+        QCOMPARE(definitions, 1);
+        QCOMPARE(blockReads, m_source->cycles());
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+
+        // What the simulator's preset shows.
+        QCOMPARE(m_source->state(), StatusSource::State::SwitchOnDisabled);
+        QCOMPARE(m_source->statusWordValue().text, QStringLiteral("0x0050"));
+        const QList<StatusValue> values = m_source->actualValues();
+        QCOMPARE(textOf(values, QStringLiteral("frequency")), QStringLiteral("108.45 Hz"));
+        QCOMPARE(textOf(values, QStringLiteral("current")), QStringLiteral("10.2 A"));
+        QCOMPARE(textOf(values, QStringLiteral("power")), QStringLiteral("4.0 kW"));
+        QVERIFY(values.first().fresh);
+        QCOMPARE(m_source->faultText(), QStringLiteral("No fault"));
+        QVERIFY(!m_source->faultActive());
+        QVERIFY(m_source->warnings().isEmpty());
+        QVERIFY2(m_source->linkLossText().contains(QStringLiteral("F2714"))
+                     && m_source->linkLossText().contains(QStringLiteral("388 = 1")),
+                 qPrintable(m_source->linkLossText()));
+    }
+
+    void faultAndWarningsAsTheDriveReportsThem()
+    {
+        m_acu->raiseFault(0x2714);
+        m_acu->setWarnings(0x0001);
+        m_acu->setApplicationWarnings(0x0008);
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 1);
+        QCOMPARE(m_source->state(), StatusSource::State::Fault);
+        QCOMPARE(m_source->fault().text, QStringLiteral("F2714"));
+        QCOMPARE(m_source->faultText(), QStringLiteral("Communication loss to PLC"));
+        QVERIFY(m_source->faultActive());
+        // 270 bit 15 only points at 274, whose bit names the warning.
+        QCOMPARE(m_source->warnings(),
+                 QStringList({ QStringLiteral("Warning Ixt"),
+                               QStringLiteral("HW limit switch clockwise") }));
+        QVERIFY(m_source->statusWord().value() & 0x0080);
+    }
+
+    void blockDefinedAgainAfterResetAndReconnect()
+    {
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        QCOMPARE(m_source->blockDefinitions(), 1);
+
+        // The inverter restarts behind an open TCP connection: 19 fails once (no definition),
+        // the next cycle defines the block again and the values come back.
+        m_acu->powerCycle();
+        QTRY_COMPARE(m_source->blockDefinitions(), 2);
+        const int after = m_source->cycles();
+        QTRY_VERIFY(m_source->cycles() >= after + 2);
+        QVERIFY(m_source->isFresh({ 411, 0 }));
+        QVERIFY(m_source->usesBlock());
+
+        // A new connection defines it again.
+        m_connection->close();
+        QTRY_VERIFY(!m_connection->isConnected());
+        QVERIFY(!m_source->isFresh({ 411, 0 }));
+        // The module takes one PLC connection: wait until it has seen the old one go.
+        QTRY_VERIFY(!m_acu->server().hasClient());
+        QVERIFY(m_connection->openAndWait(3000).ok());
+        QTRY_COMPARE(m_source->blockDefinitions(), 3);
+        QTRY_VERIFY(m_source->isFresh({ 411, 0 }));
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    void keepAliveAndPollingNeverWriteEeprom()
+    {
+        m_connection->client()->setKeepAliveIdleMs(30);
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 3);
+        m_source->release();
+        // Idle: only the keep-alive talks now.
+        const qsizetype before = m_requests.size();
+        QTRY_VERIFY(m_requests.size() >= before + 5);
+        QCOMPARE(m_requests.last().first, quint16(411));
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    // The scope's host polling of actual values (stator frequency, RMS current) only reads.
+    void scopePollingNeverWritesEeprom()
+    {
+        scope::PollingSource polling(m_connection.get());
+        QVERIFY(polling.addChannel({ 210, 0 }, 0).ok());
+        QVERIFY(polling.addChannel({ 211, 0 }, 0).ok());
+        QElapsedTimer timeBase;
+        timeBase.start();
+        polling.start(timeBase);
+        QTRY_VERIFY(polling.deliveredCount() >= 200);
+        polling.stop();
+        QCOMPARE(polling.failedCount(), qint64(0));
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    // The inverter is switched off and on: the link drops, the port refuses connections while
+    // it starts, the connection tries again until it is back, and the block is defined anew.
+    void reconnectsAfterPowerCycle()
+    {
+        m_connection->setRetryAfterLoss(5000, 50);
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        QSignalSpy states(m_connection.get(), &DeviceConnection::stateChanged);
+        m_acu->restart(400);
+        QTRY_VERIFY(!m_connection->isConnected());
+        QTRY_VERIFY(m_connection->isRetryScheduled() || m_connection->isConnected());
+        QTRY_VERIFY_WITH_TIMEOUT(m_connection->isConnected(), 5000);
+        // At least one attempt was refused while the module started.
+        QVERIFY(
+            states.count(QVariantList { QVariant::fromValue(DeviceConnection::State::Connecting) })
+            >= 2);
+        QTRY_COMPARE(m_source->blockDefinitions(), 2);
+        QTRY_VERIFY(m_source->isFresh({ 411, 0 }));
+        QVERIFY(!m_connection->isRetryScheduled());
+    }
+
+    void noRetryAfterOwnCloseOrFailedFirstOpen()
+    {
+        m_connection->close();
+        QTRY_VERIFY(!m_connection->isConnected());
+        QVERIFY(!m_connection->isRetryScheduled());
+        m_acu->server().close();
+        QVERIFY(!m_connection->openAndWait(2000).ok());
+        QVERIFY(!m_connection->isRetryScheduled());
+    }
+
+private:
+    std::unique_ptr<SimulatedAcu> m_acu;
+    std::unique_ptr<vabus::VabusConnection> m_connection;
+    AcuStatusSource *m_source = nullptr;
+    QList<std::pair<quint16, bool>> m_requests;
+};
+
+QTEST_GUILESS_MAIN(TstAcuStatusSource)
+#include "tst_acustatussource.moc"
