@@ -837,10 +837,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Störung quittieren (MC_Reset)</translation>
     </message>
     <message>
-        <source>home with a CiA 402 method, e.g. 35; prints the position</source>
-        <translation>Referenzfahrt mit einer CiA-402-Methode, z. B. 35; gibt die Position aus</translation>
-    </message>
-    <message>
         <source>move and wait for Done; prints the final actual position</source>
         <translation>fahren und auf Done warten; gibt die erreichte Istposition aus</translation>
     </message>
@@ -949,10 +945,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>--wait erwartet ms &gt; 0</translation>
     </message>
     <message>
-        <source>%1: no CiA 402 drive description (give ?eds=FILE)</source>
-        <translation>%1: keine CiA-402-Antriebsbeschreibung (?eds=DATEI angeben)</translation>
-    </message>
-    <message>
         <source>reading the scaling</source>
         <translation>Lesen der Skalierung</translation>
     </message>
@@ -983,10 +975,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>motion commands: longest wait for the end (ms, default 60000).</source>
         <translation>Bewegungsbefehle: längste Wartezeit auf das Ende (ms, Standard 60000).</translation>
-    </message>
-    <message>
-        <source>METHOD is a CiA 402 homing method number, not &apos;%1&apos;</source>
-        <translation>METHODE ist die Nummer einer CiA-402-Referenzfahrtmethode, nicht „%1“</translation>
     </message>
     <message>
         <source>move takes exactly one of --abs, --rel, --add</source>
@@ -1492,6 +1480,30 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>a value</source>
         <translation>ein Wert</translation>
     </message>
+    <message>
+        <source>home with the drive&apos;s homing method number, e.g. 35; prints the position</source>
+        <translation>mit der Referenzfahrt-Methode des Antriebs referenzieren, z. B. 35; gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>run a motion block of the drive&apos;s table (or the sequence it starts) to its end; prints the position</source>
+        <translation>einen Fahrsatz aus der Tabelle des Antriebs (oder die Folge, die er startet) bis zum Ende fahren; gibt die Position aus</translation>
+    </message>
+    <message>
+        <source>travel: run the sequence that starts at BLOCK.</source>
+        <translation>travel: die Fahrsatzfolge ab BLOCK fahren.</translation>
+    </message>
+    <message>
+        <source>travel: resume the interrupted block.</source>
+        <translation>travel: den unterbrochenen Fahrsatz wieder aufnehmen.</translation>
+    </message>
+    <message>
+        <source>METHOD is a homing method number, not &apos;%1&apos;</source>
+        <translation>METHODE ist die Nummer einer Referenzfahrtmethode, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>BLOCK is a motion block number, not &apos;%1&apos;</source>
+        <translation>BLOCK ist eine Fahrsatznummer, nicht „%1“</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -1768,6 +1780,197 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Unknown state</source>
         <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::bonfiglioli</name>
+    <message>
+        <source>configuration %1 has no positioning control (30 is not x40): velocity mode (rpm) only</source>
+        <translation>Konfiguration %1 hat keine Lageregelung (30 ist nicht x40): nur Drehzahlmodus (1/min)</translation>
+    </message>
+    <message>
+        <source>Link watchdog off (388 = 0): the inverter keeps running when the link stops.</source>
+        <translation>Verbindungsüberwachung aus (388 = 0): der Umrichter läuft weiter, wenn die Verbindung abbricht.</translation>
+    </message>
+    <message>
+        <source>fault F2714</source>
+        <translation>Störung F2714</translation>
+    </message>
+    <message>
+        <source>switch off</source>
+        <translation>Abschalten</translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation>Schnellhalt</translation>
+    </message>
+    <message>
+        <source>stop, then fault F2714</source>
+        <translation>Stillsetzen, dann Störung F2714</translation>
+    </message>
+    <message>
+        <source>quick stop, then fault F2714</source>
+        <translation>Schnellhalt, dann Störung F2714</translation>
+    </message>
+    <message>
+        <source>Link watchdog (388 = %1): %2 10 s after the last exchange.</source>
+        <translation>Verbindungsüberwachung (388 = %1): %2 10 s nach dem letzten Datenaustausch.</translation>
+    </message>
+    <message>
+        <source>No answer for %1 s: the inverter reacts in %2 s at the latest.</source>
+        <translation>Seit %1 s keine Antwort: der Umrichter reagiert spätestens in %2 s.</translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation>Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <source>connection to %1 closed</source>
+        <translation>Verbindung zu %1 geschlossen</translation>
+    </message>
+    <message>
+        <source>the inverter did not give its configuration (30)</source>
+        <translation>der Umrichter hat seine Konfiguration (30) nicht geliefert</translation>
+    </message>
+    <message>
+        <source>superseded by %1</source>
+        <translation>ersetzt durch %1</translation>
+    </message>
+    <message>
+        <source>the inverter is not in &apos;operation enabled&apos;: enable it first</source>
+        <translation>der Umrichter ist nicht in &apos;Betrieb freigegeben&apos;: zuerst freigeben</translation>
+    </message>
+    <message>
+        <source>refused: mode change while moving</source>
+        <translation>verweigert: Betriebsartwechsel während der Bewegung</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switched on&apos; for the mode change</source>
+        <translation>der Umrichter ist für den Betriebsartwechsel nicht nach &apos;Eingeschaltet&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the inverter did not return to &apos;operation enabled&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Betrieb freigegeben&apos; zurückgekehrt</translation>
+    </message>
+    <message>
+        <source>enable</source>
+        <translation>Freigabe</translation>
+    </message>
+    <message>
+        <source>disable</source>
+        <translation>Sperren</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switch on disabled&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Einschalten gesperrt&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the inverter is in fault: reset it first</source>
+        <translation>der Umrichter ist in Störung: zuerst quittieren</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;ready to switch on&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Einschaltbereit&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>no mains voltage (status bit 4 &apos;voltage enabled&apos; is 0): the inverter cannot switch on</source>
+        <translation>keine Netzspannung (Zustandsbit 4 &apos;Spannung freigegeben&apos; ist 0): der Umrichter kann nicht einschalten</translation>
+    </message>
+    <message>
+        <source>the inverter did not go to &apos;switched on&apos;</source>
+        <translation>der Umrichter ist nicht nach &apos;Eingeschaltet&apos; gegangen</translation>
+    </message>
+    <message>
+        <source>the hardware enable (STO) is off: the inverter stays in &apos;switched on&apos;</source>
+        <translation>die Hardware-Freigabe (STO) fehlt: der Umrichter bleibt in &apos;Eingeschaltet&apos;</translation>
+    </message>
+    <message>
+        <source>fault reset</source>
+        <translation>Störungsquittierung</translation>
+    </message>
+    <message>
+        <source>the fault stays after the reset: remove its cause first</source>
+        <translation>die Störung bleibt nach dem Quittieren: zuerst die Ursache beheben</translation>
+    </message>
+    <message>
+        <source>target -1 u cannot be approached: 1455 = -1 switches the override off</source>
+        <translation>Ziel -1 u kann nicht angefahren werden: 1455 = -1 schaltet den Override ab</translation>
+    </message>
+    <message>
+        <source>profile position</source>
+        <translation>Profillage</translation>
+    </message>
+    <message>
+        <source>the inverter did not clear &apos;set-point acknowledged&apos; (bit 12)</source>
+        <translation>der Umrichter hat &apos;Sollwert bestätigt&apos; (Bit 12) nicht zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>the inverter did not acknowledge the set-point (bit 12)</source>
+        <translation>der Umrichter hat den Sollwert nicht bestätigt (Bit 12)</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>velocity -1 cannot be set: -1 switches the override off</source>
+        <translation>Geschwindigkeit -1 kann nicht vorgegeben werden: -1 schaltet den Override ab</translation>
+    </message>
+    <message>
+        <source>halt</source>
+        <translation>Halt</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>Referenzfahrt</translation>
+    </message>
+    <message>
+        <source>homing not finished within %1 s</source>
+        <translation>Referenzfahrt nicht innerhalb von %1 s beendet</translation>
+    </message>
+    <message>
+        <source>homing error (status bit 13)</source>
+        <translation>Referenzfahrt-Fehler (Zustandsbit 13)</translation>
+    </message>
+    <message>
+        <source>the ACTIVE Cube has no torque mode over the override</source>
+        <translation>der ACTIVE Cube hat keinen Drehmomentmodus über den Override</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>motion block %1 does not exist (1-32)</source>
+        <translation>Fahrsatz %1 gibt es nicht (1-32)</translation>
+    </message>
+    <message>
+        <source>table travel block %1</source>
+        <translation>Fahrsatz %1</translation>
+    </message>
+    <message>
+        <source>the inverter did not start the motion block (status bit 8)</source>
+        <translation>der Umrichter hat den Fahrsatz nicht gestartet (Zustandsbit 8)</translation>
+    </message>
+    <message>
+        <source>the motion block did not end within %1 s</source>
+        <translation>der Fahrsatz wurde nicht innerhalb von %1 s beendet</translation>
+    </message>
+    <message>
+        <source>move away from limit switch</source>
+        <translation>Endschalter freifahren</translation>
+    </message>
+    <message>
+        <source>the limit switch was not cleared</source>
+        <translation>der Endschalter wurde nicht freigefahren</translation>
+    </message>
+    <message>
+        <source>writing %1</source>
+        <translation>Schreiben von %1</translation>
+    </message>
+    <message>
+        <source>the inverter went to fault (status word 0x%1)</source>
+        <translation>der Umrichter ist in Störung gegangen (Zustandswort 0x%1)</translation>
     </message>
 </context>
 <context>
@@ -3092,6 +3295,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>axis not enabled or in ErrorStop</source>
         <translation>Achse nicht freigegeben oder in ErrorStop</translation>
+    </message>
+    <message>
+        <source>this drive has no table of motion blocks</source>
+        <translation>dieser Antrieb hat keine Fahrsatztabelle</translation>
     </message>
 </context>
 <context>
@@ -4560,6 +4767,45 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Camera &quot;%1&quot;: %2</source>
         <translation>Kamera „%1“: %2</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::MotionBlockBox</name>
+    <message>
+        <source>Motion block table</source>
+        <translation>Fahrsatztabelle</translation>
+    </message>
+    <message>
+        <source>Sequence</source>
+        <translation>Folge</translation>
+    </message>
+    <message>
+        <source>Run on through the blocks that follow this one</source>
+        <translation>Die folgenden Fahrsätze anschließend fahren</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Wiederaufnehmen</translation>
+    </message>
+    <message>
+        <source>Continue the interrupted block instead</source>
+        <translation>Stattdessen den unterbrochenen Fahrsatz fortsetzen</translation>
+    </message>
+    <message>
+        <source>Run block</source>
+        <translation>Fahrsatz starten</translation>
+    </message>
+    <message>
+        <source>Block:</source>
+        <translation>Fahrsatz:</translation>
+    </message>
+    <message>
+        <source>Block %1 running</source>
+        <translation>Fahrsatz %1 läuft</translation>
+    </message>
+    <message>
+        <source>Block %1 done</source>
+        <translation>Fahrsatz %1 fertig</translation>
     </message>
 </context>
 <context>
@@ -6435,6 +6681,17 @@ Change it?</source>
     </message>
 </context>
 <context>
+    <name>devices</name>
+    <message>
+        <source>no connection</source>
+        <translation>keine Verbindung</translation>
+    </message>
+    <message>
+        <source>this device has no axis: %1 describes no CiA 402 drive (no 6064h; give ?eds=FILE) and is no ACTIVE Cube</source>
+        <translation>dieses Gerät hat keine Achse: %1 beschreibt keinen CiA-402-Antrieb (kein 6064h; ?eds=DATEI angeben) und ist kein ACTIVE Cube</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Commissioning tool for industrial drives.</source>
@@ -6593,6 +6850,14 @@ Geräte:
     <message>
         <source>movingcap: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on.</source>
         <translation>movingcap: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE, heartbeat off|on.</translation>
+    </message>
+    <message>
+        <source>acu: start in fault with this code (hex as parameter 260 shows it, e.g. 2714 for F2714).</source>
+        <translation>acu: mit dieser Störung starten (hexadezimal wie Parameter 260 sie zeigt, z. B. 2714 für F2714).</translation>
+    </message>
+    <message>
+        <source>acu: simulated inputs off at start, comma-separated: mains, sto, or the limit switches on: limit-pos, limit-neg.</source>
+        <translation>acu: beim Start abgeschaltete simulierte Eingänge, durch Kommas getrennt: mains, sto, oder aktive Endschalter: limit-pos, limit-neg.</translation>
     </message>
 </context>
 </TS>

@@ -262,8 +262,10 @@ const QList<Command> &commands()
         { "reset", "URI", QT_TRANSLATE_NOOP("cli", "fault reset (MC_Reset)"), 1, 1, reset,
           motionOptions },
         { "home", "URI METHOD [--vel V --acc A]",
-          QT_TRANSLATE_NOOP("cli", "home with a CiA 402 method, e.g. 35; prints the position"), 2,
-          2, home, motionOptions },
+          QT_TRANSLATE_NOOP("cli",
+                            "home with the drive's homing method number, e.g. 35; prints "
+                            "the position"),
+          2, 2, home, motionOptions },
         { "move", "URI --abs|--rel|--add VALUE [--vel V --acc A --dec D]",
           QT_TRANSLATE_NOOP("cli", "move and wait for Done; prints the final actual position"), 1,
           1, move, motionOptions },
@@ -283,6 +285,11 @@ const QList<Command> &commands()
                             "stop (MC_Stop: nothing else starts until standstill); prints the "
                             "position"),
           1, 1, stop, motionOptions },
+        { "travel", "URI BLOCK [--sequence] [--resume]",
+          QT_TRANSLATE_NOOP("cli",
+                            "run a motion block of the drive's table (or the sequence it "
+                            "starts) to its end; prints the position"),
+          2, 2, travel, motionOptions },
         { "record",
           "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] "
           "[--pdo | --configure-tpdo N [--event-ms MS]] -o FILE",

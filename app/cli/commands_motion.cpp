@@ -1,9 +1,7 @@
 #include "commands_motion.h"
 
 #include "canopen/drivesupervision.h"
-#include "cia402/modes.h"
-#include "motion/axislimits.h"
-#include "motion/cia402axis.h"
+#include "devices/axisfactory.h"
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
@@ -36,20 +34,22 @@ const QString kAcc = QStringLiteral("acc");
 const QString kDec = QStringLiteral("dec");
 const QString kTime = QStringLiteral("time");
 const QString kWait = QStringLiteral("wait");
+const QString kSequence = QStringLiteral("sequence");
+const QString kResume = QStringLiteral("resume");
 constexpr int kStopFlushMs = 1000; // a quick stop after a timeout: time to reach the drive
 constexpr int kFirstStatusRounds = 2; // status rounds read before a command starts
 
-// One axis for one command: the session, the CiA 402 axis and the command model on it.
+// One axis for one command: the session, the device's axis (from the axis factory) and the
+// command model on it.
 struct Axis
 {
     explicit Axis(Context &c)
         : session(c.registry, c.options)
     { }
     Session session;
-    std::unique_ptr<Cia402Axis> cia;
+    std::unique_ptr<AxisInterface> cia;
     std::unique_ptr<MotionAxis> model;
     int waitMs = kDefaultWaitMs;
-    bool rotary = false;
 };
 
 // Runs the event loop until done() or timeoutMs; keeps the deadman watchdog fed meanwhile
@@ -148,39 +148,18 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
     }
     if (auto opened = axis->session.open(c.args.at(0)); !opened)
         return opened.error();
-    DeviceConnection *conn = axis->session.connection();
-    const ObjectDictionary &dict = conn->dictionary();
-    if (!dict.contains(cia402::obj::PositionActual))
-        return Error(Error::Kind::NotSupported,
-                     Tr::tr("%1: no CiA 402 drive description (give ?eds=FILE)")
-                         .arg(conn->uri().toString()));
-    axis->cia = std::make_unique<Cia402Axis>(conn);
-    axis->rotary =
-        dict.identity.productName.contains(QLatin1String("MovingCap"), Qt::CaseInsensitive);
-    if (axis->rotary)
-        axis->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
+    auto made = devices::makeAxis(axis->session.connection());
+    if (!made)
+        return made.error();
+    axis->cia = std::move(made.value());
     if (auto init = Reply::wait(axis->cia->initialize()); !init)
         return init.error().prefixed(Tr::tr("reading the scaling"));
-    QHash<ObjectAddress, QVariant> values;
-    for (ObjectAddress a : axislimits::objects(dict))
-        if (auto v = axis->session.read(a))
-            values.insert(a, v.value());
     axis->model = std::make_unique<MotionAxis>(axis->cia.get());
-    axis->model->setConfig(
-        axislimits::fromValues(values, dict, axis->cia->scaling(), axis->rotary));
+    axis->model->setConfig(axis->cia->limits());
     axis->model->setWatchdogTimeout(MotionAxis::kMaxWatchdogMs);
     if (!waitRounds(*axis, kFirstStatusRounds, c.options.requestTimeoutMs * 4))
         return Error(Error::Kind::Timeout, Tr::tr("no status from the drive"));
     return axis;
-}
-
-double readUser(Axis &axis, ObjectAddress address, bool acceleration)
-{
-    const auto v = axis.session.read(address);
-    if (!v)
-        return 0.0;
-    const double raw = v->toDouble();
-    return acceleration && axis.rotary ? axis.cia->scaling().rotaryAccelerationToUser(raw) : raw;
 }
 
 // Starts the command, waits for its end and reports it; 0 when it is Done.
@@ -250,6 +229,8 @@ QList<QCommandLineOption> motionOptions()
                            QStringLiteral("d")),
         QCommandLineOption(kTime, Tr::tr("jog, velocity: how long to move (ms)."),
                            QStringLiteral("ms")),
+        QCommandLineOption(kSequence, Tr::tr("travel: run the sequence that starts at BLOCK.")),
+        QCommandLineOption(kResume, Tr::tr("travel: resume the interrupted block.")),
         QCommandLineOption(kWait,
                            Tr::tr("motion commands: longest wait for the end (ms, default "
                                   "60000)."),
@@ -277,19 +258,16 @@ int home(Context &c)
     bool ok = false;
     const int method = c.args.at(1).toInt(&ok);
     if (!ok)
-        return fail(
-            c,
-            Error(Error::Kind::InvalidArgument,
-                  Tr::tr("METHOD is a CiA 402 homing method number, not '%1'").arg(c.args.at(1))));
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          Tr::tr("METHOD is a homing method number, not '%1'").arg(c.args.at(1))));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
-    HomingParams h;
+    HomingParams h = axis.cia->driveHoming();
     h.method = method;
-    h.speedFast = h.speedSlow = readUser(axis, cia402::obj::HomingSpeedFast, false);
-    h.acceleration = readUser(axis, cia402::obj::HomingAcceleration, true);
-    h.offset = readUser(axis, cia402::obj::HomeOffset, false);
+    h.speedSlow = h.speedFast;
     for (const auto &[option, field] :
          { std::pair { kVel, &h.speedFast }, { kAcc, &h.acceleration } }) {
         if (!c.parser->isSet(option))
@@ -336,9 +314,10 @@ int move(Context &c)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
     // The drive's own profile unless given.
-    p.velocity = readUser(axis, cia402::obj::ProfileVelocity, false);
-    p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
-    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    const AxisInterface::Profile own = axis.cia->driveProfile();
+    p.velocity = own.velocity;
+    p.acceleration = own.acceleration;
+    p.deceleration = own.deceleration;
     p.jerk = axis.model->config().maxJerk;
     if (auto given = profileOptions(c, p, true); !given)
         return fail(c, given.error());
@@ -370,7 +349,7 @@ int jog(Context &c)
     Axis &axis = *opened.value();
     MoveParams p;
     p.velocity = *v;
-    p.acceleration = p.deceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
+    p.acceleration = p.deceleration = axis.cia->driveProfile().acceleration;
     if (auto given = profileOptions(c, p, false); !given)
         return fail(c, given.error());
     p.jerk = axis.model->config().maxJerk;
@@ -440,17 +419,19 @@ int velocity(Context &c)
     Axis &axis = *opened.value();
     MoveParams p;
     p.velocity = *v;
-    p.acceleration = readUser(axis, cia402::obj::ProfileAcceleration, true);
-    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    p.acceleration = axis.cia->driveProfile().acceleration;
+    p.deceleration = axis.cia->driveProfile().deceleration;
     if (auto given = profileOptions(c, p, false); !given)
         return fail(c, given.error());
     p.jerk = axis.model->config().maxJerk;
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
-    if (!supervision)
+    if (!supervision && axis.cia->linkSupervision().isEmpty())
         c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
                  "drivebench-cli dies on this connection (jog moves in leases)"
               << Qt::endl;
+    else if (!supervision && c.options.verbose)
+        c.out << "supervision: " << axis.cia->linkSupervision() << Qt::endl;
     MotionCommand command(axis.model.get(), CommandKind::MoveVelocity);
     command.setParams(p);
     command.setExecute(true);
@@ -487,7 +468,7 @@ int brake(Context &c, CommandKind kind)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
     MoveParams p;
-    p.deceleration = readUser(axis, cia402::obj::ProfileDeceleration, true);
+    p.deceleration = axis.cia->driveProfile().deceleration;
     if (c.parser->isSet(kDec)) {
         const auto d = number(c, kDec);
         if (!d)
@@ -512,6 +493,30 @@ int halt(Context &c)
 int stop(Context &c)
 {
     return brake(c, CommandKind::Stop);
+}
+
+int travel(Context &c)
+{
+    bool ok = false;
+    const int block = c.args.at(1).toInt(&ok);
+    if (!ok)
+        return fail(c,
+                    Error(Error::Kind::InvalidArgument,
+                          Tr::tr("BLOCK is a motion block number, not '%1'").arg(c.args.at(1))));
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.block = block;
+    p.sequence = c.parser->isSet(kSequence);
+    p.resume = c.parser->isSet(kResume);
+    MotionCommand command(axis.model.get(), CommandKind::MotionBlock);
+    command.setParams(p);
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
 }
 
 } // namespace db::cli

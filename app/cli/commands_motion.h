@@ -4,11 +4,11 @@
 
 namespace db::cli {
 
-// Motion commands over any CiA 402 drive (issue 5), through the PLCopen command model
-// (protocols/motion) on a Cia402Axis. Each run opens the connection, reads the factor group and
-// the drive's limits, runs one command and waits for its end, every wait bounded by --wait
-// (default kDefaultWaitMs). A command the model refuses exits with ExitDeviceError and prints
-// "drivebench-cli: MC_... refused: <reason>".
+// Motion commands over any drive the axis factory (devices/axisfactory.h) knows: CiA 402 drives
+// and the ACTIVE Cube (vabus://), through the PLCopen command model (protocols/motion). Each run
+// opens the connection, reads the drive's scaling, limits and profile, runs one command and waits
+// for its end, every wait bounded by --wait (default kDefaultWaitMs). A command the model refuses
+// exits with ExitDeviceError and prints "drivebench-cli: MC_... refused: <reason>".
 //
 //   enable URI                 MC_Power on; prints the PLCopen state
 //   disable URI                MC_Power off
@@ -23,6 +23,9 @@ namespace db::cli {
 //                              MC_Halt; prints the position
 //   halt URI [--dec D]         MC_Halt of whatever moves the drive; prints the position
 //   stop URI [--dec D]         MC_Stop (nothing else starts until standstill); prints the position
+//   travel URI BLOCK [--sequence] [--resume]
+//                              runs motion block BLOCK of the drive's table (alone, or the
+//                              sequence it starts) to its end; prints the position
 constexpr int kDefaultWaitMs = 60000;
 
 int enable(Context &context);
@@ -34,6 +37,7 @@ int jog(Context &context);
 int velocity(Context &context);
 int halt(Context &context);
 int stop(Context &context);
+int travel(Context &context);
 QList<QCommandLineOption> motionOptions();
 
 } // namespace db::cli

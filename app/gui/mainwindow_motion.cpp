@@ -81,7 +81,9 @@ void MainWindow::stopMotionBeforeClose(DeviceConnection *connection)
         || !m_jogPanel->isMotionInProgress())
         return;
     m_jogPanel->stopAll(tr("connection closed by the user"));
-    motion::AxisInterface *axis = m_jogPanel->cia402Axis();
+    motion::AxisInterface *axis = m_jogPanel->axis();
+    if (!axis)
+        return;
     QEventLoop loop;
     QTimer::singleShot(kStopBeforeCloseMs, &loop, &QEventLoop::quit);
     connect(axis, &motion::AxisInterface::statusChanged, &loop, [axis, &loop] {

@@ -73,6 +73,25 @@ const QCommandLineOption &slave()
     return o;
 }
 
+const QCommandLineOption &acuFault()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("acu-fault"),
+        Tr::tr("acu: start in fault with this code (hex as parameter 260 shows it, e.g. 2714 "
+               "for F2714)."),
+        QStringLiteral("code"));
+    return o;
+}
+const QCommandLineOption &inputs()
+{
+    static const QCommandLineOption o(
+        QStringLiteral("acu-inputs"),
+        Tr::tr("acu: simulated inputs off at start, comma-separated: mains, sto, or the limit "
+               "switches on: limit-pos, limit-neg."),
+        QStringLiteral("list"));
+    return o;
+}
+
 // A non-negative integer option, or -1 when it is not one.
 int number(const QCommandLineParser &parser, const QCommandLineOption &option, int max)
 {
@@ -85,8 +104,8 @@ int number(const QCommandLineParser &parser, const QCommandLineOption &option, i
 
 void addAcuOptions(QCommandLineParser &parser)
 {
-    parser.addOptions(
-        { vabusPort(), watchdogMs(), fail(), slowMs(), dropAfter(), startupDelay(), slave() });
+    parser.addOptions({ vabusPort(), watchdogMs(), fail(), slowMs(), dropAfter(), startupDelay(),
+                        slave(), acuFault(), inputs() });
 }
 
 int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
@@ -132,6 +151,30 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
         }
         acu->addSystemBusSlave(quint8(node));
     }
+    if (parser.isSet(acuFault())) {
+        bool ok = false;
+        const uint code = parser.value(acuFault()).toUInt(&ok, 16);
+        if (!ok || code == 0 || code > 0xFFFF) {
+            err << "drivebench-sim: --acu-fault takes a fault code in hex, e.g. 2714, not '"
+                << parser.value(acuFault()) << "'" << Qt::endl;
+            return 2;
+        }
+        acu->raiseFault(quint16(code));
+    }
+    const QStringList in = parser.value(inputs()).split(QLatin1Char(','), Qt::SkipEmptyParts);
+    for (const QString &name : in) {
+        if (name == QLatin1String("mains"))
+            acu->motion().setMains(false);
+        else if (name == QLatin1String("sto"))
+            acu->motion().setSto(false);
+        else if (name != QLatin1String("limit-pos") && name != QLatin1String("limit-neg")) {
+            err << "drivebench-sim: --acu-inputs takes mains, sto, limit-pos, limit-neg, not '"
+                << name << "'" << Qt::endl;
+            return 2;
+        }
+    }
+    acu->motion().setLimitSwitches(in.contains(QLatin1String("limit-pos")),
+                                   in.contains(QLatin1String("limit-neg")));
     acu->setWatchdogMs(watchdog);
     acu->setStartupDelayMs(startup);
     acu->server().setFailure(mode);

@@ -22,6 +22,17 @@ public:
     AcuStore::Outcome access(const vabus::Telegram &request, AcuStore &store);
     // RAM images return to the EEPROM images; the selections to 0.
     void powerCycle();
+    // The RAM image of one index (the value the drive works with); 0 when never written.
+    qlonglong value(quint16 parameter, int index) const
+    {
+        return m_ram.value(key(parameter, index)).toLongLong();
+    }
+    // Both images, without checks (for the simulator's presets).
+    void preset(quint16 parameter, int index, qlonglong raw)
+    {
+        m_ram.insert(key(parameter, index), QVariant::fromValue(raw));
+        m_eeprom.insert(key(parameter, index), QVariant::fromValue(raw));
+    }
 
 private:
     struct Group

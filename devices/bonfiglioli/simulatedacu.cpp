@@ -32,10 +32,7 @@ constexpr quint16 kCommunicationLoss = 0x2714; // F2714
 constexpr quint8 kSysLocal = 0x00;
 constexpr quint8 kSysLocalAscii = 0x30; // '0' of serial VABus, tolerated
 
-// Status word values of the state machine (mask 0x006F) with "voltage enabled" (bit 4).
-constexpr quint16 kSwitchOnDisabled = 0x0050;
-constexpr quint16 kOperationEnabled = 0x0237; // + remote (bit 9)
-constexpr quint16 kFault = 0x0018;
+constexpr quint16 kMode = 1454;
 
 QByteArray word(quint16 v)
 {
@@ -57,9 +54,11 @@ bool contiguousMask(quint32 mask)
 SimulatedAcu::SimulatedAcu(QObject *parent)
     : QObject(parent)
     , m_store(acuDictionary())
+    , m_motion(m_store, m_indexed)
     , m_server(this)
 {
     presetValues(m_store, 0);
+    presetBlocks();
     for (const quint16 p : { kIpAddress, quint16(1433), quint16(1434), quint16(1435) }) {
         for (quint8 ds = 1; ds <= 4; ++ds)
             m_activeIp[p].append(m_store.value(p, ds));
@@ -109,6 +108,47 @@ void SimulatedAcu::presetValues(AcuStore &store, quint8 nodeId)
     for (const quint16 p : { kBlockDefinition, kBlockWrite, kBlockRead })
         store.setMaxLength(p, 64);
     store.setMaxLength(1441, 40);
+    // A positioning configuration under state machine control, with a drive train of 10000 u
+    // per revolution and ramps that end a test move within seconds.
+    store.set(30, 0, u(240));
+    store.set(412, 0, u(1));
+    store.set(373, 0, u(2));
+    store.set(1115, 0, i(10000));
+    store.set(1116, 0, u(1));
+    store.set(1117, 0, u(1));
+    for (const quint16 p : { quint16(420), quint16(421), quint16(422), quint16(423) })
+        store.set(p, 0, i(5000)); // 50.00 Hz/s
+    store.set(1132, 0, i(20000));
+    store.set(1133, 0, i(2000));
+    store.set(1134, 0, i(50000));
+    store.set(1179, 0, i(200000));
+    store.set(1276, 0, u(10));
+    // The override profile of a commissioned axis (the factory setting -1 would leave it to
+    // the MCI links).
+    store.set(1456, 0, i(10000));
+    store.set(1457, 0, i(50000));
+    store.set(1458, 0, i(50000));
+}
+
+// Motion blocks 2-4 (1 stays empty): 2 absolute 5000 u, 3 relative 2000 u, 4 absolute 123000 u
+// and on to block 2 in a sequence.
+void SimulatedAcu::presetBlocks()
+{
+    struct Block
+    {
+        int index;
+        qlonglong target, speed, acc, dec, mode, next;
+    };
+    for (const Block &b : { Block { 2, 5000, 20000, 50000, 50000, 1, 0 },
+                            Block { 3, 2000, 10000, 50000, 50000, 2, 0 },
+                            Block { 4, 123000, 40000, 50000, 50000, 1, 2 } }) {
+        m_indexed.preset(1202, b.index, b.target);
+        m_indexed.preset(1203, b.index, b.speed);
+        m_indexed.preset(1204, b.index, b.acc);
+        m_indexed.preset(1206, b.index, b.dec);
+        m_indexed.preset(1208, b.index, b.mode);
+        m_indexed.preset(1213, b.index, b.next);
+    }
 }
 
 Result<void> SimulatedAcu::listen(quint16 port)
@@ -150,9 +190,7 @@ void SimulatedAcu::powerCycle()
         slave->powerCycle();
     m_block.clear();
     m_watchdog.stop();
-    m_fault = 0;
-    m_running = false;
-    m_controlWord = 0;
+    m_motion.powerCycle();
 }
 
 void SimulatedAcu::restart(int offMs)
@@ -172,7 +210,7 @@ void SimulatedAcu::restart(int offMs)
 
 quint16 SimulatedAcu::statusWord() const
 {
-    quint16 status = m_fault ? kFault : m_running ? kOperationEnabled : kSwitchOnDisabled;
+    quint16 status = m_motion.statusWord();
     if (m_warnings || m_appWarnings)
         status |= 0x0080;
     if (m_warning2)
@@ -182,8 +220,7 @@ quint16 SimulatedAcu::statusWord() const
 
 void SimulatedAcu::raiseFault(quint16 code)
 {
-    m_fault = code;
-    m_running = false;
+    m_motion.raiseFault(code);
 }
 
 void SimulatedAcu::setWarnings(quint16 bits)
@@ -215,7 +252,7 @@ void SimulatedAcu::onWatchdog()
         break;
     case 2: // switch off
     case 3: // quick stop; both end in "switch on disabled"
-        m_running = false;
+        m_motion.switchOff(reaction == 3);
         break;
     default: // 1 fault at once; 4, 5 stop first, then fault
         raiseFault(kCommunicationLoss);
@@ -252,8 +289,9 @@ std::optional<Telegram> SimulatedAcu::handle(const Telegram &request)
 
 AcuStore::Outcome SimulatedAcu::access(AcuStore &store, const Telegram &request)
 {
-    return request.write ? store.write(request.parameter, request.dataSet, request.data, m_running)
-                         : store.read(request.parameter, request.dataSet);
+    return request.write
+        ? store.write(request.parameter, request.dataSet, request.data, isRunning())
+        : store.read(request.parameter, request.dataSet);
 }
 
 // Parameters the inverter computes or acts on rather than stores.
@@ -272,7 +310,7 @@ AcuStore::Outcome SimulatedAcu::special(const Telegram &request, bool *handled)
         if (request.dataSet != 0)
             return { InvalidDataSet, {} };
         const quint16 v = request.parameter == kStatusWord ? statusWord()
-            : request.parameter == kCurrentFault           ? m_fault
+            : request.parameter == kCurrentFault           ? fault()
             : request.parameter == kWarnings ? quint16(m_warnings | (m_appWarnings ? 0x8000 : 0))
             : request.parameter == kApplicationWarnings ? m_appWarnings
                                                         : m_lastError;
@@ -283,7 +321,9 @@ AcuStore::Outcome SimulatedAcu::special(const Telegram &request, bool *handled)
             *handled = false;
             return {};
         }
-        return writeControlWord(request.data);
+        return writeControlWord(request);
+    case kMode:
+        return writeMode(request, handled);
     case kBlockDefinition:
         if (!request.write || request.dataSet != 0) {
             *handled = false;
@@ -314,19 +354,41 @@ AcuStore::Outcome SimulatedAcu::special(const Telegram &request, bool *handled)
     }
 }
 
-// 412 = 1 state machine, reduced to what the simulator's status word shows: enable operation
-// (0x000F) runs, anything else stops, a rising edge of bit 7 resets a fault.
-AcuStore::Outcome SimulatedAcu::writeControlWord(const QByteArray &data)
+// The state machine and the axis act on the control word (AcuMotion). Data set 0 is the EEPROM
+// one and counts as an EEPROM write, 5 its RAM copy.
+AcuStore::Outcome SimulatedAcu::writeControlWord(const Telegram &request)
 {
-    if (data.size() != 2)
+    if (request.data.size() != 2)
         return { LengthMismatch, {} };
-    const quint16 cw = quint16(quint8(data.at(0)) | (quint8(data.at(1)) << 8));
-    if ((cw & 0x0080) && !(m_controlWord & 0x0080))
-        m_fault = 0;
-    m_controlWord = cw;
-    m_running = !m_fault && (cw & 0x000F) == 0x000F;
-    m_store.write(kControlWord, kRamDataSetOffset, data);
-    return { NoError, data };
+    const quint16 cw = quint16(quint8(request.data.at(0)) | (quint8(request.data.at(1)) << 8));
+    const auto stored = m_store.write(kControlWord, request.dataSet, request.data);
+    if (stored.error)
+        return stored;
+    if (request.dataSet == 0)
+        ++m_controlWritesEeprom;
+    else
+        ++m_controlWritesRam;
+    if (const quint16 error = m_motion.writeControlWord(cw))
+        return { error, {} };
+    return { NoError, request.data };
+}
+
+// 1454 takes only the modes the override has; without positioning control it stays 2.
+AcuStore::Outcome SimulatedAcu::writeMode(const Telegram &request, bool *handled)
+{
+    if (!request.write || request.data.size() != 2) {
+        *handled = false;
+        return {};
+    }
+    const qint64 mode = quint16(quint8(request.data.at(0)) | (quint8(request.data.at(1)) << 8));
+    const qint64 signedMode = qint16(mode) < 0 ? 256 + qint16(mode) : mode; // -1 -> 255
+    if (const quint16 error = m_motion.checkMode(signedMode))
+        return { error, {} };
+    const QByteArray data = word(quint16(signedMode));
+    const auto stored = m_store.write(kMode, request.dataSet, data, false);
+    if (stored.error)
+        return stored;
+    return { NoError, request.data };
 }
 
 // "Sdnnn" groups: system bus node '0', data set digit, three-digit parameter number (8.2).
@@ -392,7 +454,7 @@ AcuStore::Outcome SimulatedAcu::writeBlock(const QByteArray &data)
     if (pos != data.size())
         return { InvalidValue, {} };
     for (const auto &[item, bytes] : values) {
-        const auto one = m_store.write(item.parameter, item.dataSet, bytes, m_running);
+        const auto one = m_store.write(item.parameter, item.dataSet, bytes, isRunning());
         if (one.error)
             return one;
     }

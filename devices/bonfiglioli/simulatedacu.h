@@ -7,6 +7,7 @@
 // faults, and system bus slaves behind the module.
 
 #include "acuindexed.h"
+#include "acumotion.h"
 #include "acustore.h"
 #include "core/result.h"
 #include "vabus/device/vabusserver.h"
@@ -56,10 +57,16 @@ public:
     // Returns at once.
     void restart(int offMs);
 
+    // The state machine, the simulated inputs (mains, STO, limit switches) and the axis.
+    AcuMotion &motion() { return m_motion; }
+
     // Status (411) and diagnostics (260, 270, 274).
     quint16 statusWord() const;
-    bool isRunning() const { return m_running; }
-    quint16 fault() const { return m_fault; }
+    bool isRunning() const { return m_motion.isRunning(); }
+    quint16 fault() const { return m_motion.fault(); }
+    // Control word writes that went to a RAM data set (5) and to the EEPROM one (0).
+    quint64 controlWritesRam() const { return m_controlWritesRam; }
+    quint64 controlWritesEeprom() const { return m_controlWritesEeprom; }
     void raiseFault(quint16 code); // e.g. 0x2714 for F2714
     void setWarnings(quint16 bits); // 270 without bit 15 (which follows 274)
     void setApplicationWarnings(quint16 bits); // 274
@@ -75,13 +82,15 @@ Q_SIGNALS:
 private:
     AcuStore::Outcome access(AcuStore &store, const vabus::Telegram &request);
     AcuStore::Outcome special(const vabus::Telegram &request, bool *handled);
-    AcuStore::Outcome writeControlWord(const QByteArray &data);
+    AcuStore::Outcome writeControlWord(const vabus::Telegram &request);
+    AcuStore::Outcome writeMode(const vabus::Telegram &request, bool *handled);
     AcuStore::Outcome writeBlockDefinition(const QByteArray &data);
     AcuStore::Outcome readBlock();
     AcuStore::Outcome writeBlock(const QByteArray &data);
     AcuStore::Outcome ipCommand(const QByteArray &data);
     void onWatchdog();
     void presetValues(AcuStore &store, quint8 nodeId);
+    void presetBlocks();
 
     struct BlockItem
     {
@@ -91,19 +100,19 @@ private:
 
     AcuStore m_store;
     AcuIndexed m_indexed;
+    AcuMotion m_motion;
     QMap<quint8, std::shared_ptr<AcuStore>> m_slaves;
     vabus::Server m_server;
     QTimer m_watchdog;
     QTimer m_starting;
     QList<BlockItem> m_block; // block definition (17), volatile
     QMap<quint16, QList<QVariant>> m_activeIp; // 1432-1435 as applied (octets 1-4)
-    quint16 m_controlWord = 0;
-    quint16 m_fault = 0;
+    quint64 m_controlWritesRam = 0;
+    quint64 m_controlWritesEeprom = 0;
     quint16 m_warnings = 0;
     quint16 m_appWarnings = 0;
     quint16 m_lastError = 0;
     bool m_warning2 = false;
-    bool m_running = false;
 };
 
 } // namespace db::bonfiglioli

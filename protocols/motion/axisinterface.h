@@ -42,6 +42,7 @@ public:
         Homing = 0x4,
         Torque = 0x8,
         Jerk = 0x10,
+        MotionBlocks = 0x20, // a table of motion blocks in the drive (startMotionBlock)
     };
     Q_DECLARE_FLAGS(Features, Feature)
 
@@ -67,6 +68,28 @@ public:
     virtual Reply *home(const HomingParams &params) = 0; // finishes when homing is complete
     virtual Reply *torque(double torquePerMille, double slope) = 0;
     virtual Reply *stopNow() = 0; // quick stop, always
+
+    // A motion block of the drive's own table (1-based), alone or as the start of its sequence,
+    // or the interrupted one resumed; finishes when the block or sequence has ended in its
+    // target. The default: the drive has no table (NotSupported).
+    virtual Reply *startMotionBlock(int block, bool sequence, bool resume);
+
+    // What the axis reads once before its first command: scaling, supported modes, the drive's
+    // limits and its own profile. The caller owns the reply; the default has nothing to read.
+    virtual Reply *initialize();
+    // Valid once initialize() finished; defaults (unlimited, zero profile) before and where the
+    // drive has none.
+    virtual AxisConfig limits() const { return {}; }
+    virtual Profile driveProfile() const { return {}; }
+    virtual HomingParams driveHoming() const { return {}; }
+    // How the drive names its units ("u", "u/s"); empty when it does not say.
+    virtual QString positionUnit() const { return {}; }
+    virtual QString velocityUnit() const { return {}; }
+    // What the drive itself does when the link to it stops ("link watchdog: ..."); empty when
+    // the axis does not know.
+    virtual QString linkSupervision() const { return {}; }
+    // Why a feature is missing ("configuration 210 has no positioning control"), for display.
+    virtual QString featureNote() const { return {}; }
 
 Q_SIGNALS:
     void statusChanged();

@@ -1,5 +1,7 @@
 #include "cia402axis.h"
 
+#include "axislimits.h"
+
 #include "cia402/statusword.h"
 
 #include <QCoreApplication>
@@ -123,6 +125,13 @@ Reply *Cia402Axis::initialize()
     auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
     QList<ObjectAddress> objects = Scaling::objects();
     objects.append(obj::SupportedModes);
+    const ObjectDictionary &dict = m_connection->dictionary();
+    for (ObjectAddress a : axislimits::objects(dict))
+        if (!objects.contains(a))
+            objects.append(a);
+    for (ObjectAddress a : profileObjects())
+        if (dict.contains(a) && !objects.contains(a))
+            objects.append(a);
     auto pending = std::make_shared<int>(int(objects.size()));
     QPointer<Reply> guard(result);
     for (const ObjectAddress &address : objects) {
@@ -133,26 +142,67 @@ Reply *Cia402Axis::initialize()
                 values->insert(address, r->value());
             if (--*pending > 0)
                 return;
-            if (auto s = Scaling::fromValues(*values))
-                m_scaling = s.value();
-            if (values->contains(obj::SupportedModes)) {
-                const quint32 modes = quint32(values->value(obj::SupportedModes).toULongLong());
-                Features f = m_features & Feature::Jerk;
-                if (modes & supportedModeBit(Mode::ProfilePosition))
-                    f |= Feature::ProfilePosition;
-                if (modes & supportedModeBit(Mode::ProfileVelocity))
-                    f |= Feature::ProfileVelocity;
-                if (modes & supportedModeBit(Mode::Homing))
-                    f |= Feature::Homing;
-                if (modes & supportedModeBit(Mode::ProfileTorque))
-                    f |= Feature::Torque;
-                m_features = f;
-            }
+            applyInitialValues(*values);
             if (guard)
                 guard->finish();
         });
     }
     return result;
+}
+
+QList<ObjectAddress> Cia402Axis::profileObjects()
+{
+    return { obj::ProfileVelocity,    obj::ProfileAcceleration, obj::ProfileDeceleration,
+             obj::HomingMethod,       obj::HomingSpeedFast,     obj::HomingSpeedSlow,
+             obj::HomingAcceleration, obj::HomeOffset };
+}
+
+void Cia402Axis::applyInitialValues(const QHash<ObjectAddress, QVariant> &values)
+{
+    if (auto s = Scaling::fromValues(values))
+        m_scaling = s.value();
+    if (values.contains(obj::SupportedModes)) {
+        const quint32 modes = quint32(values.value(obj::SupportedModes).toULongLong());
+        Features f = m_features & Feature::Jerk;
+        if (modes & supportedModeBit(Mode::ProfilePosition))
+            f |= Feature::ProfilePosition;
+        if (modes & supportedModeBit(Mode::ProfileVelocity))
+            f |= Feature::ProfileVelocity;
+        if (modes & supportedModeBit(Mode::Homing))
+            f |= Feature::Homing;
+        if (modes & supportedModeBit(Mode::ProfileTorque))
+            f |= Feature::Torque;
+        m_features = f;
+    }
+    const bool rotary = m_accelerationUnit == AccelerationUnit::RotaryMotor;
+    m_limits = axislimits::fromValues(values, m_connection->dictionary(), m_scaling, rotary);
+    const auto user = [&](ObjectAddress a, bool acceleration) {
+        const double raw = values.value(a).toDouble();
+        return acceleration && rotary ? m_scaling.rotaryAccelerationToUser(raw) : raw;
+    };
+    m_profile.velocity = user(obj::ProfileVelocity, false);
+    m_profile.acceleration = user(obj::ProfileAcceleration, true);
+    m_profile.deceleration = user(obj::ProfileDeceleration, true);
+    m_profile.jerk = m_limits.maxJerk;
+    if (values.contains(obj::HomingMethod))
+        m_homing.method = values.value(obj::HomingMethod).toInt();
+    m_homing.speedFast = user(obj::HomingSpeedFast, false);
+    m_homing.speedSlow = values.contains(obj::HomingSpeedSlow) ? user(obj::HomingSpeedSlow, false)
+                                                               : m_homing.speedFast;
+    m_homing.acceleration = user(obj::HomingAcceleration, true);
+    m_homing.offset = user(obj::HomeOffset, false);
+}
+
+QString Cia402Axis::positionUnit() const
+{
+    const ObjectDef *pos = m_connection->dictionary().find(obj::PositionActual);
+    return pos ? pos->unit : QString();
+}
+
+QString Cia402Axis::velocityUnit() const
+{
+    const ObjectDef *vel = m_connection->dictionary().find(obj::VelocityActual);
+    return vel ? vel->unit : QString();
 }
 
 quint32 Cia402Axis::accelerationRaw(double user) const

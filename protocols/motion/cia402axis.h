@@ -33,10 +33,18 @@ public:
     explicit Cia402Axis(DeviceConnection *connection, QObject *parent = nullptr);
     ~Cia402Axis() override;
 
-    // Reads the factor group (608Fh, 6091h, 6092h) and 6502h supported modes; the reply
-    // finishes when done (missing objects keep the defaults). Caller owns the reply.
-    Reply *initialize();
+    // Reads the factor group (608Fh, 6091h, 6092h), 6502h supported modes, the limit objects
+    // (motion/axislimits.h) and the drive's profile and homing values; the reply finishes when
+    // done (missing objects keep the defaults). Caller owns the reply.
+    Reply *initialize() override;
+    AxisConfig limits() const override { return m_limits; }
+    Profile driveProfile() const override { return m_profile; }
+    HomingParams driveHoming() const override { return m_homing; }
+    QString positionUnit() const override;
+    QString velocityUnit() const override;
+    // Before initialize(): how the drive's accelerations are given.
     void setAccelerationUnit(AccelerationUnit unit) { m_accelerationUnit = unit; }
+    AccelerationUnit accelerationUnit() const { return m_accelerationUnit; }
     const cia402::Scaling &scaling() const { return m_scaling; }
     DeviceConnection *connection() const { return m_connection; }
 
@@ -59,6 +67,8 @@ private:
     void onRoundDone();
     Reply *runMotion(cia402::Sequence *sequence);
     quint32 accelerationRaw(double user) const;
+    static QList<ObjectAddress> profileObjects();
+    void applyInitialValues(const QHash<ObjectAddress, QVariant> &values);
 
     DeviceConnection *m_connection;
     cia402::DriveController m_controller;
@@ -67,6 +77,9 @@ private:
     Features m_features = Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
     std::optional<ObjectAddress> m_jerkObject; // 60A4h.1 or .0, whichever is described
     Status m_status;
+    AxisConfig m_limits;
+    Profile m_profile;
+    HomingParams m_homing;
     QTimer m_pollTimer;
     QHash<ObjectAddress, QVariant> m_round; // values of the running status round
     int m_roundPending = 0;

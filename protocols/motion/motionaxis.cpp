@@ -194,6 +194,9 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
         return m_axis->home(clampHoming(command->m_latchedHoming, m_config));
     case CommandKind::TorqueControl:
         return m_axis->torque(command->m_latched.torque, command->m_latched.acceleration);
+    case CommandKind::MotionBlock:
+        return m_axis->startMotionBlock(command->m_latched.block, command->m_latched.sequence,
+                                        command->m_latched.resume);
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:
@@ -257,6 +260,13 @@ void MotionAxis::onAccepted(MotionCommand *command, quint64 generation, Reply *r
     case CommandKind::TorqueControl:
         command->setStatus(MotionCommand::Status::Active);
         command->setStatus(MotionCommand::Status::Done); // [I] at once (S-31 "2nd cycle")
+        return;
+    case CommandKind::MotionBlock: // its reply finishes when the block (or sequence) ended
+        m_tracker.clear(); // the drive chose the target
+        m_active = nullptr;
+        setState(AxisState::Standstill);
+        command->setStatus(MotionCommand::Status::Active);
+        command->setStatus(MotionCommand::Status::Done);
         return;
     default:
         command->setStatus(MotionCommand::Status::Active);

@@ -52,6 +52,8 @@ AxisState stateOnStart(CommandKind kind, int homingMethod)
         // Set reference (35, 37) keeps Standstill; a homing run is Homing (Sec. 3.6).
         return (homingMethod == 35 || homingMethod == 37) ? AxisState::Standstill
                                                           : AxisState::Homing;
+    case CommandKind::MotionBlock:
+        return AxisState::DiscreteMotion;
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:
@@ -208,6 +210,11 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
         else if (config.homingMethod == 0)
             plan.refusal = Refusal::HomingInactive; // R9
         return plan; // never refused for zero speeds (S-29); limits via clampHoming
+    case CommandKind::MotionBlock:
+        // The drive takes the block's own profile; starting it may change the drive's mode.
+        if (!standstill)
+            plan.refusal = Refusal::NotAtStandstill;
+        return plan;
     case CommandKind::TorqueControl:
     case CommandKind::DoNothing:
     case CommandKind::Power:

@@ -36,6 +36,8 @@ QString commandName(CommandKind kind)
         return QStringLiteral("MC_Power");
     case CommandKind::Reset:
         return QStringLiteral("MC_Reset");
+    case CommandKind::MotionBlock:
+        return QStringLiteral("Motion block");
     }
     return QStringLiteral("MC_?");
 }

@@ -21,6 +21,9 @@ enum class CommandKind {
     Halt = 11,
     Power = 100,
     Reset = 101,
+    // A motion block of the drive's own table (MoveParams::block), alone or the sequence it
+    // starts; tool-side, for drives that hold such a table (the ACTIVE Cube's table travel).
+    MotionBlock = 102,
 };
 QString commandName(CommandKind kind); // "MC_MoveAbsolute"
 bool isPositioning(CommandKind kind); // 1, 2, 3
@@ -92,6 +95,9 @@ struct MoveParams
     Direction direction = Direction::Optimised;
     double overridePercent = 100.0; // I230, multiplicative [I]
     double torque = 0.0; // MC_TorqueControl
+    int block = 1; // MotionBlock: 1-based block number
+    bool sequence = false; // MotionBlock: run on through the blocks that follow
+    bool resume = false; // MotionBlock: continue the interrupted block
 };
 
 struct HomingParams

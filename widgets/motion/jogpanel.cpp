@@ -1,6 +1,10 @@
 #include "jogpanel.h"
 
+#include "motionblockbox.h"
 #include "motionform.h"
+
+#include "cia402/modes.h"
+#include "devices/axisfactory.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QApplication>
@@ -25,6 +29,8 @@ JogPanel::JogPanel(QWidget *parent)
     connect(m_keepAlive, &QTimer::timeout, this, [this] {
         if (m_motion)
             m_motion->keepAlive();
+        if (m_cia && !m_cia->linkSupervision().isEmpty())
+            renderSupervision(); // the time left when the drive stops answering
     });
 
     // Hold-to-run: press starts, release halts (QAbstractButton::released also fires when the
@@ -65,6 +71,7 @@ void JogPanel::teardown()
     m_keepAlive->stop();
     releaseSupervision();
     m_form->setAxis(nullptr);
+    m_blocks->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
     m_lease.reset();
@@ -90,15 +97,19 @@ void JogPanel::setConnection(DeviceConnection *connection)
         return;
     }
     const ObjectDictionary &dict = connection->dictionary();
-    const ObjectDef *pos = dict.find(cia402::obj::PositionActual);
-    const ObjectDef *vel = dict.find(cia402::obj::VelocityActual);
-    m_positionUnit = pos && !pos->unit.isEmpty() ? pos->unit : tr("units");
-    m_velocityUnit =
-        vel && !vel->unit.isEmpty() ? vel->unit : m_positionUnit + QStringLiteral("/s");
-
-    m_cia = std::make_unique<Cia402Axis>(connection);
-    if (rotaryAcceleration())
-        m_cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
+    auto made = devices::makeAxis(connection);
+    if (!made) {
+        m_connection = nullptr;
+        setMessage(made.error().message(), style::errorColor());
+        render();
+        renderLimits();
+        renderSupervision();
+        return;
+    }
+    m_cia = std::move(made.value());
+    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
+                                                     : m_cia->velocityUnit();
     m_motion = std::make_unique<MotionAxis>(m_cia.get());
     m_motion->setWatchdogTimeout(kWatchdogMs);
     m_motion->setVelocityOverride(m_override->value());
@@ -162,8 +173,15 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
         });
         return;
     }
+    // What the drive said about itself: its units, modes and limits.
+    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
+                                                     : m_cia->velocityUnit();
     m_form->setFeatures(m_cia->features());
-    readLimits(generation);
+    m_blocks->setAxis(m_motion.get());
+    if (!m_cia->featureNote().isEmpty())
+        setMessage(m_cia->featureNote());
+    applyLimits();
 }
 
 bool JogPanel::isMotionInProgress() const

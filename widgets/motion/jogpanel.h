@@ -2,7 +2,7 @@
 
 #include "canopen/drivesupervision.h"
 #include "core/deviceconnection.h"
-#include "motion/cia402axis.h"
+#include "motion/axisinterface.h"
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
@@ -19,12 +19,13 @@ class QPushButton;
 namespace db::widgets {
 
 class Lamp;
+class MotionBlockBox;
 class MotionForm;
 
 // Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
 // step jog, the motion command form, status lamps, live position/velocity and the drive's
-// limits. The panel builds a Cia402Axis and a MotionAxis on the connection it is given; it never
-// creates transports.
+// limits. The panel gets the device's axis from the axis factory (devices/axisfactory.h) and
+// builds a MotionAxis on it; it never creates transports.
 //
 // Jog: while a jog button or key (Left/Minus, Right/Plus; auto-repeat ignored) is held, the
 // axis moves by leases (motion::LeasedMove): profile position moves from the actual position,
@@ -61,12 +62,13 @@ public:
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
     motion::MotionAxis *motionAxis() const { return m_motion.get(); }
-    motion::Cia402Axis *cia402Axis() const { return m_cia.get(); }
+    // The device's axis; null without a connection or when the device has none.
+    motion::AxisInterface *axis() const { return m_cia.get(); }
     motion::LeasedMove *leasedMove() const { return m_lease.get(); }
     // Null unless the connection's drive offers heartbeat consumption or node guarding.
     canopen::DriveSupervision *supervision() const { return m_driveSupervision.get(); }
     MotionForm *motionForm() const { return m_form; }
-    // Limits read from the drive (607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
+    // Limits read from the drive (CiA 402: 607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
     bool limitsKnown() const { return m_limitsKnown; }
 
     // +1 or -1 while a jog runs, else 0.
@@ -98,9 +100,7 @@ private:
     void buildUi();
     void teardown();
     void onInitialized(Reply *reply, quint64 generation);
-    void readLimits(quint64 generation);
-    void applyLimits(const QHash<ObjectAddress, QVariant> &values);
-    bool rotaryAcceleration() const;
+    void applyLimits();
     void onConnectionLost(const Error &error);
     void onSupervisionLost(const QString &reason);
     void onFocusChanged(QWidget *old, QWidget *now);
@@ -114,7 +114,7 @@ private:
     motion::MoveParams jogParams() const;
 
     QPointer<DeviceConnection> m_connection;
-    std::unique_ptr<motion::Cia402Axis> m_cia;
+    std::unique_ptr<motion::AxisInterface> m_cia;
     std::unique_ptr<motion::MotionAxis> m_motion;
     std::unique_ptr<motion::MotionCommand> m_power;
     std::unique_ptr<motion::MotionCommand> m_reset;
@@ -149,6 +149,7 @@ private:
     QLabel *m_limits = nullptr;
     QLabel *m_supervision = nullptr;
     MotionForm *m_form = nullptr;
+    MotionBlockBox *m_blocks = nullptr; // drives with a motion block table
 };
 
 } // namespace db::widgets

@@ -1,8 +1,7 @@
-// JogPanel: reading the drive's limits into the command model's AxisConfig (motion/axislimits.h)
-// and what stops the drive when drivebench goes away.
+// JogPanel: the drive's limits (read by its axis) in the command model's AxisConfig, and what
+// stops the drive when drivebench goes away.
 #include "jogpanel.h"
 
-#include "motion/axislimits.h"
 #include "motionform.h"
 
 #include <QLabel>
@@ -13,47 +12,16 @@ namespace db::widgets {
 
 using namespace motion;
 
-bool JogPanel::rotaryAcceleration() const
-{
-    // MovingCap rotary drives give accelerations in [100 rpm/min] of the motor (movingcap.md
-    // 9.1); the panel's fields are user units/s^2 either way.
-    return m_connection
-        && m_connection->dictionary().identity.productName.contains(QLatin1String("MovingCap"),
-                                                                    Qt::CaseInsensitive);
-}
-
-void JogPanel::readLimits(quint64 generation)
-{
-    // A failed read leaves that limit at its default (none).
-    const QList<ObjectAddress> wanted = axislimits::objects(m_connection->dictionary());
-    if (wanted.isEmpty()) {
-        applyLimits({});
-        return;
-    }
-    auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
-    auto pending = std::make_shared<int>(int(wanted.size()));
-    for (ObjectAddress a : wanted) {
-        Reply *r = m_connection->read(a);
-        connect(r, &Reply::finished, this, [=, this] {
-            r->deleteLater();
-            if (r->ok())
-                values->insert(a, r->value());
-            if (--*pending == 0 && generation == m_generation)
-                applyLimits(*values);
-        });
-    }
-}
-
-void JogPanel::applyLimits(const QHash<ObjectAddress, QVariant> &values)
+void JogPanel::applyLimits()
 {
     if (!m_motion || !m_connection)
         return;
-    m_config = axislimits::fromValues(values, m_connection->dictionary(), m_cia->scaling(),
-                                      rotaryAcceleration());
+    m_config = m_cia->limits();
     m_motion->setConfig(m_config);
     m_limitsKnown = true;
     m_form->setLimits(m_config, m_positionUnit, m_velocityUnit);
     renderLimits();
+    renderSupervision();
 }
 
 } // namespace db::widgets
@@ -70,7 +38,9 @@ void JogPanel::renderSupervision()
                              "the drive stops by itself when the renewals stop.")
                               .arg(motion::LeasedMove::kLeaseMs);
     QString drive;
-    if (!m_driveSupervision)
+    if (!m_driveSupervision && m_cia && !m_cia->linkSupervision().isEmpty())
+        drive = m_cia->linkSupervision();
+    else if (!m_driveSupervision)
         drive = tr("No drive-side supervision on this connection.");
     else if (m_driveSupervision->isArmed())
         drive = tr("Active: %1.").arg(m_driveSupervision->description());

@@ -1,6 +1,7 @@
 // JogPanel's widget tree and its rendering, apart from the motion logic (jogpanel.cpp).
 #include "jogpanel.h"
 
+#include "motionblockbox.h"
 #include "motionform.h"
 #include "widgets/common/lamp.h"
 #include "widgets/common/widgetstyle.h"
@@ -167,6 +168,9 @@ void JogPanel::buildUi()
     m_form->setObjectName(QStringLiteral("motionForm"));
     (new QVBoxLayout(commandBox))->addWidget(m_form);
 
+    m_blocks = new MotionBlockBox(this);
+    m_blocks->setObjectName(QStringLiteral("motionBlocks"));
+
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("message"));
     m_message->setWordWrap(true);
@@ -176,6 +180,7 @@ void JogPanel::buildUi()
     layout->addWidget(powerBox);
     layout->addWidget(jogBox);
     layout->addWidget(commandBox);
+    layout->addWidget(m_blocks);
     layout->addWidget(limitsBox);
     layout->addWidget(m_message);
     layout->addStretch();

@@ -88,7 +88,7 @@ private Q_SLOTS:
         QCOMPARE(codeOf(await(m_client->writeData(482, 9, QByteArray::fromHex("6211")))), 14u);
         QCOMPARE(codeOf(await(m_client->write(411, 0, DataType::Unsigned16, qulonglong(1)))), 4u);
         // Not writable while running.
-        QVERIFY(await(m_client->write(410, 5, DataType::Unsigned16, qulonglong(0x000F))).ok());
+        QVERIFY(enableOperation());
         QCOMPARE(await(m_client->read(411, 0)).value(), QVariant(qlonglong(0x0237)));
         QCOMPARE(codeOf(await(m_client->write(372, 1, DataType::Unsigned16, qulonglong(1400)))),
                  8u);
@@ -282,7 +282,7 @@ private Q_SLOTS:
         m_acu->setWatchdogMs(150);
         QVERIFY(!m_acu->isWatchdogArmed());
         QVERIFY(await(m_client->write(388, 0, DataType::Unsigned16, qulonglong(reaction))).ok());
-        QVERIFY(await(m_client->write(410, 5, DataType::Unsigned16, qulonglong(0x000F))).ok());
+        QVERIFY(enableOperation());
         QVERIFY(m_acu->isWatchdogArmed());
         QSignalSpy lost(m_acu.get(), &SimulatedAcu::communicationLost);
         QVERIFY(lost.wait(3000));
@@ -342,7 +342,107 @@ private Q_SLOTS:
         QCOMPARE(await(m_client->read(12, 0)).error().kind(), Error::Kind::Disconnected);
     }
 
+    // The state machine's sequences (412 = 1, positioning configuration 240): each command
+    // gives the inverter's status value; 0x000F straight from "switch on disabled" (4') is only
+    // for configurations without positioning control.
+    void stateMachineSequence()
+    {
+        QCOMPARE(status(), 0x0050);
+        QVERIFY(control(0x000F));
+        QCOMPARE(status(), 0x0050); // no 4' with 30 = 240
+        QVERIFY(control(0x0006));
+        QCOMPARE(status(), 0x0031);
+        QVERIFY(control(0x0007));
+        QCOMPARE(status(), 0x0033);
+        QVERIFY(control(0x000F));
+        QCOMPARE(status() & 0x02FF, 0x0237);
+        QVERIFY(control(0x0002)); // quick stop
+        QCOMPARE(status() & 0x006F, 0x0007);
+        QVERIFY(control(0x0000));
+        QCOMPARE(status(), 0x0050);
+        // Without mains, "switch on" is not processed (status bit 4 clear).
+        m_acu->motion().setMains(false);
+        QVERIFY(control(0x0006));
+        QVERIFY(control(0x0007));
+        QCOMPARE(status(), 0x0021);
+        m_acu->motion().setMains(true);
+        // Without positioning control, 0x0000 -> 0x000F enables at once (4').
+        QVERIFY(await(m_client->write(30, 5, DataType::Unsigned16, qulonglong(210))).ok());
+        QVERIFY(control(0x0000));
+        QVERIFY(control(0x000F));
+        QCOMPARE(status() & 0x02FF, 0x0237);
+    }
+
+    void faultResetNeedsRisingEdge()
+    {
+        m_acu->raiseFault(0x2714);
+        QVERIFY(control(0x0080)); // bit 7 rises
+        QCOMPARE(m_acu->fault(), quint16(0));
+        QCOMPARE(status(), 0x0050);
+        m_acu->raiseFault(0x2714);
+        QVERIFY(control(0x0080)); // stays high: no edge, the fault stays
+        QCOMPARE(m_acu->fault(), quint16(0x2714));
+        QVERIFY(control(0x0000));
+        QVERIFY(control(0x0080));
+        QCOMPARE(m_acu->fault(), quint16(0));
+    }
+
+    void profilePositionHandshake()
+    {
+        QVERIFY(await(m_client->write(1454, 5, DataType::Integer16, qlonglong(1))).ok());
+        QVERIFY(enableOperation());
+        QVERIFY(await(m_client->write(1455, 5, DataType::Integer32, qlonglong(4000))).ok());
+        QVERIFY(control(0x001F)); // bit 4 rises: set-point taken, bit 12 set
+        QVERIFY(status() & 0x1000);
+        QVERIFY(control(0x000F)); // bit 4 falls, so does bit 12
+        QVERIFY(!(status() & 0x1000));
+        QTRY_VERIFY_WITH_TIMEOUT(status() & 0x0400, 5000); // target reached
+        QCOMPARE(await(m_client->read(1108, 0)).value().toLongLong(), 4000);
+        QVERIFY(await(m_client->write(1455, 5, DataType::Integer32, qlonglong(-1000))).ok());
+        QVERIFY(control(0x005F)); // relative
+        QVERIFY(control(0x004F));
+        QTRY_VERIFY_WITH_TIMEOUT(status() & 0x0400, 5000);
+        QCOMPARE(await(m_client->read(1108, 0)).value().toLongLong(), 3000);
+        // 7, 8, 9 do not exist with the override.
+        QCOMPARE(codeOf(await(m_client->write(1454, 5, DataType::Integer16, qlonglong(7)))), 1u);
+        QCOMPARE(m_acu->controlWritesEeprom(), quint64(0));
+    }
+
+    void remoteContacts()
+    {
+        QVERIFY(await(m_client->write(412, 5, DataType::Unsigned16, qulonglong(2))).ok());
+        QVERIFY(control(0x0001)); // S1IND alone: no start
+        QCOMPARE(status() & 0x006F, 0x0023);
+        QVERIFY(control(0x0003)); // S1IND + S2IND (start clockwise)
+        QCOMPARE(status() & 0x006F, 0x0027);
+        QCOMPARE(await(m_client->read(250, 0)).value().toLongLong(), 3);
+        m_acu->motion().setSto(false);
+        QVERIFY(control(0x0003));
+        QCOMPARE(status() & 0x006F, 0x0023);
+    }
+
+    void controlWordToEepromIsCounted()
+    {
+        const quint64 before = m_acu->eepromWrites();
+        QVERIFY(control(0x0006));
+        QCOMPARE(m_acu->eepromWrites(), before);
+        QVERIFY(await(m_client->write(410, 0, DataType::Unsigned16, qulonglong(0x0007))).ok());
+        QCOMPARE(m_acu->eepromWrites(), before + 1);
+        QCOMPARE(m_acu->controlWritesEeprom(), quint64(1));
+        QCOMPARE(m_acu->controlWritesRam(), quint64(1));
+    }
+
 private:
+    bool control(quint16 word)
+    {
+        return await(m_client->write(410, 5, DataType::Unsigned16, qulonglong(word))).ok();
+    }
+    int status()
+    {
+        return int(await(m_client->read(411, 0, DataType::Unsigned16)).value().toUInt());
+    }
+    // 0x0006, 0x0007, 0x000F: "operation enabled".
+    bool enableOperation() { return control(0x0006) && control(0x0007) && control(0x000F); }
     std::unique_ptr<SimulatedAcu> m_acu;
     std::unique_ptr<TcpStream> m_stream;
     std::unique_ptr<VabusClient> m_client;

@@ -1,0 +1,132 @@
+#pragma once
+
+// The axis of a Bonfiglioli ACTIVE Cube over VABus/TCP: the inverter's own state machine
+// (control word 410, status word 411, 412 = 1) and the Motion Control Override (1454-1460).
+//
+// Every write goes to a RAM data set (data set + 5), so that cyclic control never wears the
+// EEPROM. The state is decoded from 411 with the mask 0x006F. The operating mode (1454) is
+// changed only in "switched on" (0x0007) and never while the axis moves; a request that would
+// need a change while moving fails with "refused: mode change while moving". The override value
+// -1 switches an override off, so it is never sent as a target, velocity or ramp.
+//
+// Modes: 1 profile position (moveTo: new set-point bit 4 / set-point acknowledged bit 12
+// handshake, "change immediately" bit 5), 3 profile velocity (moveVelocity in u/s), 2 velocity
+// (moveVelocity in rpm, the only mode of configurations without positioning control, 30 != x40),
+// 6 homing (bit 4; bit 12 attained, bit 13 error), -1 table travel record (bits 4, 6, 9, 11-15)
+// and -2 move away from the limit switch (bit 4). Halt is bit 8, quick stop 0x0002.
+//
+// Status: 411, 1108, 1107, 240 and 274 are read every kStatusPollMs while connected (one round
+// at a time); statusChanged() after each round. The rounds also keep the inverter's 10 s link
+// watchdog (388) fed.
+
+#include "motion/axisinterface.h"
+
+#include "core/deviceconnection.h"
+
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QTimer>
+
+namespace db::bonfiglioli {
+
+class AcuSteps;
+
+class AcuAxis : public motion::AxisInterface
+{
+    Q_OBJECT
+public:
+    static constexpr int kStatusPollMs = 20;
+    static constexpr int kStateTimeoutMs = 2000; // one state machine transition
+    static constexpr int kHandshakeTimeoutMs = 2000; // set-point acknowledged
+    static constexpr int kHomingTimeoutMs = 60000;
+    static constexpr int kTableTravelTimeoutMs = 120000;
+    static constexpr int kLinkWatchdogMs = 10000; // the module's PLC link timeout
+    static constexpr int kSilenceShownMs = 1000; // no answer this long: the time left is shown
+
+    // 1454 Override Modes Of Operation; negative modes are sent as 256 + mode.
+    enum class Mode : qint16 {
+        None = 0,
+        ProfilePosition = 1,
+        Velocity = 2,
+        ProfileVelocity = 3,
+        Homing = 6,
+        TableTravel = -1,
+        LimitSwitch = -2,
+    };
+
+    explicit AcuAxis(DeviceConnection *connection, QObject *parent = nullptr);
+    ~AcuAxis() override;
+
+    DeviceConnection *connection() const { return m_connection; }
+    // Configuration (30) read by initialize(); x40 has positioning control.
+    int configuration() const { return m_configuration; }
+    bool hasPositioning() const { return m_configuration % 100 == 40; }
+    Mode mode() const { return m_mode; }
+    quint16 controlWord() const { return m_controlWord; }
+    quint16 faultCode() const { return m_faultCode; } // 260 as last read
+
+    motion::AxisInterface::Features features() const override;
+    Status status() const override { return m_status; }
+    bool isConnected() const override;
+
+    Reply *initialize() override;
+    motion::AxisConfig limits() const override { return m_limits; }
+    Profile driveProfile() const override { return m_profile; }
+    motion::HomingParams driveHoming() const override { return m_homing; }
+    QString positionUnit() const override;
+    QString velocityUnit() const override;
+    QString featureNote() const override;
+    // 388 as read by initialize(), with the inverter's 10 s link watchdog; once the inverter
+    // has not answered for kSilenceShownMs, also the time left until it reacts.
+    QString linkSupervision() const override;
+
+    Reply *power(bool on) override;
+    // Reads 260, then gives bit 7 a rising edge; finishes with the fault code once the fault
+    // is gone. Leaves the power stage off.
+    Reply *reset() override;
+    Reply *moveTo(double target, const Profile &profile) override;
+    Reply *moveVelocity(double velocity, const Profile &profile) override;
+    Reply *halt(double deceleration) override;
+    Reply *home(const motion::HomingParams &params) override;
+    Reply *torque(double torquePerMille, double slope) override;
+    Reply *stopNow() override;
+
+    // Table travel record mode: starts motion block `block` (1-32), alone or as the start of
+    // an automatic sequence, or resumes the interrupted block. Finishes when the block (or the
+    // sequence) has ended in its target, with the last active block as value.
+    Reply *startMotionBlock(int block, bool sequence, bool resume) override;
+    // Moves off an active hardware limit switch (mode -2); finishes once it is cleared.
+    Reply *moveAwayFromLimitSwitch();
+
+private:
+    friend class AcuSteps;
+    void onConnectionState(DeviceConnection::State state);
+    void pollStatus();
+    void onRoundDone();
+    Reply *run(AcuSteps *steps);
+    // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
+    // when the change is refused.
+    Result<void> addModeChange(AcuSteps *steps, Mode mode);
+    // A step that fails unless the inverter is in "operation enabled" (411 read then).
+    void requireEnabled(AcuSteps *steps) const;
+
+    DeviceConnection *m_connection;
+    Status m_status;
+    QTimer m_pollTimer;
+    QHash<quint16, QVariant> m_round;
+    int m_roundPending = 0;
+    QPointer<AcuSteps> m_running;
+    quint16 m_controlWord = 0;
+    Mode m_mode = Mode::None;
+    int m_configuration = 0;
+    int m_busErrorBehaviour = -1; // 388, -1 = not read
+    quint16 m_faultCode = 0;
+    bool m_modeChanging = false;
+    QElapsedTimer m_lastAnswer; // since the last complete status round // passing "switched on" to
+                                // change 1454
+    motion::AxisConfig m_limits;
+    Profile m_profile;
+    motion::HomingParams m_homing;
+};
+
+} // namespace db::bonfiglioli

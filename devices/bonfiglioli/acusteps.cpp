@@ -1,0 +1,175 @@
+#include "acusteps.h"
+
+#include "acuaxis.h"
+
+#include <QCoreApplication>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::bonfiglioli)
+};
+constexpr quint16 kStatusWord = 411;
+constexpr quint16 kFaultBit = 0x0008;
+constexpr int kOnce = -1; // a wait step that reads once
+} // namespace
+
+namespace db::bonfiglioli {
+
+AcuSteps::AcuSteps(AcuAxis *axis, const QString &name)
+    : QObject(axis)
+    , m_axis(axis)
+    , m_name(name)
+{
+    m_deadline.setSingleShot(true);
+    m_retry.setSingleShot(true);
+    m_retry.setInterval(kStatusReadMs);
+    connect(&m_retry, &QTimer::timeout, this, &AcuSteps::readStatus);
+    connect(&m_deadline, &QTimer::timeout, this,
+            [this] { fail(Error(Error::Kind::Timeout, m_steps.at(m_index).failText)); });
+}
+
+void AcuSteps::write(quint16 parameter, qint64 value)
+{
+    Step s;
+    s.kind = Step::Kind::Write;
+    s.parameter = parameter;
+    s.value = value;
+    m_steps.append(s);
+}
+
+void AcuSteps::waitStatus(std::function<bool(quint16)> pred, int timeoutMs, const QString &failText,
+                          bool faultOk)
+{
+    Step s;
+    s.kind = Step::Kind::Wait;
+    s.pred = std::move(pred);
+    s.timeoutMs = timeoutMs;
+    s.failText = failText;
+    s.faultOk = faultOk;
+    m_steps.append(s);
+}
+
+void AcuSteps::checkStatus(std::function<bool(quint16)> pred, const QString &failText)
+{
+    waitStatus(std::move(pred), kOnce, failText, true);
+}
+
+void AcuSteps::call(std::function<Result<void>()> fn)
+{
+    Step s;
+    s.kind = Step::Kind::Call;
+    s.fn = std::move(fn);
+    m_steps.append(s);
+}
+
+Reply *AcuSteps::start()
+{
+    auto *reply = new Reply(ObjectAddress(410, 0));
+    m_reply = reply;
+    QTimer::singleShot(0, this, &AcuSteps::next);
+    return reply;
+}
+
+void AcuSteps::cancel(const Error &error)
+{
+    fail(error);
+}
+
+void AcuSteps::fail(const Error &error)
+{
+    if (m_done)
+        return;
+    m_done = true;
+    m_deadline.stop();
+    m_retry.stop();
+    if (m_reply)
+        m_reply->fail(error.prefixed(m_name));
+    deleteLater();
+}
+
+void AcuSteps::next()
+{
+    if (m_done)
+        return;
+    m_deadline.stop();
+    if (++m_index >= m_steps.size()) {
+        m_done = true;
+        if (m_reply)
+            m_reply->finish(m_result ? m_result() : QVariant());
+        deleteLater();
+        return;
+    }
+    const Step &s = m_steps.at(m_index);
+    switch (s.kind) {
+    case Step::Kind::Write: {
+        Reply *r = m_axis->connection()->write(ObjectAddress(s.parameter, kRamDataSet),
+                                               QVariant::fromValue(s.value));
+        const quint16 parameter = s.parameter;
+        const qint64 value = s.value;
+        connect(r, &Reply::finished, this, [this, r, parameter, value] {
+            r->deleteLater();
+            if (m_done)
+                return;
+            if (!r->ok()) {
+                fail(r->error().prefixed(Tr::tr("writing %1").arg(parameter)));
+                return;
+            }
+            if (parameter == 410)
+                m_axis->m_controlWord = quint16(value);
+            else if (parameter == 1454)
+                m_axis->m_mode = AcuAxis::Mode(qint16(qint8(value)));
+            next();
+        });
+        return;
+    }
+    case Step::Kind::Wait:
+        if (s.timeoutMs != kOnce)
+            m_deadline.start(s.timeoutMs);
+        readStatus();
+        return;
+    case Step::Kind::Call:
+        if (auto ok = s.fn(); !ok) {
+            fail(ok.error());
+            return;
+        }
+        next();
+        return;
+    }
+}
+
+void AcuSteps::readStatus()
+{
+    if (m_done)
+        return;
+    Reply *r = m_axis->connection()->read(ObjectAddress(kStatusWord, 0));
+    connect(r, &Reply::finished, this, [this, r] {
+        r->deleteLater();
+        if (m_done)
+            return;
+        if (!r->ok()) {
+            fail(r->error());
+            return;
+        }
+        const quint16 word = quint16(r->value().toUInt());
+        const Step &s = m_steps.at(m_index);
+        if (s.pred(word)) {
+            next();
+            return;
+        }
+        if (s.timeoutMs == kOnce) {
+            fail(Error(Error::Kind::DeviceError, s.failText));
+            return;
+        }
+        if ((word & kFaultBit) && !s.faultOk) {
+            fail(Error(Error::Kind::DeviceError,
+                       Tr::tr("the inverter went to fault (status word 0x%1)")
+                           .arg(word, 4, 16, QLatin1Char('0'))));
+            return;
+        }
+        m_retry.start();
+    });
+}
+
+} // namespace db::bonfiglioli

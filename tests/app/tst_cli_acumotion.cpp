@@ -1,0 +1,163 @@
+// Level 3: drivebench-cli motion commands on an ACTIVE Cube (vabus://) end to end against
+// drivebench-sim acu: enable, absolute and additive moves ending in the target, a velocity move
+// and halt, homing, a motion block of the table, refusals, and a fault reset after an F2714 of
+// the link watchdog; the simulator's EEPROM counter stays at 0 (every control word went to RAM).
+
+#include "clirun.h"
+
+#include <QProcess>
+#include <QtTest>
+
+using db::test::CliRun;
+
+namespace {
+
+constexpr int kRunMs = 30000;
+
+CliRun cli(const QStringList &args)
+{
+    return db::test::runProgram(QStringLiteral(DRIVEBENCH_CLI), args, kRunMs);
+}
+
+QString startSim(QProcess &process, const QStringList &extra)
+{
+    const QString banner = db::test::startAndReadBanner(
+        process, QStringLiteral(DRIVEBENCH_SIM),
+        QStringList { QStringLiteral("acu"), QStringLiteral("--vabus-port"), QStringLiteral("0") }
+            + extra,
+        1);
+    const quint16 port = db::test::listeningPort(banner, QStringLiteral("VABus/TCP"));
+    return port ? QStringLiteral("vabus://127.0.0.1:%1").arg(port) : QString();
+}
+
+// Stops the simulator and returns what it printed last (the EEPROM count).
+QString stopSim(QProcess &process)
+{
+    process.terminate();
+    if (!process.waitForFinished(5000))
+        process.kill();
+    return QString::fromUtf8(process.readAllStandardOutput());
+}
+
+double lastNumber(const QString &out)
+{
+    return out.trimmed().split(QLatin1Char('\n')).last().toDouble();
+}
+
+} // namespace
+
+class TstCliAcuMotion : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void doneWhen()
+    {
+        QProcess sim;
+        const QString uri = startSim(sim, {});
+        QVERIFY(!uri.isEmpty());
+        CliRun r = cli({ QStringLiteral("enable"), uri });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.out.trimmed(), QStringLiteral("Standstill"));
+
+        r = cli({ QStringLiteral("move"), uri, QStringLiteral("--abs"), QStringLiteral("30000") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(lastNumber(r.out), 30000.0); // in the target: Done needs the target window
+        r = cli({ QStringLiteral("read"), uri, QStringLiteral("411") });
+        QCOMPARE(r.out.trimmed().toUInt() & 0x0400, 0x0400u); // target reached
+
+        r = cli({ QStringLiteral("move"), uri, QStringLiteral("--add"), QStringLiteral("5000") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(lastNumber(r.out), 35000.0);
+
+        r = cli({ QStringLiteral("velocity"), uri, QStringLiteral("--vel"), QStringLiteral("-4000"),
+                  QStringLiteral("--time"), QStringLiteral("400") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(lastNumber(r.out) < 35000.0, qPrintable(r.out)); // moved backwards, then halted
+        r = cli({ QStringLiteral("read"), uri, QStringLiteral("1107") });
+        QCOMPARE(r.out.trimmed(), QStringLiteral("0 u/s"));
+
+        r = cli({ QStringLiteral("home"), uri, QStringLiteral("35") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(lastNumber(r.out), 0.0); // the reference position
+
+        r = cli({ QStringLiteral("travel"), uri, QStringLiteral("2") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(lastNumber(r.out), 5000.0); // block 2: absolute 5000 u
+        r = cli({ QStringLiteral("travel"), uri, QStringLiteral("3") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(lastNumber(r.out), 7000.0); // block 3: relative 2000 u
+
+        r = cli({ QStringLiteral("disable"), uri });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString out = stopSim(sim);
+        QVERIFY2(out.contains(QLatin1String("acu: 0 EEPROM writes")), qPrintable(out));
+    }
+
+    void refusals()
+    {
+        QProcess sim;
+        const QString uri = startSim(sim, {});
+        QVERIFY(!uri.isEmpty());
+        QVERIFY(cli({ QStringLiteral("enable"), uri }).exitCode == 0);
+        // 1455 = -1 switches the override off: that target cannot be approached.
+        CliRun r = cli({ QStringLiteral("move"), uri, QStringLiteral("--abs=-1") });
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains(QLatin1String("target -1 u cannot be approached")),
+                 qPrintable(r.err));
+        r = cli({ QStringLiteral("travel"), uri, QStringLiteral("40") });
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains(QLatin1String("motion block 40 does not exist")),
+                 qPrintable(r.err));
+        stopSim(sim);
+    }
+
+    void enableNamesMissingInputs_data()
+    {
+        QTest::addColumn<QString>("inputs");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("no mains") << "mains"
+                                  << "no mains voltage";
+        QTest::newRow("no STO") << "sto"
+                                << "hardware enable (STO) is off";
+    }
+    void enableNamesMissingInputs()
+    {
+        QFETCH(QString, inputs);
+        QFETCH(QString, reason);
+        QProcess sim;
+        const QString uri = startSim(sim, { QStringLiteral("--acu-inputs"), inputs });
+        QVERIFY(!uri.isEmpty());
+        const CliRun r = cli({ QStringLiteral("enable"), uri });
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains(reason), qPrintable(r.err));
+        stopSim(sim);
+    }
+
+    void faultResetAfterF2714()
+    {
+        QProcess sim;
+        // Reaction 1 of 388 (the factory setting): F2714 once the PLC link is quiet for 300 ms.
+        const QString uri =
+            startSim(sim, { QStringLiteral("--watchdog-ms"), QStringLiteral("300") });
+        QVERIFY(!uri.isEmpty());
+        QVERIFY(cli({ QStringLiteral("enable"), uri }).exitCode == 0);
+        // The simulator says when its watchdog reacted (nothing talks to it meanwhile).
+        QByteArray log;
+        QTRY_VERIFY_WITH_TIMEOUT((log += sim.readAllStandardError()).contains("reaction 1"), 10000);
+        CliRun r = cli({ QStringLiteral("read"), uri, QStringLiteral("260") });
+        QCOMPARE(r.out.trimmed(), QStringLiteral("10004")); // 0x2714
+        r = cli({ QStringLiteral("move"), uri, QStringLiteral("--abs"), QStringLiteral("100") });
+        QVERIFY(r.exitCode != 0); // faulted: nothing moves
+        r = cli({ QStringLiteral("reset"), uri });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({ QStringLiteral("read"), uri, QStringLiteral("260") });
+        QCOMPARE(r.out.trimmed().left(1), QStringLiteral("0"));
+        r = cli({ QStringLiteral("enable"), uri });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString out = stopSim(sim);
+        QVERIFY2(out.contains(QLatin1String("acu: 0 EEPROM writes")), qPrintable(out));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstCliAcuMotion)
+#include "tst_cli_acumotion.moc"
