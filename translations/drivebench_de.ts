@@ -1517,6 +1517,49 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::ConnectionHealth</name>
+    <message>
+        <source>the link to %1 closed</source>
+        <translation>die Verbindung zu %1 wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>connecting…</source>
+        <translation>verbinde…</translation>
+    </message>
+    <message>
+        <source>waiting for the device to answer</source>
+        <translation>warte auf Antwort des Geräts</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>not responding</source>
+        <translation>antwortet nicht</translation>
+    </message>
+    <message>
+        <source>connection failed</source>
+        <translation>Verbindung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>connection lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>disconnected by you</source>
+        <translation>von Ihnen getrennt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
     <name>db::Error</name>
     <message>
         <source>ok</source>
@@ -3064,10 +3107,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Über drivebench</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
@@ -3130,6 +3169,161 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>NM17x Line</source>
         <translation>NM17x-Linie</translation>
+    </message>
+    <message>
+        <source>&amp;Settings…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>Reset &amp;Layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <source>%1 is already in the device list; it was not connected a second time</source>
+        <translation>%1 ist bereits in der Geräteliste; es wurde kein zweites Mal verbunden</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the link is up, waiting for the device to answer.</source>
+        <translation>%1: die Verbindung steht, warte auf Antwort des Geräts.</translation>
+    </message>
+    <message>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <source>The values shown are from %1 and may be out of date.</source>
+        <translation>Die angezeigten Werte stammen von %1 und sind möglicherweise veraltet.</translation>
+    </message>
+    <message>
+        <source>%1: disconnected by you.</source>
+        <translation>%1: von Ihnen getrennt.</translation>
+    </message>
+    <message>
+        <source>The drive at %1 is enabled. Closing the connection leaves it enabled (it stops by its own supervision only if that is set up). Close the connection anyway?</source>
+        <translation>Der Antrieb unter %1 ist freigegeben. Das Schließen der Verbindung lässt ihn freigegeben (er hält nur durch seine eigene Überwachung an, wenn diese eingerichtet ist). Verbindung trotzdem schließen?</translation>
+    </message>
+    <message>
+        <source>Drive enabled</source>
+        <translation>Antrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Commissioning tool for industrial drives.&lt;/p&gt;&lt;p&gt;Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 The drivebench developers. drivebench has not been released under a public licence: all rights are reserved by its developers; ask them before you copy or redistribute it.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;drivebench %1&lt;/h3&gt;&lt;p&gt;Inbetriebnahme-Werkzeug für industrielle Antriebe.&lt;/p&gt;&lt;p&gt;Gebaut aus Commit %2 mit Qt %3 (läuft mit Qt %4) und QCustomPlot.&lt;/p&gt;&lt;p&gt;Copyright 2026 Die drivebench-Entwickler. drivebench wurde nicht unter einer öffentlichen Lizenz veröffentlicht: alle Rechte liegen bei seinen Entwicklern; fragen Sie sie, bevor Sie es kopieren oder weitergeben.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <source>Enable</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <source>Switch the current drive&apos;s power stage on (as in the Motion dock)</source>
+        <translation>Die Endstufe des aktuellen Antriebs einschalten (wie im Bewegungs-Dock)</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Stop in the toolbar</source>
+        <translation>Stopp in der Werkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Quick stop of any motion (Esc)</source>
+        <translation>Schnellhalt jeder Bewegung (Esc)</translation>
+    </message>
+    <message>
+        <source>Start Scope</source>
+        <translation>Oszilloskop starten</translation>
+    </message>
+    <message>
+        <source>Start or stop the scope&apos;s recording (Space or F5 on the Scope page)</source>
+        <translation>Aufzeichnung des Oszilloskops starten oder stoppen (Leertaste oder F5 auf der Seite Oszilloskop)</translation>
+    </message>
+    <message>
+        <source>Stop Scope</source>
+        <translation>Oszilloskop stoppen</translation>
+    </message>
+    <message>
+        <source>No device connected</source>
+        <translation>Kein Gerät verbunden</translation>
+    </message>
+    <message>
+        <source>Connect to a drive over RefGo, VABus or CANopen, or try drivebench on a simulated drive.</source>
+        <translation>Verbinden Sie sich über RefGo, VABus oder CANopen mit einem Antrieb, oder probieren Sie drivebench an einem simulierten Antrieb aus.</translation>
+    </message>
+    <message>
+        <source>Connect…</source>
+        <translation>Verbinden…</translation>
+    </message>
+    <message>
+        <source>Start the Demo</source>
+        <translation>Demo starten</translation>
+    </message>
+    <message>
+        <source>A simulated MovingCap drive in this program, connected over RefGo and CANopen</source>
+        <translation>Ein simulierter MovingCap-Antrieb in diesem Programm, verbunden über RefGo und CANopen</translation>
+    </message>
+    <message>
+        <source>Recent connections:</source>
+        <translation>Letzte Verbindungen:</translation>
+    </message>
+    <message>
+        <source>Connect to %1</source>
+        <translation>Mit %1 verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>db::gui::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>As the system</source>
+        <translation>Wie das System</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start.</source>
+        <translation>Wirkt ab dem nächsten Start.</translation>
+    </message>
+    <message>
+        <source>How long a new connection may take to reach the device</source>
+        <translation>Wie lange eine neue Verbindung brauchen darf, um das Gerät zu erreichen</translation>
+    </message>
+    <message>
+        <source>How long a read or write waits for the device&apos;s answer</source>
+        <translation>Wie lange ein Lesen oder Schreiben auf die Antwort des Geräts wartet</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Clear All</source>
+        <translation>Alle löschen</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <source>Connect time limit:</source>
+        <translation>Zeitlimit Verbindungsaufbau:</translation>
+    </message>
+    <message>
+        <source>Answer time limit:</source>
+        <translation>Zeitlimit Antwort:</translation>
+    </message>
+    <message>
+        <source>Recent connections</source>
+        <translation>Letzte Verbindungen</translation>
     </message>
 </context>
 <context>
@@ -3457,10 +3651,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>%1 %2</translation>
     </message>
     <message>
-        <source>connection to %1 closed</source>
-        <translation>Verbindung zu %1 geschlossen</translation>
-    </message>
-    <message>
         <source>not connected to %1</source>
         <translation>nicht mit %1 verbunden</translation>
     </message>
@@ -3469,12 +3659,8 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Antwort ohne Prompt zu lang (mehr als %1 Bytes)</translation>
     </message>
     <message>
-        <source>RefGo server already listens on port %1</source>
-        <translation>RefGo-Server lauscht bereits auf Port %1</translation>
-    </message>
-    <message>
-        <source>RefGo server cannot listen on %1:%2: %3</source>
-        <translation>RefGo-Server kann nicht auf %1:%2 lauschen: %3</translation>
+        <source>RefGo server</source>
+        <translation>RefGo-Server</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number</source>
@@ -3994,12 +4180,16 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Verbindung zu %1 geschlossen</translation>
     </message>
     <message>
-        <source>slcan server already listens on port %1</source>
-        <translation>SLCAN-Server lauscht bereits auf Port %1</translation>
+        <source>slcan server</source>
+        <translation>SLCAN-Server</translation>
     </message>
     <message>
-        <source>slcan server cannot listen on %1:%2: %3</source>
-        <translation>SLCAN-Server kann nicht auf %1:%2 lauschen: %3</translation>
+        <source>%1 already listens on port %2</source>
+        <translation>%1 lauscht bereits auf Port %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot listen on %2:%3: %4</source>
+        <translation>%1 kann nicht auf %2:%3 lauschen: %4</translation>
     </message>
     <message>
         <source>no TCP connection to %1 within %2 ms</source>
@@ -4625,6 +4815,26 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Position window: %1 %2</source>
         <translation>Positionsfenster: %1 %2</translation>
+    </message>
+    <message>
+        <source>Stopped: %1. The axis is in ErrorStop now and takes no motion command until it is reset: click Reset.</source>
+        <translation>Gestoppt: %1. Die Achse ist jetzt in ErrorStop und nimmt keinen Bewegungsbefehl an, bis sie zurückgesetzt ist: auf Zurücksetzen klicken.</translation>
+    </message>
+    <message>
+        <source>The drive did not answer: its limits are not known yet.</source>
+        <translation>Der Antrieb hat nicht geantwortet: seine Grenzen sind noch nicht bekannt.</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>MC_Reset: leave ErrorStop so that the axis takes commands again</source>
+        <translation>MC_Reset: ErrorStop verlassen, damit die Achse wieder Befehle annimmt</translation>
+    </message>
+    <message>
+        <source>Not responding</source>
+        <translation>Antwortet nicht</translation>
     </message>
 </context>
 <context>
@@ -6728,6 +6938,10 @@ Change it?</source>
     <message>
         <source>Demo ACTIVE Cube at %1</source>
         <translation>Demo-ACTIVE-Cube unter %1</translation>
+    </message>
+    <message>
+        <source>Cannot start the demo drive: %1</source>
+        <translation>Der Demo-Antrieb kann nicht gestartet werden: %1</translation>
     </message>
 </context>
 <context>

@@ -31,7 +31,11 @@ int main(int argc, char *argv[])
     // the system; a Settings dialog writes it), else the locale variables.
     QString language = db::i18n::languageArgument(QApplication::arguments());
     if (language.isEmpty() && qEnvironmentVariableIsEmpty("DRIVEBENCH_LANG"))
-        language = QSettings().value(QStringLiteral("language")).toString();
+        language =
+            QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("drivebench"),
+                      QStringLiteral("drivebench"))
+                .value(QStringLiteral("language"))
+                .toString(); // the file MainWindow writes (File → Settings)
     db::i18n::installTranslations(app, db::i18n::chooseLanguage(language));
 
     QCommandLineParser parser;
@@ -66,25 +70,43 @@ int main(int argc, char *argv[])
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
 
-    if (parser.isSet(demoOption)) {
+    using Remember = db::gui::MainWindow::Remember; // the demo is never a recent connection
+    // The demo: from --demo or the welcome page's button. A second start reconnects to the
+    // drive that already runs.
+    const auto startDemo = [&]() -> bool {
+        const auto acuUri = [&acu] {
+            return QStringLiteral("vabus://127.0.0.1:%1").arg(acu->port());
+        };
+        if (demo) {
+            if (acu)
+                window.openConnection(acuUri(), Remember::No);
+            window.openConnection(demo->refgoUri(), Remember::No);
+            if (demo->slcanPort() != 0)
+                window.openConnection(demo->slcanUri(), Remember::No);
+            return true;
+        }
         // An ACTIVE Cube inverter over VABus/TCP, opened first so that the MovingCap stays the
         // device shown at start.
         acu = std::make_unique<db::bonfiglioli::SimulatedAcu>();
         if (auto started = acu->listen(0); started) {
-            const QString uri = QStringLiteral("vabus://127.0.0.1:%1").arg(acu->port());
             window.logConsole()->info(
-                QApplication::translate("main", "Demo ACTIVE Cube at %1").arg(uri));
-            window.openConnection(uri);
+                QApplication::translate("main", "Demo ACTIVE Cube at %1").arg(acuUri()));
+            window.openConnection(acuUri(), Remember::No);
+        } else {
+            acu.reset();
         }
         demo = std::make_unique<db::app::DemoDrive>();
         if (auto started = demo->startRefgo(0); !started) {
-            std::fprintf(stderr, "drivebench: cannot start the demo drive: %s\n",
-                         qPrintable(started.error().toString()));
-            return 1;
+            const QString text = QApplication::translate("main", "Cannot start the demo drive: %1")
+                                     .arg(started.error().toString());
+            std::fprintf(stderr, "drivebench: %s\n", qPrintable(text));
+            window.logConsole()->error(text);
+            demo.reset();
+            return false;
         }
         window.logConsole()->info(
             QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
-        window.openConnection(demo->refgoUri());
+        window.openConnection(demo->refgoUri(), Remember::No);
         // The same drive as CANopen node 50 on its SLCAN door: the CAN monitor shows its traffic.
         if (auto slcan = demo->startSlcan(0); !slcan) {
             window.logConsole()->warning(
@@ -93,7 +115,7 @@ int main(int argc, char *argv[])
         } else {
             window.logConsole()->info(
                 QApplication::translate("main", "Demo drive CANopen at %1").arg(demo->slcanUri()));
-            window.openConnection(demo->slcanUri());
+            window.openConnection(demo->slcanUri(), Remember::No);
             window.showCanMonitor();
         }
         // A line of three NM17x displays on a bus of their own, for the NM17x Line dock.
@@ -107,7 +129,11 @@ int main(int argc, char *argv[])
                                         "Demo NM17x displays (nodes 2, 3, 4) at "
                                         "canopen+slcan://127.0.0.1:%1?node=2")
                     .arg(displays->slcanPort()));
-    }
+        return true;
+    };
+    window.setDemoStarter([&startDemo] { startDemo(); });
+    if (parser.isSet(demoOption) && !startDemo())
+        return 1;
     if (parser.isSet(connectOption)) {
         if (auto opened = window.openConnection(parser.value(connectOption)); !opened) {
             std::fprintf(stderr, "drivebench: %s\n", qPrintable(opened.error().toString()));

@@ -1,11 +1,13 @@
 #include "mainwindow.h"
 
 #include "cameralivesource.h"
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
+#include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/common/wheelguard.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
 #include "widgets/connection/devicelist.h"
@@ -26,10 +28,12 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
+#include <QVBoxLayout>
 
 namespace db::gui {
 
@@ -55,6 +59,10 @@ Result<widgets::MorseSource> loadMorseSource(const QString &path)
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kRecentKey = QStringLiteral("connections/recent");
+const QString kConnectTimeoutKey = QStringLiteral("connections/connectTimeoutMs");
+const QString kRequestTimeoutKey = QStringLiteral("connections/requestTimeoutMs");
+const QString kLanguageKey = QStringLiteral("language"); // read by main() before the window
+constexpr int kStatusMessageMs = 10000;
 } // namespace
 
 MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
@@ -71,6 +79,8 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
 {
     setWindowTitle(tr("drivebench"));
     setObjectName(QStringLiteral("MainWindow"));
+    m_connectionState->setObjectName(QStringLiteral("connectionState"));
+    widgets::WheelGuard::install(); // the wheel never changes an unfocused spin or combo box
 
     // The centre is a set of pages (drive status, object dictionary, scope, ...); docks around it.
     m_pages = new QTabWidget(this);
@@ -80,17 +90,26 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     m_pages->tabBar()->setChangeCurrentOnDrag(true);
     m_pages->tabBar()->setAcceptDrops(true);
     auto *statusPage = new QScrollArea(m_pages);
-    statusPage->setWidget(m_statusPanel);
+    auto *statusBox = new QWidget(statusPage);
+    auto *statusLayout = new QVBoxLayout(statusBox);
+    statusLayout->setContentsMargins(0, 0, 0, 0);
+    createHealthBanner(statusBox);
+    statusLayout->addWidget(m_statusPanel, 1);
+    statusPage->setWidget(statusBox);
     statusPage->setWidgetResizable(true);
     statusPage->setFrameShape(QFrame::NoFrame);
     m_pages->addTab(statusPage, tr("Drive Status"));
-    setCentralWidget(m_pages);
+    m_central = new QStackedWidget(this);
+    m_central->addWidget(m_pages);
+    setCentralWidget(m_central);
     createDocks();
     createMenus();
     createParameterPages();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
+    createToolBar();
+    createWelcome();
     statusBar()->addPermanentWidget(m_connectionState);
 
     connect(m_deviceList, &widgets::DeviceList::currentConnectionChanged, this,
@@ -99,10 +118,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     connect(m_deviceList, &widgets::DeviceList::connectRequested, this,
             [](DeviceConnection *c) { c->open(); });
     connect(m_deviceList, &widgets::DeviceList::disconnectRequested, this,
-            [this](DeviceConnection *c) {
-                stopMotionBeforeClose(c);
-                c->close();
-            });
+            &MainWindow::closeByUser);
     connect(m_deviceList, &widgets::DeviceList::removeRequested, this,
             &MainWindow::removeConnection);
 
@@ -112,8 +128,10 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     if (const QScreen *screen = QGuiApplication::primaryScreen())
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
+    m_defaultLayout = saveState();
     loadSettings();
     updateStatusBar();
+    updateWelcome();
 }
 
 MainWindow::~MainWindow()
@@ -179,7 +197,7 @@ void MainWindow::createDocks()
     });
     log->raise();
     setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
-    m_objectAccess->setMinimumWidth(320);
+    m_objectAccess->setMinimumWidth(280);
     m_log->setMinimumHeight(100);
     // Initial proportions; restoreState() replaces them once the user has arranged the docks.
     resizeDocks({ devices, nodes, access }, { 160, 150, 300 }, Qt::Vertical);
@@ -189,9 +207,13 @@ void MainWindow::createDocks()
 void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::showConnectDialog);
-    connectAction->setShortcut(QKeySequence::Open);
+    m_connectAction = file->addAction(tr("&Connect…"), this, &MainWindow::showConnectDialog);
+    m_connectAction->setObjectName(QStringLiteral("connectAction"));
+    m_connectAction->setShortcut(QKeySequence::Open);
     m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
+    file->addSeparator();
+    file->addAction(tr("&Settings…"), this, &MainWindow::showSettings)
+        ->setMenuRole(QAction::PreferencesRole);
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -202,6 +224,9 @@ void MainWindow::createMenus()
     view->addSeparator();
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout)
+        ->setObjectName(QStringLiteral("resetLayoutAction"));
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *manual = help->addAction(tr("&User Manual"), this, &MainWindow::showManual);
@@ -212,37 +237,61 @@ void MainWindow::createMenus()
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
-Result<DeviceConnection *> MainWindow::openConnection(const QString &uri)
+Result<DeviceConnection *> MainWindow::openConnection(const QString &uri, Remember remember)
 {
-    auto plan = m_registry.prepare(uri);
+    auto plan = m_registry.prepare(uri, m_connectTimeoutMs, m_requestTimeoutMs);
     if (!plan) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, plan.error().toString()));
         return plan.error();
     }
-    return openConnection(plan.value());
+    return openConnection(plan.value(), remember);
 }
 
-Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan)
+Result<DeviceConnection *> MainWindow::openConnection(const ConnectionPlan &plan, Remember remember)
 {
     const QString uri = plan.uri.toString();
-    auto created = m_registry.create(plan);
+    // Two connections to one device would fight over it (two pollers, two masters of its
+    // motion): the listed one is used instead.
+    for (const auto &c : m_connections) {
+        if (c->uri().toString() != uri)
+            continue;
+        m_deviceList->setCurrentConnection(c.get());
+        if (c->state() == DeviceConnection::State::Disconnected)
+            c->open();
+        const Error refused(Error::Kind::Busy,
+                            tr("%1 is already in the device list; it was not connected a second "
+                               "time")
+                                .arg(uri));
+        m_log->warning(refused.message());
+        statusBar()->showMessage(refused.message(), kStatusMessageMs);
+        return refused;
+    }
+    ConnectionPlan timed = plan; // the time limits of the Settings
+    timed.connectTimeoutMs = m_connectTimeoutMs;
+    timed.requestTimeoutMs = m_requestTimeoutMs;
+    auto created = m_registry.create(timed);
     if (!created) {
         m_log->error(tr("Cannot connect to %1: %2").arg(uri, created.error().toString()));
         return created.error();
     }
     std::shared_ptr<DeviceConnection> connection = created.value();
     m_connections.push_back(connection);
-    m_recent = widgets::ConnectionDialog::withRecent(m_recent, connection->uri().toString());
+    if (remember == Remember::No)
+        m_forget.insert(connection.get());
     watch(connection.get());
     m_deviceList->addConnection(connection.get());
     m_deviceList->setCurrentConnection(connection.get());
     m_log->info(tr("Connecting to %1").arg(connection->uri().toString()));
+    updateWelcome();
     connection->open();
     return connection.get();
 }
 
 void MainWindow::watch(DeviceConnection *connection)
 {
+    auto *health = new ConnectionHealth(connection);
+    connect(health, &ConnectionHealth::statusChanged, this,
+            [this, connection] { onHealthChanged(connection); });
     connect(connection, &DeviceConnection::objectWritten, this, [this, connection] {
         m_unstored.insert(connection);
         updateWindowTitle();
@@ -288,17 +337,19 @@ void MainWindow::setCurrent(DeviceConnection *connection)
     attachParameters(connection);
     attachCanopen(connection);
     updateStatusBar();
+    renderHealth();
 }
 
 void MainWindow::attachCanopen(DeviceConnection *connection)
 {
-    auto *canopen = qobject_cast<canopen::CanopenConnection *>(connection);
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    DeviceConnection *canopen = at ? connection : nullptr;
     if (canopen == m_canopen)
         return;
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
-    m_nm17xPanel->setNetwork(canopen ? canopen->network() : nullptr);
+    m_nm17xPanel->setNetwork(at.network);
 }
 
 void MainWindow::showCanMonitor()
@@ -316,17 +367,21 @@ void MainWindow::removeConnection(DeviceConnection *connection)
     if (it == m_connections.end())
         return;
     std::shared_ptr<DeviceConnection> keep = *it;
+    if (!confirmClose({ connection }))
+        return;
     stopMotionBeforeClose(connection);
     m_connections.erase(it);
     if (connection == m_canopen)
         attachCanopen(nullptr);
     m_deviceList->removeConnection(connection);
     m_unstored.remove(connection);
+    m_forget.remove(connection);
     m_log->info(tr("Removed %1").arg(connection->uri().toString()));
     connection->close();
     // Deleted from the event loop, not inside the click that asked for it.
     QTimer::singleShot(0, this, [keep] {});
     updateStatusBar();
+    updateWelcome();
 }
 
 void MainWindow::showConnectDialog()
@@ -341,36 +396,29 @@ void MainWindow::showConnectDialogFor(const QString &uri)
         dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    m_recent = dialog.recentUris();
+    // The URI joins the recent connections once its device answered (onHealthChanged()).
     openConnection(dialog.plan());
 }
 
 void MainWindow::disconnectCurrent()
 {
-    if (DeviceConnection *c = currentConnection()) {
-        stopMotionBeforeClose(c);
-        c->close();
-    }
-}
-
-void MainWindow::showAbout()
-{
-    QMessageBox::about(
-        this, tr("About drivebench"),
-        tr("<h3>drivebench %1</h3>"
-           "<p>Commissioning tool for industrial drives.</p>"
-           "<p>Built with Qt %2.</p>")
-            .arg(QStringLiteral(DRIVEBENCH_VERSION), QString::fromLatin1(qVersion())));
+    if (DeviceConnection *c = currentConnection())
+        closeByUser(c);
 }
 
 void MainWindow::updateStatusBar()
 {
     DeviceConnection *c = currentConnection();
     const auto state = c ? c->state() : DeviceConnection::State::Disconnected;
-    m_connectionState->setText(c ? tr("%1 — %2").arg(c->uri().toString(), stateName(state))
-                                 : tr("No device"));
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    m_connectionState->setText(
+        c ? tr("%1 — %2").arg(c->uri().toString(),
+                              health ? health->description() : stateName(state))
+          : tr("No device"));
     widgets::style::setTextColor(m_connectionState,
-                                 c ? widgets::style::connectionStateColor(state) : QColor());
+                                 health  ? widgets::style::healthColor(health->status())
+                                     : c ? widgets::style::connectionStateColor(state)
+                                         : QColor());
     m_disconnectAction->setEnabled(c && state != DeviceConnection::State::Disconnected);
     updateWindowTitle();
 }
@@ -384,7 +432,11 @@ void MainWindow::updateWindowTitle()
 {
     // The platform appends the application's display name ("— drivebench").
     DeviceConnection *c = currentConnection();
-    setWindowTitle(c ? tr("%1 (%2)[*]").arg(c->uri().toString(), stateName(c->state()))
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    setWindowTitle(c ? tr("%1 (%2)[*]")
+                           .arg(c->uri().toString(),
+                                health ? ConnectionHealth::statusText(health->status())
+                                       : stateName(c->state()))
                      : tr("drivebench"));
     setWindowModified(c && m_unstored.contains(c));
 }
@@ -415,6 +467,10 @@ void MainWindow::closeAllConnections(int timeoutMs)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (!confirmClose(connections())) {
+        event->ignore();
+        return;
+    }
     saveSettings();
     closeAllConnections();
     event->accept();
@@ -426,6 +482,31 @@ void MainWindow::loadSettings()
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
     restoreState(settings.value(kStateKey).toByteArray());
     m_recent = settings.value(kRecentKey).toStringList();
+    m_connectTimeoutMs = settings.value(kConnectTimeoutKey, m_connectTimeoutMs).toInt();
+    m_requestTimeoutMs = settings.value(kRequestTimeoutKey, m_requestTimeoutMs).toInt();
+    m_language = settings.value(kLanguageKey).toString();
+}
+
+SettingsDialog::Values MainWindow::settingsValues() const
+{
+    return { m_language, m_connectTimeoutMs, m_requestTimeoutMs, m_recent };
+}
+
+void MainWindow::applySettings(const SettingsDialog::Values &values)
+{
+    m_language = values.language;
+    m_connectTimeoutMs = values.connectTimeoutMs;
+    m_requestTimeoutMs = values.requestTimeoutMs;
+    m_recent = values.recent;
+    saveSettings();
+    updateWelcome();
+}
+
+void MainWindow::showSettings()
+{
+    SettingsDialog dialog(settingsValues(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        applySettings(dialog.values());
 }
 
 void MainWindow::saveSettings() const
@@ -434,6 +515,9 @@ void MainWindow::saveSettings() const
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());
     settings.setValue(kRecentKey, m_recent);
+    settings.setValue(kConnectTimeoutKey, m_connectTimeoutMs);
+    settings.setValue(kRequestTimeoutKey, m_requestTimeoutMs);
+    settings.setValue(kLanguageKey, m_language);
 }
 
 } // namespace db::gui

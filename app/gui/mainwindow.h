@@ -1,21 +1,21 @@
 #pragma once
 
 #include "core/protocolregistry.h"
+#include "settingsdialog.h"
 
 #include <QMainWindow>
 #include <QPointer>
 #include <QSet>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 class QDialog;
 class QLabel;
+class QStackedWidget;
 class QTabWidget;
-
-namespace db::canopen {
-class CanopenConnection;
-}
+class QToolBar;
 
 namespace db::widgets {
 class CanMonitor;
@@ -50,13 +50,27 @@ public:
     explicit MainWindow(const ProtocolRegistry &registry, QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    // Whether a connection's URI joins the recent connections once its device answered (not for
+    // the demo's simulated drive).
+    enum class Remember { Yes, No };
     // Makes a connection for `uri`, lists it, makes it current and opens it (asynchronously).
-    // The error of an unusable URI is returned and logged.
-    Result<DeviceConnection *> openConnection(const QString &uri);
-    Result<DeviceConnection *> openConnection(const ConnectionPlan &plan);
+    // The error of an unusable URI is returned and logged; a URI that is already listed is
+    // refused (that entry becomes current and is reconnected when it is down).
+    Result<DeviceConnection *> openConnection(const QString &uri,
+                                              Remember remember = Remember::Yes);
+    Result<DeviceConnection *> openConnection(const ConnectionPlan &plan,
+                                              Remember remember = Remember::Yes);
     DeviceConnection *currentConnection() const;
     QList<DeviceConnection *> connections() const;
     QStringList recentConnections() const { return m_recent; }
+    // Asked before a connection with an enabled drive is closed (Disconnect, Remove, Quit): true
+    // closes it. The default asks with a message box; tests answer themselves.
+    using Confirmation = std::function<bool(const QString &question)>;
+    void setConfirmation(Confirmation confirm) { m_confirm = std::move(confirm); }
+    // File → Settings: the values shown and what applying them changes (new connections get the
+    // time limits, the language is stored for the next start, the recent list is replaced).
+    SettingsDialog::Values settingsValues() const;
+    void applySettings(const SettingsDialog::Values &values);
 
     // Closes every connection and waits (local event loop) up to timeoutMs for all of them to
     // reach Disconnected. Called when the window closes.
@@ -85,20 +99,40 @@ public:
     // Connections written to since they were last stored permanently (the window title's "*").
     bool hasUnstoredWrites(const DeviceConnection *connection) const;
 
+    // mainwindow_layout.cpp. The toolbar: Connect, Disconnect, Enable, Stop (quick stop of any
+    // motion, like Esc) and the scope's Start/Stop (Space on the Scope page, F5 there).
+    QToolBar *mainToolBar() const { return m_toolBar; }
+    // Shown instead of the pages while no device is listed: Connect, the demo, recent
+    // connections.
+    QWidget *welcomePage() const { return m_welcome; }
+    // What "Start the demo" on the welcome page runs (the composition root starts the simulated
+    // drive and opens connections to it); without one the button is hidden.
+    void setDemoStarter(std::function<void()> start);
+
 public Q_SLOTS:
     void showConnectDialog();
     // The connection dialog with `uri` filled in (e.g. from the Morse panel).
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
     void showAbout();
+    // The About box's text: version, build commit, Qt version and the licence.
+    QString aboutText() const;
     // The README, built into the program, in a window of its own (Help → User Manual, F1).
     void showManual();
+    void showSettings();
+    // View → Reset Layout: every dock back where it was at the first start, shown and docked.
+    void resetLayout();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
     void createDocks();
+    void createToolBar();
+    void createWelcome();
+    void updateWelcome();
+    // Starts or stops the scope's recording and shows the Scope page.
+    void toggleScope();
     void createMenus();
     void watch(DeviceConnection *connection);
     void setCurrent(DeviceConnection *connection);
@@ -106,13 +140,21 @@ private:
     // "URI (state)[*]": the current connection and whether it has values not stored permanently.
     void updateWindowTitle();
     void createShortcuts(QMenu *view);
-    // Attaches the CAN monitor and node list to connection when it is a CanopenConnection,
-    // else detaches them (their frames stay).
+    // Attaches the CAN monitor, node list and NM17x panel to the connection's CANopen network
+    // when it is on one, else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
     // mainwindow_motion.cpp: the Motion dock, the application-wide Esc stop and the stops on
     // window deactivation and before a connection is closed by the user.
     void createMotionDock();
     void stopMotionBeforeClose(DeviceConnection *connection);
+    // mainwindow_health.cpp: what the connection's ConnectionHealth says, in the status bar, on
+    // the Drive Status page, in the Motion dock and the log; the question before closing a
+    // connection whose drive is enabled.
+    void createHealthBanner(QWidget *statusPage);
+    void onHealthChanged(DeviceConnection *connection);
+    void renderHealth();
+    bool confirmClose(const QList<DeviceConnection *> &connections);
+    void closeByUser(DeviceConnection *connection);
     // mainwindow_params.cpp: editor and parameter-set pages, the Parameters menu.
     void createParameterPages();
     void attachParameters(DeviceConnection *connection);
@@ -136,12 +178,29 @@ private:
     widgets::ParamCompareView *m_compareView = nullptr;
     widgets::ParameterSetActions *m_paramActions = nullptr;
     widgets::ScopePage *m_scopePage = nullptr;
-    QPointer<canopen::CanopenConnection> m_canopen;
+    QPointer<DeviceConnection> m_canopen; // the connection whose CANopen network is shown
     QLabel *m_connectionState = nullptr;
     QPointer<QDialog> m_manual; // made on first use
     QSet<const DeviceConnection *> m_unstored; // written, not stored permanently
     QTabWidget *m_pages = nullptr;
+    QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
+    QAction *m_enableAction = nullptr;
+    QAction *m_stopAction = nullptr;
+    QAction *m_scopeAction = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    QStackedWidget *m_central = nullptr; // the welcome page or the pages
+    QWidget *m_welcome = nullptr;
+    QWidget *m_recentBox = nullptr; // recent connections on the welcome page
+    QWidget *m_demoButton = nullptr;
+    std::function<void()> m_demoStarter;
+    QByteArray m_defaultLayout; // saveState() before the user's settings were restored
+    QLabel *m_healthBanner = nullptr; // on the Drive Status page: lost, failed, not responding
+    QSet<const DeviceConnection *> m_forget; // not to be remembered as recent (the demo)
+    Confirmation m_confirm;
+    int m_connectTimeoutMs = 3000; // for new connections (Settings)
+    int m_requestTimeoutMs = 1000;
+    QString m_language; // the setting "language": "" follows the system
 };
 
 } // namespace db::gui

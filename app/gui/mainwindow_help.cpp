@@ -1,13 +1,34 @@
-// Help → User Manual (F1): the README, built into the program, rendered in a window of its own.
+// Help → User Manual (F1): the README, built into the program, rendered in a window of its own;
+// Help → About.
 #include "mainwindow.h"
+
+#include "buildcommit.h"
 
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QMessageBox>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
 namespace db::gui {
+
+QString MainWindow::aboutText() const
+{
+    return tr("<h3>drivebench %1</h3>"
+              "<p>Commissioning tool for industrial drives.</p>"
+              "<p>Built from commit %2 with Qt %3 (running on Qt %4) and QCustomPlot.</p>"
+              "<p>Copyright 2026 The drivebench developers. drivebench has not been released "
+              "under a public licence: all rights are reserved by its developers; ask them "
+              "before you copy or redistribute it.</p>")
+        .arg(QStringLiteral(DRIVEBENCH_VERSION), QStringLiteral(DRIVEBENCH_COMMIT),
+             QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion()));
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About drivebench"), aboutText());
+}
 
 void MainWindow::showManual()
 {

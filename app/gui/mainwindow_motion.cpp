@@ -2,14 +2,13 @@
 #include "mainwindow.h"
 
 #include "widgets/common/logconsole.h"
+#include "widgets/common/verticalscrollarea.h"
 #include "widgets/motion/jogpanel.h"
 
 #include <QApplication>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QKeyEvent>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QTimer>
 
 namespace db::gui {
@@ -18,7 +17,7 @@ namespace {
 // How long a user's disconnect waits for the quick stop to reach the drive (the stop is written
 // from the event loop; closing at once would cancel it).
 constexpr int kStopBeforeCloseMs = 500;
-constexpr int kDockWidth = 460; // initial width of the Motion dock: fields show their units
+constexpr int kDockRoom = 40; // beyond its minimum: the fields show their units once connected
 
 // Esc anywhere in the application quick-stops a moving axis, and the main window losing the
 // activation halts a jog. The filter sits on qApp, so it sees the key before any widget can
@@ -54,20 +53,16 @@ void MainWindow::createMotionDock()
 {
     m_jogPanel = new widgets::JogPanel(this);
     m_jogPanel->setObjectName(QStringLiteral("jogPanel"));
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidget(m_jogPanel);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(m_jogPanel->minimumSizeHint().width()
-                            + scroll->verticalScrollBar()->sizeHint().width());
+    auto *scroll = new widgets::VerticalScrollArea(m_jogPanel, this);
     auto *dock = new QDockWidget(tr("Motion"), this);
     dock->setObjectName(QStringLiteral("motionDock")); // for saveState()/restoreState()
     dock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, dock);
     // The panel is tall: the right dock area takes the full height, beside the log.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
-    resizeDocks({ dock }, { kDockWidth }, Qt::Horizontal); // until restoreState() knows better
+    // Little wider than the panel needs, so that the pages get the room; until restoreState()
+    // knows better.
+    resizeDocks({ dock }, { scroll->minimumSizeHint().width() + kDockRoom }, Qt::Horizontal);
     qApp->installEventFilter(new MotionStopFilter(this, m_jogPanel));
     connect(m_jogPanel, &widgets::JogPanel::stopped, this, [this](const QString &reason) {
         if (widgets::LogConsole *log = logConsole())

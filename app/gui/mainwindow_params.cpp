@@ -7,8 +7,10 @@
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/parameters/paramcompareview.h"
 #include "widgets/parameters/parametersetactions.h"
+#include "widgets/scope/scopepage.h"
 
 #include <QMenuBar>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabWidget>
 
@@ -70,10 +72,14 @@ void MainWindow::createParameterPages()
 }
 
 // Standard keys: Ctrl+O connect (File menu), Ctrl+S store permanently (asks first), F5 re-read
-// the objects, Ctrl+F filter them.
+// the objects (on the Scope page: start or stop the recording), Ctrl+F filter them.
 void MainWindow::createShortcuts(QMenu *view)
 {
     QAction *refresh = view->addAction(tr("&Refresh Objects"), this, [this] {
+        if (m_central->currentWidget() == m_pages && m_pages->currentWidget() == m_scopePage) {
+            toggleScope();
+            return;
+        }
         m_pages->setCurrentWidget(m_odEditor);
         m_odEditor->readAll();
     });

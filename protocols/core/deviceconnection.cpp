@@ -160,6 +160,8 @@ Reply *DeviceConnection::track(Reply *reply)
 {
     m_pending.removeIf([](const QPointer<Reply> &p) { return !p || p->isFinished(); });
     m_pending.append(reply);
+    connect(reply, &Reply::finished, this,
+            [this, reply] { Q_EMIT requestFinished(reply->address(), reply->error()); });
     return reply;
 }
 

@@ -123,6 +123,10 @@ Q_SIGNALS:
     // permanently (storeNonVolatile()). Emitted once per successful write, before the reply's
     // finished() reaches other receivers connected later.
     void objectWritten(db::ObjectAddress address);
+    // Every read or write that was handed to the protocol finished: ok (no error), the device's
+    // refusal, a timeout, or cancelled by a disconnect. Emitted before the reply's finished()
+    // reaches receivers connected later (ConnectionHealth judges the device by these).
+    void requestFinished(db::ObjectAddress address, const db::Error &error);
 
 protected:
     virtual void doOpen() = 0;

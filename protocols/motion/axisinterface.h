@@ -76,6 +76,8 @@ public:
 
     // What the axis reads once before its first command: scaling, supported modes, the drive's
     // limits and its own profile. The caller owns the reply; the default has nothing to read.
+    // Fails (Timeout or Disconnected) only when the drive answered none of the reads; objects a
+    // drive refuses are left at their defaults.
     virtual Reply *initialize();
     // Valid once initialize() finished; defaults (unlimited, zero profile) before and where the
     // drive has none.

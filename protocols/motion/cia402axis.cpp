@@ -133,6 +133,8 @@ Reply *Cia402Axis::initialize()
         if (dict.contains(a) && !objects.contains(a))
             objects.append(a);
     auto pending = std::make_shared<int>(int(objects.size()));
+    auto answered = std::make_shared<bool>(false); // a value or a device's refusal
+    auto silence = std::make_shared<Error>();
     QPointer<Reply> guard(result);
     for (const ObjectAddress &address : objects) {
         Reply *r = m_connection->read(address);
@@ -140,11 +142,22 @@ Reply *Cia402Axis::initialize()
             r->deleteLater();
             if (r->ok())
                 values->insert(address, r->value());
+            const Error::Kind kind = r->error().kind();
+            if (r->ok() || (kind != Error::Kind::Timeout && kind != Error::Kind::Disconnected))
+                *answered = true;
+            else
+                *silence = r->error();
             if (--*pending > 0)
                 return;
             applyInitialValues(*values);
-            if (guard)
+            if (!guard)
+                return;
+            // A drive that answered none of the reads has said nothing about itself: the
+            // values above are defaults, and the caller is told so.
+            if (*answered)
                 guard->finish();
+            else
+                guard->fail(*silence);
         });
     }
     return result;

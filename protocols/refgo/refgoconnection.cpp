@@ -2,11 +2,7 @@
 
 #include "canopen/storesignatures.h"
 
-#include "refgologging.h"
-#include "transport/tcpstream.h"
-
 #include <QCoreApplication>
-#include <QPointer>
 
 namespace {
 // The context of this file's translated messages.
@@ -63,15 +59,13 @@ Result<QVariant> convertRead(const ObjectDef *def, qlonglong v)
 } // namespace
 
 RefgoConnection::RefgoConnection(const ConnectionUri &uri, QObject *parent)
-    : DeviceConnection(uri, parent)
-    , m_stream(new TcpStream(uri.host(), quint16(uri.portOr(kDefaultPort)), this))
+    : StreamConnection(uri, kDefaultPort, parent)
 {
     init();
 }
 
 RefgoConnection::RefgoConnection(const ConnectionUri &uri, ByteStream *stream, QObject *parent)
-    : DeviceConnection(uri, parent)
-    , m_stream(stream)
+    : StreamConnection(uri, stream, parent)
 {
     init();
 }
@@ -85,73 +79,9 @@ RefgoConnection::~RefgoConnection()
 
 void RefgoConnection::init()
 {
-    m_client = new RefgoClient(m_stream, this);
+    m_client = new RefgoClient(stream(), this);
     connect(m_client, &RefgoClient::logLine, this, &DeviceConnection::logLine);
-    connect(m_stream, &ByteStream::opened, this, &RefgoConnection::onOpened);
-    connect(m_stream, &ByteStream::closed, this, &RefgoConnection::onClosed);
-    m_reconnectTimer.setSingleShot(true);
-    m_reconnectTimer.setInterval(kDefaultReconnectIntervalMs);
-    connect(&m_reconnectTimer, &QTimer::timeout, this, [this] {
-        if (state() != State::Disconnected)
-            return;
-        Q_EMIT logLine(QStringLiteral("reconnecting to %1").arg(m_stream->peerName()));
-        open();
-    });
-}
-
-void RefgoConnection::setAutoReconnect(bool enabled, int intervalMs)
-{
-    m_autoReconnect = enabled;
-    m_reconnectTimer.setInterval(intervalMs);
-    if (!enabled)
-        m_reconnectTimer.stop();
-}
-
-void RefgoConnection::doOpen()
-{
-    m_reconnectTimer.stop();
-    Q_EMIT logLine(QStringLiteral("connecting to %1").arg(m_stream->peerName()));
-    m_stream->setConnectTimeoutMs(connectTimeoutMs());
-    if (m_stream->isOpen())
-        onOpened();
-    else
-        m_stream->open();
-}
-
-void RefgoConnection::doClose()
-{
-    m_reconnectTimer.stop();
-    if (m_stream->state() == ByteStream::State::Closed)
-        setState(State::Disconnected);
-    else
-        m_stream->close();
-}
-
-void RefgoConnection::onOpened()
-{
-    qCInfo(lcRefgo).noquote() << "connected to" << m_stream->peerName();
-    Q_EMIT logLine(QStringLiteral("connected to %1").arg(m_stream->peerName()));
-    setState(State::Connected);
-}
-
-void RefgoConnection::onClosed(const Error &error)
-{
-    const State previous = state();
-    if (previous == State::Disconnected)
-        return;
-    if (previous == State::Closing) {
-        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_stream->peerName()));
-        setState(State::Disconnected);
-        return;
-    }
-    const Error why = error.isError()
-        ? error
-        : Error(Error::Kind::Disconnected,
-                Tr::tr("connection to %1 closed").arg(m_stream->peerName()));
-    Q_EMIT logLine(QStringLiteral("! ") + why.message());
-    setState(State::Disconnected, why);
-    if (m_autoReconnect)
-        m_reconnectTimer.start();
+    followStream();
 }
 
 Reply *RefgoConnection::storeNonVolatile()

@@ -4,23 +4,16 @@
 // raw commands for the terminal, store-to-NV and factory defaults through 1010h/1011h as on its
 // CANopen side.
 
-#include "core/deviceconnection.h"
 #include "refgoclient.h"
-
-#include <QTimer>
-
-namespace db {
-class ByteStream;
-}
+#include "transport/streamconnection.h"
 
 namespace db::refgo {
 
-class RefgoConnection : public DeviceConnection
+class RefgoConnection : public StreamConnection
 {
     Q_OBJECT
 public:
     static constexpr int kDefaultPort = 10001;
-    static constexpr int kDefaultReconnectIntervalMs = 2000;
 
     // Makes its own TcpStream to uri.host():uri.portOr(10001).
     explicit RefgoConnection(const ConnectionUri &uri, QObject *parent = nullptr);
@@ -43,29 +36,14 @@ public:
     // The engine, for typed commands (motion, TPSR, ...). Owned by the connection.
     RefgoClient *client() const { return m_client; }
 
-    // After a lost link (not after close()), or a failed attempt, try open() again every
-    // intervalMs. Off by default.
-    void setAutoReconnect(bool enabled, int intervalMs = kDefaultReconnectIntervalMs);
-    bool autoReconnect() const { return m_autoReconnect; }
-    // True while waiting to try open() again (for a "reconnecting..." hint).
-    bool isReconnectScheduled() const { return m_reconnectTimer.isActive(); }
-
 protected:
-    void doOpen() override;
-    void doClose() override;
-    void stopReconnecting() override { m_reconnectTimer.stop(); }
     void doRead(Reply *reply, const ObjectDef *def) override;
     void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
 
 private:
     void init();
-    void onOpened();
-    void onClosed(const Error &error);
 
-    ByteStream *m_stream = nullptr;
     RefgoClient *m_client = nullptr;
-    QTimer m_reconnectTimer;
-    bool m_autoReconnect = false;
 };
 
 } // namespace db::refgo

@@ -1,7 +1,6 @@
 #include "vabusconnection.h"
 
-#include "transport/tcpstream.h"
-#include "vabuslogging.h"
+#include "transport/bytestream.h"
 
 namespace db::vabus {
 
@@ -32,15 +31,13 @@ Result<void> VabusConnection::checkUri(const ConnectionUri &uri)
 }
 
 VabusConnection::VabusConnection(const ConnectionUri &uri, QObject *parent)
-    : DeviceConnection(uri, parent)
-    , m_stream(new TcpStream(uri.host(), quint16(uri.portOr(kDefaultPort)), this))
+    : StreamConnection(uri, kDefaultPort, parent)
 {
     init();
 }
 
 VabusConnection::VabusConnection(const ConnectionUri &uri, ByteStream *stream, QObject *parent)
-    : DeviceConnection(uri, parent)
-    , m_stream(stream)
+    : StreamConnection(uri, stream, parent)
 {
     init();
 }
@@ -54,90 +51,19 @@ VabusConnection::~VabusConnection()
 
 void VabusConnection::init()
 {
-    m_client = new VabusClient(m_stream, this);
+    m_client = new VabusClient(stream(), this);
     const auto sys = sysFromUri(uri());
     m_client->setSys(sys ? sys.value() : 0);
     m_ram = uri().hasQuery(QStringLiteral("ram"));
     connect(m_client, &VabusClient::logLine, this, &DeviceConnection::logLine);
-    connect(m_stream, &ByteStream::opened, this, &VabusConnection::onOpened);
-    connect(m_stream, &ByteStream::closed, this, &VabusConnection::onClosed);
-    m_retryTimer.setSingleShot(true);
-    m_retryTimer.setInterval(kRetryIntervalMs);
-    connect(&m_retryTimer, &QTimer::timeout, this, [this] {
-        if (state() != State::Disconnected)
-            return;
-        Q_EMIT logLine(QStringLiteral("connecting to %1 again (the inverter may be starting up)")
-                           .arg(m_stream->peerName()));
-        open();
-    });
+    setRetryAfterLoss(kPowerUpWindowMs);
+    followStream();
 }
 
-void VabusConnection::setRetryAfterLoss(int windowMs, int intervalMs)
+QString VabusConnection::reconnectingLine() const
 {
-    m_retryWindowMs = qMax(0, windowMs);
-    m_retryTimer.setInterval(qMax(1, intervalMs));
-    if (m_retryWindowMs == 0)
-        stopReconnecting();
-}
-
-void VabusConnection::stopReconnecting()
-{
-    m_retryTimer.stop();
-    m_retryUntil.reset();
-}
-
-void VabusConnection::doOpen()
-{
-    Q_EMIT logLine(QStringLiteral("connecting to %1").arg(m_stream->peerName()));
-    m_stream->setConnectTimeoutMs(connectTimeoutMs());
-    m_retryTimer.stop();
-    if (m_stream->isOpen())
-        onOpened();
-    else
-        m_stream->open();
-}
-
-void VabusConnection::doClose()
-{
-    stopReconnecting(); // closed by us: no retry
-    if (m_stream->state() == ByteStream::State::Closed)
-        setState(State::Disconnected);
-    else
-        m_stream->close();
-}
-
-void VabusConnection::onOpened()
-{
-    qCInfo(lcVabus).noquote() << "connected to" << m_stream->peerName();
-    Q_EMIT logLine(QStringLiteral("connected to %1; the inverter reacts as parameter 388 says "
-                                  "10 s after the last exchange once the link stops")
-                       .arg(m_stream->peerName()));
-    m_retryUntil.reset();
-    setState(State::Connected);
-}
-
-void VabusConnection::onClosed(const Error &error)
-{
-    const State previous = state();
-    if (previous == State::Disconnected)
-        return;
-    if (previous == State::Closing) {
-        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_stream->peerName()));
-        setState(State::Disconnected);
-        return;
-    }
-    const Error why = error.isError()
-        ? error
-        : Error(Error::Kind::Disconnected,
-                QStringLiteral("connection to %1 closed").arg(m_stream->peerName()));
-    Q_EMIT logLine(QStringLiteral("! ") + why.message());
-    if (previous == State::Connected && m_retryWindowMs > 0)
-        m_retryUntil = QDeadlineTimer(m_retryWindowMs);
-    setState(State::Disconnected, why);
-    if (m_retryUntil && !m_retryUntil->hasExpired() && state() == State::Disconnected)
-        m_retryTimer.start();
-    else
-        m_retryUntil.reset();
+    return QStringLiteral("connecting to %1 again (the inverter may be starting up)")
+        .arg(stream()->peerName());
 }
 
 std::optional<ObjectAddress> VabusConnection::ramAddress(ObjectAddress address) const
@@ -145,6 +71,13 @@ std::optional<ObjectAddress> VabusConnection::ramAddress(ObjectAddress address) 
     if (address.sub > kMaxReadDataSet)
         return std::nullopt;
     return ObjectAddress(address.index, quint8(address.sub + kRamDataSetOffset));
+}
+
+QString VabusConnection::connectedLine() const
+{
+    return QStringLiteral("connected to %1; the inverter reacts as parameter 388 says 10 s after "
+                          "the last exchange once the link stops")
+        .arg(stream()->peerName());
 }
 
 const ObjectDef *VabusConnection::describe(ObjectAddress address) const

@@ -10,19 +10,12 @@
 //          0 or absent: the inverter carrying the module (SYS 0x00)
 //   ram    writes to data sets 0-4 go to their RAM copies (5-9), sparing the EEPROM
 
-#include "core/deviceconnection.h"
+#include "transport/streamconnection.h"
 #include "vabusclient.h"
-
-#include <QDeadlineTimer>
-#include <QTimer>
-
-namespace db {
-class ByteStream;
-}
 
 namespace db::vabus {
 
-class VabusConnection : public DeviceConnection
+class VabusConnection : public StreamConnection
 {
     Q_OBJECT
 public:
@@ -54,37 +47,32 @@ public:
 
     // When a link that was up is lost (not closed by us), open() is tried again every intervalMs
     // for windowMs: an inverter that was switched off and on answers again within 20 s. 0 turns
-    // it off. A first open() that fails is not retried.
-    void setRetryAfterLoss(int windowMs, int intervalMs = kRetryIntervalMs);
-    int retryWindowMs() const { return m_retryWindowMs; }
+    // it off. A first open() that fails is not retried. On by default (kPowerUpWindowMs).
+    void setRetryAfterLoss(int windowMs, int intervalMs = kRetryIntervalMs)
+    {
+        setAutoReconnect(windowMs > 0, intervalMs, windowMs);
+    }
+    int retryWindowMs() const { return autoReconnect() ? reconnectWindowMs() : 0; }
     // True while waiting for the next attempt.
-    bool isRetryScheduled() const { return m_retryTimer.isActive(); }
+    bool isRetryScheduled() const { return isReconnectScheduled(); }
 
     // The engine, for block access and diagnostics. Owned by the connection.
     VabusClient *client() const { return m_client; }
 
 protected:
-    void doOpen() override;
-    void doClose() override;
+    QString connectedLine() const override;
+    QString reconnectingLine() const override;
     void doRead(Reply *reply, const ObjectDef *def) override;
     void doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def) override;
-    void stopReconnecting() override;
 
 private:
     void init();
-    void onOpened();
-    void onClosed(const Error &error);
     // The description of a parameter at this address: the address's own, else that of the
     // EEPROM data set a RAM data set copies, else data set 0's.
     const ObjectDef *describe(ObjectAddress address) const;
 
-    ByteStream *m_stream = nullptr;
     VabusClient *m_client = nullptr;
     bool m_ram = false;
-    int m_retryWindowMs = kPowerUpWindowMs;
-    QTimer m_retryTimer;
-    // Set when a link was lost: retries go on until it expires.
-    std::optional<QDeadlineTimer> m_retryUntil;
 };
 
 } // namespace db::vabus

@@ -2,13 +2,13 @@
 
 // Shared by the command-line tests: run a tool with a time limit, and start drivebench-sim and
 // read the ports it announces. Header-only; every wait is bounded.
+#include "wait.h"
+
 #include <QElapsedTimer>
-#include <QEventLoop>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QString>
 #include <QStringList>
-#include <QTimer>
 
 namespace db::test {
 
@@ -50,25 +50,15 @@ inline CliRun runProgram(const QString &program, const QStringList &args, int ti
 }
 
 // Like runProgram, but the caller's event loop keeps turning while the program runs, so that
-// peers living in the test process (testpeers.h) can serve it.
+// peers living in the test process (peers.h) can serve it.
 inline CliRun runServing(const QString &program, const QStringList &args, int timeoutMs)
 {
     QProcess p;
-    QEventLoop loop;
-    QTimer limit;
-    limit.setSingleShot(true);
-    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
-    QObject::connect(&p, &QProcess::errorOccurred, &loop, [&](QProcess::ProcessError e) {
-        if (e == QProcess::FailedToStart)
-            loop.quit();
-    });
-    QObject::connect(&limit, &QTimer::timeout, &loop, &QEventLoop::quit);
     QElapsedTimer clock;
     clock.start();
     p.start(program, args);
-    limit.start(timeoutMs);
-    if (p.state() != QProcess::NotRunning)
-        loop.exec();
+    waitUntil(
+        &p, &QProcess::stateChanged, [&p] { return p.state() == QProcess::NotRunning; }, timeoutMs);
     return finishedRun(p, clock, timeoutMs);
 }
 

@@ -2,13 +2,12 @@
 // peers that refuse, stay silent or answer garbage. Every failure must end quickly with a
 // one-line error that names the cause and a non-zero exit code.
 #include "clirun.h"
+#include "peers.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSignalSpy>
-#include <QTcpServer>
-#include <QTcpSocket>
 #include <QTest>
 
 class TestCli : public QObject
@@ -174,10 +173,8 @@ void TestCli::readOnlyObjectRefusedBeforeSending()
 
 void TestCli::refusedConnectionExitsWithThree()
 {
-    QTcpServer probe;
-    QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
-    const quint16 closedPort = probe.serverPort();
-    probe.close();
+    const quint16 closedPort = db::test::closedLoopbackPort();
+    QVERIFY(closedPort != 0);
     const Run r =
         cli({ QStringLiteral("read"), QStringLiteral("refgo://127.0.0.1:%1").arg(closedPort),
               QStringLiteral("6041:0") });
@@ -188,8 +185,8 @@ void TestCli::refusedConnectionExitsWithThree()
 
 void TestCli::silentDeviceTimesOutWithFour()
 {
-    QTcpServer silent; // accepts, never answers
-    QVERIFY(silent.listen(QHostAddress::LocalHost, 0));
+    db::test::RawPeer silent(db::test::RawPeer::Behaviour::Silent);
+    QVERIFY(silent.isListening());
     QProcess p;
     p.start(QStringLiteral(DRIVEBENCH_CLI),
             { QStringLiteral("--timeout"), QStringLiteral("300"), QStringLiteral("read"),
@@ -204,15 +201,8 @@ void TestCli::silentDeviceTimesOutWithFour()
 
 void TestCli::garbageAnswerExitsWithFive()
 {
-    QTcpServer liar;
-    QVERIFY(liar.listen(QHostAddress::LocalHost, 0));
-    connect(&liar, &QTcpServer::newConnection, this, [&liar] {
-        QTcpSocket *s = liar.nextPendingConnection();
-        connect(s, &QTcpSocket::readyRead, s, [s] {
-            s->readAll();
-            s->write("HELLO WORLD\r\n12\r\n>");
-        });
-    });
+    db::test::RawPeer liar(db::test::RawPeer::Behaviour::Garbage, "HELLO WORLD\r\n12\r\n>");
+    QVERIFY(liar.isListening());
     QProcess p;
     p.start(QStringLiteral(DRIVEBENCH_CLI),
             { QStringLiteral("read"), QStringLiteral("refgo://127.0.0.1:%1").arg(liar.serverPort()),

@@ -4,13 +4,12 @@
 // read back by segmented and by block SDO, scan, nmt, lss, pdo, dcf, and the failures (abort,
 // timeout, garbage, refused, bad arguments) with clear errors and non-zero exits, never a hang.
 #include "clirun.h"
+#include "peers.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRandomGenerator>
 #include <QRegularExpression>
-#include <QTcpServer>
-#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -271,15 +270,10 @@ void TestCliCanopen::silentNodeTimesOutWithFour()
 
 void TestCliCanopen::garbageOnTheLinkFailsQuickly()
 {
-    QTcpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost));
-    connect(&server, &QTcpServer::newConnection, this, [&server] {
-        QTcpSocket *s = server.nextPendingConnection();
-        connect(s, &QTcpSocket::readyRead, s, [s] {
-            s->readAll();
-            s->write("\x07zz\rt5818\xff\xfe\rT12\r\x00\x01garbage\r");
-        });
-    });
+    // Bytes up to the NUL: a BEL, an unknown command, a short frame and a truncated one.
+    db::test::RawPeer server(db::test::RawPeer::Behaviour::Garbage,
+                             "\x07zz\rt5818\xff\xfe\rT12\r\x00\x01garbage\r");
+    QVERIFY(server.isListening());
     QProcess p;
     p.start(QStringLiteral(DRIVEBENCH_CLI),
             { QStringLiteral("read"), QStringLiteral("--timeout"), QStringLiteral("300"),

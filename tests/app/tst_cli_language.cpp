@@ -2,23 +2,12 @@
 // not that locale is generated on the machine), English for LANG=C, and --lang / DRIVEBENCH_LANG
 // choose explicitly. Checked on the error of a read from a port nobody listens on.
 #include "clirun.h"
+#include "peers.h"
 
 #include <QProcessEnvironment>
-#include <QTcpServer>
 #include <QTest>
 
 namespace {
-
-// A loopback port that was free a moment ago: bound by the OS, then released.
-quint16 closedPort()
-{
-    QTcpServer server;
-    if (!server.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    const quint16 port = server.serverPort();
-    server.close();
-    return port;
-}
 
 db::test::CliRun runWith(const QStringList &args, const QList<QPair<QString, QString>> &vars)
 {
@@ -68,7 +57,7 @@ private slots:
         QFETCH(QStringList, extraArgs);
         QFETCH(QStringList, env);
         QFETCH(bool, german);
-        const quint16 port = closedPort();
+        const quint16 port = db::test::closedLoopbackPort();
         QVERIFY(port != 0);
         QList<QPair<QString, QString>> vars;
         for (const QString &v : env)

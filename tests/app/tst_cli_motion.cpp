@@ -1,4 +1,4 @@
-// drivebench-cli motion commands end to end (issue 5): enable, move --abs/--add/--rel, jog,
+// drivebench-cli motion commands end to end: enable, move --abs/--add/--rel, jog,
 // home, disable and refusals against `drivebench-sim movingcap` over RefGo and over CANopen
 // (SLCAN on loopback, node 50). The simulated drive has software limits of +-100000 (607Dh).
 #include "clirun.h"

@@ -3,7 +3,7 @@
 // object; a CANopen node behind SLCAN that aborts every SDO) and drivebench-sim for the good
 // side. A backup must never replace a file with less than a complete set.
 #include "clirun.h"
-#include "hostilepeers.h"
+#include "peers.h"
 
 #include <QFile>
 #include <QRegularExpression>

@@ -4,7 +4,7 @@
 // names why and writes nothing; failed reads give the exit code `read` gives for the same peer;
 // an interrupted recording keeps what was recorded.
 #include "clirun.h"
-#include "testpeers.h"
+#include "peers.h"
 
 #include "scope/csv.h"
 
@@ -16,7 +16,7 @@
 #include <signal.h>
 
 using namespace db;
-using db::test::TestPeer;
+using db::test::RawPeer;
 
 class TestCliRecordFailures : public QObject
 {
@@ -83,8 +83,8 @@ void TestCliRecordFailures::floodingPeerIsNoRecording()
 {
     QFETCH(QString, timeoutMs);
     QFETCH(QString, duration);
-    TestPeer flood(TestPeer::Behaviour::Flood);
-    QVERIFY(flood.listen());
+    RawPeer flood(RawPeer::Behaviour::Flood);
+    QVERIFY(flood.isListening());
     const QString uri = peerUri(true, flood.port());
     const Run read = cli({ QStringLiteral("read"), QStringLiteral("--timeout"), timeoutMs, uri,
                            QStringLiteral("6064:0") });
@@ -111,8 +111,8 @@ void TestCliRecordFailures::failingReadsNameTheirCause_data()
     QTest::addColumn<int>("behaviour");
     QTest::addColumn<QByteArray>("answer");
     QTest::addColumn<QString>("cause");
-    const auto silent = int(TestPeer::Behaviour::Silent);
-    const auto garbage = int(TestPeer::Behaviour::Garbage);
+    const auto silent = int(RawPeer::Behaviour::Silent);
+    const auto garbage = int(RawPeer::Behaviour::Garbage);
     QTest::newRow("refgo silent") << false << silent << QByteArray() << "timeout";
     QTest::newRow("refgo garbage")
         << false << garbage << QByteArray("HELLO WORLD\r\n12\r\n>") << "malformed";
@@ -128,8 +128,8 @@ void TestCliRecordFailures::failingReadsNameTheirCause()
     QFETCH(int, behaviour);
     QFETCH(QByteArray, answer);
     QFETCH(QString, cause);
-    TestPeer peer(TestPeer::Behaviour(behaviour), answer);
-    QVERIFY(peer.listen());
+    RawPeer peer(RawPeer::Behaviour(behaviour), answer);
+    QVERIFY(peer.isListening());
     const QString uri = peerUri(slcan, peer.port());
     const Run read = cli({ QStringLiteral("read"), QStringLiteral("--timeout"),
                            QStringLiteral("200"), uri, QStringLiteral("6064:0") });

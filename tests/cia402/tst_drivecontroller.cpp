@@ -4,7 +4,7 @@
 #include "cia402/modes.h"
 #include "cia402/statusword.h"
 #include "devices/movingcap/movingcapfaults.h"
-#include "rig.h"
+#include "driverig.h"
 
 #include <QTest>
 
@@ -32,16 +32,16 @@ private Q_SLOTS:
         auto rig = makeRig(kind);
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        auto r = awaitReply(dc.enableOperation());
+        auto r = await(dc.enableOperation());
         QVERIFY2(r.ok(), qPrintable(r.error().toString()));
         QCOMPARE(decodeState(quint16(r->toUInt())), State::OperationEnabled);
         QCOMPARE(rig->drive().state(), State::OperationEnabled);
-        QVERIFY(awaitReply(dc.switchOn()).ok());
+        QVERIFY(await(dc.switchOn()).ok());
         QCOMPARE(rig->drive().state(), State::SwitchedOn);
-        QVERIFY(awaitReply(dc.shutdown()).ok());
+        QVERIFY(await(dc.shutdown()).ok());
         QCOMPARE(rig->drive().state(), State::ReadyToSwitchOn);
-        QVERIFY(awaitReply(dc.enableOperation()).ok());
-        QVERIFY(awaitReply(dc.disableVoltage()).ok());
+        QVERIFY(await(dc.enableOperation()).ok());
+        QVERIFY(await(dc.disableVoltage()).ok());
         QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
     }
     void faultResetThenEnable_data() { transports(); }
@@ -51,14 +51,14 @@ private Q_SLOTS:
         auto rig = makeRig(kind);
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        QVERIFY(await(dc.enableOperation()).ok());
         rig->drive().injectFault(sim::faults::Stroke);
         QTRY_COMPARE(rig->drive().state(), State::Fault);
-        QVERIFY(awaitReply(dc.faultReset()).ok());
+        QVERIFY(await(dc.faultReset()).ok());
         QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
         rig->drive().injectFault(sim::faults::Stroke);
         QTRY_COMPARE(rig->drive().state(), State::Fault);
-        auto r = awaitReply(dc.enableOperation()); // plans 0 -> 0x80 -> 6 -> 7 -> 15
+        auto r = await(dc.enableOperation()); // plans 0 -> 0x80 -> 6 -> 7 -> 15
         QVERIFY2(r.ok(), qPrintable(r.error().toString()));
         QCOMPARE(rig->drive().state(), State::OperationEnabled);
     }
@@ -69,11 +69,10 @@ private Q_SLOTS:
         auto rig = makeRig(kind);
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        QVERIFY(awaitReply(dc.enableOperation()).ok());
-        QVERIFY(
-            awaitReply(profileVelocity(rig->connection.get(), 500, 1000, 1000, &dc)->start()).ok());
+        QVERIFY(await(dc.enableOperation()).ok());
+        QVERIFY(await(profileVelocity(rig->connection.get(), 500, 1000, 1000, &dc)->start()).ok());
         QTRY_VERIFY(rig->drive().axis().velocity() > 100);
-        QVERIFY(awaitReply(dc.quickStop()).ok());
+        QVERIFY(await(dc.quickStop()).ok());
         QVERIFY(rig->drive().state() != State::OperationEnabled);
         QTRY_VERIFY(!rig->drive().axis().isMoving());
     }
@@ -84,16 +83,16 @@ private Q_SLOTS:
         auto rig = makeRig(kind);
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        QVERIFY(await(dc.enableOperation()).ok());
         PositionSetPoint sp { 720, 7200, 2000, 2000, false, true, {}, 0 };
-        auto r = awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start());
+        auto r = await(profilePosition(rig->connection.get(), sp, &dc)->start());
         QVERIFY2(r.ok(), qPrintable(r.error().toString()));
         // Handshake finished: bit 4 back to 0, bit 12 cleared.
         QCOMPARE(rig->drive().read({ 0x6040, 0 }).value().toUInt(), 0x0Fu);
         QTRY_VERIFY(rig->drive().statusword() & sw::TargetReached);
         QTRY_VERIFY(qAbs(rig->drive().axis().position() - 720) < 1);
         sp = { 100, 7200, 2000, 2000, true, true, {}, 0 }; // relative (bit 6): from the last target
-        QVERIFY(awaitReply(profilePosition(rig->connection.get(), sp, &dc)->start()).ok());
+        QVERIFY(await(profilePosition(rig->connection.get(), sp, &dc)->start()).ok());
         QTRY_VERIFY(qAbs(rig->drive().axis().position() - 820) < 1);
     }
     void homingSetsOffset_data() { transports(); }
@@ -103,13 +102,13 @@ private Q_SLOTS:
         auto rig = makeRig(kind);
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        QVERIFY(awaitReply(dc.enableOperation()).ok());
+        QVERIFY(await(dc.enableOperation()).ok());
         HomingSetPoint sp;
         sp.method = 35;
         sp.speedFast = 90;
         sp.acceleration = 1000;
         sp.offset = 1234;
-        auto r = awaitReply(homing(rig->connection.get(), sp, &dc)->start());
+        auto r = await(homing(rig->connection.get(), sp, &dc)->start());
         QVERIFY2(r.ok(), qPrintable(r.error().toString()));
         QCOMPARE(qRound(rig->drive().axis().position()), 1234);
     }
@@ -117,9 +116,9 @@ private Q_SLOTS:
     {
         auto rig = makeRig(QStringLiteral("sim"));
         QVERIFY(rig);
-        rig->sim->frozen = true;
+        rig->sim->ignoreAllWrites = true;
         DriveController dc(rig->connection.get());
-        auto r = awaitReply(dc.enableOperation(), 3000);
+        auto r = await(dc.enableOperation(), 3000);
         QCOMPARE(r.error().kind(), Error::Kind::Timeout);
         QVERIFY2(r.error().message().contains(QLatin1String("Ready to switch on")),
                  qPrintable(r.error().message()));
@@ -130,7 +129,7 @@ private Q_SLOTS:
         auto rig = makeRig(QStringLiteral("sim"), { { { 0x3511, 1 }, 0x0900 } });
         QVERIFY(rig);
         DriveController dc(rig->connection.get());
-        auto r = awaitReply(dc.enableOperation());
+        auto r = await(dc.enableOperation());
         QCOMPARE(r.error().kind(), Error::Kind::DeviceError);
         QVERIFY(r.error().message().contains(QLatin1String("fault")));
     }
@@ -141,8 +140,8 @@ private Q_SLOTS:
         DriveController dc(rig->connection.get());
         Reply *enable = dc.enableOperation();
         Reply *disable = dc.disableVoltage();
-        QCOMPARE(awaitReply(enable).error().kind(), Error::Kind::Cancelled);
-        QVERIFY(awaitReply(disable).ok());
+        QCOMPARE(await(enable).error().kind(), Error::Kind::Cancelled);
+        QVERIFY(await(disable).ok());
         QCOMPARE(rig->drive().state(), State::SwitchOnDisabled);
     }
 };

@@ -8,6 +8,9 @@ cmake_minimum_required(VERSION 3.25)
 #    canopen, cia402 (the drive profile every drive family shares) and simulation;
 #  - client code never includes the device side: outside device/ folders, simulation/, devices/,
 #    app/ and tests, no file includes a header from a device/ folder or from simulation/.
+#  - widgets/, app/gui/ and app/cli/ work through DeviceConnection and its interfaces: no cast
+#    to a concrete connection class (qobject_cast, dynamic_cast or static_cast to a *Connection
+#    other than DeviceConnection).
 # Run: cmake -DSOURCE_DIR=<repo> -P check_layers.cmake
 set(violations "")
 file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
@@ -82,6 +85,27 @@ foreach(src IN LISTS sources)
         endif()
     endforeach()
 endforeach()
+# Casts to concrete connection classes above the protocols.
+file(GLOB_RECURSE cast_sources RELATIVE ${SOURCE_DIR}
+     ${SOURCE_DIR}/widgets/*.h ${SOURCE_DIR}/widgets/*.cpp
+     ${SOURCE_DIR}/app/gui/*.h ${SOURCE_DIR}/app/gui/*.cpp
+     ${SOURCE_DIR}/app/cli/*.h ${SOURCE_DIR}/app/cli/*.cpp)
+foreach(src IN LISTS cast_sources)
+    file(STRINGS ${SOURCE_DIR}/${src} casts
+         REGEX "(qobject_cast|dynamic_cast|static_cast)<[^>]*Connection[ \t]*\\*")
+    foreach(line IN LISTS casts)
+        string(REGEX MATCH "_cast<[ \t]*(const[ \t]+)?([A-Za-z0-9_:]*Connection)[ \t]*\\*" _
+               "${line}")
+        set(class "${CMAKE_MATCH_2}") # MATCHES below overwrites CMAKE_MATCH_n
+        if(class AND NOT class MATCHES "(^|:)DeviceConnection$")
+            string(REPLACE ";" "" line "${line}") # a list separator to CMake
+            string(STRIP "${line}" line)
+            list(APPEND violations "${src}: cast to a concrete connection class: ${line}")
+        endif()
+    endforeach()
+endforeach()
+list(LENGTH cast_sources n_cast)
+
 if(violations)
     foreach(v IN LISTS violations)
         message(STATUS "violation: ${v}")
@@ -90,4 +114,4 @@ if(violations)
     message(FATAL_ERROR "${count} layering violations (listed above)")
 endif()
 list(LENGTH sources n)
-message(STATUS "layering: ${n} files checked, no violations")
+message(STATUS "layering: ${n} files checked (${n_cast} for connection casts), no violations")

@@ -19,10 +19,16 @@ foreach(expected
         "widgets/motion/jogpanel.cpp: client code includes the device side: #include \"simulation/"
         "widgets/motion/jogpanel.cpp: includes an upper layer"
         "devices/movingcap/movingcapdrive.cpp: includes an upper layer"
-        "morse/decode/decoder.cpp: QCustomPlot below widgets/")
+        "morse/decode/decoder.cpp: QCustomPlot below widgets/"
+        "widgets/motion/jogpanel.cpp: cast to a concrete connection class: auto *refgo"
+        "app/cli/commands_bad.cpp: cast to a concrete connection class: const auto *node")
     string(FIND "${text}" "${expected}" pos)
     if(pos EQUAL -1)
         message(FATAL_ERROR "the layer check missed: ${expected}\nits output:\n${text}")
     endif()
 endforeach()
+string(FIND "${text}" "auto *device = qobject_cast<db::DeviceConnection" pos)
+if(NOT pos EQUAL -1)
+    message(FATAL_ERROR "the layer check refused a cast to DeviceConnection:\n${text}")
+endif()
 message(STATUS "layer check self-test: every planted violation found")

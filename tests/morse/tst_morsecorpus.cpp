@@ -9,7 +9,7 @@
 // >= 99 % of the cases confident no later than two message periods after the first complete
 // message began, periods counted as sent, i.e. before the third message begins: with jitter the
 // first two messages can last longer than two nominal periods). Other conditions (drift, duty
-// error) have no target in the issue: they assert that no case is ever confident in a wrong
+// error) have no required rate: they assert that no case is ever confident in a wrong
 // address, and drift a floor that guards the level tracking.
 //
 // Decodability (CorpusCondition::minSamplesPerUnit): a dit shorter than a frame cannot be told
@@ -51,7 +51,7 @@ private slots:
         row("jitter 30% + noise 6 dB", { {}, 0.30, 6.0, 0.0, 0.0, 0.0, 3.0 }, 100, 0.99, 0.99);
         row("jitter 30%", { {}, 0.30, kInf, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
         row("noise 6 dB", { {}, 0.0, 6.0, 0.0, 0.0, 0.0, 3.0 }, 50, 0.99, 0.99);
-        // No target in the issue; a guard for the slicer's drift tracking (30/30 and 30/30
+        // No required rate; a guard for the slicer's drift tracking (30/30 and 30/30
         // measured; 29/30 and 26/30 before the levels tracked the slope).
         row("drift and auto exposure, 20 dB", { {}, 0.0, 20.0, 0.01, 0.3, 0.0, 2.0 }, 30, 0.95,
             0.9);
@@ -62,9 +62,10 @@ private slots:
         // 23/30 and 16/30 without the edge uncertainty too; 20/30 and 10/30 without the fit.
         row("drift and auto exposure, 6 dB", { {}, 0.0, 6.0, 0.01, 0.3, 0.0, 3.0 }, 30, 0.8, 0.6);
         // Messages back to back (no pause, only a letter gap after ':'), streamed in 20 ms
-        // chunks (CorpusCondition::chunkSeconds). No target in the issue (the manual gives no
-        // pause); a guard for the grammar that reads several messages in one stretch: 30/30 and
-        // 30/30 clean, 30/30 and 29/30 with jitter and noise measured; none decoded before.
+        // chunks (CorpusCondition::chunkSeconds). No required rate (no pause between
+        // messages is defined); a guard for the grammar that reads several messages in one stretch:
+        // 30/30 and 30/30 clean, 30/30 and 29/30 with jitter and noise measured; none decoded
+        // before.
         const std::vector<double> rates = CorpusCondition().rates;
         row("back to back", { {}, 0.0, kInf, 0.0, 0.0, 0.0, 2.0, rates, 3.0, 0.02 }, 30, 1.0, 0.99);
         row("back to back, jitter 30% + noise 6 dB",

@@ -2,9 +2,9 @@
 
 // The command model over Cia402Axis on a test rig (rig.h: the simulated MovingCap in-process,
 // over RefGo or over CANopen), shared by the motion tests.
+#include "driverig.h"
 #include "motion/cia402axis.h"
 #include "motion/motionaxis.h"
-#include "rig.h"
 
 #include <memory>
 
@@ -29,7 +29,7 @@ inline std::unique_ptr<MotionRig> makeMotionRig(const QString &kind, double maxV
         return nullptr;
     a->cia = std::make_unique<Cia402Axis>(a->rig->connection.get());
     a->cia->setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor);
-    if (!awaitReply(a->cia->initialize()).ok())
+    if (!await(a->cia->initialize()).ok())
         return nullptr;
     a->axis = std::make_unique<MotionAxis>(a->cia.get());
     AxisConfig c;

@@ -46,7 +46,7 @@ private Q_SLOTS:
         QVERIFY(a);
         DriveSupervision s(a->rig->connection.get());
         QCOMPARE(s.mode(), DriveSupervision::Mode::None);
-        const auto armed = awaitReply(s.arm());
+        const auto armed = await(s.arm());
         QCOMPARE(armed.error().kind(), Error::Kind::NotSupported);
         QVERIFY(s.description().contains(QLatin1String("no drive-side supervision")));
     }
@@ -59,14 +59,14 @@ private Q_SLOTS:
         QCOMPARE(s.mode(), DriveSupervision::Mode::Guarding); // the MovingCap has no 1016h
         QVERIFY2(s.description().contains(QLatin1String("drive stops within 500 ms")),
                  qPrintable(s.description()));
-        QVERIFY(awaitReply(s.arm()).ok());
+        QVERIFY(await(s.arm()).ok());
         QVERIFY(s.isArmed());
         QCOMPARE(value(*a->rig, 0x100C), qint64(DriveSupervision::kPeriodMs));
         QCOMPARE(value(*a->rig, 0x100D), qint64(DriveSupervision::kLifeTimeFactor));
         QCOMPARE(value(*a->rig, 0x6007), qint64(DriveSupervision::kAbortQuickStop));
         const auto at = canopen::networkNodeOf(a->rig->connection.get());
         QVERIFY(at.network->guarding()->isGuarding(at.node));
-        QVERIFY(awaitReply(s.disarm()).ok());
+        QVERIFY(await(s.disarm()).ok());
         QVERIFY(!s.isArmed());
         QCOMPARE(value(*a->rig, 0x100C), qint64(0));
         QCOMPARE(value(*a->rig, 0x100D), qint64(0));
@@ -84,7 +84,7 @@ private Q_SLOTS:
         QTRY_COMPARE(at.network->monitor()->consumerTime(at.node), 100);
         QTRY_VERIFY(at.network->monitor()->isAlive(at.node));
         QSignalSpy lost(rig->connection.get(), &DeviceConnection::supervisionLost);
-        QVERIFY(awaitReply(rig->connection->write({ 0x1017, 0 }, 0)).ok()); // falls silent
+        QVERIFY(await(rig->connection->write({ 0x1017, 0 }, 0)).ok()); // falls silent
         QVERIFY(lost.wait(2000));
         QVERIFY2(lost.at(0).at(0).toString().contains(
                      QLatin1String("heartbeat lost: node 50 silent for more than 100 ms")),
@@ -128,7 +128,7 @@ private Q_SLOTS:
         auto a = makeMotionRig(QStringLiteral("canopen"), 50000);
         QVERIFY(a);
         DriveSupervision s(a->rig->connection.get());
-        QVERIFY(awaitReply(s.arm()).ok());
+        QVERIFY(await(s.arm()).ok());
         QVERIFY(powerOn(a->axis.get()));
         // An unbounded jog: only the drive-side supervision can stop it.
         MotionCommand jog(a->axis.get(), CommandKind::MoveVelocity);

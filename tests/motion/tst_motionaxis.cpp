@@ -43,7 +43,7 @@ class TestMotionAxis : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void absoluteThenAdditive_data() // S-09, the example, over each transport
+    void absoluteThenAdditive_data() // S-09 over each transport
     {
         QTest::addColumn<QString>("kind");
         QTest::newRow("sim") << QStringLiteral("sim");

@@ -1,18 +1,20 @@
 // ParameterBackup when reads fail, and the rules that keep a partial read from passing for a
 // backup: no complete set (result()) unless every object was read, the class of the failure
 // from its most common cause, an identity that was not read is unknown (never 0 or the
-// description's), and a restore of nothing never stores. Over an AccessConnection into the
+// description's), and a restore of nothing never stores. Over a fake connection into the
 // simulated MovingCap with per-object read failures.
 #include "devices/movingcap/movingcapdrive.h"
+#include "fakeconnection.h"
 #include "parameters/parameterrunner.h"
 #include "resources/builtindescriptions.h"
-#include "tests/core/accessconnection.h"
+#include "wait.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
 using namespace db;
-using db::test::AccessConnection;
+using db::test::FakeConnection;
+using db::test::runToEnd;
 
 namespace {
 
@@ -25,36 +27,30 @@ struct Rig
 {
     Rig()
         : drive(resources::movingCapDictionary())
-        , connection(
-              drive.dictionary(),
-              [this](ObjectAddress a) -> Result<QVariant> {
-                  if (const auto it = failures.find(a); it != failures.end())
-                      return it.value();
-                  if (const auto it = answers.find(a); it != answers.end())
-                      return it.value();
-                  return drive.read(a);
-              },
-              [this](ObjectAddress a, const QVariant &v) { return drive.write(a, v); })
     {
+        connection.setModel(
+            [this](ObjectAddress a) -> Result<QVariant> {
+                if (const auto it = failures.find(a); it != failures.end())
+                    return it.value();
+                if (const auto it = answers.find(a); it != answers.end())
+                    return it.value();
+                return drive.read(a);
+            },
+            [this](ObjectAddress a, const QVariant &v) { return drive.write(a, v); });
+        connection.setDictionary(drive.dictionary());
+        connection.setCapabilities(DeviceConnection::Capability::StoreNonVolatile);
+        connection.immediate = true;
         connection.open();
     }
     sim::MovingCapDrive drive;
     QHash<ObjectAddress, Error> failures;
     QHash<ObjectAddress, QVariant> answers; // answers instead of the drive's value
-    AccessConnection connection;
+    FakeConnection connection;
 };
 
 Error malformed()
 {
     return Error(Error::Kind::Malformed, QStringLiteral("answer does not belong to the request"));
-}
-
-template<typename Runner>
-bool runToEnd(Runner *runner)
-{
-    QSignalSpy spy(runner, &Runner::finished);
-    runner->start();
-    return spy.wait(5000) && spy.size() == 1;
 }
 
 } // namespace
@@ -128,9 +124,11 @@ void TestParameterBackup::nothingReadIsAFailure()
     QVERIFY(backup.partialSet().isEmpty());
 
     // A description without a readable object: nothing to back up is no backup either.
-    AccessConnection bare(
-        ObjectDictionary(), [](ObjectAddress) { return Result<QVariant>(0); },
-        [](ObjectAddress, const QVariant &) { return Result<void>(); });
+    FakeConnection bare;
+    bare.setModel([](ObjectAddress) { return Result<QVariant>(0); },
+                  [](ObjectAddress, const QVariant &) { return Result<void>(); });
+    bare.setCapabilities(DeviceConnection::Capability::StoreNonVolatile);
+    bare.immediate = true;
     bare.open();
     ParameterBackup none(&bare);
     QVERIFY(runToEnd(&none));
@@ -239,7 +237,7 @@ void TestParameterBackup::restoreOfNothingNeverStores()
     QVERIFY(!report.stored);
     QCOMPARE(report.error.kind(), Error::Kind::InvalidArgument);
     QVERIFY(report.summary().contains(QLatin1String("nothing to restore")));
-    QCOMPARE(rig.connection.writes, 0);
+    QCOMPARE(rig.connection.writeCount, 0);
 }
 
 QTEST_GUILESS_MAIN(TestParameterBackup)

@@ -2,10 +2,12 @@
 // RefGo object model) and a simulated CANopen node (PDO objects), with the failure modes
 // named in each test.
 #include "canopen/device/simulatednode.h"
+#include "canopen/storesignatures.h"
 #include "devices/movingcap/movingcapdrive.h"
+#include "fakeconnection.h"
 #include "parameters/parameterrunner.h"
 #include "resources/builtindescriptions.h"
-#include "tests/core/accessconnection.h"
+#include "wait.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -13,7 +15,8 @@
 #include <memory>
 
 using namespace db;
-using db::test::AccessConnection;
+using db::test::FakeConnection;
+using db::test::runToEnd;
 
 namespace {
 
@@ -22,19 +25,26 @@ QVariant u32(quint32 v)
     return QVariant::fromValue<qulonglong>(v);
 }
 
-// The simulated MovingCap behind an AccessConnection, connected.
+// The simulated MovingCap behind a fake connection that answers at once, connected; it stores
+// and restores defaults as a CiA 301 device does (1010h / 1011h).
+void attach(FakeConnection &connection, const ObjectDictionary &dictionary)
+{
+    connection.setDictionary(dictionary);
+    connection.setCapabilities(DeviceConnection::Capability::StoreNonVolatile);
+    connection.immediate = true;
+    connection.open();
+}
+
 struct MovingCapRig
 {
     MovingCapRig()
         : drive(resources::movingCapDictionary())
-        , connection(
-              drive.dictionary(), [this](ObjectAddress a) { return drive.read(a); },
-              [this](ObjectAddress a, const QVariant &v) { return drive.write(a, v); })
     {
-        connection.open();
+        connection.setModel(&drive);
+        attach(connection, drive.dictionary());
     }
     sim::MovingCapDrive drive;
-    AccessConnection connection;
+    FakeConnection connection;
 };
 
 // A CANopen node with the built-in test description (PDO objects 1400h-1A01h); every write
@@ -43,30 +53,19 @@ struct NodeRig
 {
     NodeRig()
         : node(resources::builtinDescription(QStringLiteral("drivebench_testnode")).value(), 5)
-        , connection(
-              node.dictionary(), [this](ObjectAddress a) { return node.read(a); },
-              [this](ObjectAddress a, const QVariant &v) { return node.write(a, v); })
     {
+        connection.setModel(&node);
         QObject::connect(&node, &canopen::SimulatedNode::objectWritten,
                          [this](ObjectAddress a, const QVariant &v) {
                              written.append(QStringLiteral("%1=%2").arg(
                                  a.toString(), QString::number(v.toULongLong(), 16)));
                          });
-        connection.open();
+        attach(connection, node.dictionary());
     }
     canopen::SimulatedNode node;
-    AccessConnection connection;
+    FakeConnection connection;
     QStringList written;
 };
-
-// start() never emits finished() itself, so the spy sees the one emission from the loop.
-template<typename Runner>
-bool runToEnd(Runner *runner)
-{
-    QSignalSpy spy(runner, &Runner::finished);
-    runner->start();
-    return spy.wait(5000) && spy.size() == 1;
-}
 
 } // namespace
 
@@ -155,13 +154,13 @@ void TestParameterRunner::oneTimeoutIsSkippedTwoInARowAreFatal()
     QCOMPARE(backup.failedAddresses(), QList<ObjectAddress> { ObjectAddress(0x6084, 0) });
 
     rig.connection.silent.insert({ 0x6085, 0 }); // a device that stopped answering
-    const int readsBefore = rig.connection.reads;
+    const int readsBefore = rig.connection.readCount;
     ParameterBackup dead(&rig.connection);
     dead.setAddresses({ { 0x6083, 0 }, { 0x6084, 0 }, { 0x6085, 0 }, { 0x6098, 0 } });
     QVERIFY(runToEnd(&dead));
     QCOMPARE(dead.result().error().kind(), Error::Kind::Timeout);
     QVERIFY(dead.result().error().message().contains(QLatin1String("stopped answering")));
-    QCOMPARE(rig.connection.reads - readsBefore, 3); // 6098:0 never asked
+    QCOMPARE(rig.connection.readCount - readsBefore, 3); // 6098:0 never asked
 }
 
 void TestParameterRunner::cancelDuringBackupGivesNoSet()
@@ -172,7 +171,7 @@ void TestParameterRunner::cancelDuringBackupGivesNoSet()
     int readsAtCancel = -1;
     connect(&backup, &ParameterBackup::progress, this, [&](int done, int) {
         if (done == 20) {
-            readsAtCancel = rig.connection.reads;
+            readsAtCancel = rig.connection.readCount;
             backup.cancel();
         }
     });
@@ -184,7 +183,7 @@ void TestParameterRunner::cancelDuringBackupGivesNoSet()
     QCOMPARE(set.error().kind(), Error::Kind::Cancelled);
     QVERIFY(set.error().message().contains(QLatin1String("20 of")));
     QTest::qWait(50); // nothing more may be sent or finish after a cancel
-    QCOMPARE(rig.connection.reads, readsAtCancel);
+    QCOMPARE(rig.connection.readCount, readsAtCancel);
     QCOMPARE(finished.size(), 1);
 }
 
@@ -292,7 +291,7 @@ void TestParameterRunner::restoreAgainstADriveThatRejectsSomeWrites()
 void TestParameterRunner::restoreReportsAMismatch()
 {
     MovingCapRig rig;
-    rig.connection.ignore.insert({ 0x6083, 0 }); // accepted, never applied
+    rig.connection.ignoreWrites.insert({ 0x6083, 0 }); // accepted, never applied
     ParameterSet set;
     set.insert({ { 0x6083, 0 }, QString(), DataType::Unsigned32, u32(2500), QString() });
     ParameterRestore restore(&rig.connection);
@@ -374,7 +373,7 @@ void TestParameterRunner::restoreFollowsThePdoSafeOrder()
 void TestParameterRunner::pdoThatCannotBeDisabledIsLeftAlone()
 {
     NodeRig rig;
-    rig.connection.reject.insert({ 0x1800, 1 });
+    rig.connection.rejectWrites.insert({ 0x1800, 1 });
     ParameterSet set;
     set.insert({ { 0x1017, 0 }, QString(), DataType::Unsigned16, u32(100), QString() });
     set.insert({ { 0x1A00, 1 }, QString(), DataType::Unsigned32, u32(0x60410010), QString() });
@@ -447,14 +446,14 @@ void TestParameterRunner::linkLossDuringRestoreStopsAndReports()
         if (done == 5)
             rig.connection.goAway();
     });
-    const int writesBefore = rig.connection.writes;
+    const int writesBefore = rig.connection.writeCount;
     QVERIFY(runToEnd(&restore));
     const RestoreReport &report = restore.report();
     QCOMPARE(report.error.kind(), Error::Kind::Disconnected);
     QCOMPARE(report.count(RestoreOutcome::Verified), 5);
     QCOMPARE(report.count(RestoreOutcome::Skipped), report.rows.size() - 5);
     QVERIFY(report.rows.at(5).reason.startsWith(QLatin1String("not attempted: ")));
-    QCOMPARE(rig.connection.writes - writesBefore, 5);
+    QCOMPARE(rig.connection.writeCount - writesBefore, 5);
     QVERIFY(!report.stored);
     QCOMPARE(report.storeReason, QStringLiteral("not stored: the restore stopped"));
 }

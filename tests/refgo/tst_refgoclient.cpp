@@ -1,9 +1,9 @@
 // Level 2: the RefGo engine over a scripted stream: expected TX, scripted RX (movingcap.md 3.8),
 // split answers, timeouts, late answers, garbage, wrong echoes, disconnects.
 
-#include "awaitreply.h"
 #include "refgo/refgoclient.h"
 #include "scriptedstream.h"
+#include "wait.h"
 
 #include <QtTest>
 

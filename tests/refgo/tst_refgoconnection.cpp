@@ -1,10 +1,10 @@
 // Level 2: RefgoConnection over a scripted stream: OR/OW with type conversion, missing ",OK",
 // unsupported types, raw commands, store, connect errors, lost link, auto-reconnect.
 
-#include "awaitreply.h"
 #include "parameters/parameterrunner.h"
 #include "refgo/refgoconnection.h"
 #include "scriptedstream.h"
+#include "wait.h"
 
 #include <QtTest>
 

@@ -3,11 +3,11 @@
 // clients, and RefgoConnection end to end against it. Floods: a client that never reads its
 // answers, and a peer whose answer never ends.
 
-#include "awaitreply.h"
 #include "refgo/device/refgoserver.h"
 #include "refgo/refgoclient.h"
 #include "refgo/refgoconnection.h"
 #include "transport/tcpstream.h"
+#include "wait.h"
 
 #include <QElapsedTimer>
 #include <QTcpServer>

@@ -5,11 +5,11 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "devices/movingcap/movingcapdrive.h"
+#include "peers.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"
 
 #include <QSignalSpy>
-#include <QTcpServer>
 #include <QtTest>
 
 using namespace db;
@@ -187,8 +187,9 @@ private Q_SLOTS:
 
     void unansweredReadCountsItsPeriodsAtStop()
     {
-        QTcpServer silent; // accepts, never answers: the first read waits for its time limit
-        QVERIFY(silent.listen(QHostAddress::LocalHost, 0));
+        // Accepts, never answers: the first read waits for its time limit.
+        test::RawPeer silent(test::RawPeer::Behaviour::Silent);
+        QVERIFY(silent.isListening());
         m_connection = connectTo(QStringLiteral("refgo://127.0.0.1:%1").arg(silent.serverPort()));
         QVERIFY(m_connection);
         PollingSource source(m_connection.get());

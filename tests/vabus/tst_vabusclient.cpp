@@ -3,6 +3,7 @@
 
 #include "scriptedstream.h"
 #include "vabus/vabusclient.h"
+#include "wait.h"
 
 #include <QSignalSpy>
 #include <QtTest>
@@ -10,6 +11,7 @@
 #include <memory>
 
 using namespace db;
+using db::test::await;
 using namespace db::vabus;
 
 namespace {
@@ -20,14 +22,6 @@ constexpr int kWaitMs = 5000;
 QByteArray hexBytes(const char *text)
 {
     return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
-}
-
-Result<QVariant> await(Reply *reply, int timeoutMs = kWaitMs)
-{
-    std::unique_ptr<Reply> owner(reply);
-    if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
 }
 
 } // namespace

@@ -3,12 +3,16 @@
 
 #include "scriptedstream.h"
 #include "vabus/vabusconnection.h"
+#include "wait.h"
 
+#include <QSignalSpy>
 #include <QtTest>
 
+#include <algorithm>
 #include <memory>
 
 using namespace db;
+using db::test::await;
 using namespace db::vabus;
 
 namespace {
@@ -16,14 +20,6 @@ namespace {
 QByteArray hexBytes(const char *text)
 {
     return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
-}
-
-Result<QVariant> await(Reply *reply, int timeoutMs = 5000)
-{
-    std::unique_ptr<Reply> owner(reply);
-    if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
 }
 
 ObjectDef parameter(quint16 number, quint8 dataSet, DataType type, int decimals,
@@ -177,6 +173,28 @@ private Q_SLOTS:
         QCOMPARE(await(reply).value(), QVariant(QStringLiteral("5.3.2 STO")));
         QCOMPARE(await(m_connection->write(ObjectAddress(999, 0), qlonglong(1))).error().kind(),
                  Error::Kind::NotSupported);
+    }
+
+    // The stream connection the VABus and RefGo connections share: the connected line says
+    // what the inverter does without traffic, a lost link is reported with its cause and,
+    // when asked for, reconnected; a user's close() stops that.
+    void lostLinkIsReportedAndReconnected()
+    {
+        QSignalSpy lines(m_connection, &DeviceConnection::logLine);
+        m_connection->setAutoReconnect(true, 10);
+        const Error lost(Error::Kind::Disconnected, QStringLiteral("scripted:0 reset"));
+        m_stream->drop(lost);
+        QCOMPARE(m_connection->state(), DeviceConnection::State::Disconnected);
+        QCOMPARE(m_connection->lastError(), lost);
+        QVERIFY(m_connection->isReconnectScheduled());
+        QVERIFY(test::waitUntil(m_connection, &DeviceConnection::stateChanged,
+                                [this] { return m_connection->isConnected(); }));
+        QVERIFY(std::any_of(lines.begin(), lines.end(), [](const QList<QVariant> &l) {
+            return l.at(0).toString().contains(QLatin1String("parameter 388"));
+        }));
+        m_stream->drop(lost);
+        m_connection->close();
+        QVERIFY(!m_connection->isReconnectScheduled());
     }
 
 private:

@@ -1,6 +1,6 @@
 // Level 4: the jog/motion panel offscreen against the in-process simulated MovingCap over
 // loopback RefGo (and CANopen for the heartbeat stop), driven with QTest input and asserted on
-// the simulator's axis. Every safety stop of issue 5 has a test here: button release, key
+// the simulator's axis. Every safety stop of the panel has a test here: button release, key
 // release (auto-repeat ignored), focus loss, window deactivation, disconnect, link loss,
 // heartbeat loss, watchdog expiry and Esc anywhere in the main window.
 #include "canopen/canopenconnection.h"
@@ -444,6 +444,7 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(panel->motionAxis()->state(), AxisState::Standstill, 5000);
         panel->startJog(+1);
         QTRY_VERIFY_WITH_TIMEOUT(demo.drive().axis().isMoving(), 5000);
+        window.setConfirmation([](const QString &) { return true; }); // "drive enabled: close?"
         window.disconnectCurrent();
         QTRY_COMPARE(window.currentConnection()->state(), DeviceConnection::State::Disconnected);
         // The quick stop went out before the link closed.
@@ -477,6 +478,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(demo.drive().axis().position() > 12000, 10000);
         QVERIFY(window.grab().save(file));
         panel->stopAll(QStringLiteral("screenshot taken"));
+        window.setConfirmation([](const QString &) { return true; }); // "drive enabled: quit?"
         window.close();
     }
 };

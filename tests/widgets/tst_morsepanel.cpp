@@ -2,7 +2,7 @@
 // through the same loader the main window injects (app/morse), played, and the panel must show
 // the frame, the plot with threshold and timeline, the text and the IP; "Connect" asks for
 // refgo://IP and its menu for canopen+slcan://IP?node=50. Undecodable input shows its reason.
-#include "../morse/ledvideo.h"
+#include "ledvideo.h"
 #include "morse/input/morseinput.h"
 #include "widgets/morse/morsepanel.h"
 

@@ -3,7 +3,7 @@
 // scrolls, the preview shows the region, a drawn rectangle becomes the region, stopping keeps
 // the result; no devices disable the camera controls with the reason; errors are shown.
 // With DRIVEBENCH_SCREENSHOT_DIR set, the live panel is saved there as morse-live.png.
-#include "../morse/ledvideo.h"
+#include "ledvideo.h"
 #include "widgets/morse/morselivesource.h"
 #include "widgets/morse/morsepanel.h"
 

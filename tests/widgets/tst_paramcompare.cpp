@@ -382,7 +382,6 @@ private Q_SLOTS:
             if (auto *dock = window.findChild<QDockWidget *>(QString::fromLatin1(name)))
                 dock->hide();
         }
-        QTest::qWait(50);
         window.resize(1400, 900);
         widgets::OdEditor *editor = window.odEditor();
         window.pages()->setCurrentWidget(editor);
@@ -402,7 +401,7 @@ private Q_SLOTS:
         view->scrollTo(at({ 0x1018, 4 }), QAbstractItemView::EnsureVisible);
         editor->model()->setData(editor->model()->indexOf({ 0x6083, 0 }, 4),
                                  QStringLiteral("50000")); // refused: outside 1 .. 20000
-        QTest::qWait(600); // let a refresh round and the repaint happen
+        QCoreApplication::processEvents(); // the refused cell's repaint
         QVERIFY(window.grab().save(dir + QStringLiteral("/screenshot-odeditor.png")));
 
         const auto original = backup(connection);
@@ -423,7 +422,7 @@ private Q_SLOTS:
                     - compare->model()->comparison().rows.begin() - 6),
                 0)),
             QAbstractItemView::PositionAtTop);
-        QTest::qWait(200);
+        QCoreApplication::processEvents(); // the scroll and the repaint
         QVERIFY(window.grab().save(dir + QStringLiteral("/screenshot-compare.png")));
 
         // The report of a restore with one refused row (not in docs/; for looking at it).
@@ -438,7 +437,7 @@ private Q_SLOTS:
         QVERIFY(restored.wait(10000));
         auto *report = compare->findChild<widgets::ParamCompareReport *>();
         QVERIFY(report);
-        QTest::qWait(200);
+        QCoreApplication::processEvents(); // the scroll and the repaint
         QVERIFY(report->grab().save(dir + QStringLiteral("/restore-report.png")));
         window.close();
     }

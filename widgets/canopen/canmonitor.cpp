@@ -1,8 +1,9 @@
 #include "canmonitor.h"
 
 #include "canmonitorlog.h"
-#include "canopen/canopenconnection.h"
+#include "canopen/cannetwork.h"
 #include "transport/canbus.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -109,7 +110,7 @@ QWidget *CanMonitor::createToolBar()
 QWidget *CanMonitor::createFilterBar()
 {
     auto *bar = new QWidget(this);
-    auto *row = new QHBoxLayout(bar);
+    auto *row = new FlowLayout(bar); // wraps when the monitor is narrow
     row->setContentsMargins(0, 0, 0, 0);
     m_idEdit = makeEdit(QStringLiteral("idFilter"), tr("580-5FF, 81-FF"),
                         tr("COB-IDs in hex: single ids and ranges, comma separated"), 10, bar);
@@ -127,17 +128,22 @@ QWidget *CanMonitor::createFilterBar()
     m_textEdit = makeEdit(QStringLiteral("textFilter"), tr("Search decoded text"),
                           tr("Text in the service or the CANopen reading"), 10, bar);
     m_textEdit->setFont(font());
-    const auto label = [bar](const QString &text) {
-        return new QLabel(text, bar);
+    // A label stays with its field when the row wraps.
+    const auto labelled = [bar](const QString &text, QWidget *field, QWidget *extra = nullptr) {
+        auto *pair = new QWidget(bar);
+        auto *layout = new QHBoxLayout(pair);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->addWidget(new QLabel(text, pair));
+        layout->addWidget(field, 1);
+        if (extra)
+            layout->addWidget(extra);
+        pair->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+        return pair;
     };
-    row->addWidget(label(tr("ID")));
-    row->addWidget(m_idEdit, 2);
-    row->addWidget(m_directionBox);
-    row->addWidget(label(tr("Object")));
-    row->addWidget(m_objectEdit, 1);
-    row->addWidget(label(tr("Data")));
-    row->addWidget(m_dataEdit, 2);
-    row->addWidget(m_textEdit, 3);
+    row->addWidget(labelled(tr("ID"), m_idEdit, m_directionBox));
+    row->addWidget(labelled(tr("Object"), m_objectEdit));
+    row->addWidget(labelled(tr("Data"), m_dataEdit));
+    row->addWidget(m_textEdit);
     for (QLineEdit *edit : { m_idEdit, m_objectEdit, m_dataEdit, m_textEdit })
         connect(edit, &QLineEdit::textChanged, this, &CanMonitor::applyFilter);
     connect(m_directionBox, &QComboBox::currentIndexChanged, this, &CanMonitor::applyFilter);
@@ -175,11 +181,12 @@ void CanMonitor::setupView()
     columns->resizeSection(CanMonitorModel::Node, width(prop, "Node"));
 }
 
-void CanMonitor::setConnection(canopen::CanopenConnection *connection)
+void CanMonitor::setConnection(DeviceConnection *connection)
 {
-    setBus(connection ? connection->bus() : nullptr);
-    if (connection)
-        m_model->decoder().setDictionary(connection->node(), connection->dictionary());
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    setBus(at ? at.network->bus() : nullptr);
+    if (at)
+        m_model->decoder().setDictionary(at.node, connection->dictionary());
 }
 
 void CanMonitor::setBus(CanBus *bus)

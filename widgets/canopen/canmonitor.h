@@ -4,7 +4,8 @@
 // Kickdrive-style filters (COB-ID ranges, direction, object index, data pattern with ??
 // wildcards, text), pause, clear, autoscroll and saving as a candump log.
 //
-// It receives a bus (or a CanopenConnection, for its bus and dictionary) and never creates one.
+// It receives a bus (or a connection to a CANopen node, for its network's bus and its dictionary)
+// and never creates one.
 // Pause freezes the table; frames keep being captured and appear on resume (CanMonitorModel).
 // Save writes the frames the filters let through, atomically (QSaveFile).
 
@@ -20,8 +21,8 @@ class QLineEdit;
 class QTableView;
 class QToolButton;
 
-namespace db::canopen {
-class CanopenConnection;
+namespace db {
+class DeviceConnection;
 }
 
 namespace db::widgets {
@@ -33,9 +34,10 @@ public:
     explicit CanMonitor(QWidget *parent = nullptr);
     ~CanMonitor() override;
 
-    // The connection's bus, with the connection's dictionary for its node. nullptr detaches;
-    // recorded frames stay until cleared. Not owned.
-    void setConnection(canopen::CanopenConnection *connection);
+    // The bus of the connection's CANopen network, with the connection's dictionary for its
+    // node. nullptr, or a connection that is on no CANopen network, detaches; recorded frames
+    // stay until cleared. Not owned.
+    void setConnection(DeviceConnection *connection);
     // A bare bus (no dictionary). Not owned; nullptr detaches.
     void setBus(CanBus *bus);
     CanBus *bus() const { return m_model->bus(); }

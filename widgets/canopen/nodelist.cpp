@@ -1,10 +1,10 @@
 #include "nodelist.h"
 
 #include "canopen/cannetwork.h"
-#include "canopen/canopenconnection.h"
 #include "canopen/nmtmaster.h"
 #include "nodelistmodel.h"
 #include "transport/canbus.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -49,7 +49,7 @@ NodeList::NodeList(QWidget *parent)
 
     m_broadcast->setObjectName(QStringLiteral("broadcast"));
     m_broadcast->setToolTip(tr("Send NMT commands to every node (node id 0)"));
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = new FlowLayout; // wraps in a narrow dock
     buttons->setContentsMargins(0, 0, 0, 0);
     buttons->setSpacing(2);
     const struct
@@ -78,7 +78,6 @@ NodeList::NodeList(QWidget *parent)
         buttons->addWidget(button);
         m_commandButtons.append(button);
     }
-    buttons->addStretch(1);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -99,15 +98,15 @@ NodeList::NodeList(QWidget *parent)
 
 NodeList::~NodeList() = default;
 
-void NodeList::setConnection(canopen::CanopenConnection *connection)
+void NodeList::setConnection(DeviceConnection *connection)
 {
-    if (!connection) {
+    const canopen::NetworkNode at = canopen::networkNodeOf(connection);
+    if (!at) {
         setNetwork(nullptr);
         return;
     }
     const DeviceIdentity &id = connection->dictionary().identity;
-    setNetwork(connection->network(), connection->node(),
-               id.productName.isEmpty() ? id.vendorName : id.productName);
+    setNetwork(at.network, at.node, id.productName.isEmpty() ? id.vendorName : id.productName);
 }
 
 void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,

@@ -14,9 +14,12 @@ class QCheckBox;
 class QTableView;
 class QToolButton;
 
+namespace db {
+class DeviceConnection;
+}
+
 namespace db::canopen {
 class CanNetwork;
-class CanopenConnection;
 class NmtMaster;
 } // namespace db::canopen
 
@@ -31,9 +34,9 @@ public:
     explicit NodeList(QWidget *parent = nullptr);
     ~NodeList() override;
 
-    // Nodes on the connection's bus, its own node first in mind (named after its
-    // description). nullptr detaches. Not owned.
-    void setConnection(canopen::CanopenConnection *connection);
+    // Nodes on the connection's CANopen network, its own node first in mind (named after its
+    // description). nullptr, or a connection on no CANopen network, detaches. Not owned.
+    void setConnection(DeviceConnection *connection);
     // The nodes of a network, ownNode (if any) listed before it is heard. Not owned; nullptr
     // detaches.
     void setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode = 0,

@@ -67,17 +67,47 @@ QColor connectionStateColor(DeviceConnection::State state)
     return inactiveColor();
 }
 
-QIcon connectionStateIcon(DeviceConnection::State state)
+QColor healthColor(ConnectionHealth::Status status)
+{
+    switch (status) {
+    case ConnectionHealth::Status::Responding:
+        return okColor();
+    case ConnectionHealth::Status::Connecting:
+    case ConnectionHealth::Status::WaitingForAnswer:
+    case ConnectionHealth::Status::NotResponding:
+        return warningColor();
+    case ConnectionHealth::Status::Failed:
+    case ConnectionHealth::Status::Lost:
+        return errorColor();
+    case ConnectionHealth::Status::Idle:
+    case ConnectionHealth::Status::ClosedByUser:
+        return inactiveColor();
+    }
+    return inactiveColor();
+}
+
+namespace {
+QIcon roundIcon(const QColor &color)
 {
     QPixmap pixmap(16, 16);
     pixmap.fill(Qt::transparent);
     QPainter p(&pixmap);
     p.setRenderHint(QPainter::Antialiasing);
-    const QColor color = connectionStateColor(state);
     p.setPen(QPen(color.darker(140), 1));
     p.setBrush(color);
     p.drawEllipse(QRectF(2.5, 2.5, 11, 11));
     return QIcon(pixmap);
+}
+} // namespace
+
+QIcon connectionStateIcon(DeviceConnection::State state)
+{
+    return roundIcon(connectionStateColor(state));
+}
+
+QIcon healthIcon(ConnectionHealth::Status status)
+{
+    return roundIcon(healthColor(status));
 }
 
 } // namespace db::widgets::style

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/connectionhealth.h"
 #include "core/deviceconnection.h"
 
 #include <QColor>
@@ -32,6 +33,9 @@ void setTextColor(QWidget *widget, const QColor &color);
 // A round icon in the colour of a connection state.
 QIcon connectionStateIcon(DeviceConnection::State state);
 QColor connectionStateColor(DeviceConnection::State state);
+// The colour and icon of what a connection's health says: green only while the device answers.
+QColor healthColor(ConnectionHealth::Status status);
+QIcon healthIcon(ConnectionHealth::Status status);
 
 } // namespace style
 } // namespace db::widgets

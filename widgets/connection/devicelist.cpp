@@ -1,8 +1,9 @@
 #include "devicelist.h"
 
+#include "widgets/common/flowlayout.h"
+
 #include "widgets/common/widgetstyle.h"
 
-#include <QHBoxLayout>
 #include <QListWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -44,13 +45,12 @@ DeviceList::DeviceList(QWidget *parent)
     m_list->setIconSize(QSize(16, 16));
     m_list->setUniformItemSizes(true);
 
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = new FlowLayout; // wraps when the dock is narrow (long translations)
     buttons->setSpacing(4);
     buttons->addWidget(m_addButton);
     buttons->addWidget(m_connectButton);
     buttons->addWidget(m_disconnectButton);
     buttons->addWidget(m_removeButton);
-    buttons->addStretch();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -89,6 +89,12 @@ void DeviceList::addConnection(DeviceConnection *connection)
             updateItem(i);
         updateActions();
     });
+    if (ConnectionHealth *health = ConnectionHealth::of(connection)) {
+        connect(health, &ConnectionHealth::statusChanged, this, [this, connection] {
+            if (QListWidgetItem *i = itemFor(connection))
+                updateItem(i);
+        });
+    }
     connect(connection, &QObject::destroyed, this, [this](QObject *object) {
         for (int row = 0; row < m_list->count(); ++row) {
             QListWidgetItem *i = m_list->item(row);
@@ -157,8 +163,10 @@ void DeviceList::updateItem(QListWidgetItem *item)
         return;
     const DeviceConnection::State state = c->state();
     item->setText(c->uri().toString());
-    item->setIcon(style::connectionStateIcon(state));
-    QString tip = tr("%1\nState: %2").arg(c->uri().toString(), stateName(state));
+    const ConnectionHealth *health = ConnectionHealth::of(c);
+    item->setIcon(health ? style::healthIcon(health->status()) : style::connectionStateIcon(state));
+    QString tip = tr("%1\nState: %2")
+                      .arg(c->uri().toString(), health ? health->description() : stateName(state));
     if (c->lastError().isError())
         tip += tr("\nLast error: %1").arg(c->lastError().toString());
     item->setToolTip(tip);

@@ -10,6 +10,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QPushButton>
 
 #include <cmath>
@@ -46,6 +47,7 @@ JogPanel::JogPanel(QWidget *parent)
     connect(m_enableButton, &QPushButton::clicked, this, &JogPanel::enableDrive);
     connect(m_disableButton, &QPushButton::clicked, this, &JogPanel::disableDrive);
     connect(m_resetButton, &QPushButton::clicked, this, &JogPanel::resetFault);
+    connect(m_stopReset, &QPushButton::clicked, this, &JogPanel::resetFault);
     connect(m_override, &QDoubleSpinBox::valueChanged, this, [this](double percent) {
         if (m_motion)
             m_motion->setVelocityOverride(percent);
@@ -171,6 +173,14 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
             r->deleteLater();
             onInitialized(r, generation);
         });
+        return;
+    }
+    if (!reply->ok()
+        && (reply->error().kind() == Error::Kind::Timeout
+            || reply->error().kind() == Error::Kind::Disconnected)) {
+        // Nothing answered: no limits from a drive that never replied (the description's
+        // defaults are not the drive's values). Read again once it answers.
+        m_limits->setText(tr("The drive did not answer: its limits are not known yet."));
         return;
     }
     // What the drive said about itself: its units, modes and limits.
@@ -305,7 +315,13 @@ void JogPanel::stopAll(const QString &reason)
 void JogPanel::noteStop(const QString &reason)
 {
     m_lastStopReason = reason;
-    setMessage(tr("Stopped: %1").arg(reason), style::warningColor());
+    if (m_motion && m_motion->state() == AxisState::ErrorStop)
+        setMessage(tr("Stopped: %1. The axis is in ErrorStop now and takes no motion command "
+                      "until it is reset: click Reset.")
+                       .arg(reason),
+                   style::warningColor());
+    else
+        setMessage(tr("Stopped: %1").arg(reason), style::warningColor());
     Q_EMIT stopped(reason);
 }
 

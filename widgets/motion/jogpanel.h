@@ -22,7 +22,7 @@ class Lamp;
 class MotionBlockBox;
 class MotionForm;
 
-// Moving an axis by hand (issue 5): enable/disable/reset, hold-to-run jog (buttons and keys),
+// Moving an axis by hand: enable/disable/reset, hold-to-run jog (buttons and keys),
 // step jog, the motion command form, status lamps, live position/velocity and the drive's
 // limits. The panel gets the device's axis from the axis factory (devices/axisfactory.h) and
 // builds a MotionAxis on it; it never creates transports.
@@ -68,8 +68,14 @@ public:
     // Null unless the connection's drive offers heartbeat consumption or node guarding.
     canopen::DriveSupervision *supervision() const { return m_driveSupervision.get(); }
     MotionForm *motionForm() const { return m_form; }
-    // Limits read from the drive (CiA 402: 607Dh, 607Fh/6080h, 60C5h, 6067h) once it answered.
+    // Limits read from the drive by its axis once it answered. When none of the axis's reads
+    // were answered nothing is limited by them and they are read again when the device answers
+    // (setDeviceResponding(true)).
     bool limitsKnown() const { return m_limitsKnown; }
+    // Whether the device answers requests (the main window's ConnectionHealth). While it does
+    // not, Enable, Jog and Step are disabled and the state shows why. True until told otherwise.
+    void setDeviceResponding(bool responding, const QString &why = {});
+    bool isDeviceResponding() const { return m_responding; }
 
     // +1 or -1 while a jog runs, else 0.
     int jogDirection() const { return m_jogDirection; }
@@ -123,6 +129,8 @@ private:
     QList<QMetaObject::Connection> m_connectionSignals;
     quint64 m_generation = 0; // which connection a late reply belongs to
     bool m_limitsKnown = false;
+    bool m_responding = true;
+    QString m_silentWhy;
     motion::AxisConfig m_config;
     QString m_positionUnit;
     QString m_velocityUnit;
@@ -137,6 +145,7 @@ private:
     QLabel *m_position = nullptr;
     QLabel *m_velocity = nullptr;
     QLabel *m_message = nullptr;
+    QPushButton *m_stopReset = nullptr; // "stopReset": leaves ErrorStop in one click
     QList<Lamp *> m_lamps;
     QDoubleSpinBox *m_jogVelocity = nullptr;
     QDoubleSpinBox *m_jogAcceleration = nullptr;

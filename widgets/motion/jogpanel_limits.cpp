@@ -24,6 +24,16 @@ void JogPanel::applyLimits()
     renderSupervision();
 }
 
+void JogPanel::setDeviceResponding(bool responding, const QString &why)
+{
+    const bool answeredAgain = responding && !m_responding;
+    m_responding = responding;
+    m_silentWhy = why;
+    if (answeredAgain && !m_limitsKnown && m_connection && m_connection->isConnected())
+        onInitialized(nullptr, m_generation);
+    render();
+}
+
 } // namespace db::widgets
 
 namespace db::widgets {

@@ -3,6 +3,7 @@
 
 #include "motionblockbox.h"
 #include "motionform.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/lamp.h"
 #include "widgets/common/widgetstyle.h"
 
@@ -67,10 +68,11 @@ void JogPanel::buildUi()
     m_resetButton = button(tr("Fault reset"), QStringLiteral("reset"), powerBox);
     m_state = new QLabel(tr("No drive"), powerBox);
     m_state->setObjectName(QStringLiteral("axisState"));
+    m_state->setWordWrap(true); // "not responding: ..." keeps the dock narrow
     QFont bold = m_state->font();
     bold.setBold(true);
     m_state->setFont(bold);
-    auto *powerRow = new QHBoxLayout;
+    auto *powerRow = new FlowLayout; // Fault reset wraps below in a narrow dock
     powerRow->addWidget(m_enableButton);
     powerRow->addWidget(m_disableButton);
     powerRow->addWidget(m_resetButton);
@@ -182,13 +184,21 @@ void JogPanel::buildUi()
     layout->addWidget(commandBox);
     layout->addWidget(m_blocks);
     layout->addWidget(limitsBox);
-    layout->addWidget(m_message);
+    // After a quick stop (Esc, Stop) the axis is in ErrorStop: the reason and the way out, here.
+    m_stopReset = button(tr("Reset"), QStringLiteral("stopReset"), this);
+    m_stopReset->setToolTip(tr("MC_Reset: leave ErrorStop so that the axis takes commands again"));
+    m_stopReset->hide();
+    auto *messageRow = new QHBoxLayout;
+    messageRow->addWidget(m_message, 1);
+    messageRow->addWidget(m_stopReset, 0, Qt::AlignTop);
+    layout->addLayout(messageRow);
     layout->addStretch();
 }
 
 void JogPanel::render()
 {
-    const bool have = m_cia && m_connection && m_connection->isConnected();
+    const bool linked = m_cia && m_connection && m_connection->isConnected();
+    const bool have = linked && m_responding;
     const AxisInterface::Status s = m_cia ? m_cia->status() : AxisInterface::Status {};
     const bool valid = have && s.valid;
     const bool on[LampCount] = { s.powered,
@@ -213,11 +223,14 @@ void JogPanel::render()
     QString state = tr("No drive");
     if (m_motion && have)
         state = axisStateName(m_motion->state());
+    else if (linked)
+        state = m_silentWhy.isEmpty() ? tr("Not responding") : m_silentWhy;
     else if (m_connection)
         state = tr("Not connected");
     m_state->setText(state);
     const bool fault = m_motion && m_motion->state() == AxisState::ErrorStop;
-    style::setTextColor(m_state, fault ? style::errorColor() : QColor());
+    style::setTextColor(m_state, fault || (linked && !have) ? style::errorColor() : QColor());
+    m_stopReset->setVisible(have && fault);
     for (QWidget *w :
          std::initializer_list<QWidget *> { m_enableButton, m_disableButton, m_resetButton,
                                             m_jogMinus, m_jogPlus, m_stepMinus, m_stepPlus })

@@ -1,5 +1,6 @@
 #include "motionform.h"
 
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QComboBox>
@@ -130,8 +131,8 @@ void MotionForm::buildUi()
     m_stop->setObjectName(QStringLiteral("stop"));
     m_stop->setToolTip(tr("MC_Stop: brake with the deceleration; other commands are refused "
                           "until standstill"));
-    auto *buttons = new QHBoxLayout;
-    buttons->addWidget(m_execute, 1);
+    auto *buttons = new FlowLayout; // Halt and Stop wrap below Execute in a narrow dock
+    buttons->addWidget(m_execute);
     buttons->addWidget(m_halt);
     buttons->addWidget(m_stop);
 

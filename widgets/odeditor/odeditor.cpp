@@ -6,6 +6,7 @@
 #include "odeditorfilter.h"
 #include "odeditormodel.h"
 #include "odeditorpoller.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QAction>
@@ -50,7 +51,7 @@ OdEditor::OdEditor(QWidget *parent)
     , m_hex(new QCheckBox(tr("He&x"), this))
     , m_ram(new QCheckBox(tr("Write to RAM"), this))
     , m_rate(new QComboBox(this))
-    , m_tools(new QHBoxLayout)
+    , m_tools(new FlowLayout)
     , m_view(new QTreeView(this))
     , m_details(new OdBitFieldView(this))
     , m_counts(new QLabel(this))
@@ -83,12 +84,16 @@ OdEditor::OdEditor(QWidget *parent)
     byIndexButton->setText(tr("By index…"));
     byIndexButton->setToolTip(tr("Read or write an object the device description does not list"));
 
-    m_tools->addWidget(m_filterEdit, 1);
+    m_tools->addWidget(m_filterEdit); // expanding: takes the room left in its row
     m_tools->addWidget(m_hex);
     m_tools->addWidget(m_ram);
-    m_tools->addSpacing(8);
-    m_tools->addWidget(new QLabel(tr("Refresh:"), this));
-    m_tools->addWidget(m_rate);
+    // The label stays with its box when the row wraps.
+    auto *rate = new QWidget(this);
+    auto *rateRow = new QHBoxLayout(rate);
+    rateRow->setContentsMargins(0, 0, 0, 0);
+    rateRow->addWidget(new QLabel(tr("Refresh:"), rate));
+    rateRow->addWidget(m_rate);
+    m_tools->addWidget(rate);
     m_tools->addWidget(readAllButton);
     m_tools->addWidget(byIndexButton);
 
@@ -254,7 +259,6 @@ void OdEditor::addToolActions(const QString &title, const QList<QAction *> &acti
     auto *menu = new QMenu(button);
     menu->addActions(actions);
     button->setMenu(menu);
-    m_tools->addSpacing(8);
     m_tools->addWidget(button);
 }
 

@@ -8,13 +8,13 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
-class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QTreeView;
 
 namespace db::widgets {
 
+class FlowLayout;
 class OdBitFieldView;
 class OdEditorDelegate;
 class OdEditorFilter;
@@ -99,7 +99,7 @@ private:
     QCheckBox *m_hex;
     QCheckBox *m_ram;
     QComboBox *m_rate;
-    QHBoxLayout *m_tools;
+    FlowLayout *m_tools; // wraps on a narrow window
     QTreeView *m_view;
     OdBitFieldView *m_details;
     QLabel *m_counts;

@@ -2,6 +2,7 @@
 
 #include "paramcomparemodel.h"
 #include "paramcomparereport.h"
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -81,18 +82,16 @@ ParamCompareView::ParamCompareView(QWidget *parent)
     top->addWidget(m_reread);
     top->addSpacing(8);
     top->addWidget(m_fileLabel, 1);
-    auto *second = new QHBoxLayout;
-    second->addWidget(m_counts, 1);
+    auto *second = new FlowLayout; // rows wrap on a narrow window
+    second->addWidget(m_counts);
     second->addWidget(m_onlyDiff);
     second->addWidget(m_withDefaults);
     second->addWidget(m_hex);
-    auto *bottom = new QHBoxLayout;
+    auto *bottom = new FlowLayout;
     bottom->addWidget(m_selectDiff);
     bottom->addWidget(m_selectNone);
-    bottom->addSpacing(12);
     bottom->addWidget(m_progress);
     bottom->addWidget(m_cancel);
-    bottom->addStretch();
     bottom->addWidget(m_store);
     bottom->addWidget(m_restoreButton);
     auto *layout = new QVBoxLayout(this);

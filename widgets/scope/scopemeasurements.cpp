@@ -32,6 +32,7 @@ ScopeMeasurements::ScopeMeasurements(QWidget *parent)
     layout->addWidget(m_table, 1);
     m_summary->setObjectName(QStringLiteral("cursorSummary"));
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setWordWrap(true); // the plot beside the controls fits a laptop screen
     m_table->setObjectName(QStringLiteral("measurementTable"));
     m_table->setHorizontalHeaderLabels({ tr("Channel"), tr("at A"), tr("at B"), tr("B − A"),
                                          tr("Mean"), tr("RMS"), tr("Min"), tr("Max"), tr("P-P") });

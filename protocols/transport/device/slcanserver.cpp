@@ -1,12 +1,12 @@
 #include "slcanserver.h"
 
+#include "streamserver.h"
 #include "transport/slcancodec.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QHash>
 #include <QLoggingCategory>
-#include <QTcpServer>
 #include <QTcpSocket>
 
 namespace {
@@ -37,22 +37,21 @@ struct SlcanServer::Private
         slcan::Decoder decoder;
         bool channelOpen = false;
         bool timestamps = false;
-        ClientThrottle *throttle = nullptr; // child of the socket
     };
 
+    Private()
+        : tcp(Tr::tr("slcan server"), lcSlcanServer())
+    { }
+
     SlcanServer *q = nullptr;
-    QTcpServer server;
+    StreamServer tcp;
     QHash<QTcpSocket *, Client> clients;
     TransmitAck ack = TransmitAck::Lawicel;
     bool requireOpen = false;
     QElapsedTimer clock;
-    ClientThrottle::Limits limits;
-    qint64 peakQueued = 0;
     qint64 dropped = 0;
 
-    void accept();
     void read(QTcpSocket *socket);
-    void drop(QTcpSocket *socket, qint64 queued, int pausedMs);
     QByteArray answer(Client &client, const slcan::Message &m);
     bool receives(const Client &client) const { return !requireOpen || client.channelOpen; }
 };
@@ -62,8 +61,17 @@ SlcanServer::SlcanServer(QObject *parent)
     , d(std::make_unique<Private>())
 {
     d->q = this;
+    d->tcp.setParent(this); // the client sockets are found among the server's children
     d->clock.start();
-    connect(&d->server, &QTcpServer::newConnection, this, [this] { d->accept(); });
+    connect(&d->tcp, &StreamServer::clientConnected, this, [this](QTcpSocket *socket) {
+        d->clients.insert(socket, {});
+        Q_EMIT clientConnected();
+    });
+    connect(&d->tcp, &StreamServer::readable, this, [this](QTcpSocket *s) { d->read(s); });
+    connect(&d->tcp, &StreamServer::clientGone, this, [this](QTcpSocket *socket) {
+        if (d->clients.remove(socket))
+            Q_EMIT clientDisconnected();
+    });
 }
 
 SlcanServer::~SlcanServer()
@@ -73,61 +81,44 @@ SlcanServer::~SlcanServer()
 
 Result<void> SlcanServer::listen(quint16 port, const QHostAddress &address)
 {
-    if (d->server.isListening())
-        return Error(Error::Kind::Busy,
-                     Tr::tr("slcan server already listens on port %1").arg(d->server.serverPort()));
-    if (!d->server.listen(address, port))
-        return Error(Error::Kind::Io,
-                     Tr::tr("slcan server cannot listen on %1:%2: %3")
-                         .arg(address.toString())
-                         .arg(port)
-                         .arg(d->server.errorString()));
-    qCInfo(lcSlcanServer).noquote()
-        << "slcan server listening on" << address.toString() << d->server.serverPort();
-    return {};
+    return d->tcp.listen(port, address);
 }
 
 quint16 SlcanServer::port() const
 {
-    return d->server.serverPort();
+    return d->tcp.port();
 }
 
 bool SlcanServer::isListening() const
 {
-    return d->server.isListening();
+    return d->tcp.isListening();
 }
 
 void SlcanServer::close()
 {
-    d->server.close();
-    dropClients();
+    d->clients.clear();
+    d->tcp.close();
 }
 
 int SlcanServer::dropClients()
 {
-    const auto sockets = d->clients.keys();
     d->clients.clear();
-    for (QTcpSocket *socket : sockets) {
-        socket->disconnect(this);
-        socket->abort();
-        socket->deleteLater();
-    }
-    return int(sockets.size());
+    return d->tcp.dropClients();
 }
 
 int SlcanServer::clientCount() const
 {
-    return int(d->clients.size());
+    return d->tcp.clientCount();
 }
 
 void SlcanServer::setClientLimits(const ClientThrottle::Limits &limits)
 {
-    d->limits = limits;
+    d->tcp.setClientLimits(limits);
 }
 
 qint64 SlcanServer::peakQueuedBytes() const
 {
-    return d->peakQueued;
+    return d->tcp.peakQueuedBytes();
 }
 
 qint64 SlcanServer::droppedFrames() const
@@ -160,14 +151,13 @@ int SlcanServer::send(const QCanBusFrame &frame)
     for (auto it = d->clients.begin(); it != d->clients.end(); ++it) {
         if (!d->receives(it.value()))
             continue;
-        if (!it->throttle->mayRead()) {
+        if (!d->tcp.mayRead(it.key())) {
             ++d->dropped; // a client that does not read must not grow the server
             continue;
         }
         const QByteArray line = it->timestamps ? slcan::encodeFrame(frame, stamp) : plain;
         qCDebug(lcSlcanServerRaw) << "server ->" << line;
-        it.key()->write(line);
-        d->peakQueued = qMax(d->peakQueued, it->throttle->queued());
+        d->tcp.write(it.key(), line);
         ++count;
     }
     return count;
@@ -179,33 +169,10 @@ void SlcanServer::sendRaw(const QByteArray &bytes)
         it.key()->write(bytes);
 }
 
-void SlcanServer::Private::accept()
-{
-    while (QTcpSocket *socket = server.nextPendingConnection()) {
-        socket->setParent(q);
-        socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        Client client;
-        client.throttle = new ClientThrottle(socket, limits);
-        clients.insert(socket, client);
-        qCDebug(lcSlcanServer) << "slcan client connected from port" << socket->peerPort();
-        QObject::connect(socket, &QTcpSocket::readyRead, q, [this, socket] { read(socket); });
-        QObject::connect(client.throttle, &ClientThrottle::resumed, q,
-                         [this, socket] { read(socket); });
-        QObject::connect(client.throttle, &ClientThrottle::stalled, q,
-                         [this, socket](qint64 queued, int ms) { drop(socket, queued, ms); });
-        QObject::connect(socket, &QTcpSocket::disconnected, q, [this, socket] {
-            if (clients.remove(socket))
-                Q_EMIT q->clientDisconnected();
-            socket->deleteLater();
-        });
-        Q_EMIT q->clientConnected();
-    }
-}
-
 void SlcanServer::Private::read(QTcpSocket *socket)
 {
     auto it = clients.find(socket);
-    if (it == clients.end() || !it->throttle->mayRead())
+    if (it == clients.end() || !tcp.mayRead(socket))
         return; // a paused client's requests wait in its socket and the kernel
     const QByteArray bytes = socket->read(ClientThrottle::kReadSliceBytes);
     qCDebug(lcSlcanServerRaw) << "server <-" << bytes;
@@ -218,24 +185,13 @@ void SlcanServer::Private::read(QTcpSocket *socket)
             frames.append(m.frame);
         reply += answer(it.value(), m);
     }
-    if (!reply.isEmpty()) {
-        socket->write(reply);
-        peakQueued = qMax(peakQueued, it->throttle->queued());
-    }
+    if (!reply.isEmpty())
+        tcp.write(socket, reply);
     for (const QCanBusFrame &frame : std::as_const(frames)) {
         Q_EMIT q->frameReceived(frame);
         if (!clients.contains(socket))
             break; // the device closed the server from the slot
     }
-}
-
-void SlcanServer::Private::drop(QTcpSocket *socket, qint64 queued, int pausedMs)
-{
-    if (!clients.remove(socket))
-        return;
-    qCWarning(lcSlcanServer).noquote()
-        << "slcan server:" << ClientThrottle::drop(socket, q, queued, pausedMs);
-    Q_EMIT q->clientDisconnected();
 }
 
 // Spec 4.2, simulator recommendations.

@@ -6,6 +6,7 @@
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "transport/tcpstream.h"
 #include "vabus/vabusclient.h"
+#include "wait.h"
 
 #include <QSignalSpy>
 #include <QTcpSocket>
@@ -14,18 +15,11 @@
 #include <memory>
 
 using namespace db;
+using db::test::await;
 using namespace db::vabus;
 using db::bonfiglioli::SimulatedAcu;
 
 namespace {
-
-Result<QVariant> await(Reply *reply, int timeoutMs = 5000)
-{
-    std::unique_ptr<Reply> owner(reply);
-    if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
-}
 
 // Parameters of the index groups (selected through 1200/1201 and the other index parameters).
 bool isIndexed(quint16 p)

@@ -233,14 +233,20 @@ void TstSimulatedNm17x::positioningWithLoop()
     line.send(0x000, "017F");
     line.take();
     line.send(0x37F, "E803000000000300"); // setpoint 10.00 mm with release
+    // The position is sampled at every frame the display sends and every check of the wait.
     double lowest = 1e9;
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 10000 && !(d->statusWord() & status::InPosition)) {
-        QTest::qWait(5);
+    const auto sample = [&] {
         lowest = qMin(lowest, double(d->position()));
-    }
-    QVERIFY(d->statusWord() & status::InPosition);
+    };
+    const auto sampling = connect(d, &SimulatedNm17x::transmit, this, sample);
+    const bool inPosition = QTest::qWaitFor(
+        [&] {
+            sample();
+            return bool(d->statusWord() & status::InPosition);
+        },
+        10000);
+    disconnect(sampling);
+    QVERIFY(inPosition && (d->statusWord() & status::InPosition));
     QCOMPARE(lowest, 900.0); // loop point 10.00 - 1.00 mm, then up to the target
     QCOMPARE(d->position(), 1000);
     QTRY_VERIFY(!(d->statusWord() & status::Moving));

@@ -1,7 +1,7 @@
 #pragma once
 
 // Renders a video of a simulated LED for the Morse tests: a bright round blob that blinks with
-// a generated Morse signal (protocols/morse signalgenerator, exposure blur and frame times
+// a generated Morse signal (morse/synth signal generator, exposure blur and frame times
 // included) on a textured, noisy grey background. Deterministic per seed.
 #include "morse/input/videowriter.h"
 #include "morse/synth/signalgenerator.h"

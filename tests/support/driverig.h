@@ -1,12 +1,16 @@
 #pragma once
 
-// Test rig: the simulated MovingCap (DemoDrive, real time) reached in-process ("sim"), over RefGo
-// on loopback ("refgo") or over CANopen SDO through the SLCAN door ("canopen").
+// Test rig: the simulated MovingCap (DemoDrive, real time) reached in-process ("sim", through a
+// FakeConnection that answers at once), over RefGo on loopback ("refgo") or over CANopen SDO
+// through the SLCAN door ("canopen"). Header-only: tests that use it link drivebench_appcommon,
+// drivebench_movingcap_sim and drivebench_resources.
 
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
+#include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
-#include "simconnection.h"
+#include "wait.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -19,7 +23,7 @@ struct Rig
 {
     std::unique_ptr<app::DemoDrive> demo;
     std::shared_ptr<DeviceConnection> connection;
-    SimConnection *sim = nullptr; // set for "sim"
+    FakeConnection *sim = nullptr; // set for "sim"
 
     sim::MovingCapDrive &drive() { return demo->drive(); }
 };
@@ -30,7 +34,11 @@ inline std::unique_ptr<Rig> makeRig(const QString &kind,
     auto rig = std::make_unique<Rig>();
     rig->demo = std::make_unique<app::DemoDrive>(initial);
     if (kind == QLatin1String("sim")) {
-        auto c = std::make_shared<SimConnection>(&rig->demo->drive());
+        auto c = std::make_shared<FakeConnection>(QStringLiteral("refgo://127.0.0.1"));
+        c->setProtocolKey(QStringLiteral("sim"));
+        c->setDictionary(rig->demo->drive().dictionary());
+        c->setModel(&rig->demo->drive());
+        c->immediate = true;
         rig->sim = c.get();
         rig->connection = c;
     } else {
@@ -51,21 +59,10 @@ inline std::unique_ptr<Rig> makeRig(const QString &kind,
         rig->connection->setDictionary(resources::movingCapDictionary());
     }
     rig->connection->open();
-    if (!QTest::qWaitFor([&] { return rig->connection->isConnected(); }, 5000))
+    if (!waitUntil(rig->connection.get(), &DeviceConnection::stateChanged,
+                   [&] { return rig->connection->isConnected(); }))
         return nullptr;
     return rig;
-}
-
-// Waits for a reply (owned here) and returns its result.
-inline Result<QVariant> awaitReply(Reply *reply, int timeoutMs = 5000)
-{
-    std::unique_ptr<Reply> owner(reply);
-    QSignalSpy spy(reply, &Reply::finished);
-    if (!reply->isFinished() || spy.isEmpty())
-        spy.wait(timeoutMs);
-    if (!reply->isFinished())
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
 }
 
 } // namespace db::test

@@ -1,0 +1,262 @@
+// The main window on a 1366x768 laptop screen, in English and German, with the demo drive
+// connected over RefGo and CANopen: its minimum size fits, and the controls that stop or move the
+// drive are inside the window, not cut off at its right edge. Also the toolbar, View → Reset
+// Layout and the welcome page shown while no device is listed.
+#include "common/demodrive.h"
+#include "common/protocols.h"
+#include "devices/movingcap/movingcapdrive.h"
+#include "mainwindow.h"
+#include "settingsdialog.h"
+#include "translations/language.h"
+#include "widgets/connection/devicelist.h"
+#include "widgets/connection/drivestatuspanel.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/scope/scopepage.h"
+
+#include <QAbstractScrollArea>
+#include <QApplication>
+#include <QDockWidget>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QStackedWidget>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolBar>
+
+using namespace db;
+using db::gui::MainWindow;
+
+namespace {
+constexpr int kLaptopWidth = 1366;
+constexpr int kLaptopHeight = 768;
+// A desktop's title bar and panel take some of the 768 rows.
+constexpr int kUsableHeight = 740;
+
+QString layoutReport(const MainWindow &window)
+{
+    QString parts;
+    for (const QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+        if (dock->isVisible())
+            parts += QStringLiteral(" %1=%2x%3")
+                         .arg(dock->objectName())
+                         .arg(dock->minimumSizeHint().width())
+                         .arg(dock->minimumSizeHint().height());
+    }
+    for (int i = 0; i < window.pages()->count(); ++i)
+        parts += QStringLiteral(" '%1'=%2x%3")
+                     .arg(window.pages()->tabText(i))
+                     .arg(window.pages()->widget(i)->minimumSizeHint().width())
+                     .arg(window.pages()->widget(i)->minimumSizeHint().height());
+    return parts;
+}
+} // namespace
+
+class TestMainWindowLaptop : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_settingsDir;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_settingsDir.isValid());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    }
+
+    void cleanup() { i18n::installTranslations(*qApp, QStringLiteral("en")); }
+
+    void fitsWithTheDemoConnected_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("de") << QStringLiteral("de");
+    }
+
+    void fitsWithTheDemoConnected()
+    {
+        QFETCH(QString, language);
+        QVERIFY(i18n::installTranslations(*qApp, language));
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        QVERIFY(demo.startSlcan(0).ok());
+
+        MainWindow window(app::protocolRegistry());
+        window.resize(kLaptopWidth, kUsableHeight);
+        window.show();
+        QVERIFY(window.openConnection(demo.refgoUri()).ok());
+        auto canopen = window.openConnection(demo.slcanUri());
+        QVERIFY(canopen.ok());
+        // The values and limits of the drive are shown (they change the widths of labels).
+        QTRY_VERIFY_WITH_TIMEOUT(!window.statusPanel()->isStale(ObjectAddress(0x6041, 0)), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.jogPanel()->limitsKnown(), 10000);
+
+        const QSize min = window.minimumSizeHint().expandedTo(window.minimumSize());
+        QVERIFY2(min.width() <= kLaptopWidth && min.height() <= kUsableHeight,
+                 qPrintable(QStringLiteral("%1: window needs %2x%3:%4")
+                                .arg(language)
+                                .arg(min.width())
+                                .arg(min.height())
+                                .arg(layoutReport(window))));
+        QVERIFY(window.width() <= kLaptopWidth && window.height() <= kLaptopHeight);
+
+        // Every button of the Motion dock lies inside the window and inside the viewport of its
+        // scroll area horizontally (vertical scrolling is fine, cut-off columns are not).
+        auto *dock = window.findChild<QDockWidget *>(QStringLiteral("motionDock"));
+        QVERIFY(dock && dock->isVisible());
+        auto *scroll = qobject_cast<QAbstractScrollArea *>(dock->widget());
+        QVERIFY(scroll);
+        const QStringList required = { QStringLiteral("enable"),    QStringLiteral("disable"),
+                                       QStringLiteral("reset"),     QStringLiteral("jogPlus"),
+                                       QStringLiteral("jogMinus"),  QStringLiteral("stepPlus"),
+                                       QStringLiteral("stepMinus"), QStringLiteral("halt"),
+                                       QStringLiteral("stop"),      QStringLiteral("execute") };
+        for (const QString &name : required) {
+            auto *button = window.jogPanel()->findChild<QPushButton *>(name);
+            QVERIFY2(button, qPrintable(name));
+            QVERIFY2(button->isVisible(), qPrintable(name));
+            const QRect inViewport(button->mapTo(scroll->viewport(), QPoint(0, 0)), button->size());
+            const QRect inWindow(button->mapTo(&window, QPoint(0, 0)), button->size());
+            QVERIFY2(inViewport.left() >= 0 && inViewport.right() < scroll->viewport()->width()
+                         && inWindow.right() < window.width(),
+                     qPrintable(QStringLiteral("%1: '%2' at x %3..%4, viewport %5 wide")
+                                    .arg(language, button->text())
+                                    .arg(inViewport.left())
+                                    .arg(inViewport.right())
+                                    .arg(scroll->viewport()->width())));
+        }
+    }
+
+    void welcomePageUntilADeviceIsListed()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto *central = qobject_cast<QStackedWidget *>(window.centralWidget());
+        QVERIFY(central);
+        QCOMPARE(central->currentWidget(), window.welcomePage());
+        auto *demoButton =
+            window.welcomePage()->findChild<QPushButton *>(QStringLiteral("welcomeDemo"));
+        QVERIFY(demoButton);
+        QVERIFY(!demoButton->isVisible()); // no demo without a starter
+        int started = 0;
+        window.setDemoStarter([&] {
+            ++started;
+            window.openConnection(demo.refgoUri());
+        });
+        QVERIFY(demoButton->isVisible());
+        QTest::mouseClick(demoButton, Qt::LeftButton);
+        QCOMPARE(started, 1);
+        QCOMPARE(central->currentWidget(), window.pages());
+        QTRY_VERIFY(window.currentConnection()->isConnected());
+
+        // Removing the last device brings the welcome page back.
+        QMetaObject::invokeMethod(window.deviceList(), "removeRequested",
+                                  Q_ARG(db::DeviceConnection *, window.currentConnection()));
+        QCOMPARE(central->currentWidget(), window.welcomePage());
+    }
+
+    void toolbarCommands()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        QToolBar *bar = window.mainToolBar();
+        QVERIFY(bar && bar->isVisible());
+        QStringList names;
+        for (QAction *a : bar->actions())
+            names << a->objectName();
+        for (const char *name : { "connectAction", "enableAction", "stopAction", "scopeAction" })
+            QVERIFY2(names.contains(QLatin1String(name)), name);
+        auto *enable = bar->findChild<QAction *>(QStringLiteral("enableAction"));
+        if (!enable)
+            enable = window.findChild<QAction *>(QStringLiteral("enableAction"));
+        QVERIFY(enable);
+        QVERIFY(!enable->isEnabled()); // no drive
+
+        QVERIFY(window.openConnection(demo.refgoUri()).ok());
+        QTRY_VERIFY_WITH_TIMEOUT(enable->isEnabled(), 10000);
+        enable->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(demo.drive().state(), cia402::State::OperationEnabled, 10000);
+
+        // The scope's Start/Stop shows the Scope page; without channels it says what is missing.
+        auto *scope = window.findChild<QAction *>(QStringLiteral("scopeAction"));
+        QVERIFY(scope);
+        scope->trigger();
+        QCOMPARE(window.pages()->currentWidget(), static_cast<QWidget *>(window.scopePage()));
+    }
+
+    void aboutNamesVersionCommitAndLicence()
+    {
+        MainWindow window(app::protocolRegistry());
+        const QString text = window.aboutText();
+        QVERIFY(text.contains(QStringLiteral(DRIVEBENCH_VERSION)));
+        QVERIFY(text.contains(QStringLiteral("all rights are reserved")));
+        // A commit hash (or "unknown" outside a git checkout), never an empty one.
+        static const QRegularExpression commit(QStringLiteral("commit ([0-9a-f]{7,}|unknown) "));
+        QVERIFY2(commit.match(text).hasMatch(), qPrintable(text));
+    }
+
+    void settingsAreAppliedAndKept()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        {
+            gui::SettingsDialog dialog(
+                { QStringLiteral("de"),
+                  1500,
+                  700,
+                  { QStringLiteral("refgo://10.0.0.1"), QStringLiteral("refgo://10.0.0.2") } });
+            const auto shown = dialog.values();
+            QCOMPARE(shown.language, QStringLiteral("de"));
+            QCOMPARE(shown.requestTimeoutMs, 700);
+            auto *clear = dialog.findChild<QPushButton *>(QStringLiteral("clearRecent"));
+            QVERIFY(clear);
+            clear->click();
+            QVERIFY(dialog.values().recent.isEmpty());
+        }
+        {
+            MainWindow window(app::protocolRegistry());
+            window.applySettings(
+                { QStringLiteral("de"), 1500, 700, { QStringLiteral("refgo://10.0.0.1") } });
+            QCOMPARE(window.recentConnections(),
+                     QStringList { QStringLiteral("refgo://10.0.0.1") });
+            auto opened = window.openConnection(demo.refgoUri(), MainWindow::Remember::No);
+            QVERIFY(opened.ok());
+            QCOMPARE((*opened)->requestTimeoutMs(), 700); // new connections get the limits
+            QCOMPARE((*opened)->connectTimeoutMs(), 1500);
+        }
+        MainWindow again(app::protocolRegistry()); // kept in the settings file
+        const auto kept = again.settingsValues();
+        QCOMPARE(kept.language, QStringLiteral("de"));
+        QCOMPARE(kept.connectTimeoutMs, 1500);
+        QCOMPARE(kept.requestTimeoutMs, 700);
+        again.applySettings({ QString(), 3000, 1000, {} }); // as before, for the other tests
+    }
+
+    void resetLayoutBringsEveryDockBack()
+    {
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto *motion = window.findChild<QDockWidget *>(QStringLiteral("motionDock"));
+        auto *log = window.findChild<QDockWidget *>(QStringLiteral("logDock"));
+        QVERIFY(motion && log);
+        motion->close();
+        log->setFloating(true);
+        window.mainToolBar()->hide();
+        QVERIFY(!motion->isVisible());
+        window.resetLayout();
+        QVERIFY(motion->isVisible());
+        QVERIFY(!log->isFloating());
+        QVERIFY(window.mainToolBar()->isVisible());
+        QCOMPARE(window.dockWidgetArea(motion), Qt::RightDockWidgetArea);
+    }
+};
+
+QTEST_MAIN(TestMainWindowLaptop)
+#include "tst_mainwindow_laptop.moc"
