@@ -1,8 +1,10 @@
 // Time for a full parameter backup: ParameterBackup of every storable object of
 // the MovingCap description against the simulated MovingCap (app::DemoDrive, in this process)
 // over RefGo and over CANopen SDO on SLCAN-over-TCP, both on loopback. Target: < 1 s each.
-//   params_backup_bench [--repeat N] [--pipeline D] [--all]
-// --all reads every readable object (the CLI's dump) instead of the storable ones.
+//   params_backup_bench [--repeat N] [--pipeline D] [--all] [--uri URI]...
+// --all reads every readable object (the CLI's dump) instead of the storable ones. --uri
+// (repeatable) backs up those devices (any drivebench URI, e.g. refgo://HOST or
+// canopen+slcan://HOST:PORT?node=N&eds=FILE) instead of the in-process simulator.
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "parameters/parameterrunner.h"
@@ -80,6 +82,7 @@ int main(int argc, char **argv)
     int repeat = 7;
     int depth = ParameterBackup::kDefaultPipelineDepth;
     auto scope = ParameterBackup::Scope::Storable;
+    QStringList uris;
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         if (args.at(i) == u"--repeat" && i + 1 < args.size())
@@ -88,6 +91,23 @@ int main(int argc, char **argv)
             depth = args.at(++i).toInt();
         else if (args.at(i) == u"--all")
             scope = ParameterBackup::Scope::Readable;
+        else if (args.at(i) == u"--uri" && i + 1 < args.size())
+            uris.append(args.at(++i));
+        else {
+            std::fprintf(stderr, "params_backup_bench: unknown option %s\n",
+                         qPrintable(args.at(i)));
+            return 2;
+        }
+    }
+    const char *what =
+        scope == ParameterBackup::Scope::Storable ? "storable objects" : "all readable";
+    if (!uris.isEmpty()) {
+        std::printf("full backup (%s), %d runs each\n", what, repeat);
+        for (const QString &uri : std::as_const(uris)) {
+            if (!measure(uri, uri, repeat, depth, scope))
+                return 1;
+        }
+        return 0;
     }
     app::DemoDrive demo;
     if (auto ok = demo.startRefgo(0); !ok) {
@@ -98,9 +118,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "%s\n", qPrintable(ok.error().toString()));
         return 1;
     }
-    std::printf("full backup of the MovingCap (%s), %d runs each, loopback\n",
-                scope == ParameterBackup::Scope::Storable ? "storable objects" : "all readable",
-                repeat);
+    std::printf("full backup of the MovingCap (%s), %d runs each, loopback\n", what, repeat);
     const bool ok = measure(QStringLiteral("RefGo"), demo.refgoUri(), repeat, depth, scope)
         && measure(QStringLiteral("CANopen SDO over SLCAN"), demo.slcanUri(), repeat, depth, scope);
     return ok ? 0 : 1;

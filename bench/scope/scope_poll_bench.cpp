@@ -4,7 +4,10 @@
 // 4 objects as fast as the link allows (rate 0, one request in flight per object) and at a fixed
 // period, and prints samples/s with the lost-sample count (which must be 0).
 //
-//   scope_poll_bench [--seconds S] [--rate-ms R]
+//   scope_poll_bench [--seconds S] [--rate-ms R] [--uri URI]...
+//
+// --uri (repeatable) polls those devices instead (they need the objects 6064:0, 6078:0, 606C:0
+// and 6041:0, as a MovingCap or any CiA 402 drive has).
 
 #include "common/demodrive.h"
 #include "common/protocols.h"
@@ -92,33 +95,43 @@ int main(int argc, char *argv[])
         QStringLiteral("rate-ms"),
         QStringLiteral("Period of the fixed-rate cases in ms (default 10)."), QStringLiteral("ms"),
         QStringLiteral("10"));
-    parser.addOptions({ secondsOption, rateOption });
+    const QCommandLineOption uriOption(
+        QStringLiteral("uri"),
+        QStringLiteral("Poll this device instead of the in-process simulator (repeatable)."),
+        QStringLiteral("uri"));
+    parser.addOptions({ secondsOption, rateOption, uriOption });
     parser.process(app);
     const double seconds = std::max(0.2, parser.value(secondsOption).toDouble());
     const int rateMs = std::max(1, parser.value(rateOption).toInt());
 
+    QList<std::pair<QString, QString>> links;
+    for (const QString &uri : parser.values(uriOption))
+        links.append({ uri.section(QLatin1Char(':'), 0, 0), uri });
     app::DemoDrive drive;
-    if (!drive.startRefgo(0).ok() || !drive.startSlcan(0).ok()) {
-        std::fprintf(stderr, "scope_poll_bench: cannot start the simulated drive\n");
-        return 1;
+    if (links.isEmpty()) {
+        if (!drive.startRefgo(0).ok() || !drive.startSlcan(0).ok()) {
+            std::fprintf(stderr, "scope_poll_bench: cannot start the simulated drive\n");
+            return 1;
+        }
+        links = { { QStringLiteral("refgo"), drive.refgoUri() },
+                  { QStringLiteral("canopen+slcan"), drive.slcanUri() } };
     }
     std::printf("%-14s %-8s %-10s %12s %14s %6s\n", "link", "objects", "rate", "samples/s",
                 "per object/s", "lost");
     int status = 0;
-    for (const auto &[name, uri] : { std::pair { "refgo", drive.refgoUri() },
-                                     std::pair { "canopen+slcan", drive.slcanUri() } }) {
+    for (const auto &[name, uri] : std::as_const(links)) {
         for (int objects : { 1, 4 }) {
             for (int rate : { 0, rateMs }) {
                 const auto f = run(uri, objects, rate, seconds);
                 if (!f) {
-                    std::fprintf(stderr, "scope_poll_bench: %s: %s\n", name,
+                    std::fprintf(stderr, "scope_poll_bench: %s: %s\n", qPrintable(uri),
                                  qPrintable(f.error().toString()));
                     return 1;
                 }
                 const double perSecond = double(f->samples) / f->seconds;
                 const QString rateText =
                     rate == 0 ? QStringLiteral("max") : QStringLiteral("%1 ms").arg(rate);
-                std::printf("%-14s %-8d %-10s %12.0f %14.0f %6lld\n", name, objects,
+                std::printf("%-14s %-8d %-10s %12.0f %14.0f %6lld\n", qPrintable(name), objects,
                             qPrintable(rateText), perSecond, perSecond / objects,
                             static_cast<long long>(f->lost));
                 if (f->lost != 0)

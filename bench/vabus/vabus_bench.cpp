@@ -1,9 +1,9 @@
 // VABus/TCP against the simulated ACU (bonfiglioli::SimulatedAcu in this process, loopback):
 // parameter reads per second (one telegram in flight, as the protocol requires) and the time of
 // a full backup (every data set of every storable parameter). Median of --repeat runs.
-//   vabus_bench [--repeat N] [--reads N] [--port P]
-// --port P measures a simulator already running there (drivebench-sim acu --vabus-port P)
-// instead of the in-process one.
+//   vabus_bench [--repeat N] [--reads N] [--port P | --uri vabus://HOST[:PORT]]
+// --port P measures a simulator already running on 127.0.0.1:P (drivebench-sim acu --vabus-port
+// P), --uri any drive or simulator, instead of the in-process one.
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "parameters/parameterrunner.h"
@@ -60,6 +60,7 @@ int main(int argc, char **argv)
     int repeat = 7;
     int reads = 2000;
     int port = -1;
+    QString uri;
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         if (args.at(i) == u"--repeat" && i + 1 < args.size())
@@ -68,9 +69,15 @@ int main(int argc, char **argv)
             reads = qMax(1, args.at(++i).toInt());
         else if (args.at(i) == u"--port" && i + 1 < args.size())
             port = args.at(++i).toInt();
+        else if (args.at(i) == u"--uri" && i + 1 < args.size())
+            uri = args.at(++i);
+        else {
+            std::fprintf(stderr, "vabus_bench: unknown option %s\n", qPrintable(args.at(i)));
+            return 2;
+        }
     }
     std::unique_ptr<bonfiglioli::SimulatedAcu> acu;
-    if (port < 0) {
+    if (port < 0 && uri.isEmpty()) {
         acu = std::make_unique<bonfiglioli::SimulatedAcu>();
         if (auto ok = acu->listen(0); !ok) {
             std::fprintf(stderr, "%s\n", qPrintable(ok.error().toString()));
@@ -78,7 +85,8 @@ int main(int argc, char **argv)
         }
         port = acu->port();
     }
-    const QString uri = QStringLiteral("vabus://127.0.0.1:%1").arg(port);
+    if (uri.isEmpty())
+        uri = QStringLiteral("vabus://127.0.0.1:%1").arg(port);
     auto created = app::protocolRegistry().create(uri);
     if (!created) {
         std::fprintf(stderr, "%s\n", qPrintable(created.error().toString()));

@@ -54,7 +54,10 @@ Q_SIGNALS:
     void finished();
 
 private:
+    class FinishedQueue;
+
     void scheduleFinished();
+    void deliverFinished();
 
     ObjectAddress m_address;
     QVariant m_value;

@@ -20,9 +20,9 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
     : ByteStream(parent)
     , m_host(host)
     , m_port(port)
+    , m_readChunk(std::make_unique<char[]>(kReadBufferBytes))
 {
     m_connectTimer.setSingleShot(true);
-    m_socket.setReadBufferSize(kReadBufferBytes);
     // A coarse timer may fire 5 % early; the limit the user gave is a promise.
     m_connectTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
@@ -33,10 +33,32 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
                             .arg(m_connectTimeoutMs)));
     });
     connect(&m_socket, &QTcpSocket::connected, this, &TcpStream::onConnected);
-    connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpStream::onSocketError);
+    connect(&m_socket, &QTcpSocket::errorOccurred, this,
+            [this](QAbstractSocket::SocketError error) {
+                if (!m_writing) {
+                    onSocketError(error);
+                    return;
+                }
+                QTimer::singleShot(0, this, [this, error] { onSocketError(error); });
+            });
     connect(&m_socket, &QTcpSocket::disconnected, this, &TcpStream::onDisconnected);
+    // One read of at most kReadBufferBytes per pass; what is left makes readyRead come again.
     connect(&m_socket, &QTcpSocket::readyRead, this, [this] {
-        const QByteArray bytes = m_socket.readAll();
+        const qint64 n = m_socket.read(m_readChunk.get(), kReadBufferBytes);
+        if (n < 0) {
+            // An unbuffered socket reports the peer's close (or a reset) only here, with no
+            // disconnected() signal.
+            const auto error = m_socket.error();
+            m_socket.abort();
+            if (state() == State::Closing)
+                setClosed();
+            else
+                setClosed(describe(error));
+            return;
+        }
+        if (n == 0)
+            return;
+        const QByteArray bytes(m_readChunk.get(), n);
         qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
         deliver(bytes);
     });
@@ -52,7 +74,7 @@ void TcpStream::doOpen()
 {
     qCDebug(lcTcp) << "connecting to" << peerName();
     m_connectTimer.start(m_connectTimeoutMs);
-    m_socket.connectToHost(m_host, m_port);
+    m_socket.connectToHost(m_host, m_port, QIODevice::ReadWrite | QIODevice::Unbuffered);
 }
 
 void TcpStream::doClose()
@@ -70,7 +92,9 @@ void TcpStream::doClose()
 void TcpStream::doWrite(const QByteArray &bytes)
 {
     qCDebug(lcTcpRaw) << peerName() << "->" << bytes;
+    m_writing = true;
     m_socket.write(bytes);
+    m_writing = false;
 }
 
 void TcpStream::onConnected()

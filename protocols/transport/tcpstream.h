@@ -5,12 +5,18 @@
 #include <QTcpSocket>
 #include <QTimer>
 
+#include <memory>
+
 namespace db {
 
 // TCP client stream: non-blocking, TCP_NODELAY (request/response protocols must not wait for
 // Nagle or delayed ACKs), a connect timeout, and errors that name host and port. At most
 // kReadBufferBytes are taken from the socket per event-loop pass: a peer that floods waits in
 // TCP flow control instead of in this process's memory.
+// write() hands the bytes to the kernel at once (an unbuffered socket): a request is on the wire
+// when write() returns, without waiting for the next event-loop pass; only what the kernel does
+// not take is queued and sent from the loop. A failure found while writing is reported from the
+// event loop (closed() never comes from inside write()).
 class TcpStream : public ByteStream
 {
     Q_OBJECT
@@ -41,6 +47,8 @@ private:
     int m_connectTimeoutMs = kDefaultConnectTimeoutMs;
     QTcpSocket m_socket;
     QTimer m_connectTimer;
+    std::unique_ptr<char[]> m_readChunk; // kReadBufferBytes, reused for every read
+    bool m_writing = false; // inside m_socket.write(): socket errors wait for the event loop
 };
 
 } // namespace db

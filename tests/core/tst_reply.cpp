@@ -6,6 +6,9 @@
 #include <QTest>
 #include <QTimer>
 
+#include <memory>
+#include <vector>
+
 using namespace db;
 
 class TestReply : public QObject
@@ -21,6 +24,9 @@ private Q_SLOTS:
     void waitOnAnAlreadyDeliveredReplyReturnsAtOnce();
     void forwardConvertsTheValueOrPassesTheError();
     void forwardSurvivesTheOuterReplyBeingDeleted();
+    void finishedNeedsNoEventPerReply();
+    void repliesFinishedTogetherSignalInOrder();
+    void replyDeletedBeforeDeliveryIsSkipped();
 };
 
 void TestReply::finishesExactlyOnce()
@@ -131,4 +137,55 @@ void TestReply::forwardSurvivesTheOuterReplyBeingDeleted()
 }
 
 QTEST_GUILESS_MAIN(TestReply)
+// A posted event per reply wakes the event dispatcher once per request; finished() of all the
+// replies of a thread comes through one timer instead, so no event is sent to the reply itself.
+void TestReply::finishedNeedsNoEventPerReply()
+{
+    Reply reply;
+    int events = 0;
+    struct Counter : QObject
+    {
+        int *count;
+        explicit Counter(int *c)
+            : count(c)
+        { }
+        bool eventFilter(QObject *, QEvent *) override
+        {
+            ++*count;
+            return false;
+        }
+    } counter(&events);
+    reply.installEventFilter(&counter);
+    QSignalSpy finished(&reply, &Reply::finished);
+    reply.finish(1);
+    QVERIFY(finished.wait(1000));
+    QCOMPARE(events, 0);
+}
+
+void TestReply::repliesFinishedTogetherSignalInOrder()
+{
+    QList<int> order;
+    std::vector<std::unique_ptr<Reply>> replies;
+    for (int i = 0; i < 5; ++i) {
+        replies.push_back(std::make_unique<Reply>());
+        connect(replies.back().get(), &Reply::finished, this, [&order, i] { order.append(i); });
+    }
+    for (int i : { 3, 0, 4, 1, 2 })
+        replies[size_t(i)]->finish(i);
+    QTRY_COMPARE(order.size(), 5);
+    QCOMPARE(order, QList<int>({ 3, 0, 4, 1, 2 }));
+}
+
+void TestReply::replyDeletedBeforeDeliveryIsSkipped()
+{
+    auto *gone = new Reply;
+    Reply kept;
+    QSignalSpy keptFinished(&kept, &Reply::finished);
+    gone->finish(1);
+    kept.finish(2);
+    delete gone;
+    QVERIFY(keptFinished.wait(1000));
+    QCOMPARE(keptFinished.count(), 1);
+}
+
 #include "tst_reply.moc"

@@ -19,6 +19,8 @@ private Q_SLOTS:
     void closeIsCleanAndSilent();
     void writeWhileClosedDoesNothing();
     void reopensAfterClose();
+    void writeIsOnTheWireWhenWriteReturns();
+    void floodArrivesInBoundedChunks();
 };
 
 void TestTcpStream::opensAndCarriesBytesBothWays()
@@ -115,3 +117,46 @@ void TestTcpStream::reopensAfterClose()
 
 QTEST_GUILESS_MAIN(TestTcpStream)
 #include "tst_tcpstream.moc"
+
+// A request/response client sends the next request from the previous answer's handler; the
+// bytes must leave at once, not one event-loop pass later.
+void TestTcpStream::writeIsOnTheWireWhenWriteReturns()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    stream.open();
+    QVERIFY(opened.wait(3000));
+    QTRY_VERIFY(server.hasPendingConnections());
+    QTcpSocket *peer = server.nextPendingConnection();
+    QVERIFY(stream.write("OR6041,0\r"));
+    // Blocks on the peer's socket only: this thread's event loop does not run meanwhile.
+    QVERIFY(peer->waitForReadyRead(2000));
+    QCOMPARE(peer->readAll(), QByteArray("OR6041,0\r"));
+}
+
+void TestTcpStream::floodArrivesInBoundedChunks()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    QByteArray all;
+    qint64 largest = 0;
+    connect(&stream, &ByteStream::received, this, [&](const QByteArray &b) {
+        all += b;
+        largest = qMax(largest, qint64(b.size()));
+    });
+    stream.open();
+    QVERIFY(opened.wait(3000));
+    QTRY_VERIFY(server.hasPendingConnections());
+    QTcpSocket *peer = server.nextPendingConnection();
+    QByteArray flood(5 * TcpStream::kReadBufferBytes, '\0');
+    for (qsizetype i = 0; i < flood.size(); ++i)
+        flood[i] = char(i * 7);
+    peer->write(flood);
+    QTRY_COMPARE(all.size(), flood.size());
+    QCOMPARE(all, flood);
+    QVERIFY(largest <= TcpStream::kReadBufferBytes);
+}
