@@ -34,6 +34,21 @@ QList<ObjectAddress> Cia402StatusSource::objects()
              kStatusRegister, kErrorCode,   kInputs,   kOutputs };
 }
 
+QList<ObjectAddress> Cia402StatusSource::polledObjects() const
+{
+    QList<ObjectAddress> wanted = objects();
+    if (const DeviceConnection *c = connection()) {
+        const ObjectDictionary &dictionary = c->dictionary();
+        wanted.removeIf([&dictionary](ObjectAddress a) { return !dictionary.contains(a); });
+    }
+    return wanted;
+}
+
+void Cia402StatusSource::poll()
+{
+    readEach(polledObjects());
+}
+
 QString Cia402StatusSource::statusWordLabel() const
 {
     return tr("Statusword:");

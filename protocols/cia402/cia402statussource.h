@@ -23,7 +23,9 @@ public:
     QString statusWordLabel() const override;
     QList<StatusLamp> lamps() const override;
     QList<StatusIoRow> ioRows() const override;
-    QList<ObjectAddress> polledObjects() const override { return objects(); }
+    // objects() that the connection's description has: a device without them would answer
+    // every round with errors (SDO aborts) and tell nothing.
+    QList<ObjectAddress> polledObjects() const override;
     StatusValue mode() const override;
     QList<StatusValue> actualValues() const override;
     StatusValue fault() const override;
@@ -34,7 +36,7 @@ public:
     QStringList warnings() const override;
 
 protected:
-    void poll() override { readEach(objects()); }
+    void poll() override;
 
 private:
     QStringList registerBits(bool warnings) const;
