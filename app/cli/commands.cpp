@@ -8,6 +8,7 @@
 #include "commands_record.h"
 
 #include "canopen/canopenconnection.h"
+#include "canopen/descriptionnote.h"
 #include "core/printable.h"
 #include "core/valuecodec.h"
 #include <QCoreApplication>
@@ -109,10 +110,9 @@ Result<ObjectTarget> openObject(Context &c, Session &session)
 void noteMissingDescription(Context &c, const Session &session, const ObjectTarget &target)
 {
     const DeviceConnection *connection = session.connection();
-    const auto *canopen = qobject_cast<const canopen::CanopenConnection *>(connection);
-    if (canopen && c.type.isEmpty() && !target.def && !canopen->descriptionNote().isEmpty()
-        && connection->dictionary().isEmpty())
-        c.err << "drivebench-cli: " << printable(canopen->descriptionNote()) << Qt::endl;
+    const QString note = canopen::descriptionNoteOf(connection);
+    if (c.type.isEmpty() && !target.def && !note.isEmpty() && connection->dictionary().isEmpty())
+        c.err << "drivebench-cli: " << printable(note) << Qt::endl;
 }
 
 int read(Context &c)

@@ -183,6 +183,15 @@ int runToEnd(Context &c, Axis &axis, MotionCommand &command)
         c.err << "drivebench-cli: " << command.error().message() << Qt::endl;
         return ExitDeviceError;
     }
+    // The model has told the drive to stop (a lost heartbeat, a fault): that request must reach
+    // the drive before the connection closes, so wait until the drive says it stands or is off.
+    waitUntil(
+        axis,
+        [&] {
+            const AxisInterface::Status s = axis.cia->status();
+            return !s.powered || !s.moving;
+        },
+        kStopFlushMs);
     return fail(c, command.error());
 }
 

@@ -4,7 +4,7 @@
 #include "mainwindow.h"
 
 #include "core/connectionhealth.h"
-#include "motion/cia402axis.h"
+#include "motion/axisinterface.h"
 #include "widgets/common/logconsole.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
@@ -107,7 +107,7 @@ bool MainWindow::confirmClose(const QList<DeviceConnection *> &connections)
 {
     // Only the Motion dock's axis can be enabled from here; it is on the current connection.
     DeviceConnection *axisConnection = m_jogPanel->connection();
-    const motion::Cia402Axis *axis = m_jogPanel->cia402Axis();
+    const motion::AxisInterface *axis = m_jogPanel->axis();
     if (!axisConnection || !connections.contains(axisConnection) || !axis
         || !axisConnection->isConnected() || !axis->status().valid || !axis->status().powered)
         return true;

@@ -9,6 +9,8 @@ namespace db::bonfiglioli {
 namespace {
 
 constexpr quint16 kConfiguration = 30;
+constexpr quint16 kStatorFrequency = 210; // Hz, 2 decimals
+constexpr quint16 kRmsCurrent = 211; // A, 1 decimal
 constexpr quint16 kActualSpeedRpm = 240;
 constexpr quint16 kDigitalInputs = 250;
 constexpr quint16 kPolePairs = 373;
@@ -545,9 +547,21 @@ void AcuMotion::publish()
     };
     m_store.set(kPosition, 0, i(m_position));
     m_store.set(kSpeed, 0, i(m_velocity));
-    m_store.set(kActualSpeedRpm, 0, i(m_velocity / uPerRpm()));
     m_store.set(kActiveBlock, 0, i(m_block));
     m_store.set(kResumeBlock, 0, i(m_resumeBlock));
+    const double rpm = m_velocity / uPerRpm();
+    const double previousRpm = param(kActualSpeedRpm, 0.0);
+    m_store.set(kActualSpeedRpm, 0, i(rpm));
+    // The motor's electrical side, simple enough for a trace that follows the motion: the
+    // stator frequency from the speed and the pole pairs, a current of a no-load part plus one
+    // growing with the speed, and none at standstill. Until the motor first turns, the preset
+    // values stand.
+    if (std::llround(rpm) == 0 && std::llround(previousRpm) == 0)
+        return;
+    const double hz = rpm * param(kPolePairs, 2) / 60.0;
+    m_store.set(kStatorFrequency, 0, i(hz * 100.0));
+    const double amps = std::abs(rpm) < 0.5 ? 0.0 : 1.2 + 0.004 * std::abs(rpm);
+    m_store.set(kRmsCurrent, 0, i(amps * 10.0));
 }
 
 } // namespace db::bonfiglioli

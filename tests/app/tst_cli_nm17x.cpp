@@ -8,6 +8,7 @@
 #include <QRegularExpression>
 #include <QTcpSocket>
 #include <QTest>
+#include <QTimer>
 
 using db::test::CliRun;
 

@@ -33,6 +33,8 @@ private Q_SLOTS:
         QVERIFY(m_acu->listen(0).ok());
         m_window = std::make_unique<gui::MainWindow>(app::protocolRegistry());
         m_window->resize(1366, 768);
+        // "The drive is enabled: close the connection?" is answered yes (no modal dialog).
+        m_window->setConfirmation([](const QString &) { return true; });
         m_window->show();
         QVERIFY(m_window->openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(m_acu->port()))
                     .ok());

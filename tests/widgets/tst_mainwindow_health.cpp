@@ -268,7 +268,7 @@ private Q_SLOTS:
                                  kWaitMs);
         window.jogPanel()->enableDrive();
         QTRY_COMPARE_WITH_TIMEOUT(demo.drive().state(), cia402::State::OperationEnabled, kWaitMs);
-        QTRY_VERIFY_WITH_TIMEOUT(window.jogPanel()->cia402Axis()->status().powered, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(window.jogPanel()->axis()->status().powered, kWaitMs);
         window.disconnectCurrent();
         QCOMPARE(questions.size(), 1);
         QVERIFY(questions.first().contains(QStringLiteral("enabled")));

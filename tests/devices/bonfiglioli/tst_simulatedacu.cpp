@@ -8,6 +8,8 @@
 #include "vabus/vabusclient.h"
 #include "wait.h"
 
+#include <cmath>
+
 #include <QSignalSpy>
 #include <QTcpSocket>
 #include <QtTest>
@@ -400,6 +402,29 @@ private Q_SLOTS:
         // 7, 8, 9 do not exist with the override.
         QCOMPARE(codeOf(await(m_client->write(1454, 5, DataType::Integer16, qlonglong(7)))), 1u);
         QCOMPARE(m_acu->controlWritesEeprom(), quint64(0));
+    }
+
+    void electricalValuesFollowTheSpeed()
+    {
+        const auto value = [this](quint16 p) {
+            return await(m_client->read(p, 0)).value().toLongLong();
+        };
+        QVERIFY(await(m_client->write(1454, 5, DataType::Integer16, qlonglong(1))).ok());
+        QVERIFY(enableOperation());
+        QVERIFY(await(m_client->write(1455, 5, DataType::Integer32, qlonglong(10000000))).ok());
+        QVERIFY(control(0x001F));
+        // At constant speed (two reads alike), the stator frequency is speed x pole pairs / 60
+        // and the current is above its no-load part.
+        qlonglong rpm = 0;
+        QTRY_VERIFY_WITH_TIMEOUT((rpm = value(240)) != 0 && rpm == value(240), 10000);
+        const double hz = double(value(210)) / 100.0;
+        const double expected = double(rpm) * double(value(373)) / 60.0;
+        QVERIFY2(std::abs(hz - expected) <= 0.01 * std::abs(expected) + 0.01,
+                 qPrintable(QStringLiteral("%1 Hz at %2 rpm").arg(hz).arg(rpm)));
+        QVERIFY(value(211) > 12);
+        QVERIFY(control(0x0002)); // quick stop: at standstill no frequency and no current
+        QTRY_COMPARE_WITH_TIMEOUT(value(211), 0, 10000);
+        QCOMPARE(value(210), 0);
     }
 
     void remoteContacts()
