@@ -4,6 +4,7 @@
 #include "canopen/device/simulatednode.h"
 #include "canopen/sdoabort.h"
 #include "canopen/sdocodec.h"
+#include "objectdefs.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -14,32 +15,23 @@ using namespace db::canopen;
 
 namespace {
 
-ObjectDef def(quint16 index, quint8 sub, DataType type, Access access, QVariant value = {})
-{
-    ObjectDef d;
-    d.address = { index, sub };
-    d.name = QStringLiteral("object %1").arg(d.address.toString());
-    d.type = type;
-    d.access = access;
-    d.defaultValue = value;
-    return d;
-}
+using test::objectDef;
 
 ObjectDictionary testDictionary()
 {
     ObjectDictionary dict;
-    dict.insert(def(0x1000, 0, DataType::Unsigned32, Access::ReadOnly, 0x00020192u));
-    dict.insert(
-        def(0x1008, 0, DataType::VisibleString, Access::Const, QStringLiteral("Simulated node 1")));
-    ObjectDef limited = def(0x2000, 0, DataType::Unsigned16, Access::ReadWrite, 0u);
+    dict.insert(objectDef(0x1000, 0, DataType::Unsigned32, Access::ReadOnly, 0x00020192u));
+    dict.insert(objectDef(0x1008, 0, DataType::VisibleString, Access::Const,
+                          QStringLiteral("Simulated node 1")));
+    ObjectDef limited = objectDef(0x2000, 0, DataType::Unsigned16, Access::ReadWrite, 0u);
     limited.minimum = 10u;
     limited.maximum = 1000u;
     dict.insert(limited);
-    dict.insert(def(0x2001, 0, DataType::Integer32, Access::ReadWrite, 0));
-    dict.insert(def(0x2002, 0, DataType::Unsigned8, Access::WriteOnly, 0u));
-    dict.insert(def(0x2003, 1, DataType::Unsigned8, Access::ReadWrite, 0u));
-    dict.insert(def(0x2010, 0, DataType::Domain, Access::ReadWrite));
-    dict.insert(def(0x2011, 0, DataType::VisibleString, Access::ReadWrite));
+    dict.insert(objectDef(0x2001, 0, DataType::Integer32, Access::ReadWrite, 0));
+    dict.insert(objectDef(0x2002, 0, DataType::Unsigned8, Access::WriteOnly, 0u));
+    dict.insert(objectDef(0x2003, 1, DataType::Unsigned8, Access::ReadWrite, 0u));
+    dict.insert(objectDef(0x2010, 0, DataType::Domain, Access::ReadWrite));
+    dict.insert(objectDef(0x2011, 0, DataType::VisibleString, Access::ReadWrite));
     return dict;
 }
 

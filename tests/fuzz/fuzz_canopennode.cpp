@@ -2,6 +2,7 @@
 // the bus: each frame is an 11-bit id, a length and up to 8 data bytes.
 #include "canopen/device/simulatednode.h"
 #include "fuzzsupport.h"
+#include "objectdefs.h"
 
 #include <QCanBusFrame>
 
@@ -10,33 +11,25 @@ using namespace db::canopen;
 
 namespace {
 
-ObjectDef def(quint16 index, quint8 sub, DataType type, Access access, QVariant value = {})
-{
-    ObjectDef d;
-    d.address = { index, sub };
-    d.name = QStringLiteral("object %1").arg(d.address.toString());
-    d.type = type;
-    d.access = access;
-    d.defaultValue = value;
-    return d;
-}
+using test::objectDef;
 
 ObjectDictionary dictionary()
 {
     ObjectDictionary dict;
-    dict.insert(def(0x1000, 0, DataType::Unsigned32, Access::ReadOnly, 0x00020192u));
-    dict.insert(def(0x1008, 0, DataType::VisibleString, Access::Const, QStringLiteral("node")));
-    dict.insert(def(0x1017, 0, DataType::Unsigned16, Access::ReadWrite, 0u));
-    dict.insert(def(0x1018, 0, DataType::Unsigned8, Access::Const, 4u));
+    dict.insert(objectDef(0x1000, 0, DataType::Unsigned32, Access::ReadOnly, 0x00020192u));
+    dict.insert(
+        objectDef(0x1008, 0, DataType::VisibleString, Access::Const, QStringLiteral("node")));
+    dict.insert(objectDef(0x1017, 0, DataType::Unsigned16, Access::ReadWrite, 0u));
+    dict.insert(objectDef(0x1018, 0, DataType::Unsigned8, Access::Const, 4u));
     for (quint8 s = 1; s <= 4; ++s)
-        dict.insert(def(0x1018, s, DataType::Unsigned32, Access::Const, 0x100u + s));
-    ObjectDef limited = def(0x2000, 0, DataType::Unsigned16, Access::ReadWrite, 10u);
+        dict.insert(objectDef(0x1018, s, DataType::Unsigned32, Access::Const, 0x100u + s));
+    ObjectDef limited = objectDef(0x2000, 0, DataType::Unsigned16, Access::ReadWrite, 10u);
     limited.minimum = 10u;
     limited.maximum = 1000u;
     dict.insert(limited);
-    dict.insert(def(0x2001, 0, DataType::Integer32, Access::ReadWrite, 0));
-    dict.insert(def(0x2010, 0, DataType::Domain, Access::ReadWrite));
-    dict.insert(def(0x2011, 0, DataType::VisibleString, Access::ReadWrite));
+    dict.insert(objectDef(0x2001, 0, DataType::Integer32, Access::ReadWrite, 0));
+    dict.insert(objectDef(0x2010, 0, DataType::Domain, Access::ReadWrite));
+    dict.insert(objectDef(0x2011, 0, DataType::VisibleString, Access::ReadWrite));
     return dict;
 }
 
