@@ -60,6 +60,8 @@ const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kRecentKey = QStringLiteral("connections/recent");
 const QString kConnectTimeoutKey = QStringLiteral("connections/connectTimeoutMs");
+const QString kAutoReconnectKey = QStringLiteral("connections/autoReconnect");
+const QString kReconnectWindowKey = QStringLiteral("connections/reconnectWindowS");
 const QString kRequestTimeoutKey = QStringLiteral("connections/requestTimeoutMs");
 const QString kLanguageKey = QStringLiteral("language"); // read by main() before the window
 constexpr int kStatusMessageMs = 10000;
@@ -292,6 +294,7 @@ void MainWindow::watch(DeviceConnection *connection)
     auto *health = new ConnectionHealth(connection);
     connect(health, &ConnectionHealth::statusChanged, this,
             [this, connection] { onHealthChanged(connection); });
+    followReconnectSetting(connection);
     connect(connection, &DeviceConnection::objectWritten, this, [this, connection] {
         m_unstored.insert(connection);
         updateWindowTitle();
@@ -485,11 +488,14 @@ void MainWindow::loadSettings()
     m_connectTimeoutMs = settings.value(kConnectTimeoutKey, m_connectTimeoutMs).toInt();
     m_requestTimeoutMs = settings.value(kRequestTimeoutKey, m_requestTimeoutMs).toInt();
     m_language = settings.value(kLanguageKey).toString();
+    m_autoReconnect = settings.value(kAutoReconnectKey, false).toBool();
+    m_reconnectWindowS = settings.value(kReconnectWindowKey, m_reconnectWindowS).toInt();
 }
 
 SettingsDialog::Values MainWindow::settingsValues() const
 {
-    return { m_language, m_connectTimeoutMs, m_requestTimeoutMs, m_recent };
+    return { m_language, m_connectTimeoutMs, m_requestTimeoutMs,
+             m_recent,   m_autoReconnect,    m_reconnectWindowS };
 }
 
 void MainWindow::applySettings(const SettingsDialog::Values &values)
@@ -498,6 +504,10 @@ void MainWindow::applySettings(const SettingsDialog::Values &values)
     m_connectTimeoutMs = values.connectTimeoutMs;
     m_requestTimeoutMs = values.requestTimeoutMs;
     m_recent = values.recent;
+    m_autoReconnect = values.autoReconnect;
+    m_reconnectWindowS = values.reconnectWindowS;
+    for (const auto &c : m_connections)
+        followReconnectSetting(c.get());
     saveSettings();
     updateWelcome();
 }
@@ -518,6 +528,8 @@ void MainWindow::saveSettings() const
     settings.setValue(kConnectTimeoutKey, m_connectTimeoutMs);
     settings.setValue(kRequestTimeoutKey, m_requestTimeoutMs);
     settings.setValue(kLanguageKey, m_language);
+    settings.setValue(kAutoReconnectKey, m_autoReconnect);
+    settings.setValue(kReconnectWindowKey, m_reconnectWindowS);
 }
 
 } // namespace db::gui

@@ -152,6 +152,8 @@ private:
     // connection whose drive is enabled.
     void createHealthBanner(QWidget *statusPage);
     void onHealthChanged(DeviceConnection *connection);
+    // Adds or removes the automatic reconnect of a connection as the Settings say.
+    void followReconnectSetting(DeviceConnection *connection);
     void renderHealth();
     bool confirmClose(const QList<DeviceConnection *> &connections);
     void closeByUser(DeviceConnection *connection);
@@ -200,6 +202,8 @@ private:
     Confirmation m_confirm;
     int m_connectTimeoutMs = 3000; // for new connections (Settings)
     int m_requestTimeoutMs = 1000;
+    bool m_autoReconnect = false; // Settings: reconnect after a lost link, for m_reconnectWindowS
+    int m_reconnectWindowS = 60;
     QString m_language; // the setting "language": "" follows the system
 };
 

@@ -3,6 +3,7 @@
 // enabled drive is closed.
 #include "mainwindow.h"
 
+#include "core/autoreconnect.h"
 #include "core/connectionhealth.h"
 #include "motion/axisinterface.h"
 #include "widgets/common/logconsole.h"
@@ -71,8 +72,15 @@ void MainWindow::renderHealth()
     const auto status = health ? health->status() : ConnectionHealth::Status::Idle;
     m_jogPanel->setDeviceResponding(!health || health->isResponding(),
                                     ConnectionHealth::statusText(status));
+    const AutoReconnect *reconnect = AutoReconnect::of(c);
     QString text;
     switch (status) {
+    case ConnectionHealth::Status::Connecting:
+        if (reconnect && reconnect->isActive())
+            text = tr("%1: connection lost; reconnecting automatically, attempt %2.")
+                       .arg(c->uri().toString())
+                       .arg(reconnect->attempts());
+        break;
     case ConnectionHealth::Status::WaitingForAnswer:
         text = tr("%1: the link is up, waiting for the device to answer.").arg(c->uri().toString());
         break;
@@ -84,13 +92,17 @@ void MainWindow::renderHealth()
             text += QLatin1Char(' ')
                 + tr("The values shown are from %1 and may be out of date.")
                       .arg(health->lastAnswer().toString(QStringLiteral("HH:mm:ss")));
+        if (reconnect && reconnect->isActive())
+            text += QLatin1Char(' ') + tr("Reconnecting automatically.");
+        else if (reconnect && reconnect->hasGivenUp())
+            text += QLatin1Char(' ')
+                + tr("Automatic reconnect gave up after %n attempt(s).", "", reconnect->attempts());
         break;
     }
     case ConnectionHealth::Status::ClosedByUser:
         text = tr("%1: disconnected by you.").arg(c->uri().toString());
         break;
     case ConnectionHealth::Status::Idle:
-    case ConnectionHealth::Status::Connecting:
     case ConnectionHealth::Status::Responding:
         break;
     }
@@ -101,6 +113,38 @@ void MainWindow::renderHealth()
     palette.setColor(QPalette::Window, color.lighter(185));
     palette.setColor(QPalette::WindowText, color.darker(170));
     m_healthBanner->setPalette(palette);
+}
+
+void MainWindow::followReconnectSetting(DeviceConnection *connection)
+{
+    ConnectionHealth *health = ConnectionHealth::of(connection);
+    AutoReconnect *reconnect = AutoReconnect::of(connection);
+    const int windowMs = m_reconnectWindowS * 1000;
+    if (!health || (m_autoReconnect && reconnect && reconnect->windowMs() == windowMs))
+        return;
+    delete reconnect;
+    if (!m_autoReconnect)
+        return;
+    reconnect = new AutoReconnect(health, AutoReconnect::kDefaultIntervalMs, windowMs);
+    const QString name = connection->uri().toString();
+    // Once more after the reconnect has seen the change (it connected after onHealthChanged()).
+    connect(health, &ConnectionHealth::statusChanged, reconnect, [this, connection] {
+        if (connection == currentConnection())
+            renderHealth();
+    });
+    connect(reconnect, &AutoReconnect::attemptStarted, this, [this, name](int attempt) {
+        m_log->info(tr("%1: reconnecting automatically, attempt %2").arg(name).arg(attempt));
+    });
+    connect(reconnect, &AutoReconnect::reconnected, this, [this, name](int attempts) {
+        m_log->info(tr("%1: the link is up again after %n attempt(s)", "", attempts).arg(name));
+    });
+    connect(reconnect, &AutoReconnect::gaveUp, this, [this, connection, name](int attempts) {
+        m_log->error(tr("%1: automatic reconnect gave up after %n attempt(s) in %2 s", "", attempts)
+                         .arg(name)
+                         .arg(m_reconnectWindowS));
+        if (connection == currentConnection())
+            renderHealth();
+    });
 }
 
 bool MainWindow::confirmClose(const QList<DeviceConnection *> &connections)

@@ -1,5 +1,6 @@
 #include "settingsdialog.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -36,6 +37,8 @@ SettingsDialog::SettingsDialog(const Values &values, QWidget *parent)
           milliseconds(QStringLiteral("connectTimeout"), values.connectTimeoutMs, this))
     , m_requestTimeout(
           milliseconds(QStringLiteral("requestTimeout"), values.requestTimeoutMs, this))
+    , m_autoReconnect(new QCheckBox(tr("Reconnect automatically after a lost connection"), this))
+    , m_reconnectWindow(new QSpinBox(this))
     , m_recent(new QListWidget(this))
 {
     setWindowTitle(tr("Settings"));
@@ -49,6 +52,19 @@ SettingsDialog::SettingsDialog(const Values &values, QWidget *parent)
 
     m_connectTimeout->setToolTip(tr("How long a new connection may take to reach the device"));
     m_requestTimeout->setToolTip(tr("How long a read or write waits for the device's answer"));
+
+    m_autoReconnect->setObjectName(QStringLiteral("autoReconnect"));
+    m_autoReconnect->setChecked(values.autoReconnect);
+    m_autoReconnect->setToolTip(
+        tr("When a link that was up goes down (not when you disconnect), it is opened again "
+           "every few seconds until the device is back or the time below has passed. Each "
+           "attempt is shown in the log."));
+    m_reconnectWindow->setObjectName(QStringLiteral("reconnectWindow"));
+    m_reconnectWindow->setRange(5, 3600);
+    m_reconnectWindow->setSuffix(QStringLiteral(" s"));
+    m_reconnectWindow->setValue(values.reconnectWindowS);
+    m_reconnectWindow->setEnabled(values.autoReconnect);
+    connect(m_autoReconnect, &QCheckBox::toggled, m_reconnectWindow, &QWidget::setEnabled);
 
     m_recent->setObjectName(QStringLiteral("recent"));
     m_recent->addItems(values.recent);
@@ -65,6 +81,8 @@ SettingsDialog::SettingsDialog(const Values &values, QWidget *parent)
     form->addRow(QString(), languageNote);
     form->addRow(tr("Connect time limit:"), m_connectTimeout);
     form->addRow(tr("Answer time limit:"), m_requestTimeout);
+    form->addRow(QString(), m_autoReconnect);
+    form->addRow(tr("Keep trying for:"), m_reconnectWindow);
     auto *recentBox = new QGroupBox(tr("Recent connections"), this);
     auto *recentButtons = new QHBoxLayout;
     recentButtons->addWidget(remove);
@@ -88,6 +106,8 @@ SettingsDialog::Values SettingsDialog::values() const
     v.language = m_language->currentData().toString();
     v.connectTimeoutMs = m_connectTimeout->value();
     v.requestTimeoutMs = m_requestTimeout->value();
+    v.autoReconnect = m_autoReconnect->isChecked();
+    v.reconnectWindowS = m_reconnectWindow->value();
     for (int row = 0; row < m_recent->count(); ++row)
         v.recent << m_recent->item(row)->text();
     return v;

@@ -38,6 +38,9 @@ struct SdoClient::Channel
     std::optional<Job> active;
     QTimer timer; // response timeout of the active transfer
     QTimer quiet; // kLateGraceMs after a timeout: late answers are dropped, nothing is sent
+    // Timeouts since the node last answered: only the first of a silent episode is logged at
+    // info level, so that a node that stops answering does not flood the user's log.
+    int timeoutsInRow = 0;
 };
 
 SdoClient::SdoClient(CanBus *bus, QObject *parent)
@@ -174,6 +177,10 @@ void SdoClient::onFrame(const QCanBusFrame &frame)
              QStringLiteral("not an answer to %1").arg(ch.active->transfer->describe()));
         return;
     }
+    if (ch.timeoutsInRow > 1)
+        qCInfo(lcSdo).noquote() << "node" << node << "answers again after" << ch.timeoutsInRow
+                                << "timeouts";
+    ch.timeoutsInRow = 0;
     apply(ch, step);
 }
 
@@ -241,7 +248,10 @@ void SdoClient::onTimeout(Channel &ch)
                              .arg(ch.node)
                              .arg(t.describe())
                              .arg(ch.active->timeoutMs);
-    qCInfo(lcSdo).noquote() << what;
+    if (ch.timeoutsInRow++ == 0)
+        qCInfo(lcSdo).noquote() << what;
+    else
+        qCDebug(lcSdo).noquote() << what;
     Q_EMIT logLine(what);
     // Tell the server to give up too (CiA 301 7.2.4.3.17); the bus may already be gone.
     m_bus->send(

@@ -43,6 +43,17 @@ ConnectionHealth *ConnectionHealth::of(const DeviceConnection *connection)
         : nullptr;
 }
 
+bool ConnectionHealth::isSilent(const DeviceConnection *connection)
+{
+    const ConnectionHealth *health = of(connection);
+    return health && health->status() == Status::NotResponding;
+}
+
+int ConnectionHealth::pollIntervalMs(const DeviceConnection *connection, int normalMs)
+{
+    return isSilent(connection) ? qMax(normalMs, kSilentPollIntervalMs) : normalMs;
+}
+
 void ConnectionHealth::onStateChanged(DeviceConnection::State state)
 {
     switch (state) {

@@ -40,11 +40,19 @@ public:
 
     static constexpr int kTimeoutsBeforeSilent = 3;
     static constexpr int kProbeIntervalMs = 2000;
+    // While a device does not answer, pollers ask it this seldom: each round would only add
+    // timeouts, and the probe notices when it answers again.
+    static constexpr int kSilentPollIntervalMs = 5000;
 
     explicit ConnectionHealth(DeviceConnection *connection);
 
     // The health object of connection (made by whoever shows it), or null.
     static ConnectionHealth *of(const DeviceConnection *connection);
+    // True when connection has a health and it says NotResponding.
+    static bool isSilent(const DeviceConnection *connection);
+    // The pause a poller of connection leaves before its next round: normalMs, or at least
+    // kSilentPollIntervalMs while the device does not answer.
+    static int pollIntervalMs(const DeviceConnection *connection, int normalMs);
 
     DeviceConnection *connection() const { return m_connection; }
     Status status() const { return m_status; }

@@ -1,5 +1,6 @@
 #include "statussource.h"
 
+#include "connectionhealth.h"
 #include "deviceconnection.h"
 #include "reply.h"
 
@@ -126,7 +127,7 @@ void StatusSource::finishCycle()
         m_fresh.clear(); // the link went away during the cycle
     ++m_cycles;
     Q_EMIT updated();
-    schedule(m_intervalMs);
+    schedule(ConnectionHealth::pollIntervalMs(m_connection, m_intervalMs));
 }
 
 std::optional<quint32> StatusSource::statusWord() const

@@ -32,6 +32,7 @@ RequestEngineBase::RequestEngineBase(ByteStream *stream, Category category, Cate
     connect(m_stream, &ByteStream::closed, this, [this](const Error &error) {
         m_quiet.stop();
         m_keepAlive.stop();
+        m_timeoutsInRow = 0; // a new link starts a new episode
         onClosed(error);
     });
 }
@@ -85,10 +86,23 @@ void RequestEngineBase::restartKeepAlive()
 
 void RequestEngineBase::finish(Reply *reply, bool keepAlive, const Result<QVariant> &result)
 {
+    const bool timedOut = !result.ok() && result.error().kind() == Error::Kind::Timeout;
     if (!result.ok()) {
         const QString what = keepAlive ? QStringLiteral("keep-alive: ") : QString();
-        qCInfo(m_category).noquote() << what + result.error().toString();
+        if (timedOut && m_timeoutsInRow > 0)
+            qCDebug(m_category).noquote() << what + result.error().toString();
+        else
+            qCInfo(m_category).noquote() << what + result.error().toString();
         Q_EMIT logLine(QStringLiteral("! ") + what + result.error().message());
+    }
+    if (timedOut) {
+        ++m_timeoutsInRow;
+    } else if (result.ok() || result.error().kind() == Error::Kind::DeviceError) {
+        if (m_timeoutsInRow > 1)
+            qCInfo(m_category).noquote() << QStringLiteral("%1 answers again after %2 timeouts")
+                                                .arg(m_stream->peerName())
+                                                .arg(m_timeoutsInRow);
+        m_timeoutsInRow = 0;
     }
     if (!reply)
         return; // a keep-alive, or the requester deleted the reply

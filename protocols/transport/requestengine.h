@@ -140,7 +140,8 @@ protected:
     void enableKeepAlive(int idleMs);
     void restartKeepAlive();
 
-    // Finishes a request's reply (a keep-alive has none), logging failures.
+    // Finishes a request's reply (a keep-alive has none), logging failures: one info line per
+    // episode of timeouts (the first, and the answer that ends it), the rest at debug level.
     void finish(Reply *reply, bool keepAlive, const Result<QVariant> &result);
     void logReceivedRaw(const QByteArray &bytes) const;
     void logAnswer(const QString &summary, bool keepAlive);
@@ -168,6 +169,9 @@ private:
     int m_keepAliveIdleMs = 0;
     bool m_foreignAnswerFails = false;
     bool m_dropPartialOnTimeout = false;
+    // Timeouts since the device last answered: only the first of a silent episode is logged
+    // at info level, so that a device that stops answering does not flood the user's log.
+    int m_timeoutsInRow = 0;
 };
 
 template<typename Protocol>

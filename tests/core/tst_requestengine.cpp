@@ -118,6 +118,7 @@ private Q_SLOTS:
     void answerSplitAcrossSegmentsIsReassembled();
     void twoAnswersInOneSegmentFinishTwoRequests();
     void silentDeviceTimesOutOnceAndNextRequestIsSent();
+    void silentEpisodeIsLoggedOnceAtInfoLevel();
     void lateAnswerAfterTimeoutIsDroppedNotGivenToNextRequest();
     void lateAnswerWithSameTagIsDroppedNotGivenToNextRequest();
     void nextRequestWaitsOutLateGraceAfterTimeout();
@@ -238,6 +239,43 @@ void TstRequestEngine::silentDeviceTimesOutOnceAndNextRequestIsSent()
     QCOMPARE(m_stream->writes(), QByteArrayList({ "a\n", "b\n" }));
     m_stream->feed("b=2\n");
     QCOMPARE(await(b).value(), QVariant(QStringLiteral("2")));
+}
+
+namespace {
+// The info-level lines of the test engine's category (what the GUI's log console shows).
+QStringList g_infoLines;
+QtMessageHandler g_previous = nullptr;
+void collectInfo(QtMsgType type, const QMessageLogContext &context, const QString &message)
+{
+    if (type == QtInfoMsg && context.category
+        && qstrcmp(context.category, "drivebench.test.engine") == 0)
+        g_infoLines.append(message);
+    g_previous(type, context, message);
+}
+} // namespace
+
+void TstRequestEngine::silentEpisodeIsLoggedOnceAtInfoLevel()
+{
+    g_infoLines.clear();
+    g_previous = qInstallMessageHandler(collectInfo);
+    auto restore = qScopeGuard([] { qInstallMessageHandler(g_previous); });
+    m_engine->setTimeoutMs(kShortTimeoutMs);
+    for (const char *tag : { "a", "b", "c", "d", "e" })
+        QCOMPARE(await(submit(tag)).error().kind(), Error::Kind::Timeout);
+    QCOMPARE(g_infoLines.size(), 1); // one line for the episode, not one per timeout
+    QVERIFY2(g_infoLines.at(0).contains(QLatin1String("'a'")), qPrintable(g_infoLines.at(0)));
+    m_engine->setTimeoutMs(kWaitMs);
+    Reply *f = submit("f");
+    QTRY_VERIFY(m_stream->writes().contains("f\n"));
+    m_stream->feed("f=1\n");
+    QCOMPARE(await(f).value(), QVariant(QStringLiteral("1")));
+    QCOMPARE(g_infoLines.size(), 2);
+    QVERIFY2(g_infoLines.at(1).contains(QLatin1String("answers again after 5 timeouts")),
+             qPrintable(g_infoLines.at(1)));
+    // The next silence is a new episode with its own line.
+    m_engine->setTimeoutMs(kShortTimeoutMs);
+    QCOMPARE(await(submit("g")).error().kind(), Error::Kind::Timeout);
+    QCOMPARE(g_infoLines.size(), 3);
 }
 
 void TstRequestEngine::lateAnswerAfterTimeoutIsDroppedNotGivenToNextRequest()

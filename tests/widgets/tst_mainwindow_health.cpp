@@ -105,6 +105,7 @@ private Q_SLOTS:
         SilentPeer peer;
         QVERIFY(peer.isListening());
         MainWindow window(app::protocolRegistry());
+        window.logConsole()->installMessageHandler();
         window.show();
         auto opened = window.openConnection(peer.uri());
         QVERIFY(opened.ok());
@@ -126,6 +127,11 @@ private Q_SLOTS:
         QVERIFY(!motionButton(window, QStringLiteral("jogMinus"))->isEnabled());
         // No limits from a drive that never answered.
         QVERIFY(!window.jogPanel()->limitsKnown());
+        // One log line for the silence, not one per timeout (three timeouts by now).
+        QCoreApplication::processEvents();
+        const QString log = window.logConsole()->toPlainText();
+        QVERIFY2(log.count(QStringLiteral("] timeout: no answer to")) == 1, qPrintable(log));
+        QVERIFY2(log.count(QStringLiteral("not responding")) == 1, qPrintable(log));
         QVERIFY(!window.recentConnections().contains(peer.uri()));
     }
 
@@ -169,6 +175,35 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!window.statusPanel()->isStale(ObjectAddress(0x6041, 0)), kWaitMs);
         QTRY_VERIFY_WITH_TIMEOUT(motionButton(window, QStringLiteral("enable"))->isEnabled(),
                                  kWaitMs);
+    }
+
+    // With the setting on, a lost link is opened again, each attempt in the log and banner.
+    void lostLinkIsReconnectedWhenSet()
+    {
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        auto values = window.settingsValues();
+        QVERIFY(!values.autoReconnect); // off by default
+        values.autoReconnect = true;
+        values.reconnectWindowS = 30;
+        window.applySettings(values);
+        window.show();
+        auto opened = window.openConnection(demo.refgoUri());
+        QVERIFY(opened.ok());
+        ConnectionHealth *health = ConnectionHealth::of(*opened);
+        QTRY_COMPARE_WITH_TIMEOUT(health->status(), ConnectionHealth::Status::Responding, kWaitMs);
+        QVERIFY(demo.dropClients() > 0);
+        QTRY_COMPARE_WITH_TIMEOUT(health->status(), ConnectionHealth::Status::Lost, kWaitMs);
+        QVERIFY2(banner(window)->text().contains(QStringLiteral("Reconnecting automatically")),
+                 qPrintable(banner(window)->text()));
+        QTRY_COMPARE_WITH_TIMEOUT(health->status(), ConnectionHealth::Status::Responding, kWaitMs);
+        const QString log = window.logConsole()->toPlainText();
+        QVERIFY2(log.contains(QStringLiteral("reconnecting automatically, attempt 1")),
+                 qPrintable(log));
+        QVERIFY2(log.contains(QStringLiteral("up again after 1 attempt")), qPrintable(log));
+        QVERIFY(!banner(window)->isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(!window.statusPanel()->isStale(ObjectAddress(0x6041, 0)), kWaitMs);
     }
 
     void ownDisconnectIsNotAnError()

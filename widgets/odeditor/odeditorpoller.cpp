@@ -2,6 +2,8 @@
 
 #include "odeditormodel.h"
 
+#include "core/connectionhealth.h"
+
 namespace db::widgets {
 
 OdEditorPoller::OdEditorPoller(OdEditorModel *model, QObject *parent)
@@ -67,6 +69,10 @@ void OdEditorPoller::tick()
 {
     // The previous round is still running: skip this one rather than pile up requests.
     if (!m_urgent.isEmpty() || !m_connection || !m_connection->isConnected() || !m_visibleRows)
+        return;
+    // A device that does not answer is not asked every period; the next round after it has
+    // answered again (ConnectionHealth probes it meanwhile).
+    if (ConnectionHealth::isSilent(m_connection))
         return;
     readNow(m_visibleRows(), true);
 }
