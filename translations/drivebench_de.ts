@@ -3344,6 +3344,39 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>Connect to %1</source>
         <translation>Mit %1 verbinden</translation>
     </message>
+    <message>
+        <source>%1: connection lost; reconnecting automatically, attempt %2.</source>
+        <translation>%1: Verbindung verloren; automatischer Wiederaufbau, Versuch %2.</translation>
+    </message>
+    <message>
+        <source>Reconnecting automatically.</source>
+        <translation>Die Verbindung wird automatisch wieder aufgebaut.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Automatic reconnect gave up after %n attempt(s).</source>
+        <translation>
+            <numerusform>Automatischer Wiederaufbau nach %n Versuch aufgegeben.</numerusform>
+            <numerusform>Automatischer Wiederaufbau nach %n Versuchen aufgegeben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: reconnecting automatically, attempt %2</source>
+        <translation>%1: automatischer Wiederaufbau, Versuch %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: the link is up again after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1: Verbindung nach %n Versuch wieder aufgebaut</numerusform>
+            <numerusform>%1: Verbindung nach %n Versuchen wieder aufgebaut</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: automatic reconnect gave up after %n attempt(s) in %2 s</source>
+        <translation>
+            <numerusform>%1: automatischer Wiederaufbau nach %n Versuch in %2 s aufgegeben</numerusform>
+            <numerusform>%1: automatischer Wiederaufbau nach %n Versuchen in %2 s aufgegeben</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>db::gui::SettingsDialog</name>
@@ -3390,6 +3423,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Recent connections</source>
         <translation>Letzte Verbindungen</translation>
+    </message>
+    <message>
+        <source>Reconnect automatically after a lost connection</source>
+        <translation>Verlorene Verbindung automatisch wieder aufbauen</translation>
+    </message>
+    <message>
+        <source>When a link that was up goes down (not when you disconnect), it is opened again every few seconds until the device is back or the time below has passed. Each attempt is shown in the log.</source>
+        <translation>Bricht eine bestehende Verbindung ab (nicht wenn Sie sie trennen), wird sie alle paar Sekunden neu geöffnet, bis das Gerät wieder antwortet oder die unten eingestellte Zeit vergangen ist. Jeder Versuch erscheint im Protokoll.</translation>
+    </message>
+    <message>
+        <source>Keep trying for:</source>
+        <translation>Wie lange versuchen:</translation>
     </message>
 </context>
 <context>
