@@ -4,6 +4,8 @@ facts in ../shared/specs/movingcap_objects.csv and movingcap_errors.csv (movingc
 and 7), with the spec's readings of the manual's gaps and errata applied (see FIXES below).
 
 Run from the repository root:  python3 tools/make_movingcap_description.py
+(--clean: only drop the notes about the sources from the descriptions of the existing file, which
+has objects added by hand since it was generated.)
 """
 import csv
 import re
@@ -113,7 +115,37 @@ def user_text(text):
                   r"The drive's web page shows it as \1", text)
     text = re.sub(r"\(shown as ('[^']*') in (?:the )?web footer\)",
                   r"(on the drive's web page: \1)", text)
-    return text.strip()
+    return drop_notes(text).strip()
+
+
+# Sentences that talk about the sources rather than the drive (what the manual says or leaves
+# out, its errata and typos) are notes for us, not for users.
+NOTE = re.compile(r"not stated|\bmanual\b|Manual (?!setup)|Manual's|errata|typo|[Tt]ext example")
+
+
+def drop_notes(text):
+    text = text.replace('Values used in manual:', 'Common values:')
+    sentences = re.split(r'(?<=\.)\s+(?=[A-Z(])', text)
+    kept = [s for s in sentences if not NOTE.search(s)]
+    text = ' '.join(kept)
+    # "RABBIT: ..." reads as a tag; RABBIT is the drive's controller.
+    text = re.sub(r'^RABBIT motor parameter: ', 'Motor parameter of the RABBIT controller: ',
+                  text)
+    text = re.sub(r'^RABBIT: (\w)', lambda m: 'RABBIT controller: ' + m.group(1), text)
+    return text
+
+
+def clean_json(path):
+    """Applies drop_notes() to every description of an existing description file in place."""
+    with open(path, encoding='utf-8') as f:
+        doc = json.load(f)
+    for obj in doc['objects']:
+        if 'description' in obj:
+            obj['description'] = drop_notes(obj['description']).strip()
+    doc['device']['revision'] = '1'
+    with open(path, 'w', encoding='utf-8') as f:
+        json.dump(doc, f, indent=1, ensure_ascii=False)
+        f.write('\n')
 
 
 def main():
@@ -192,7 +224,7 @@ def main():
         'comment': 'drivebench\'s own description of the MovingCap ETH '
                    '(tools/make_movingcap_description.py).',
         'device': {'vendor': 'Fullmo GmbH', 'vendorId': '0x0000053B',
-                   'product': 'MovingCap ETH', 'revision': 'manual rev. 0 (2026-01-09)',
+                   'product': 'MovingCap ETH', 'revision': '1',
                    'version': '1'},
         'objects': objects,
         'errors': errors,
@@ -204,4 +236,7 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    if sys.argv[1:2] == ['--clean']:
+        clean_json(OUT)
+    else:
+        main()

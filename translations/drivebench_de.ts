@@ -1629,10 +1629,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>getrennt</translation>
     </message>
     <message>
-        <source>malformed answer</source>
-        <translation>fehlerhafte Antwort</translation>
-    </message>
-    <message>
         <source>device error</source>
         <translation>Gerätefehler</translation>
     </message>
@@ -1651,6 +1647,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>error</source>
         <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>malformed data</source>
+        <translation>fehlerhafte Daten</translation>
     </message>
 </context>
 <context>

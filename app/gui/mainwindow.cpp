@@ -7,6 +7,7 @@
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/common/tooltipwrapper.h"
 #include "widgets/common/wheelguard.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
@@ -83,6 +84,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     setObjectName(QStringLiteral("MainWindow"));
     m_connectionState->setObjectName(QStringLiteral("connectionState"));
     widgets::WheelGuard::install(); // the wheel never changes an unfocused spin or combo box
+    widgets::ToolTipWrapper::install(); // long tooltips wrap
 
     // The centre is a set of pages (drive status, object dictionary, scope, ...); docks around it.
     m_pages = new QTabWidget(this);

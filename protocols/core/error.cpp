@@ -32,7 +32,8 @@ QString Error::kindName(Kind kind)
     case Kind::Disconnected:
         return tr("disconnected");
     case Kind::Malformed:
-        return tr("malformed answer");
+        // Device answers and files alike (a file's errors also name the file and line).
+        return tr("malformed data");
     case Kind::DeviceError:
         return tr("device error");
     case Kind::Cancelled:

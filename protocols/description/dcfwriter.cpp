@@ -1,5 +1,6 @@
 #include "dcfwriter.h"
 
+#include "descriptionlibrary.h"
 #include "devicedescription.h"
 
 #include <QCoreApplication>
@@ -38,6 +39,23 @@ QString hex32(quint32 v)
 QString accessText(Access access)
 {
     return access::name(access);
+}
+
+// A number of the identity object (1018h) as the device reported it in `values`, else the
+// description's when it states one; nothing when neither knows it (never a made-up 0).
+std::optional<quint32> identityNumber(const QMap<ObjectAddress, QVariant> &values, quint8 sub,
+                                      std::optional<quint32> fromDescription)
+{
+    bool ok = false;
+    const qulonglong v = values.value(ObjectAddress(0x1018, sub)).toULongLong(&ok);
+    if (ok && v <= 0xFFFFFFFFULL)
+        return quint32(v);
+    return fromDescription;
+}
+
+std::optional<quint32> nonZero(quint32 v)
+{
+    return v != 0 ? std::optional<quint32>(v) : std::nullopt;
 }
 
 void writeEntry(QTextStream &out, const ObjectDef &def, const QMap<ObjectAddress, QVariant> &values)
@@ -119,11 +137,19 @@ QByteArray dcfText(const ObjectDictionary &dictionary, const QMap<ObjectAddress,
         << "ModifiedBy=drivebench\n";
     if (!id.descriptionFile.isEmpty())
         out << "LastEDS=" << QFileInfo(id.descriptionFile).fileName() << '\n';
-    out << "\n[DeviceInfo]\nVendorName=" << oneLine(id.vendorName) << '\n'
-        << "VendorNumber=" << hex32(id.vendorId) << '\n'
-        << "ProductName=" << oneLine(id.productName) << '\n'
-        << "ProductNumber=" << hex32(id.productCode) << '\n'
-        << "RevisionNumber=" << oneLine(id.revision) << "\n\n";
+    // CiA 306 4.6: the numbers are Unsigned32; the device's own 1018h wins over the description.
+    const auto vendor = identityNumber(values, 1, nonZero(id.vendorId));
+    const auto product = identityNumber(values, 2, nonZero(id.productCode));
+    const auto revision = identityNumber(values, 3, parseRevision(id.revision));
+    out << "\n[DeviceInfo]\nVendorName=" << oneLine(id.vendorName) << '\n';
+    if (vendor)
+        out << "VendorNumber=" << hex32(*vendor) << '\n';
+    out << "ProductName=" << oneLine(id.productName) << '\n';
+    if (product)
+        out << "ProductNumber=" << hex32(*product) << '\n';
+    if (revision)
+        out << "RevisionNumber=" << hex32(*revision) << '\n';
+    out << '\n';
     out << "[DeviceComissioning]\n";
     if (commissioning.nodeId > 0)
         out << "NodeID=" << commissioning.nodeId << '\n';

@@ -15,6 +15,7 @@ constexpr int kMaxConsecutiveTimeouts = 2;
 constexpr int kMaxPipelineDepth = 8;
 constexpr ObjectAddress kVendorId { 0x1018, 1 };
 constexpr ObjectAddress kProductCode { 0x1018, 2 };
+constexpr ObjectAddress kRevision { 0x1018, 3 };
 
 // The type of a value read from an object the description does not know.
 DataType typeOfValue(const QVariant &raw)
@@ -103,11 +104,13 @@ void ParameterBackup::start()
     // description's; read them first when the description has them and the scope does not.
     m_identityOnly.clear();
     m_set.identity = dict.identity;
-    for (const ObjectAddress a : { kProductCode, kVendorId }) {
+    for (const ObjectAddress a : { kRevision, kProductCode, kVendorId }) {
         const ObjectDef *def = dict.find(a);
         if (m_explicit.isEmpty() && def && def->readable() && !m_todo.contains(a)) {
             m_todo.prepend(a);
             m_identityOnly.insert(a);
+            if (a == kRevision)
+                continue; // the description's revision stays until the device has answered
             // Unknown until the device has answered: the description's number is not the
             // device's, and 0 would read as a product code.
             (a == kVendorId ? m_set.vendorIdKnown : m_set.productCodeKnown) = false;
@@ -226,7 +229,11 @@ void ParameterBackup::onReply(Reply *reply)
     } else if (m_identityOnly.contains(address)) {
         m_timeoutsInRow = 0;
         const bool vendor = address == kVendorId;
-        if (const auto code = codec::normalize(DataType::Unsigned32, reply->value())) {
+        const auto code = codec::normalize(DataType::Unsigned32, reply->value());
+        if (code && address == kRevision) {
+            m_set.identity.revision = QStringLiteral("0x%1").arg(
+                QStringLiteral("%1").arg(code->toULongLong(), 8, 16, QLatin1Char('0')).toUpper());
+        } else if (code) {
             (vendor ? m_set.identity.vendorId : m_set.identity.productCode) =
                 quint32(code->toULongLong());
             (vendor ? m_set.vendorIdKnown : m_set.productCodeKnown) = true;

@@ -83,6 +83,7 @@ class TestDcfWriter : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void textFollowsCia306();
+    void deviceInfoComesFromTheDevice();
     void roundTripKeepsValuesAndDefinitions();
     void roundTripOfRealFiles_data();
     void roundTripOfRealFiles();
@@ -110,6 +111,30 @@ void TestDcfWriter::textFollowsCia306()
                                          "SubNumber=3\n")));
     QVERIFY(text.contains(QStringLiteral("[3000sub2]\nParameterName=B\n")));
     QVERIFY(!text.contains(QStringLiteral("[7000]")));
+}
+
+void TestDcfWriter::deviceInfoComesFromTheDevice()
+{
+    ObjectDictionary d = handMade();
+    d.identity.productCode = 0; // the description does not know it
+    d.identity.revision = QStringLiteral("1.0 beta"); // free text, not a number
+    const QString unknown = QString::fromUtf8(dcfText(d, {}, {}));
+    QVERIFY2(!unknown.contains(QStringLiteral("ProductNumber=")), qPrintable(unknown));
+    QVERIFY(!unknown.contains(QStringLiteral("RevisionNumber=")));
+    QVERIFY(unknown.contains(QStringLiteral("VendorNumber=0x00001234\n")));
+
+    QMap<ObjectAddress, QVariant> values;
+    values.insert(ObjectAddress(0x1018, 1), QVariant::fromValue(0x2D6u));
+    values.insert(ObjectAddress(0x1018, 2), QVariant::fromValue(0x1234ABCDu));
+    values.insert(ObjectAddress(0x1018, 3), QVariant::fromValue(0x10002u));
+    const QString text = QString::fromUtf8(dcfText(d, values, {}));
+    QVERIFY2(text.contains(QStringLiteral("VendorNumber=0x000002D6\n")), qPrintable(text));
+    QVERIFY(text.contains(QStringLiteral("ProductNumber=0x1234ABCD\n")));
+    QVERIFY(text.contains(QStringLiteral("RevisionNumber=0x00010002\n")));
+
+    d.identity.revision = QStringLiteral("0x00030001"); // a numeric description revision
+    QVERIFY(QString::fromUtf8(dcfText(d, {}, {}))
+                .contains(QStringLiteral("RevisionNumber=0x00030001\n")));
 }
 
 void TestDcfWriter::roundTripKeepsValuesAndDefinitions()

@@ -219,6 +219,10 @@ private Q_SLOTS:
         const auto loaded = view.loadFile(path);
         QVERIFY(!loaded.ok());
         QVERIFY(view.statusText().contains(QStringLiteral("corrupt.dbp")));
+        // A file's error names the file and line, not a device's "malformed answer".
+        QVERIFY2(view.statusText().startsWith(path + QStringLiteral(":4: ")),
+                 qPrintable(view.statusText()));
+        QVERIFY(!view.statusText().contains(QStringLiteral("answer")));
         QVERIFY(!view.hasFileSet());
         QVERIFY(f->writes.isEmpty());
         QCOMPARE(f->readCount, 0);
@@ -227,6 +231,8 @@ private Q_SLOTS:
     void backupStoreAndCancel()
     {
         auto f = fake();
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0xABCDEFu));
+        f->setValue({ 0x1018, 3 }, QVariant::fromValue(0x20003u));
         QTRY_VERIFY(f->isConnected());
         widgets::ParameterSetActions actions(nullptr);
         actions.setConnection(f.get());
@@ -250,6 +256,11 @@ private Q_SLOTS:
         const QByteArray dcfText = dcfFile.readAll();
         QVERIFY(dcfText.contains("[DeviceInfo]"));
         QVERIFY(dcfText.contains("[6081]"));
+        // The identity is the device's, numeric, never a made-up 0.
+        QVERIFY2(dcfText.contains("ProductNumber=0x00ABCDEF\n"), dcfText.constData());
+        QVERIFY(dcfText.contains("RevisionNumber=0x00020003\n"));
+        QVERIFY(!dcfText.contains("=0x00000000\n[DeviceComissioning]"));
+        QVERIFY(!dcfText.contains("ProductNumber=0x00000000"));
 
         // Cancel while reading: nothing is saved.
         f->replyDelayMs = 20;

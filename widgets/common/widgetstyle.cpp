@@ -45,6 +45,13 @@ void setTextColor(QWidget *widget, const QColor &color)
     widget->setPalette(pal);
 }
 
+QString toolTip(const QString &plainText)
+{
+    if (plainText.isEmpty())
+        return {};
+    return QStringLiteral("<p>") + plainText.toHtmlEscaped() + QStringLiteral("</p>");
+}
+
 void setStale(QLabel *label, bool stale)
 {
     if (label->property("stale").toBool() == stale && label->property("stale").isValid())

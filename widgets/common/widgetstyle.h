@@ -25,6 +25,11 @@ QColor warningColor();
 QColor errorColor();
 QColor inactiveColor();
 
+// A tooltip for plain text of any length (a description, an error): as rich text, which Qt
+// wraps at a readable width, where a long plain-text tooltip is one line as wide as the screen.
+// Empty stays empty.
+QString toolTip(const QString &plainText);
+
 // Greys a value label out (value not current) or restores its normal colour.
 void setStale(QLabel *label, bool stale);
 // Sets the text colour of a label (invalid colour = the palette's).

@@ -199,7 +199,7 @@ void ObjectAccessBox::updateInfo()
         if (!known->unit.isEmpty())
             info += tr(", unit %1").arg(known->unit.toHtmlEscaped());
         m_info->setText(info);
-        m_info->setToolTip(known->description);
+        m_info->setToolTip(style::toolTip(known->description));
         style::setTextColor(m_info, QColor());
     } else {
         m_info->setText(tr("%1 is not in the device description; it is read as an integer, "

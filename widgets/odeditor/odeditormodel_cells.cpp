@@ -152,10 +152,10 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
             QString tip = cell.message;
             if (!def.writable())
                 tip = tip.isEmpty() ? tr("read-only") : tip;
-            return tip.isEmpty() ? QVariant() : QVariant(tip);
+            return tip.isEmpty() ? QVariant() : QVariant(style::toolTip(tip));
         }
         if (column == Name && !def.description.isEmpty())
-            return def.description;
+            return style::toolTip(def.description);
         return {};
     case Qt::DisplayRole:
         break;

@@ -162,7 +162,11 @@ Result<void> ParamCompareView::loadFile(const QString &path)
 {
     auto set = ParameterSet::load(path);
     if (!set) {
-        showStatus(tr("Cannot load %1: %2").arg(QFileInfo(path).fileName(), set.error().toString()),
+        // A parse error names the file and line itself ("set.dbp:19: ..."); others get the name.
+        const Error &e = set.error();
+        showStatus(e.kind() == Error::Kind::Malformed
+                       ? e.message()
+                       : tr("Cannot load %1: %2").arg(QFileInfo(path).fileName(), e.message()),
                    style::errorColor());
         return set.error();
     }

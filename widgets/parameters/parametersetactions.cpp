@@ -1,6 +1,7 @@
 #include "parametersetactions.h"
 
 #include "description/dcfwriter.h"
+#include "description/descriptionlibrary.h"
 
 #include <QAction>
 #include <QDateTime>
@@ -175,7 +176,15 @@ void ParameterSetActions::exportDcfTo(const QString &path)
             commissioning.nodeId = quint8(node.value());
         const ObjectDictionary dictionary =
             m_connection ? m_connection->dictionary() : ObjectDictionary();
-        const auto written = writeDcf(path, dictionary, set.values(), commissioning);
+        // The identity the device reported goes into [DeviceInfo] and 1018h.
+        QMap<ObjectAddress, QVariant> values = set.values();
+        if (set.vendorIdKnown && set.identity.vendorId != 0)
+            values.insert(ObjectAddress(0x1018, 1), QVariant::fromValue(set.identity.vendorId));
+        if (set.productCodeKnown && set.identity.productCode != 0)
+            values.insert(ObjectAddress(0x1018, 2), QVariant::fromValue(set.identity.productCode));
+        if (const auto revision = parseRevision(set.identity.revision))
+            values.insert(ObjectAddress(0x1018, 3), QVariant::fromValue(*revision));
+        const auto written = writeDcf(path, dictionary, values, commissioning);
         report(written ? tr("Exported the DCF with %n value(s) to %1", nullptr, set.size())
                              .arg(QDir::toNativeSeparators(path))
                        : tr("DCF not written: %1").arg(written.error().toString()),
