@@ -5215,6 +5215,30 @@ Letzter Fehler: %1</translation>
         <source>Not responding</source>
         <translation>Antwortet nicht</translation>
     </message>
+    <message>
+        <source>ErrorStop: %1. The axis takes no motion command until Reset in the Motion dock.</source>
+        <translation>ErrorStop: %1. Die Achse nimmt keinen Fahrbefehl an, bis Sie im Bereich Bewegung Zurücksetzen wählen.</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>Jog velocity</source>
+        <translation>Tippgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Jog acceleration</source>
+        <translation>Tippbeschleunigung</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 (the drive&apos;s maximum)</source>
+        <translation>%1 %2 → %3 (Maximum des Antriebs)</translation>
+    </message>
+    <message>
+        <source>Lowered to this drive&apos;s limits: %1</source>
+        <translation>Auf die Grenzen dieses Antriebs gesenkt: %1</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::LogConsole</name>
@@ -5605,6 +5629,46 @@ Letzter Fehler: %1</translation>
     <message>
         <source>%1 not started: %2. Correct the input; the axis is unchanged.</source>
         <translation>%1 nicht gestartet: %2. Eingabe korrigieren; die Achse ist unverändert.</translation>
+    </message>
+    <message>
+        <source>At most %1%2: %3</source>
+        <translation>Höchstens %1%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3%4: %5</source>
+        <translation>%1 %2 → %3%4: %5</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s maximum velocity</source>
+        <translation>die Höchstgeschwindigkeit des Antriebs</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s maximum acceleration</source>
+        <translation>die Höchstbeschleunigung des Antriebs</translation>
+    </message>
+    <message>
+        <source>Deceleration</source>
+        <translation>Verzögerung</translation>
+    </message>
+    <message>
+        <source>Jerk</source>
+        <translation>Ruck</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s maximum jerk</source>
+        <translation>der höchste Ruck des Antriebs</translation>
+    </message>
+    <message>
+        <source>Lowered to this drive&apos;s limits: %1</source>
+        <translation>Auf die Grenzen dieses Antriebs gesenkt: %1</translation>
     </message>
 </context>
 <context>

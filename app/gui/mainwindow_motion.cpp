@@ -3,6 +3,7 @@
 
 #include "widgets/common/logconsole.h"
 #include "widgets/common/verticalscrollarea.h"
+#include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
 
 #include <QApplication>
@@ -67,6 +68,11 @@ void MainWindow::createMotionDock()
     connect(m_jogPanel, &widgets::JogPanel::stopped, this, [this](const QString &reason) {
         if (widgets::LogConsole *log = logConsole())
             log->warning(tr("Motion stopped: %1").arg(reason));
+    });
+    // The Drive Status page says what the Motion dock says about ErrorStop.
+    connect(m_jogPanel, &widgets::JogPanel::motionNoteChanged, this, [this](const QString &note) {
+        if (m_statusPanel)
+            m_statusPanel->setMotionNote(note);
     });
 }
 

@@ -402,6 +402,60 @@ private Q_SLOTS:
         QTest::mouseRelease(b->button("jogPlus"), Qt::LeftButton);
     }
 
+    // Motion settings belong to a device: a slower drive lowers them and says so, and the first
+    // drive gets its own values back.
+    void motionSettingsAreKeptPerDevice()
+    {
+        auto fast = makeBench();
+        QVERIFY(fast);
+        app::DemoDrive slowDrive;
+        QVERIFY(slowDrive.startRefgo());
+        auto created = app::protocolRegistry().create(slowDrive.refgoUri());
+        QVERIFY(created.ok());
+        std::shared_ptr<DeviceConnection> slow = created.value();
+        // A drive whose description allows a tenth of the acceleration (6083h at most 30, the
+        // axis shows 300 units/s²).
+        ObjectDictionary dict = slow->dictionary();
+        ObjectDef profileAcceleration = *dict.find(ObjectAddress(0x6083, 0));
+        profileAcceleration.maximum = QVariant::fromValue(30ULL);
+        dict.insert(profileAcceleration);
+        slow->setDictionary(dict);
+        slow->open();
+        QTRY_VERIFY(slow->isConnected());
+
+        MotionForm *form = fast->panel->motionForm();
+        auto *acceleration = form->findChild<QDoubleSpinBox *>(QStringLiteral("acceleration"));
+        auto *jogAcceleration =
+            fast->panel->findChild<QDoubleSpinBox *>(QStringLiteral("jogAcceleration"));
+        acceleration->setValue(50000);
+        jogAcceleration->setValue(8000);
+        QCOMPARE(acceleration->value(), 50000.0);
+        QVERIFY(form->limitNote().isEmpty());
+
+        fast->panel->setConnection(slow.get());
+        QTRY_VERIFY_WITH_TIMEOUT(fast->panel->limitsKnown(), kMoveMs);
+        QCOMPARE(acceleration->value(), 300.0);
+        QCOMPARE(jogAcceleration->value(), 300.0);
+        // Not silently: the form and the panel say what was lowered, to what, and why.
+        QVERIFY2(form->limitNote().contains(QStringLiteral("Acceleration 20000 → 300"))
+                     && form->limitNote().contains(QStringLiteral("maximum")),
+                 qPrintable(form->limitNote()));
+        QVERIFY(form->findChild<QLabel *>(QStringLiteral("limitNote"))->isVisibleTo(form));
+        auto *message = fast->panel->findChild<QLabel *>(QStringLiteral("message"));
+        QVERIFY2(message->text().contains(QStringLiteral("Jog acceleration 5000 → 300")),
+                 qPrintable(message->text()));
+        QVERIFY2(acceleration->toolTip().contains(QStringLiteral("At most 300")),
+                 qPrintable(acceleration->toolTip()));
+
+        fast->panel->setConnection(fast->connection.get());
+        QTRY_VERIFY_WITH_TIMEOUT(fast->panel->limitsKnown(), kMoveMs);
+        QCOMPARE(acceleration->value(), 50000.0); // this drive's own values, not the slow one's
+        QCOMPARE(jogAcceleration->value(), 8000.0);
+        QVERIFY(form->limitNote().isEmpty());
+        fast->panel->setConnection(nullptr);
+        slow->close();
+    }
+
     void mainWindowEscStopsFromAnywhere()
     {
         app::DemoDrive demo;

@@ -271,11 +271,16 @@ private Q_SLOTS:
                      && message->text().contains(QStringLiteral("Reset")),
                  qPrintable(message->text()));
         QVERIFY(reset->isVisible());
+        // The Drive Status page says the same, with the reason.
+        QVERIFY2(window.statusPanel()->motionNote().contains(QStringLiteral("ErrorStop"))
+                     && window.statusPanel()->motionNote().contains(panel->lastStopReason()),
+                 qPrintable(window.statusPanel()->motionNote()));
         QTRY_VERIFY_WITH_TIMEOUT(!demo.drive().axis().isMoving(), kWaitMs);
         QTest::mouseClick(reset, Qt::LeftButton); // one click out of ErrorStop
         QTRY_VERIFY_WITH_TIMEOUT(panel->motionAxis()->state() != motion::AxisState::ErrorStop,
                                  kWaitMs);
         QVERIFY(!reset->isVisible());
+        QVERIFY(window.statusPanel()->motionNote().isEmpty());
     }
 
     void closingWithAnEnabledDriveAsks()

@@ -50,6 +50,10 @@ public:
         return m_source ? m_source->value(address) : QVariant();
     }
     bool isStale(ObjectAddress address) const { return !m_source || !m_source->isFresh(address); }
+    // A line under the state about the motion command model (the Motion dock's ErrorStop and
+    // how to leave it); hidden when empty.
+    void setMotionNote(const QString &note);
+    QString motionNote() const;
 
 Q_SIGNALS:
     // After every completed poll cycle, whether all reads succeeded or not.
@@ -100,6 +104,7 @@ private:
     QLabel *m_lastErrorText = nullptr;
     QLabel *m_linkLossLabel = nullptr;
     QLabel *m_footer = nullptr;
+    QLabel *m_motionNote = nullptr;
 };
 
 } // namespace db::widgets

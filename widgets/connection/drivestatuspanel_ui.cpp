@@ -60,6 +60,17 @@ QVBoxLayout *stacked(std::initializer_list<QWidget *> widgets)
 
 } // namespace
 
+void DriveStatusPanel::setMotionNote(const QString &note)
+{
+    m_motionNote->setText(note);
+    m_motionNote->setVisible(!note.isEmpty());
+}
+
+QString DriveStatusPanel::motionNote() const
+{
+    return m_motionNote->text();
+}
+
 void DriveStatusPanel::buildUi()
 {
     // State: the state as a coloured badge, status word and mode beside it, bit lamps below.
@@ -91,6 +102,14 @@ void DriveStatusPanel::buildUi()
     auto *stateLayout = new QVBoxLayout(stateBox);
     stateLayout->addLayout(stateTop);
     stateLayout->addLayout(m_bitRow);
+    // The motion command model's state where it differs from the drive's (ErrorStop after a
+    // quick stop), so that this page and the Motion dock tell the same story.
+    m_motionNote = new QLabel(stateBox);
+    m_motionNote->setObjectName(QStringLiteral("motionNote"));
+    m_motionNote->setWordWrap(true);
+    style::setTextColor(m_motionNote, style::errorColor());
+    m_motionNote->hide();
+    stateLayout->addWidget(m_motionNote);
 
     // Actual values: rows per family.
     m_valuesBox = new QGroupBox(tr("Actual values"), this);

@@ -25,6 +25,7 @@ JogPanel::JogPanel(QWidget *parent)
 {
     setFocusPolicy(Qt::StrongFocus);
     buildUi();
+    m_defaults = settings();
     m_keepAlive = new QTimer(this);
     m_keepAlive->setObjectName(QStringLiteral("keepAliveTimer"));
     m_keepAlive->setInterval(kKeepAliveMs);
@@ -91,6 +92,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
         return;
     teardown();
     ++m_generation;
+    keepSettingsFor(connection);
     m_connection = connection;
     setMessage({});
     if (!connection) {
@@ -324,6 +326,7 @@ void JogPanel::noteStop(const QString &reason)
                    style::warningColor());
     else
         setMessage(tr("Stopped: %1").arg(reason), style::warningColor());
+    render(); // the ErrorStop note names this reason
     Q_EMIT stopped(reason);
 }
 

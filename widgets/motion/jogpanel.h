@@ -7,8 +7,10 @@
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
+#include <QHash>
 #include <QPointer>
 #include <QTimer>
+#include <QVariantMap>
 #include <QWidget>
 
 #include <memory>
@@ -84,6 +86,9 @@ public:
     int jogDirection() const { return m_jogDirection; }
     bool isMotionInProgress() const;
     QString lastStopReason() const { return m_lastStopReason; }
+    // While the axis is in ErrorStop: what stopped it and the way out (the Drive Status page
+    // shows the same, motionNoteChanged()); empty otherwise.
+    QString motionNote() const { return m_motionNote; }
 
 public Q_SLOTS:
     void enableDrive();
@@ -98,6 +103,7 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void stopped(const QString &reason);
+    void motionNoteChanged(const QString &note);
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
@@ -155,6 +161,15 @@ private:
     QDoubleSpinBox *m_jogAcceleration = nullptr;
     QDoubleSpinBox *m_stepSize = nullptr;
     QDoubleSpinBox *m_override = nullptr;
+    // Motion settings (form and jog fields) per device URI, so that one drive's limits never
+    // stay on another's values; m_settingsKey is the device whose values are shown.
+    QVariantMap settings() const;
+    void applySettings(const QVariantMap &values);
+    void keepSettingsFor(DeviceConnection *next);
+    QHash<QString, QVariantMap> m_kept;
+    QVariantMap m_defaults;
+    QString m_settingsKey;
+    QString m_motionNote;
     QPushButton *m_jogMinus = nullptr;
     QPushButton *m_jogPlus = nullptr;
     QPushButton *m_stepMinus = nullptr;

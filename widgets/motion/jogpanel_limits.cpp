@@ -4,6 +4,7 @@
 
 #include "motionform.h"
 
+#include <QDoubleSpinBox>
 #include <QLabel>
 
 #include <memory>
@@ -22,6 +23,39 @@ void JogPanel::applyLimits()
     m_form->setLimits(m_config, m_positionUnit, m_velocityUnit);
     renderLimits();
     renderSupervision();
+}
+
+QVariantMap JogPanel::settings() const
+{
+    QVariantMap values = m_form->values();
+    values.insert(QStringLiteral("jogVelocity"), m_jogVelocity->value());
+    values.insert(QStringLiteral("jogAcceleration"), m_jogAcceleration->value());
+    values.insert(QStringLiteral("stepSize"), m_stepSize->value());
+    return values;
+}
+
+void JogPanel::applySettings(const QVariantMap &values)
+{
+    m_form->setValues(values);
+    for (QDoubleSpinBox *box : { m_jogVelocity, m_jogAcceleration, m_stepSize }) {
+        if (const QVariant v = values.value(box->objectName()); v.isValid()) {
+            box->setMaximum(1e9); // the previous drive's limit does not apply to this one
+            box->setValue(v.toDouble());
+        }
+    }
+}
+
+void JogPanel::keepSettingsFor(DeviceConnection *next)
+{
+    const QString key = next ? next->uri().toString() : QString();
+    if (key == m_settingsKey || (!next && m_settingsKey.isEmpty()))
+        return;
+    if (!m_settingsKey.isEmpty())
+        m_kept.insert(m_settingsKey, settings());
+    if (!next)
+        return; // the values stay shown (greyed) until the next device
+    m_settingsKey = key;
+    applySettings(m_kept.value(key, m_defaults));
 }
 
 void JogPanel::setDeviceResponding(bool responding, const QString &why)

@@ -16,6 +16,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <tuple>
+
 namespace db::widgets {
 
 using namespace motion;
@@ -231,6 +233,14 @@ void JogPanel::render()
     const bool fault = m_motion && m_motion->state() == AxisState::ErrorStop;
     style::setTextColor(m_state, fault || (linked && !have) ? style::errorColor() : QColor());
     m_stopReset->setVisible(have && fault);
+    const QString note = have && fault
+        ? tr("ErrorStop: %1. The axis takes no motion command until Reset in the Motion dock.")
+              .arg(m_lastStopReason.isEmpty() ? tr("stopped") : m_lastStopReason)
+        : QString();
+    if (note != m_motionNote) {
+        m_motionNote = note;
+        Q_EMIT motionNoteChanged(note);
+    }
     for (QWidget *w :
          std::initializer_list<QWidget *> { m_enableButton, m_disableButton, m_resetButton,
                                             m_jogMinus, m_jogPlus, m_stepMinus, m_stepPlus })
@@ -263,9 +273,23 @@ void JogPanel::renderLimits()
                   : tr("Max acceleration: not given by the drive"));
     lines << tr("Position window: %1 %2").arg(m_config.positionWindow, 0, 'f', 1).arg(u);
     m_limits->setText(lines.join(QLatin1Char('\n')));
-    // Inputs clamp to the limits (QDoubleSpinBox bounds): nothing faster than the drive allows.
-    m_jogVelocity->setMaximum(std::min(m_config.maxVelocity, kUnbounded));
-    m_jogAcceleration->setMaximum(std::min(m_config.maxAcceleration, kUnbounded));
+    // Inputs clamp to the limits (QDoubleSpinBox bounds): nothing faster than the drive allows,
+    // and a value lowered to a limit is said, with the limit.
+    QStringList lowered;
+    for (auto [box, maximum, name] :
+         { std::tuple { m_jogVelocity, m_config.maxVelocity, tr("Jog velocity") },
+           std::tuple { m_jogAcceleration, m_config.maxAcceleration, tr("Jog acceleration") } }) {
+        const double before = box->value();
+        box->setMaximum(std::min(maximum, kUnbounded));
+        if (box->value() < before)
+            lowered << tr("%1 %2 → %3 (the drive's maximum)")
+                           .arg(name)
+                           .arg(before, 0, 'f', 0)
+                           .arg(box->value(), 0, 'f', 0);
+    }
+    if (!lowered.isEmpty()) // (the form says what it lowered itself)
+        setMessage(tr("Lowered to this drive's limits: %1").arg(lowered.join(QStringLiteral("; "))),
+                   style::warningColor());
     for (QDoubleSpinBox *f : { m_jogVelocity, m_jogAcceleration, m_stepSize })
         f->setSuffix(QLatin1Char(' ')
                      + (f == m_jogVelocity    ? m_velocityUnit

@@ -145,6 +145,11 @@ void MotionForm::buildUi()
     m_flags->setWordWrap(true);
     style::setTextColor(m_flags, style::warningColor());
     m_flags->hide();
+    m_limitNote = new QLabel(this);
+    m_limitNote->setObjectName(QStringLiteral("limitNote"));
+    m_limitNote->setWordWrap(true);
+    style::setTextColor(m_limitNote, style::warningColor());
+    m_limitNote->hide();
     m_hint = new QLabel(this);
     m_hint->setObjectName(QStringLiteral("hint"));
     m_hint->setWordWrap(true);
@@ -156,6 +161,7 @@ void MotionForm::buildUi()
     layout->addLayout(buttons);
     layout->addWidget(m_status);
     layout->addWidget(m_flags);
+    layout->addWidget(m_limitNote);
     layout->addWidget(m_hint);
 
     connect(m_command, &QComboBox::currentIndexChanged, this, &MotionForm::updateFields);
@@ -192,12 +198,31 @@ void MotionForm::setLimits(const AxisConfig &config, const QString &positionUnit
     m_acceleration->setSuffix(acc);
     m_deceleration->setSuffix(acc);
     m_jerk->setSuffix(QStringLiteral(" %1/s³").arg(positionUnit));
-    // Inputs clamp to the drive's limits; the model still refuses what breaks a rule (R1 for a
-    // relative move past the software limit, R5 zero values) and says why.
-    m_velocity->setRange(0, std::min(config.maxVelocity, kUnbounded));
-    m_acceleration->setRange(0, std::min(config.maxAcceleration, kUnbounded));
-    m_deceleration->setRange(0, std::min(config.maxAcceleration, kUnbounded));
-    m_jerk->setRange(0, std::min(config.maxJerk, kUnbounded));
+    // Inputs clamp to the drive's limits, and say so; the model still refuses what breaks a rule
+    // (R1 for a relative move past the software limit, R5 zero values) and says why.
+    QStringList lowered;
+    const auto limit = [&](QDoubleSpinBox *box, const QString &name, double maximum,
+                           const QString &unit, const QString &why) {
+        const double before = box->value();
+        box->setRange(0, std::min(maximum, kUnbounded));
+        if (maximum < kUnbounded)
+            box->setToolTip(tr("At most %1%2: %3").arg(maximum).arg(unit, why));
+        if (box->value() < before)
+            lowered
+                << tr("%1 %2 → %3%4: %5").arg(name).arg(before).arg(box->value()).arg(unit, why);
+    };
+    limit(m_velocity, tr("Velocity"), config.maxVelocity, vel, tr("the drive's maximum velocity"));
+    limit(m_acceleration, tr("Acceleration"), config.maxAcceleration, acc,
+          tr("the drive's maximum acceleration"));
+    limit(m_deceleration, tr("Deceleration"), config.maxAcceleration, acc,
+          tr("the drive's maximum acceleration"));
+    limit(m_jerk, tr("Jerk"), config.maxJerk, QStringLiteral(" %1/s³").arg(positionUnit),
+          tr("the drive's maximum jerk"));
+    m_limitNote->setText(
+        lowered.isEmpty()
+            ? QString()
+            : tr("Lowered to this drive's limits: %1").arg(lowered.join(QStringLiteral("; "))));
+    m_limitNote->setVisible(!lowered.isEmpty());
     m_target->setProperty("softLimits", config.softLimitsUsed);
     m_target->setProperty("softMin", config.softLimitNegative);
     m_target->setProperty("softMax", config.softLimitPositive);
@@ -404,6 +429,44 @@ void MotionForm::showStatus()
         flags << tr("acceleration or jerk limited");
     m_flags->setText(flags.join(QStringLiteral("; ")));
     m_flags->setVisible(!flags.isEmpty());
+}
+
+QVariantMap MotionForm::values() const
+{
+    return { { QStringLiteral("command"), m_command->currentData() },
+             { QStringLiteral("target"), m_target->value() },
+             { QStringLiteral("velocity"), m_velocity->value() },
+             { QStringLiteral("acceleration"), m_acceleration->value() },
+             { QStringLiteral("deceleration"), m_deceleration->value() },
+             { QStringLiteral("jerk"), m_jerk->value() },
+             { QStringLiteral("homingOffset"), m_homingOffset->value() },
+             { QStringLiteral("torque"), m_torque->value() } };
+}
+
+void MotionForm::setValues(const QVariantMap &values)
+{
+    if (const int i = m_command->findData(values.value(QStringLiteral("command"))); i >= 0)
+        m_command->setCurrentIndex(i);
+    for (QDoubleSpinBox *box :
+         { m_target, m_velocity, m_acceleration, m_deceleration, m_jerk, m_homingOffset }) {
+        const QVariant v = values.value(box->objectName());
+        if (!v.isValid())
+            continue;
+        // The previous device's limits do not apply; setLimits() gives this device's.
+        box->setRange(box == m_target || box == m_homingOffset ? -kUnbounded : 0, kUnbounded);
+        box->setToolTip(QString());
+        box->setValue(v.toDouble());
+    }
+    if (const QVariant v = values.value(QStringLiteral("torque")); v.isValid())
+        m_torque->setValue(v.toDouble());
+    m_limitNote->clear();
+    m_limitNote->hide();
+    updateFields();
+}
+
+QString MotionForm::limitNote() const
+{
+    return m_limitNote->text();
 }
 
 } // namespace db::widgets

@@ -4,6 +4,7 @@
 
 #include <QHash>
 #include <QPointer>
+#include <QVariantMap>
 #include <QWidget>
 
 class QComboBox;
@@ -21,8 +22,9 @@ namespace db::widgets {
 // One MotionCommand instance per command kind, owned by the form: Execute gives it a rising edge
 // with the current field values (latched by the model, Sec. 2.2). Stop and Halt hold Execute
 // until their command is done, then release it (the state stays Stopping/Discrete Motion until
-// then, Sec. 3.12). Fields are clamped to the axis limits (setLimits()); the model refuses what
-// the fields cannot express, and the refusal reason is shown.
+// then, Sec. 3.12). Fields are clamped to the axis limits (setLimits()), never silently: a value
+// lowered to a limit is named with the limit, and each field's tooltip gives its range; the model
+// refuses what the fields cannot express, and the refusal reason is shown.
 class MotionForm : public QWidget
 {
     Q_OBJECT
@@ -38,6 +40,15 @@ public:
     void setFeatures(motion::AxisInterface::Features features);
     // The drive's homing methods (e.g. 6098h's enumeration); empty = the CiA 402 set-zero 35.
     void setHomingMethods(const QMap<qlonglong, QString> &methods);
+
+    // The fields as they are, to be kept per device (JogPanel) and given back with setValues().
+    QVariantMap values() const;
+    // Sets the fields as given, free of the previous device's limits; the next setLimits()
+    // lowers what exceeds the new ones and says so (limitNote()).
+    void setValues(const QVariantMap &values);
+    // What setLimits() lowered, and why ("Velocity 5000 → 2000 mm/s: the drive's maximum");
+    // empty when it lowered nothing. Shown under the fields.
+    QString limitNote() const;
 
     motion::CommandKind selectedCommand() const;
     void selectCommand(motion::CommandKind kind);
@@ -88,6 +99,7 @@ private:
     QLabel *m_status = nullptr;
     QLabel *m_flags = nullptr;
     QLabel *m_hint = nullptr;
+    QLabel *m_limitNote = nullptr;
 };
 
 } // namespace db::widgets
