@@ -11,6 +11,7 @@
 #include "widgets/odeditor/odeditorpoller.h"
 
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPointer>
@@ -170,7 +171,7 @@ private Q_SLOTS:
         startFake();
         constexpr ObjectAddress kStall { 0x3401, 24 }; // UNSIGNED16, factor 0.1, "%"
         QCOMPARE(m_editor->model()->indexOf(kStall, OdEditorModel::Value).data().toString(),
-                 QStringLiteral("10 %")); // raw default 100
+                 QStringLiteral("10")); // raw default 100
         typeValue(kStall, QStringLiteral("12.5"));
         QTRY_COMPARE(m_fake->value(kStall).toULongLong(), 125ull);
     }
@@ -223,8 +224,21 @@ private Q_SLOTS:
         startFake();
         const QModelIndex velocity = m_editor->model()->indexOf(kVelocity, OdEditorModel::Value);
         const QModelIndex status = m_editor->model()->indexOf(kStatusword, OdEditorModel::Value);
-        QCOMPARE(velocity.data().toString(), QStringLiteral("100 units/s"));
+        QCOMPARE(velocity.data().toString(), QStringLiteral("100")); // the unit has a column
+        QCOMPARE(m_editor->model()->indexOf(kVelocity, OdEditorModel::Unit).data().toString(),
+                 QStringLiteral("units/s"));
         QCOMPARE(status.data().toString(), QStringLiteral("0x0427")); // bit words: always hex
+        // Identifiers too: device type, identity, whatever the toggle says.
+        QCOMPARE(m_editor->model()
+                     ->indexOf(ObjectAddress(0x1000, 0), OdEditorModel::Value)
+                     .data()
+                     .toString(),
+                 QStringLiteral("0x00020192"));
+        QVERIFY(m_editor->model()
+                    ->indexOf(ObjectAddress(0x1018, 1), OdEditorModel::Value)
+                    .data()
+                    .toString()
+                    .startsWith(QStringLiteral("0x")));
         m_editor->setHex(true);
         QCOMPARE(velocity.data().toString(), QStringLiteral("0x00000064"));
         QCOMPARE(velocity.data(Qt::EditRole).toString(), QStringLiteral("0x00000064"));
@@ -232,7 +246,35 @@ private Q_SLOTS:
                  QStringLiteral("0x01 (Profile position)"));
         QCOMPARE(status.data().toString(), QStringLiteral("0x0427"));
         m_editor->setHex(false);
-        QCOMPARE(velocity.data().toString(), QStringLiteral("100 units/s"));
+        QCOMPARE(velocity.data().toString(), QStringLiteral("100"));
+    }
+
+    // Values that differ from the description's default stand out; the name column keeps its
+    // width in a narrow window.
+    void differencesFromTheDefaultAndStableColumns()
+    {
+        startFake();
+        const ObjectDef *def = m_editor->model()->definition(kAcceleration);
+        QVERIFY(def && def->defaultValue.isValid());
+        m_fake->setValue(kAcceleration, QVariant::fromValue<qulonglong>(2000)); // default 1000
+        m_editor->readAll();
+        QTRY_COMPARE(m_editor->model()->value(kAcceleration).toULongLong(), 2000ULL);
+        const QModelIndex changed = m_editor->model()->indexOf(kAcceleration, OdEditorModel::Value);
+        QVERIFY(changed.data(Qt::FontRole).value<QFont>().bold());
+        QVERIFY(changed.data(Qt::BackgroundRole).isValid());
+        QVERIFY(changed.data(Qt::ToolTipRole).toString().contains(QStringLiteral("default")));
+        const QModelIndex same =
+            m_editor->model()->indexOf(ObjectAddress(0x6084, 0), OdEditorModel::Value);
+        QVERIFY(same.data().isValid());
+        QVERIFY(!same.data(Qt::FontRole).value<QFont>().bold());
+        QVERIFY(!same.data(Qt::BackgroundRole).isValid());
+
+        m_editor->resize(640, 500);
+        QTRY_COMPARE(m_editor->width(), 640);
+        m_editor->setConnection(nullptr);
+        m_editor->setConnection(m_fake.get()); // a new dictionary resets the model
+        QCOMPARE(m_editor->view()->header()->sectionSize(OdEditorModel::Name),
+                 OdEditor::kNameColumnWidth);
     }
 
     void bitFieldsOfTheSelectedWord()

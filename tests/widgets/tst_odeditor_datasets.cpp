@@ -92,9 +92,12 @@ private Q_SLOTS:
 
         m_connection->open();
         QTRY_COMPARE_WITH_TIMEOUT(cell(editor, dataSet(kFixedFrequency2, 1)),
-                                  QStringLiteral("10.00 Hz"), 10000);
-        QTRY_COMPARE(cell(editor, dataSet(kFixedFrequency2, 2)), QStringLiteral("15.00 Hz"));
-        QTRY_COMPARE(cell(editor, dataSet(kFixedFrequency2, 4)), QStringLiteral("25.00 Hz"));
+                                  QStringLiteral("10.00"), 10000);
+        QTRY_COMPARE(cell(editor, dataSet(kFixedFrequency2, 2)), QStringLiteral("15.00"));
+        QTRY_COMPARE(cell(editor, dataSet(kFixedFrequency2, 4)), QStringLiteral("25.00"));
+        QCOMPARE(model->data(model->indexOf(dataSet(kFixedFrequency2, 1), OdEditorModel::Unit))
+                     .toString(),
+                 QStringLiteral("Hz"));
         QTRY_COMPARE(cell(editor, kSoftwareVersion), QStringLiteral("5.3.2 STO"));
         // The editor never reads data set 0 of a four-data-set parameter (it fails with "values
         // of the data sets differ" when they differ).
@@ -126,7 +129,7 @@ private Q_SLOTS:
         QVERIFY(model->state(ds3) != OdEditorModel::CellState::WriteFailed);
         QCOMPARE(m_acu->store().value(481, 2).toLongLong(), 1500); // the others untouched
         QCOMPARE(m_acu->eepromWrites(), quint64(1));
-        QTRY_COMPARE(cell(editor, ds3), QStringLiteral("30.50 Hz"));
+        QTRY_COMPARE(cell(editor, ds3), QStringLiteral("30.50"));
     }
 
     void ramChoiceWritesDataSetPlusFive()
@@ -150,7 +153,7 @@ private Q_SLOTS:
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
         QVERIFY2(editor.statusText().contains(QStringLiteral("481:7")),
                  qPrintable(editor.statusText()));
-        QTRY_COMPARE(cell(editor, ds2), QStringLiteral("12.50 Hz"));
+        QTRY_COMPARE(cell(editor, ds2), QStringLiteral("12.50"));
         // RAM only: after a power cycle the data set holds its stored value again.
         m_acu->powerCycle();
         QCOMPARE(m_acu->store().value(481, 2).toLongLong(), 1500);

@@ -52,6 +52,13 @@ QString toolTip(const QString &plainText)
     return QStringLiteral("<p>") + plainText.toHtmlEscaped() + QStringLiteral("</p>");
 }
 
+QColor changedBackground()
+{
+    QColor c = warningColor();
+    c.setAlpha(48);
+    return c;
+}
+
 void setStale(QLabel *label, bool stale)
 {
     if (label->property("stale").toBool() == stale && label->property("stale").isValid())

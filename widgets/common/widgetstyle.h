@@ -24,6 +24,8 @@ QColor okColor();
 QColor warningColor();
 QColor errorColor();
 QColor inactiveColor();
+// Behind a value that differs from its default (readable on light and dark palettes).
+QColor changedBackground();
 
 // A tooltip for plain text of any length (a description, an error): as rich text, which Qt
 // wraps at a readable width, where a long plain-text tooltip is one line as wide as the screen.

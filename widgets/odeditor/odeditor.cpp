@@ -113,13 +113,17 @@ OdEditor::OdEditor(QWidget *parent)
     m_view->setDragDropMode(QAbstractItemView::DragOnly);
     m_view->setAllColumnsShowFocus(true);
     QHeaderView *header = m_view->header();
-    header->setStretchLastSection(false);
-    // The name takes the room that is left; the other columns keep their widths.
-    header->setSectionResizeMode(OdEditorModel::Name, QHeaderView::Stretch);
+    // Stable widths: every column keeps the width it starts with (or the user gives it); the
+    // last one takes the room that is left, and a narrow window scrolls sideways rather than
+    // squeezing the names to "P…".
+    header->setStretchLastSection(true);
+    header->setSectionResizeMode(QHeaderView::Interactive);
     const QFontMetrics mono(style::monospaceFont());
     const int ch = mono.horizontalAdvance(QLatin1Char('0'));
     header->resizeSection(OdEditorModel::Address, ch * 10 + 40);
-    header->resizeSection(OdEditorModel::Name, 260);
+    header->resizeSection(OdEditorModel::Name, kNameColumnWidth);
+    header->resizeSection(OdEditorModel::Unit,
+                          fontMetrics().horizontalAdvance(QStringLiteral("rpm/s²")) + 16);
     header->resizeSection(OdEditorModel::Type,
                           fontMetrics().horizontalAdvance(QStringLiteral("VISIBLE_STRING")) + 16);
     header->resizeSection(OdEditorModel::AccessColumn,

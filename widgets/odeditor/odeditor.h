@@ -36,6 +36,8 @@ class OdEditor : public QWidget
 {
     Q_OBJECT
 public:
+    // The Name column's width at the start (never squeezed below it by the window).
+    static constexpr int kNameColumnWidth = 240;
     explicit OdEditor(QWidget *parent = nullptr);
     ~OdEditor() override;
 

@@ -374,6 +374,8 @@ QVariant OdEditorModel::headerData(int section, Qt::Orientation orientation, int
         return tr("Access");
     case Value:
         return m_dataSetColumns ? tr("DS %1").arg(0) : tr("Value");
+    case Unit:
+        return tr("Unit");
     case Default:
         return tr("Default");
     case Limits:

@@ -17,8 +17,11 @@ namespace db::widgets {
 // hex on request. Pure.
 namespace odtext {
 // The text shown in a cell: "1200 mm", "1 (Profile position)", "0x0427". Words with named bits
-// are always shown in hex.
-QString display(const ObjectDef &def, const QVariant &raw, bool hex);
+// and identifiers (device type, identity, COB-IDs, PDO mapping entries) are always shown in hex.
+// withUnit false: without the unit (the editor shows it in a column of its own).
+QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit = true);
+// True for objects always shown in hex (see display()).
+bool isShownInHex(const ObjectDef &def);
 // The text an editor starts with: like display() but without unit and enumeration name.
 QString edit(const ObjectDef &def, const QVariant &raw, bool hex);
 // User text -> raw, checked against type, the object's limits and its access. Scaled objects take
@@ -40,6 +43,7 @@ public:
         Type,
         AccessColumn,
         Value,
+        Unit,
         Default,
         Limits,
         Pdo,

@@ -110,6 +110,16 @@ void OdEditorModel::cellChanged(ObjectAddress address)
         Q_EMIT dataChanged(index, index);
 }
 
+namespace {
+// A value read from the device that is not the description's default (both known).
+bool differsFromDefault(const ObjectDef &def, const QVariant &raw)
+{
+    if (!raw.isValid() || !def.defaultValue.isValid())
+        return false;
+    return odtext::edit(def, raw, false) != odtext::edit(def, def.defaultValue, false);
+}
+} // namespace
+
 QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) const
 {
     const Cell cell = m_cells.value(def.address);
@@ -128,8 +138,17 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
                        + odtext::display(def, cell.raw, m_hex))
             .toLower();
     case Qt::FontRole:
+        if (column == Value && differsFromDefault(def, cell.raw)) {
+            QFont bold = style::monospaceFont();
+            bold.setBold(true);
+            return bold;
+        }
         if (column == Address || column == Value || column == Default || column == Limits)
             return style::monospaceFont();
+        return {};
+    case Qt::BackgroundRole:
+        if (column == Value && differsFromDefault(def, cell.raw))
+            return style::changedBackground();
         return {};
     case Qt::TextAlignmentRole:
         if (column == Pdo || column == AccessColumn)
@@ -152,6 +171,9 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
             QString tip = cell.message;
             if (!def.writable())
                 tip = tip.isEmpty() ? tr("read-only") : tip;
+            if (tip.isEmpty() && differsFromDefault(def, cell.raw))
+                tip = tr("Differs from the default %1")
+                          .arg(odtext::display(def, def.defaultValue, m_hex));
             return tip.isEmpty() ? QVariant() : QVariant(style::toolTip(tip));
         }
         if (column == Name && !def.description.isEmpty())
@@ -174,9 +196,11 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case Value:
         if (!def.readable())
             return tr("(write-only)");
-        return odtext::display(def, cell.raw, m_hex);
+        return odtext::display(def, cell.raw, m_hex, false);
+    case Unit:
+        return datatype::isNumeric(def.type) ? def.unit : QString();
     case Default:
-        return odtext::display(def, def.defaultValue, m_hex);
+        return odtext::display(def, def.defaultValue, m_hex, false);
     case Limits:
         return odtext::limits(def, m_hex);
     case Pdo:

@@ -17,14 +17,37 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(db::widgets::OdEditorModel)
 };
 
-// Words made of bits (6040h, 6041h, 1002h, ...) read better in hex, whatever the toggle says.
-bool isBitWord(const ObjectDef &def)
+bool inRange(quint16 index, quint16 first, quint16 last)
+{
+    return index >= first && index <= last;
+}
+} // namespace
+
+// Words made of bits (6040h, 6041h, 1002h, ...) and identifiers (1000h device type, 1018h
+// identity, COB-IDs, PDO mapping entries) read better in hex, whatever the toggle says.
+bool isShownInHex(const ObjectDef &def)
 {
     if (!datatype::isUnsignedInteger(def.type))
         return false;
     const quint16 i = def.address.index;
-    return !def.bitFields.isEmpty()
-        || (def.address.sub == 0 && (i == 0x6040 || i == 0x6041 || i == 0x60FD));
+    const quint8 sub = def.address.sub;
+    if (!def.bitFields.isEmpty())
+        return true;
+    if (sub == 0
+        && (i == 0x6040 || i == 0x6041 || i == 0x60FD || i == 0x1000 || i == 0x1001 || i == 0x1002
+            || i == 0x1005 || i == 0x1012 || i == 0x1014 || i == 0x603F))
+        return true;
+    if (sub == 0)
+        return false; // the number of entries of a record
+    return i == 0x1018 // vendor, product, revision, serial
+        || (sub == 1 && (inRange(i, 0x1400, 0x15FF) || inRange(i, 0x1800, 0x19FF))) // COB-IDs
+        || inRange(i, 0x1600, 0x17FF) || inRange(i, 0x1A00, 0x1BFF); // mapping entries
+}
+
+namespace {
+bool isBitWord(const ObjectDef &def)
+{
+    return isShownInHex(def);
 }
 
 QString number(const ObjectDef &def, const QVariant &raw, bool hex)
@@ -40,7 +63,7 @@ QString number(const ObjectDef &def, const QVariant &raw, bool hex)
 }
 } // namespace
 
-QString display(const ObjectDef &def, const QVariant &raw, bool hex)
+QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit)
 {
     if (!raw.isValid())
         return {};
@@ -53,7 +76,7 @@ QString display(const ObjectDef &def, const QVariant &raw, bool hex)
             text += QStringLiteral(" (%1)").arg(*it);
     }
     const bool shownHex = (hex || isBitWord(def)) && !isScaled(def);
-    if (!def.unit.isEmpty() && datatype::isNumeric(def.type) && !shownHex)
+    if (withUnit && !def.unit.isEmpty() && datatype::isNumeric(def.type) && !shownHex)
         text += QLatin1Char(' ') + def.unit;
     return text;
 }
