@@ -5,6 +5,7 @@
 #include "mainwindow.h"
 #include "parameters/parameterrunner.h"
 #include "resources/builtindescriptions.h"
+#include "widgets/common/recentfolder.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/odeditor/odeditorfilter.h"
 #include "widgets/odeditor/odeditormodel.h"
@@ -14,6 +15,7 @@
 #include "widgets/parameters/paramcompareview.h"
 #include "widgets/parameters/parametersetactions.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QFile>
 #include <QMenu>
@@ -119,7 +121,8 @@ private Q_SLOTS:
         // Loading never writes.
         QCOMPARE(demo.drive().read(kVelocity).value(), original->find(kVelocity)->raw);
 
-        view.setOnlyDifferences(true);
+        // "Only differences" is on from the start.
+        QVERIFY(view.findChild<QCheckBox *>(QStringLiteral("onlyDifferences"))->isChecked());
         QCOMPARE(view.filter()->rowCount(), 3);
         QList<ObjectAddress> sorted = rows;
         std::sort(sorted.begin(), sorted.end());
@@ -203,6 +206,20 @@ private Q_SLOTS:
         // Only the velocity was written.
         QCOMPARE(f->writes.size(), 1);
         QCOMPARE(f->writes.first().first, kVelocity);
+    }
+
+    // File dialogs start in the folder the last file of their kind went to.
+    void dialogsStartInTheLastFolder()
+    {
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        QTemporaryDir sets;
+        QVERIFY(sets.isValid());
+        QCOMPARE(widgets::recentFolder(QStringLiteral("never-used")), QDir::homePath());
+        widgets::rememberFolder(QStringLiteral("dbp"), sets.filePath(QStringLiteral("a.dbp")));
+        QCOMPARE(widgets::recentFolder(QStringLiteral("dbp")), QDir(sets.path()).absolutePath());
+        QCOMPARE(widgets::recentFolder(QStringLiteral("dcf")), QDir::homePath()); // per kind
+        widgets::rememberFolder(QStringLiteral("dbp"), QString()); // cancelled: unchanged
+        QCOMPARE(widgets::recentFolder(QStringLiteral("dbp")), QDir(sets.path()).absolutePath());
     }
 
     void corruptFileChangesNothing()

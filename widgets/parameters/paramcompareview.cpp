@@ -3,6 +3,7 @@
 #include "paramcomparemodel.h"
 #include "paramcomparereport.h"
 #include "widgets/common/flowlayout.h"
+#include "widgets/common/recentfolder.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -108,6 +109,7 @@ ParamCompareView::ParamCompareView(QWidget *parent)
     connect(m_restoreButton, &QPushButton::clicked, this, &ParamCompareView::restoreSelected);
     connect(m_cancel, &QPushButton::clicked, this, &ParamCompareView::cancel);
     connect(m_onlyDiff, &QCheckBox::toggled, m_filter, &ParamCompareFilter::setOnlyDifferences);
+    m_onlyDiff->setChecked(true); // what a comparison is for; the full list is one click away
     connect(m_withDefaults, &QCheckBox::toggled, this, &ParamCompareView::compare);
     connect(m_hex, &QCheckBox::toggled, m_model, &ParamCompareModel::setHex);
     connect(m_model, &ParamCompareModel::selectionChanged, this, &ParamCompareView::updateActions);
@@ -151,9 +153,10 @@ void ParamCompareView::setConnection(DeviceConnection *connection)
 
 void ParamCompareView::chooseFile()
 {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Load Parameter Set"), QString(),
-                                     tr("Parameter sets (*.dbp *.txt);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Load Parameter Set"), recentFolder(QStringLiteral("dbp")),
+        tr("Parameter sets (*.dbp *.txt);;All files (*)"));
+    rememberFolder(QStringLiteral("dbp"), path);
     if (!path.isEmpty())
         loadFile(path);
 }

@@ -2,6 +2,7 @@
 
 #include "description/dcfwriter.h"
 #include "description/descriptionlibrary.h"
+#include "widgets/common/recentfolder.h"
 
 #include <QAction>
 #include <QDateTime>
@@ -92,10 +93,12 @@ QString ParameterSetActions::suggestedName(const QString &suffix) const
     product.replace(QLatin1Char(' '), QLatin1Char('_'));
     if (product.isEmpty())
         product = QStringLiteral("device");
-    return QDir::home().filePath(
-        QStringLiteral("%1-%2.%3")
-            .arg(product, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")),
-                 suffix));
+    // In the folder the last parameter file went to (per kind: sets or DCFs).
+    return QDir(recentFolder(suffix))
+        .filePath(QStringLiteral("%1-%2.%3")
+                      .arg(product,
+                           QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm")),
+                           suffix));
 }
 
 void ParameterSetActions::backUp()
@@ -103,6 +106,7 @@ void ParameterSetActions::backUp()
     const QString path = QFileDialog::getSaveFileName(m_dialogParent, tr("Back Up Parameters"),
                                                       suggestedName(QStringLiteral("dbp")),
                                                       tr("Parameter sets (*.dbp);;All files (*)"));
+    rememberFolder(QStringLiteral("dbp"), path);
     if (!path.isEmpty())
         backUpTo(path);
 }
@@ -155,6 +159,7 @@ void ParameterSetActions::exportDcf()
     const QString path = QFileDialog::getSaveFileName(
         m_dialogParent, tr("Export DCF"), suggestedName(QStringLiteral("dcf")),
         tr("Device configuration files (*.dcf);;All files (*)"));
+    rememberFolder(QStringLiteral("dcf"), path);
     if (!path.isEmpty())
         exportDcfTo(path);
 }
