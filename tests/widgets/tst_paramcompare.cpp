@@ -20,6 +20,7 @@
 #include <QFile>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTabWidget>
@@ -206,6 +207,32 @@ private Q_SLOTS:
         // Only the velocity was written.
         QCOMPARE(f->writes.size(), 1);
         QCOMPARE(f->writes.first().first, kVelocity);
+    }
+
+    // A set is compared only with the kind of device it came from (1018h vendor and product).
+    void anotherDeviceIsNotCompared()
+    {
+        auto f = fake();
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x100u));
+        QTRY_VERIFY(f->isConnected());
+        auto set = backup(f.get());
+        QVERIFY(set.ok());
+        QCOMPARE(set->identity.productCode, 0x100u);
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x200u)); // another product now
+        ParamCompareView view;
+        view.setConnection(f.get());
+        view.setFileSet(set.value(), QStringLiteral("file"));
+        QTRY_VERIFY2(!view.isBusy() && view.statusText().contains(QStringLiteral("Not compared")), qPrintable(view.statusText()));
+        QVERIFY2(view.statusText().contains(QStringLiteral("00000100h"))
+                     && view.statusText().contains(QStringLiteral("00000200h")),
+                 qPrintable(view.statusText()));
+        QCOMPARE(view.model()->comparison().rows.size(), 0);
+        QVERIFY(!view.findChild<QPushButton *>(QStringLiteral("restoreSelected"))->isEnabled());
+
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x100u)); // the right device again
+        view.refreshDevice();
+        QTRY_VERIFY(!view.isBusy() && view.model()->comparison().rows.size() == set->size());
+        QVERIFY(!view.statusText().contains(QStringLiteral("Not compared")));
     }
 
     // File dialogs start in the folder the last file of their kind went to.

@@ -74,6 +74,7 @@ Q_SIGNALS:
 
 private:
     void compare();
+    static QString identityMismatch(const ParameterSet &file, const ParameterSet &device);
     void setBusy(const QString &what);
     void setIdle();
     void showStatus(const QString &text, const QColor &color = {});

@@ -13,6 +13,39 @@
 
 namespace db::widgets {
 
+namespace {
+constexpr ObjectAddress kVendorId(0x1018, 1);
+constexpr ObjectAddress kProductCode(0x1018, 2);
+
+QString hex32(quint32 v)
+{
+    return QStringLiteral("%1").arg(v, 8, 16, QLatin1Char('0')).toUpper() + QLatin1Char('h');
+}
+} // namespace
+
+// Why `file` must not be compared with what was read from the device: the device reported
+// another vendor or product (1018h) than the file names; empty when they agree or one side
+// does not know.
+QString ParamCompareView::identityMismatch(const ParameterSet &file, const ParameterSet &device)
+{
+    const auto reported = [&device](ObjectAddress a) -> std::optional<quint32> {
+        const ParameterEntry *e = device.find(a);
+        return e ? std::optional<quint32>(quint32(e->raw.toULongLong())) : std::nullopt;
+    };
+    const auto vendor = reported(kVendorId);
+    const auto product = reported(kProductCode);
+    const bool vendorDiffers = vendor && file.vendorIdKnown && file.identity.vendorId != 0
+        && *vendor != file.identity.vendorId;
+    const bool productDiffers = product && file.productCodeKnown && file.identity.productCode != 0
+        && *product != file.identity.productCode;
+    if (!vendorDiffers && !productDiffers)
+        return {};
+    return tr("Not compared: the file is from vendor %1, product %2, but the device reports "
+              "vendor %3, product %4 (1018h). Connect the device the set belongs to.")
+        .arg(hex32(file.identity.vendorId), hex32(file.identity.productCode),
+             vendor ? hex32(*vendor) : tr("unknown"), product ? hex32(*product) : tr("unknown"));
+}
+
 void ParamCompareView::refreshDevice()
 {
     if (!m_file || isBusy())
@@ -28,6 +61,12 @@ void ParamCompareView::refreshDevice()
     for (const ObjectDef &def : m_connection->dictionary().objects()) {
         if (def.storable && def.readable() && !addresses.contains(def.address))
             addresses.append(def.address);
+    }
+    // The device's identity, checked against the file's before anything is compared.
+    for (ObjectAddress a : { kVendorId, kProductCode }) {
+        const ObjectDef *def = m_connection->dictionary().find(a);
+        if (def && def->readable() && !addresses.contains(a))
+            addresses.append(a);
     }
     std::sort(addresses.begin(), addresses.end());
     m_backup = std::make_unique<ParameterBackup>(m_connection);
@@ -59,6 +98,10 @@ void ParamCompareView::onBackupFinished()
     }
     m_device = read;
     compare();
+    if (m_file && !identityMismatch(*m_file, read).isEmpty()) {
+        m_restoreOutcome.clear();
+        return; // compare() said why nothing is shown
+    }
     if (!m_restoreOutcome.isEmpty()) {
         showStatus(std::exchange(m_restoreOutcome, {}) + QLatin1Char(' ')
                        + tr("The comparison shows the device after the restore."),
@@ -91,6 +134,20 @@ void ParamCompareView::compare()
     ParameterSet device = m_device.value_or(ParameterSet());
     if (!m_device)
         device.addressFormat = format;
+    if (m_device) {
+        // Never compared (or restored) against another kind of device without saying so.
+        if (const QString why = identityMismatch(*m_file, device); !why.isEmpty()) {
+            m_model->setComparison({}, {}, {});
+            m_counts->clear();
+            showStatus(why, style::errorColor());
+            updateActions();
+            return;
+        }
+        for (ObjectAddress a : { kVendorId, kProductCode }) {
+            if (!m_file->contains(a))
+                device.remove(a); // read for the check only
+        }
+    }
     QList<ParameterSet> sides { device, *m_file };
     QStringList names { tr("Device"), tr("File") };
     if (auto same = checkSameAddressFormat(sides, names); !same) {
