@@ -6402,6 +6402,14 @@ Letzter Fehler: %1</translation>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Differs from the default %1</source>
+        <translation>Weicht vom Standardwert %1 ab</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParamCompareModel</name>
@@ -6670,6 +6678,14 @@ Letzter Fehler: %1</translation>
             <numerusform>%n Ausgewählten &amp;wiederherstellen…</numerusform>
             <numerusform>%n Ausgewählte &amp;wiederherstellen…</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Not compared: the file is from vendor %1, product %2, but the device reports vendor %3, product %4 (1018h). Connect the device the set belongs to.</source>
+        <translation>Nicht verglichen: Die Datei stammt von Hersteller %1, Produkt %2, das Gerät meldet aber Hersteller %3, Produkt %4 (1018h). Verbinden Sie das Gerät, zu dem der Satz gehört.</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
     </message>
 </context>
 <context>
