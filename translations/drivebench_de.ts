@@ -6299,6 +6299,18 @@ Letzter Fehler: %1</translation>
         <source>to RAM (%1, lost at power-off)</source>
         <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
     </message>
+    <message>
+        <source>%v of %m</source>
+        <translation>%v von %m</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop reading every object (values read so far stay)</source>
+        <translation>Das Lesen aller Objekte abbrechen (bereits gelesene Werte bleiben)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::OdEditorModel</name>

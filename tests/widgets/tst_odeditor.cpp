@@ -15,8 +15,10 @@
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPointer>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolButton>
 #include <QTreeView>
 
 using namespace db;
@@ -247,6 +249,34 @@ private Q_SLOTS:
         QCOMPARE(status.data().toString(), QStringLiteral("0x0427"));
         m_editor->setHex(false);
         QCOMPARE(velocity.data().toString(), QStringLiteral("100"));
+    }
+
+    // Read all shows how far it got and can be cancelled: what was not sent is not sent.
+    void readAllShowsProgressAndCancels()
+    {
+        startFake();
+        m_editor->poller()->setPeriodMs(0);
+        QTRY_COMPARE(m_editor->poller()->pending(), 0);
+        QTRY_COMPARE(m_editor->poller()->inFlight(), 0);
+        m_fake->replyDelayMs = 30;
+        auto *progress = m_editor->findChild<QProgressBar *>(QStringLiteral("readAllProgress"));
+        auto *cancel = m_editor->findChild<QToolButton *>(QStringLiteral("cancelReadAll"));
+        QVERIFY(progress && cancel);
+        QVERIFY(!progress->isVisible());
+        m_editor->readAll();
+        QTRY_VERIFY(progress->isVisible() && cancel->isVisible());
+        QVERIFY(progress->maximum() > 100); // every readable object of the description
+        QTRY_VERIFY(progress->value() >= 3);
+        const int total = progress->maximum();
+        const int readsBefore = m_fake->readCount - progress->value();
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QVERIFY(!progress->isVisible());
+        QTRY_COMPARE(m_editor->poller()->inFlight(), 0);
+        QCOMPARE(m_editor->poller()->pending(), 0);
+        const int reads = m_fake->readCount;
+        QVERIFY(reads - readsBefore < total / 2);
+        // Nothing else is sent (the refresh rate is off).
+        QVERIFY(!QTest::qWaitFor([&] { return m_fake->readCount > reads; }, 300));
     }
 
     // Values that differ from the description's default stand out; the name column keeps its

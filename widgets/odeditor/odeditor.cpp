@@ -22,6 +22,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSplitter>
@@ -99,6 +100,27 @@ OdEditor::OdEditor(QWidget *parent)
     rateRow->addWidget(m_rate);
     m_tools->addWidget(rate);
     m_tools->addWidget(readAllButton);
+    // Read all: how far it got, and a way to stop it on a slow link.
+    auto *readProgress = new QProgressBar(this);
+    readProgress->setObjectName(QStringLiteral("readAllProgress"));
+    readProgress->setMaximumWidth(160);
+    readProgress->setFormat(tr("%v of %m"));
+    readProgress->hide();
+    auto *cancelRead = new QToolButton(this);
+    cancelRead->setObjectName(QStringLiteral("cancelReadAll"));
+    cancelRead->setText(tr("Cancel"));
+    cancelRead->setToolTip(tr("Stop reading every object (values read so far stay)"));
+    cancelRead->hide();
+    m_tools->addWidget(readProgress);
+    m_tools->addWidget(cancelRead);
+    connect(cancelRead, &QToolButton::clicked, m_poller, &OdEditorPoller::cancelReadAll);
+    connect(m_poller, &OdEditorPoller::readAllProgress, this,
+            [readProgress, cancelRead](int done, int total) {
+                readProgress->setRange(0, qMax(1, total));
+                readProgress->setValue(done);
+                readProgress->setVisible(total > 0);
+                cancelRead->setVisible(total > 0);
+            });
     m_tools->addWidget(byIndexButton);
 
     m_view->setModel(m_filter);

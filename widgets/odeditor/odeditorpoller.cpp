@@ -54,6 +54,30 @@ void OdEditorPoller::readNow(const QList<ObjectAddress> &addresses, bool urgent)
 void OdEditorPoller::readAll()
 {
     readNow(m_model->addresses(), false);
+    m_backgroundTotal = m_backgroundDone + int(m_background.size() + m_backgroundInFlight.size());
+    if (m_backgroundTotal == m_backgroundDone)
+        m_backgroundTotal = m_backgroundDone = 0;
+    Q_EMIT readAllProgress(m_backgroundDone, m_backgroundTotal);
+}
+
+void OdEditorPoller::cancelReadAll()
+{
+    for (ObjectAddress a : std::as_const(m_background))
+        m_queued.remove(a);
+    m_background.clear();
+    m_backgroundInFlight.clear();
+    m_backgroundDone = m_backgroundTotal = 0;
+    Q_EMIT readAllProgress(0, 0);
+}
+
+void OdEditorPoller::backgroundFinished(ObjectAddress address)
+{
+    if (!m_backgroundInFlight.remove(address) || m_backgroundTotal == 0)
+        return;
+    ++m_backgroundDone;
+    if (m_backgroundDone >= m_backgroundTotal)
+        m_backgroundDone = m_backgroundTotal = 0;
+    Q_EMIT readAllProgress(m_backgroundDone, m_backgroundTotal);
 }
 
 void OdEditorPoller::clear()
@@ -63,6 +87,11 @@ void OdEditorPoller::clear()
     m_urgent.clear();
     m_background.clear();
     m_queued.clear();
+    const bool wasReading = m_backgroundTotal > 0;
+    m_backgroundInFlight.clear();
+    m_backgroundDone = m_backgroundTotal = 0;
+    if (wasReading)
+        Q_EMIT readAllProgress(0, 0);
 }
 
 void OdEditorPoller::tick()
@@ -82,8 +111,10 @@ void OdEditorPoller::pump()
     if (!m_connection || !m_connection->isConnected())
         return;
     while (m_inFlight < kMaxInFlight && (!m_urgent.isEmpty() || !m_background.isEmpty())) {
-        const ObjectAddress a =
-            !m_urgent.isEmpty() ? m_urgent.takeFirst() : m_background.takeFirst();
+        const bool background = m_urgent.isEmpty();
+        const ObjectAddress a = background ? m_background.takeFirst() : m_urgent.takeFirst();
+        if (background)
+            m_backgroundInFlight.insert(a);
         m_queued.remove(a);
         Reply *reply = m_connection->read(a);
         reply->setParent(this);
@@ -102,6 +133,7 @@ void OdEditorPoller::onReply(Reply *reply, quint64 generation)
     if (generation != m_generation)
         return;
     --m_inFlight;
+    backgroundFinished(reply->address());
     if (reply->ok())
         m_model->setValue(reply->address(), reply->value());
     else if (reply->error().kind() != Error::Kind::Cancelled)

@@ -43,6 +43,8 @@ public:
     void readNow(const QList<ObjectAddress> &addresses, bool urgent = true);
     // Every readable object of the model, in the background.
     void readAll();
+    // Drops what readAll() has not sent yet (what is in flight still lands).
+    void cancelReadAll();
     void clear();
 
     int pending() const { return int(m_urgent.size() + m_background.size()); }
@@ -54,6 +56,9 @@ public:
 Q_SIGNALS:
     // Emitted when a queue drains (e.g. the read-all pass has finished).
     void idle();
+    // The progress of readAll(): objects answered of total; total 0 when it ended or was
+    // cancelled.
+    void readAllProgress(int done, int total);
 
 private:
     void tick();
@@ -73,6 +78,10 @@ private:
     int m_sent = 0;
     int m_maxInFlight = 0;
     quint64 m_generation = 0;
+    QSet<ObjectAddress> m_backgroundInFlight;
+    int m_backgroundDone = 0;
+    int m_backgroundTotal = 0;
+    void backgroundFinished(ObjectAddress address);
 };
 
 } // namespace db::widgets
