@@ -6699,6 +6699,50 @@ Letzter Fehler: %1</translation>
         <source>unknown</source>
         <translation>unbekannt</translation>
     </message>
+    <message>
+        <source>Save &amp;Report…</source>
+        <translation>&amp;Bericht speichern…</translation>
+    </message>
+    <message>
+        <source>Save every row of the comparison as a CSV file</source>
+        <translation>Alle Zeilen des Vergleichs als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <source>Save Comparison Report</source>
+        <translation>Vergleichsbericht speichern</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Saved the comparison to %1</source>
+        <translation>Vergleich in %1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Nothing compared yet: no report saved</source>
+        <translation>Noch nichts verglichen: kein Bericht gespeichert</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Report not saved to %1: %2</source>
+        <translation>Bericht nicht in %1 gespeichert: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParameterSetActions</name>

@@ -174,6 +174,20 @@ private Q_SLOTS:
             view.model()->index(int(it - rows.begin()), ParamCompareModel::Select);
         QVERIFY(!view.model()->setData(check, Qt::Checked, Qt::CheckStateRole));
         QVERIFY(f->writes.isEmpty());
+
+        // Save Report: every row as CSV, the missing one with its status.
+        const QString csv = m_dir.filePath(QStringLiteral("report.csv"));
+        const auto saved = view.saveReportCsv(csv);
+        QVERIFY2(saved.ok(), qPrintable(saved.error().toString()));
+        QFile report(csv);
+        QVERIFY(report.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(report.readAll()).trimmed().split(u'\n');
+        QCOMPARE(lines.size(), rows.size() + 1);
+        QCOMPARE(lines.first(), QStringLiteral("Address,Name,Device,File,Unit,Status"));
+        QVERIFY2(
+            lines.filter(QStringLiteral("6081:0,")).value(0).endsWith(QStringLiteral(",missing")),
+            qPrintable(lines.filter(QStringLiteral("6081:0,")).join(u'|')));
+        QVERIFY(!ParamCompareView().saveReportCsv(csv + QStringLiteral("2")).ok()); // nothing yet
     }
 
     void rejectedWriteIsInTheReport()
@@ -222,7 +236,8 @@ private Q_SLOTS:
         ParamCompareView view;
         view.setConnection(f.get());
         view.setFileSet(set.value(), QStringLiteral("file"));
-        QTRY_VERIFY2(!view.isBusy() && view.statusText().contains(QStringLiteral("Not compared")), qPrintable(view.statusText()));
+        QTRY_VERIFY2(!view.isBusy() && view.statusText().contains(QStringLiteral("Not compared")),
+                     qPrintable(view.statusText()));
         QVERIFY2(view.statusText().contains(QStringLiteral("00000100h"))
                      && view.statusText().contains(QStringLiteral("00000200h")),
                  qPrintable(view.statusText()));

@@ -1,5 +1,6 @@
 #include "paramcompareview.h"
 
+#include "core/printable.h"
 #include "paramcomparemodel.h"
 #include "paramcomparereport.h"
 #include "widgets/common/flowlayout.h"
@@ -7,6 +8,7 @@
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -15,6 +17,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -88,7 +91,25 @@ ParamCompareView::ParamCompareView(QWidget *parent)
     second->addWidget(m_onlyDiff);
     second->addWidget(m_withDefaults);
     second->addWidget(m_hex);
+    // The comparison as a CSV file (for the commissioning record).
+    auto *saveReport = new QPushButton(tr("Save &Report…"), this);
+    saveReport->setObjectName(QStringLiteral("saveReport"));
+    saveReport->setToolTip(tr("Save every row of the comparison as a CSV file"));
+    connect(saveReport, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save Comparison Report"),
+            QDir(recentFolder(QStringLiteral("csv"))).filePath(QStringLiteral("comparison.csv")),
+            tr("CSV (*.csv);;All files (*)"));
+        rememberFolder(QStringLiteral("csv"), path);
+        if (path.isEmpty())
+            return;
+        const auto saved = saveReportCsv(path);
+        showStatus(saved ? tr("Saved the comparison to %1").arg(QDir::toNativeSeparators(path))
+                         : saved.error().message(),
+                   saved ? QColor() : style::errorColor());
+    });
     auto *bottom = new FlowLayout;
+    bottom->addWidget(saveReport);
     bottom->addWidget(m_selectDiff);
     bottom->addWidget(m_selectNone);
     bottom->addWidget(m_progress);
@@ -191,6 +212,42 @@ void ParamCompareView::setFileSet(const ParameterSet &set, const QString &origin
     showStatus(tr("Loaded %1. Nothing has been written to the device.").arg(origin));
     compare();
     refreshDevice();
+}
+
+Result<void> ParamCompareView::saveReportCsv(const QString &path) const
+{
+    const ParameterComparison &c = m_model->comparison();
+    if (c.rows.isEmpty())
+        return Error(Error::Kind::InvalidArgument, tr("Nothing compared yet: no report saved"));
+    const auto field = [](QString text) {
+        if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"'))
+            || text.contains(QLatin1Char('\n'))) {
+            text.replace(QLatin1String("\""), QLatin1String("\"\""));
+            text = QLatin1Char('"') + text + QLatin1Char('"');
+        }
+        return text;
+    };
+    QStringList lines;
+    QStringList header { tr("Address"), tr("Name") };
+    for (const QString &side : c.sideNames)
+        header << side;
+    header << tr("Unit") << tr("Status");
+    lines << header.join(QLatin1Char(','));
+    for (const CompareRow &row : c.rows) {
+        QStringList cells { c.addressFormat->format(row.address), field(printable(row.name)) };
+        for (int side = 0; side < c.sideNames.size(); ++side)
+            cells << field(row.valueText(side));
+        cells << field(row.unit) << compareStatusName(row.status);
+        lines << cells.join(QLatin1Char(','));
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)
+        || file.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8()) < 0
+        || !file.commit())
+        return Error(Error::Kind::Io,
+                     tr("Report not saved to %1: %2")
+                         .arg(QDir::toNativeSeparators(path), file.errorString()));
+    return {};
 }
 
 QString ParamCompareView::countsText() const

@@ -54,6 +54,9 @@ public:
     // Whether the defaults take part in each row's status (they are always shown).
     void setCompareWithDefaults(bool on);
     void setOnlyDifferences(bool on);
+    // Every row of the comparison (address, name, one value per side, unit, status) as CSV,
+    // written atomically; fails when nothing was compared or the file cannot be written.
+    Result<void> saveReportCsv(const QString &path) const;
     void setStoreAfterRestore(bool on);
     std::optional<RestoreReport> lastReport() const { return m_lastReport; }
 
