@@ -6422,6 +6422,10 @@ Letzter Fehler: %1</translation>
         <source>Differs from the default %1</source>
         <translation>Weicht vom Standardwert %1 ab</translation>
     </message>
+    <message>
+        <source>Read before the connection ended; may be out of date</source>
+        <translation>Gelesen, bevor die Verbindung endete; möglicherweise veraltet</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParamCompareModel</name>

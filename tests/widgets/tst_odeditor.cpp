@@ -4,6 +4,7 @@
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
 #include "widgets/common/lamp.h"
+#include "widgets/common/widgetstyle.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/odeditor/odeditorbits.h"
 #include "widgets/odeditor/odeditorfilter.h"
@@ -249,6 +250,20 @@ private Q_SLOTS:
         QCOMPARE(status.data().toString(), QStringLiteral("0x0427"));
         m_editor->setHex(false);
         QCOMPARE(velocity.data().toString(), QStringLiteral("100"));
+    }
+
+    // After the link went away the values stay, greyed out as possibly out of date.
+    void valuesOfALostConnectionAreStale()
+    {
+        startFake();
+        const QModelIndex velocity = m_editor->model()->indexOf(kVelocity, OdEditorModel::Value);
+        QVERIFY(!velocity.data(Qt::ForegroundRole).isValid());
+        m_fake->goAway();
+        QTRY_VERIFY(velocity.data(Qt::ForegroundRole).isValid());
+        QCOMPARE(velocity.data(Qt::ForegroundRole).value<QColor>(),
+                 widgets::style::inactiveColor());
+        QCOMPARE(velocity.data().toString(), QStringLiteral("100")); // still shown
+        QVERIFY(velocity.data(Qt::ToolTipRole).toString().contains(QStringLiteral("out of date")));
     }
 
     // Read all shows how far it got and can be cancelled: what was not sent is not sent.

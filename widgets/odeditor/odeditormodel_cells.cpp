@@ -159,6 +159,9 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
             return style::inactiveColor();
         if (column == Value && cell.state == CellState::ReadFailed)
             return style::inactiveColor();
+        // Values of a connection that is gone are greyed out: they may be out of date.
+        if (isValueColumn(column) && !m_editable && cell.raw.isValid())
+            return style::inactiveColor();
         if (column == Default || column == Limits || column == Type)
             return style::inactiveColor();
         return {};
@@ -171,6 +174,8 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
             QString tip = cell.message;
             if (!def.writable())
                 tip = tip.isEmpty() ? tr("read-only") : tip;
+            if (!m_editable && cell.raw.isValid())
+                tip = tr("Read before the connection ended; may be out of date");
             if (tip.isEmpty() && differsFromDefault(def, cell.raw))
                 tip = tr("Differs from the default %1")
                           .arg(odtext::display(def, def.defaultValue, m_hex));
