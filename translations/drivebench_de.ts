@@ -6747,6 +6747,26 @@ Letzter Fehler: %1</translation>
         <source>Report not saved to %1: %2</source>
         <translation>Bericht nicht in %1 gespeichert: %2</translation>
     </message>
+    <message>
+        <source>Compare with &amp;File…</source>
+        <translation>Mit &amp;Datei vergleichen…</translation>
+    </message>
+    <message>
+        <source>Compare the loaded set with another file instead of the device</source>
+        <translation>Den geladenen Satz mit einer anderen Datei statt mit dem Gerät vergleichen</translation>
+    </message>
+    <message>
+        <source>Compare with Parameter Set</source>
+        <translation>Mit Parametersatz vergleichen</translation>
+    </message>
+    <message>
+        <source>Load a parameter set first</source>
+        <translation>Laden Sie zuerst einen Parametersatz</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2. Nothing has been written; Re-read Device compares with the device again.</source>
+        <translation>%1 mit %2 verglichen. Nichts wurde geschrieben; Gerät neu lesen vergleicht wieder mit dem Gerät.</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ParameterSetActions</name>

@@ -250,6 +250,37 @@ private Q_SLOTS:
         QVERIFY(!view.statusText().contains(QStringLiteral("Not compared")));
     }
 
+    // File against file: no device is read or written.
+    void fileAgainstFile()
+    {
+        auto f = fake();
+        QTRY_VERIFY(f->isConnected());
+        auto set = backup(f.get());
+        QVERIFY(set.ok());
+        const QString other = m_dir.filePath(QStringLiteral("other.dbp"));
+        QVERIFY(changed(set.value(), { kVelocity, kWindow }, 5).save(other).ok());
+        ParamCompareView view;
+        view.setFileSet(set.value(), QStringLiteral("first.dbp"));
+        const int readsBefore = f->readCount;
+        QVERIFY(view.loadReferenceFile(other).ok());
+        QVERIFY(view.comparesTwoFiles());
+        const ParameterComparison &c = view.model()->comparison();
+        QCOMPARE(c.sideNames.value(0), QStringLiteral("other.dbp"));
+        QCOMPARE(c.count(CompareStatus::Changed), 2);
+        QCOMPARE(c.count(CompareStatus::Unchanged), set->size() - 2);
+        QVERIFY(view.statusText().contains(QStringLiteral("Compared first.dbp with other.dbp")));
+        QVERIFY(!view.findChild<QPushButton *>(QStringLiteral("restoreSelected"))->isEnabled());
+        view.setConnection(f.get()); // a device appears: the two files stay compared
+        QCOMPARE(view.model()->comparison().sideNames.value(0), QStringLiteral("other.dbp"));
+        QVERIFY(!view.findChild<QPushButton *>(QStringLiteral("restoreSelected"))->isEnabled());
+        QCOMPARE(f->readCount, readsBefore);
+        QVERIFY(f->writes.isEmpty());
+        view.refreshDevice(); // back to the device
+        QVERIFY(!view.comparesTwoFiles());
+        QTRY_VERIFY(!view.isBusy()
+                    && view.model()->comparison().sideNames.value(0) == QStringLiteral("Device"));
+    }
+
     // File dialogs start in the folder the last file of their kind went to.
     void dialogsStartInTheLastFolder()
     {

@@ -108,6 +108,18 @@ ParamCompareView::ParamCompareView(QWidget *parent)
                          : saved.error().message(),
                    saved ? QColor() : style::errorColor());
     });
+    auto *withFile = new QPushButton(tr("Compare with &File…"), this);
+    withFile->setObjectName(QStringLiteral("compareWithFile"));
+    withFile->setToolTip(tr("Compare the loaded set with another file instead of the device"));
+    connect(withFile, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Compare with Parameter Set"), recentFolder(QStringLiteral("dbp")),
+            tr("Parameter sets (*.dbp *.txt);;All files (*)"));
+        rememberFolder(QStringLiteral("dbp"), path);
+        if (!path.isEmpty())
+            loadReferenceFile(path);
+    });
+    top->insertWidget(2, withFile);
     auto *bottom = new FlowLayout;
     bottom->addWidget(saveReport);
     bottom->addWidget(m_selectDiff);
@@ -157,19 +169,43 @@ void ParamCompareView::setConnection(DeviceConnection *connection)
     cancel();
     disconnect(m_stateConnection);
     m_connection = connection;
-    m_device.reset();
+    if (m_referenceFile.isEmpty())
+        m_device.reset();
     if (connection) {
-        m_stateConnection =
-            connect(connection, &DeviceConnection::stateChanged, this,
-                    [this](DeviceConnection::State state) {
-                        if (state == DeviceConnection::State::Connected && m_file && !isBusy())
-                            refreshDevice();
-                        updateActions();
-                    });
+        m_stateConnection = connect(connection, &DeviceConnection::stateChanged, this,
+                                    [this](DeviceConnection::State state) {
+                                        if (state == DeviceConnection::State::Connected && m_file
+                                            && !isBusy() && m_referenceFile.isEmpty())
+                                            refreshDevice();
+                                        updateActions();
+                                    });
     }
     compare();
-    if (m_file && connection && connection->isConnected())
+    if (m_file && connection && connection->isConnected() && m_referenceFile.isEmpty())
         refreshDevice();
+}
+
+Result<void> ParamCompareView::loadReferenceFile(const QString &path)
+{
+    if (!m_file)
+        return Error(Error::Kind::InvalidArgument, tr("Load a parameter set first"));
+    auto set = ParameterSet::load(path);
+    if (!set) {
+        const Error &e = set.error();
+        showStatus(e.kind() == Error::Kind::Malformed
+                       ? e.message()
+                       : tr("Cannot load %1: %2").arg(QFileInfo(path).fileName(), e.message()),
+                   style::errorColor());
+        return e;
+    }
+    cancel();
+    m_referenceFile = QFileInfo(path).fileName();
+    m_device = set.value();
+    compare();
+    showStatus(tr("Compared %1 with %2. Nothing has been written; Re-read Device compares with "
+                  "the device again.")
+                   .arg(m_fileOrigin, m_referenceFile));
+    return {};
 }
 
 void ParamCompareView::chooseFile()
@@ -211,7 +247,8 @@ void ParamCompareView::setFileSet(const ParameterSet &set, const QString &origin
                  set.source.toHtmlEscaped()));
     showStatus(tr("Loaded %1. Nothing has been written to the device.").arg(origin));
     compare();
-    refreshDevice();
+    if (m_referenceFile.isEmpty())
+        refreshDevice();
 }
 
 Result<void> ParamCompareView::saveReportCsv(const QString &path) const

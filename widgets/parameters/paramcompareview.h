@@ -57,6 +57,10 @@ public:
     // Every row of the comparison (address, name, one value per side, unit, status) as CSV,
     // written atomically; fails when nothing was compared or the file cannot be written.
     Result<void> saveReportCsv(const QString &path) const;
+    // File against file: the set at `path` takes the device's place as the reference side (the
+    // device is neither read nor written until Re-read Device). Needs a loaded set.
+    Result<void> loadReferenceFile(const QString &path);
+    bool comparesTwoFiles() const { return !m_referenceFile.isEmpty(); }
     void setStoreAfterRestore(bool on);
     std::optional<RestoreReport> lastReport() const { return m_lastReport; }
 
@@ -89,7 +93,8 @@ private:
     QMetaObject::Connection m_stateConnection;
     std::optional<ParameterSet> m_file;
     QString m_fileOrigin;
-    std::optional<ParameterSet> m_device;
+    std::optional<ParameterSet> m_device; // or the reference file's set (m_referenceFile)
+    QString m_referenceFile; // file name when m_device is a file, not the device
     std::unique_ptr<ParameterBackup> m_backup;
     std::unique_ptr<ParameterRestore> m_restore;
     std::optional<RestoreReport> m_lastReport;

@@ -50,6 +50,11 @@ void ParamCompareView::refreshDevice()
 {
     if (!m_file || isBusy())
         return;
+    if (!m_referenceFile.isEmpty()) { // back from file-against-file to the device
+        m_referenceFile.clear();
+        m_device.reset();
+        compare();
+    }
     if (!m_connection || !m_connection->isConnected()) {
         showStatus(tr("Not connected: the device column stays empty until a device is "
                       "connected."),
@@ -134,7 +139,7 @@ void ParamCompareView::compare()
     ParameterSet device = m_device.value_or(ParameterSet());
     if (!m_device)
         device.addressFormat = format;
-    if (m_device) {
+    if (m_device && m_referenceFile.isEmpty()) {
         // Never compared (or restored) against another kind of device without saying so.
         if (const QString why = identityMismatch(*m_file, device); !why.isEmpty()) {
             m_model->setComparison({}, {}, {});
@@ -149,7 +154,7 @@ void ParamCompareView::compare()
         }
     }
     QList<ParameterSet> sides { device, *m_file };
-    QStringList names { tr("Device"), tr("File") };
+    QStringList names { m_referenceFile.isEmpty() ? tr("Device") : m_referenceFile, tr("File") };
     if (auto same = checkSameAddressFormat(sides, names); !same) {
         m_model->setComparison({}, {}, {});
         m_counts->clear();
@@ -261,7 +266,9 @@ void ParamCompareView::updateActions()
     m_reread->setEnabled(!busy && connected && m_file);
     m_selectDiff->setEnabled(!busy && m_file);
     m_selectNone->setEnabled(!busy && selected > 0);
-    m_restoreButton->setEnabled(!busy && connected && selected > 0 && m_device);
+    // Restoring writes the device: never while the reference side is another file.
+    m_restoreButton->setEnabled(!busy && connected && selected > 0 && m_device
+                                && m_referenceFile.isEmpty());
     m_restoreButton->setText(selected > 0 ? tr("&Restore %n Selected…", nullptr, selected)
                                           : tr("&Restore Selected…"));
     m_store->setEnabled(
