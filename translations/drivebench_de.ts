@@ -1535,6 +1535,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>BLOCK is a motion block number, not &apos;%1&apos;</source>
         <translation>BLOCK ist eine Fahrsatznummer, nicht „%1“</translation>
     </message>
+    <message>
+        <source>--ram needs a vabus:// URI</source>
+        <translation>--ram braucht eine vabus://-URI</translation>
+    </message>
+    <message>
+        <source>writing %1</source>
+        <translation>Schreiben von %1</translation>
+    </message>
+    <message>
+        <source>velocity needs --vel V (signed) and --time MS</source>
+        <translation>velocity braucht --vel V (mit Vorzeichen) und --time MS</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -1545,6 +1557,129 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>&apos;%1&apos; is not a parameter address: NUMBER:DATASET takes a parameter number of 0-65535 and a data set of 0-255, e.g. 372:2</source>
         <translation>„%1“ ist keine Parameteradresse: NUMMER:DATENSATZ erwartet eine Parameternummer 0-65535 und einen Datensatz 0-255, z. B. 372:2</translation>
+    </message>
+</context>
+<context>
+    <name>db::Cia301</name>
+    <message>
+        <source>no error / error reset</source>
+        <translation>kein Fehler / Fehler zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>generic error</source>
+        <translation>allgemeiner Fehler</translation>
+    </message>
+    <message>
+        <source>current, device input side</source>
+        <translation>Strom, Geräteeingang</translation>
+    </message>
+    <message>
+        <source>current inside the device</source>
+        <translation>Strom im Gerät</translation>
+    </message>
+    <message>
+        <source>current, device output side</source>
+        <translation>Strom, Geräteausgang</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>mains voltage</source>
+        <translation>Netzspannung</translation>
+    </message>
+    <message>
+        <source>voltage inside the device</source>
+        <translation>Spannung im Gerät</translation>
+    </message>
+    <message>
+        <source>output voltage</source>
+        <translation>Ausgangsspannung</translation>
+    </message>
+    <message>
+        <source>voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <source>ambient temperature</source>
+        <translation>Umgebungstemperatur</translation>
+    </message>
+    <message>
+        <source>device temperature</source>
+        <translation>Gerätetemperatur</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>device hardware</source>
+        <translation>Gerätehardware</translation>
+    </message>
+    <message>
+        <source>internal software</source>
+        <translation>interne Software</translation>
+    </message>
+    <message>
+        <source>user software</source>
+        <translation>Anwendersoftware</translation>
+    </message>
+    <message>
+        <source>data set</source>
+        <translation>Datensatz</translation>
+    </message>
+    <message>
+        <source>device software</source>
+        <translation>Gerätesoftware</translation>
+    </message>
+    <message>
+        <source>additional modules</source>
+        <translation>Zusatzmodule</translation>
+    </message>
+    <message>
+        <source>communication</source>
+        <translation>Kommunikation</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN-Überlauf (Objekte verloren)</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN im Zustand Error Passive</translation>
+    </message>
+    <message>
+        <source>life guard or heartbeat error</source>
+        <translation>Life-Guarding- oder Heartbeat-Fehler</translation>
+    </message>
+    <message>
+        <source>recovered from bus off</source>
+        <translation>Bus-off behoben</translation>
+    </message>
+    <message>
+        <source>protocol error</source>
+        <translation>Protokollfehler</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>Überwachung</translation>
+    </message>
+    <message>
+        <source>external error</source>
+        <translation>externer Fehler</translation>
+    </message>
+    <message>
+        <source>additional functions</source>
+        <translation>Zusatzfunktionen</translation>
+    </message>
+    <message>
+        <source>device specific</source>
+        <translation>gerätespezifisch</translation>
+    </message>
+    <message>
+        <source>unknown error 0x%1</source>
+        <translation>unbekannter Fehler 0x%1</translation>
     </message>
 </context>
 <context>
@@ -1854,6 +1989,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Unknown state</source>
         <translation>Unbekannter Zustand</translation>
+    </message>
+</context>
+<context>
+    <name>db::TextLanguage</name>
+    <message>
+        <source>en</source>
+        <comment>The code of this translation&apos;s language (de, fr, ...): device descriptions show the names they have in it.</comment>
+        <translation>de</translation>
     </message>
 </context>
 <context>
@@ -2288,6 +2431,353 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>node %1 did not report its identity (%2: %3)</source>
         <translation>Knoten %1 hat seine Identität nicht gemeldet (%2: %3)</translation>
     </message>
+    <message>
+        <source>heartbeat lost: node %1 silent for more than %2 ms</source>
+        <translation>Heartbeat verloren: Knoten %1 seit mehr als %2 ms still</translation>
+    </message>
+    <message>
+        <source>connected to node %1 on %2</source>
+        <translation>mit Knoten %1 an %2 verbunden</translation>
+    </message>
+    <message>
+        <source>disconnected from %1</source>
+        <translation>Verbindung zu %1 getrennt</translation>
+    </message>
+    <message>
+        <source>setting up drive-side supervision</source>
+        <translation>Einrichten der antriebsseitigen Überwachung</translation>
+    </message>
+    <message>
+        <source>restoring the drive&apos;s supervision settings</source>
+        <translation>Wiederherstellen der Überwachungseinstellungen des Antriebs</translation>
+    </message>
+</context>
+<context>
+    <name>db::canopen::FrameDecoder</name>
+    <message>
+        <source>all nodes</source>
+        <translation>alle Knoten</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>pre-operational</source>
+        <translation>Pre-Operational</translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>reset communication</source>
+        <translation>Reset Kommunikation</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <translation>Befehl %1</translation>
+    </message>
+    <message>
+        <source>switch state global</source>
+        <translation>Zustand global umschalten</translation>
+    </message>
+    <message>
+        <source>configure node-id</source>
+        <translation>Node-ID konfigurieren</translation>
+    </message>
+    <message>
+        <source>configure bit timing</source>
+        <translation>Bit-Timing konfigurieren</translation>
+    </message>
+    <message>
+        <source>activate bit timing</source>
+        <translation>Bit-Timing aktivieren</translation>
+    </message>
+    <message>
+        <source>store configuration</source>
+        <translation>Konfiguration speichern</translation>
+    </message>
+    <message>
+        <source>switch state selective</source>
+        <translation>Zustand selektiv umschalten</translation>
+    </message>
+    <message>
+        <source>switch state selective response</source>
+        <translation>Antwort auf selektives Umschalten</translation>
+    </message>
+    <message>
+        <source>identify non-configured</source>
+        <translation>Nicht konfigurierte identifizieren</translation>
+    </message>
+    <message>
+        <source>identify slave</source>
+        <translation>Slave identifizieren</translation>
+    </message>
+    <message>
+        <source>fastscan</source>
+        <translation>Fastscan</translation>
+    </message>
+    <message>
+        <source>inquire vendor-id</source>
+        <translation>Hersteller-ID abfragen</translation>
+    </message>
+    <message>
+        <source>inquire product code</source>
+        <translation>Produktcode abfragen</translation>
+    </message>
+    <message>
+        <source>inquire revision</source>
+        <translation>Revision abfragen</translation>
+    </message>
+    <message>
+        <source>inquire serial number</source>
+        <translation>Seriennummer abfragen</translation>
+    </message>
+    <message>
+        <source>inquire node-id</source>
+        <translation>Node-ID abfragen</translation>
+    </message>
+    <message>
+        <source>TIME (%1 bytes)</source>
+        <translation>TIME (%1 Bytes)</translation>
+    </message>
+    <message>
+        <source>device specific</source>
+        <translation>gerätespezifisch</translation>
+    </message>
+    <message>
+        <source>additional functions</source>
+        <translation>Zusatzfunktionen</translation>
+    </message>
+    <message>
+        <source>error reset</source>
+        <translation>Fehler zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>generic</source>
+        <translation>allgemein</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>device hardware</source>
+        <translation>Gerätehardware</translation>
+    </message>
+    <message>
+        <source>device software</source>
+        <translation>Gerätesoftware</translation>
+    </message>
+    <message>
+        <source>additional modules</source>
+        <translation>Zusatzmodule</translation>
+    </message>
+    <message>
+        <source>monitoring</source>
+        <translation>Überwachung</translation>
+    </message>
+    <message>
+        <source>external error</source>
+        <translation>externer Fehler</translation>
+    </message>
+    <message>
+        <source>error frame</source>
+        <translation>Error-Frame</translation>
+    </message>
+    <message>
+        <source>extended frame (not CANopen)</source>
+        <translation>Extended-Frame (kein CANopen)</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation>SYNC Zähler %1</translation>
+    </message>
+    <message>
+        <source>%1 node %2: remote request</source>
+        <translation>%1 Knoten %2: Remote-Anfrage</translation>
+    </message>
+    <message>
+        <source>Node guarding request node %1</source>
+        <translation>Node-Guarding-Anfrage Knoten %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: no data</source>
+        <translation>Heartbeat Knoten %1: keine Daten</translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation>Boot-up Knoten %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation>Heartbeat Knoten %1: %2</translation>
+    </message>
+    <message>
+        <source>LSS master: %1</source>
+        <translation>LSS Master: %1</translation>
+    </message>
+    <message>
+        <source>LSS slave: %1</source>
+        <translation>LSS Slave: %1</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>keine Daten</translation>
+    </message>
+    <message>
+        <source>NMT malformed (%1 bytes)</source>
+        <translation>NMT fehlerhaft (%1 Bytes)</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: malformed (%2 bytes)</source>
+        <translation>EMCY Knoten %1: fehlerhaft (%2 Bytes)</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2, reg %3</source>
+        <translation>EMCY Knoten %1: %2, Reg. %3</translation>
+    </message>
+    <message>
+        <source>, data %1</source>
+        <translation>, Daten %1</translation>
+    </message>
+    <message>
+        <source>%1 node %2</source>
+        <translation>%1 Knoten %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes</source>
+        <translation>%1: %2 Bytes</translation>
+    </message>
+    <message>
+        <source>%1 node %2: </source>
+        <translation>%1 Knoten %2: </translation>
+    </message>
+    <message>
+        <source>empty frame</source>
+        <translation>leerer Frame</translation>
+    </message>
+    <message>
+        <source>block segment %1%2 %3: %4</source>
+        <translation>Blocksegment %1%2 %3: %4</translation>
+    </message>
+    <message>
+        <source> last</source>
+        <translation> letztes</translation>
+    </message>
+    <message>
+        <source>abort %1: 0x%2 %3</source>
+        <translation>Abbruch %1: 0x%2 %3</translation>
+    </message>
+    <message>
+        <source>download %1 ← %2</source>
+        <translation>Download %1 ← %2</translation>
+    </message>
+    <message>
+        <source>download %1, %2 bytes</source>
+        <translation>Download %1, %2 Bytes</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>download segment %1 %2%3: %4</source>
+        <translation>Download-Segment %1 %2%3: %4</translation>
+    </message>
+    <message>
+        <source>upload %1</source>
+        <translation>Upload %1</translation>
+    </message>
+    <message>
+        <source>upload segment request %1 %2</source>
+        <translation>Upload-Segment-Anfrage %1 %2</translation>
+    </message>
+    <message>
+        <source>block upload %1, blksize %2</source>
+        <translation>Block-Upload %1, blksize %2</translation>
+    </message>
+    <message>
+        <source>block upload start %1</source>
+        <translation>Block-Upload Start %1</translation>
+    </message>
+    <message>
+        <source>block upload ack %1: seq %2, blksize %3</source>
+        <translation>Block-Upload Quittung %1: seq %2, blksize %3</translation>
+    </message>
+    <message>
+        <source>block upload end %1 ok</source>
+        <translation>Block-Upload Ende %1 ok</translation>
+    </message>
+    <message>
+        <source>block download %1, %2 bytes</source>
+        <translation>Block-Download %1, %2 Bytes</translation>
+    </message>
+    <message>
+        <source>block download end %1, %2 unused, crc 0x%3</source>
+        <translation>Block-Download Ende %1, %2 ungenutzt, crc 0x%3</translation>
+    </message>
+    <message>
+        <source>unknown command 0x%1</source>
+        <translation>unbekannter Befehl 0x%1</translation>
+    </message>
+    <message>
+        <source>download %1 ok</source>
+        <translation>Download %1 ok</translation>
+    </message>
+    <message>
+        <source>download segment %1 %2 ok</source>
+        <translation>Download-Segment %1 %2 ok</translation>
+    </message>
+    <message>
+        <source>upload %1 → %2</source>
+        <translation>Upload %1 → %2</translation>
+    </message>
+    <message>
+        <source>upload %1, %2 bytes</source>
+        <translation>Upload %1, %2 Bytes</translation>
+    </message>
+    <message>
+        <source>upload segment %1 %2%3: %4</source>
+        <translation>Upload-Segment %1 %2%3: %4</translation>
+    </message>
+    <message>
+        <source>block download %1 ok, blksize %2</source>
+        <translation>Block-Download %1 ok, blksize %2</translation>
+    </message>
+    <message>
+        <source>block download ack %1: seq %2, blksize %3</source>
+        <translation>Block-Download Quittung %1: seq %2, blksize %3</translation>
+    </message>
+    <message>
+        <source>block download end %1 ok</source>
+        <translation>Block-Download Ende %1 ok</translation>
+    </message>
+    <message>
+        <source>block upload %1, %2 bytes</source>
+        <translation>Block-Upload %1, %2 Bytes</translation>
+    </message>
+    <message>
+        <source>block upload end %1, %2 unused, crc 0x%3</source>
+        <translation>Block-Upload Ende %1, %2 ungenutzt, crc 0x%3</translation>
+    </message>
 </context>
 <context>
     <name>db::canopen::SdoAbort</name>
@@ -2445,6 +2935,54 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>homing error</source>
         <translation>Referenzfahrtfehler</translation>
+    </message>
+    <message>
+        <source>reading the state</source>
+        <translation>Lesen des Zustands</translation>
+    </message>
+    <message>
+        <source>switch on</source>
+        <translation>Einschalten</translation>
+    </message>
+    <message>
+        <source>enable operation</source>
+        <translation>Betrieb freigeben</translation>
+    </message>
+    <message>
+        <source>disable voltage</source>
+        <translation>Spannung sperren</translation>
+    </message>
+    <message>
+        <source>fault reset</source>
+        <translation>Störungsquittierung</translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation>Schnellhalt</translation>
+    </message>
+    <message>
+        <source>quick stop active or switch on disabled</source>
+        <translation>Schnellhalt aktiv oder Einschaltsperre</translation>
+    </message>
+    <message>
+        <source>profile position</source>
+        <translation>Profillage</translation>
+    </message>
+    <message>
+        <source>profile velocity</source>
+        <translation>Profilgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation>Betrieb freigegeben</translation>
+    </message>
+    <message>
+        <source>homing attained (6041h bits 12 and 10)</source>
+        <translation>Referenzfahrt abgeschlossen (6041h Bits 12 und 10)</translation>
+    </message>
+    <message>
+        <source>profile torque</source>
+        <translation>Profildrehmoment</translation>
     </message>
 </context>
 <context>
@@ -3027,6 +3565,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>a parameter set</source>
         <translation>ein Parametersatz</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot;: &quot;%2&quot; is not a language code such as &quot;de&quot;</source>
+        <translation>„%1“: „%2“ ist kein Sprachcode wie „de“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a non-empty text</source>
+        <translation>„%1“ muss ein nicht leerer Text sein</translation>
+    </message>
+    <message>
+        <source>%1: error #%2: %3</source>
+        <translation>%1: Fehler #%2: %3</translation>
+    </message>
 </context>
 <context>
     <name>db::description</name>
@@ -3410,6 +3960,110 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>video writer: %1</source>
         <translation>Videoschreiber: %1</translation>
     </message>
+    <message>
+        <source>IP address decoded</source>
+        <translation>IP-Adresse dekodiert</translation>
+    </message>
+    <message>
+        <source>no usable samples (empty, not finite or time not increasing)</source>
+        <translation>keine brauchbaren Messwerte (leer, nicht endlich oder Zeit nicht steigend)</translation>
+    </message>
+    <message>
+        <source>no modulation: the brightness never shows two distinct levels (LED not in view, covered or not blinking)</source>
+        <translation>keine Modulation: die Helligkeit zeigt nie zwei unterscheidbare Stufen (LED nicht im Bild, verdeckt oder blinkt nicht)</translation>
+    </message>
+    <message>
+        <source>the LED blinks, but not with Morse timing of 40-500 ms per unit</source>
+        <translation>die LED blinkt, aber nicht im Morsetakt von 40-500 ms je Einheit</translation>
+    </message>
+    <message>
+        <source>recording too short: not one complete message yet</source>
+        <translation>Aufnahme zu kurz: noch keine vollständige Nachricht</translation>
+    </message>
+    <message>
+        <source>Morse text without a valid &quot;MC+IPa+b+c+d:&quot; message</source>
+        <translation>Morsetext ohne gültige Nachricht „MC+IPa+b+c+d:“</translation>
+    </message>
+    <message>
+        <source>IP address seen, but the repetitions do not agree enough yet</source>
+        <translation>IP-Adresse erkannt, aber die Wiederholungen stimmen noch nicht genug überein</translation>
+    </message>
+    <message>
+        <source>a %1 s gap in time after sample %2 (at %3 s)</source>
+        <translation>eine Zeitlücke von %1 s nach Messwert %2 (bei %3 s)</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>%1 weitere</translation>
+    </message>
+    <message>
+        <source>the recording has %1: read as %2 recordings</source>
+        <translation>die Aufnahme hat %1: als %2 Aufnahmen gelesen</translation>
+    </message>
+    <message>
+        <source>; octets read so far: %1</source>
+        <translation>; bisher gelesene Oktette: %1</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>line longer than %1 characters</source>
+        <translation>Zeile länger als %1 Zeichen</translation>
+    </message>
+    <message>
+        <source>time %1 s is negative</source>
+        <translation>Zeit %1 s ist negativ</translation>
+    </message>
+    <message>
+        <source>time %1 s repeats the previous row&apos;s time</source>
+        <translation>Zeit %1 s wiederholt die Zeit der vorigen Zeile</translation>
+    </message>
+    <message>
+        <source>time %1 s is before the previous row&apos;s %2 s (rows must be in time order)</source>
+        <translation>Zeit %1 s liegt vor %2 s der vorigen Zeile (Zeilen müssen zeitlich geordnet sein)</translation>
+    </message>
+    <message>
+        <source>more than %1 samples: cut the recording</source>
+        <translation>mehr als %1 Messwerte: Aufnahme kürzen</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>%1: not a readable video (%2)</source>
+        <translation>%1: kein lesbares Video (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no stream information</source>
+        <translation>%1: keine Stream-Informationen</translation>
+    </message>
+    <message>
+        <source>%1: no decodable video stream</source>
+        <translation>%1: kein dekodierbarer Videostream</translation>
+    </message>
+    <message>
+        <source>%1: cannot open the %2 decoder</source>
+        <translation>%1: der Decoder %2 kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1: video without a frame size</source>
+        <translation>%1: Video ohne Bildgröße</translation>
+    </message>
+    <message>
+        <source>%1: longer than %2 frames of %3x%4 pixels (%5 MB) at once: cut the video</source>
+        <translation>%1: länger als %2 Bilder mit %3x%4 Pixeln (%5 MB) auf einmal: Video kürzen</translation>
+    </message>
+    <message>
+        <source>%1: no frames decoded</source>
+        <translation>%1: keine Bilder dekodiert</translation>
+    </message>
 </context>
 <context>
     <name>db::morseio::CameraSource</name>
@@ -3559,6 +4213,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>this drive has no table of motion blocks</source>
         <translation>dieser Antrieb hat keine Fahrsatztabelle</translation>
+    </message>
+    <message>
+        <source>drive fault (statusword 0x%1)</source>
+        <translation>Antriebsstörung (Statuswort 0x%1)</translation>
+    </message>
+    <message>
+        <source>power stage switched off</source>
+        <translation>Leistungsteil abgeschaltet</translation>
     </message>
 </context>
 <context>
@@ -4337,6 +4999,45 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1: skipped a line that is not slcan: &apos;%2&apos;</source>
         <translation>%1: Zeile übersprungen, die kein SLCAN ist: „%2“</translation>
     </message>
+    <message>
+        <source>reconnecting to %1</source>
+        <translation>erneutes Verbinden mit %1</translation>
+    </message>
+    <message>
+        <source>connected to %1</source>
+        <translation>mit %1 verbunden</translation>
+    </message>
+    <message>
+        <source>connecting to %1</source>
+        <translation>Verbinden mit %1</translation>
+    </message>
+    <message>
+        <source>disconnected from %1</source>
+        <translation>Verbindung zu %1 getrennt</translation>
+    </message>
+</context>
+<context>
+    <name>db::vabus</name>
+    <message>
+        <source>VABus writes data sets 0-9, not %1</source>
+        <translation>VABus schreibt die Datensätze 0-9, nicht %1</translation>
+    </message>
+    <message>
+        <source>nothing to write</source>
+        <translation>nichts zu schreiben</translation>
+    </message>
+    <message>
+        <source>inverter refused write of %1: VABus error %2, %3</source>
+        <translation>Umrichter hat das Schreiben von %1 abgelehnt: VABus-Fehler %2, %3</translation>
+    </message>
+    <message>
+        <source>inverter refused read of %1: VABus error %2, %3</source>
+        <translation>Umrichter hat das Lesen von %1 abgelehnt: VABus-Fehler %2, %3</translation>
+    </message>
+    <message>
+        <source>connecting to %1 again (the inverter may be starting up)</source>
+        <translation>erneutes Verbinden mit %1 (der Umrichter startet eventuell gerade)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::CanMonitor</name>
@@ -4498,6 +5199,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>CANopen</source>
         <translation>CANopen</translation>
+    </message>
+    <message>
+        <source>remote request</source>
+        <translation>Remote-Anfrage</translation>
     </message>
 </context>
 <context>
@@ -6008,6 +6713,10 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Parameter</source>
         <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>English: %1</source>
+        <translation>Englisch: %1</translation>
     </message>
 </context>
 <context>

@@ -309,10 +309,9 @@ int dcf(Context &c)
         }
         const auto kind = value.error().kind();
         if (kind == Error::Kind::Timeout || kind == Error::Kind::Disconnected)
-            return fail(
-                c,
-                value.error().prefixed(
-                    QStringLiteral("reading %1").arg(session.addressFormat().format(def.address))));
+            return fail(c,
+                        value.error().prefixed(
+                            Tr::tr("reading %1").arg(session.addressFormat().format(def.address))));
         ++skipped;
         if (c.options.verbose)
             c.err << Tr::tr("warning: %1: %2")

@@ -296,9 +296,9 @@ void MotionAxis::onStatus()
         setState(AxisState::Standstill);
     }
     if (s.fault && m_state != AxisState::ErrorStop) {
-        const Error e(Error::Kind::DeviceError,
-                      QStringLiteral("drive fault (statusword 0x%1)")
-                          .arg(s.rawStatus, 4, 16, QLatin1Char('0')));
+        const Error e(
+            Error::Kind::DeviceError,
+            Tr::tr("drive fault (statusword 0x%1)").arg(s.rawStatus, 4, 16, QLatin1Char('0')));
         abortActive(MotionCommand::Status::Error, e);
         m_lastError = e;
         m_tracker.enableOff();
@@ -307,7 +307,7 @@ void MotionAxis::onStatus()
     }
     if (!s.powered) {
         if (m_powerWanted && m_state != AxisState::Disabled && m_state != AxisState::ErrorStop) {
-            const Error e(Error::Kind::DeviceError, QStringLiteral("power stage switched off"));
+            const Error e(Error::Kind::DeviceError, Tr::tr("power stage switched off"));
             abortActive(MotionCommand::Status::Error, e);
             m_lastError = e;
             m_tracker.enableOff();

@@ -5,6 +5,7 @@
 
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
+#include "translations/language.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/odeditor/odeditormodel.h"
 
@@ -57,6 +58,7 @@ private Q_SLOTS:
     }
     void cleanup()
     {
+        i18n::installTranslations(*qApp, QStringLiteral("en"));
         m_connection.reset();
         m_acu.reset();
     }
@@ -109,6 +111,49 @@ private Q_SLOTS:
         editor.setConnection(nullptr);
         QCOMPARE(model->columnCount(), int(OdEditorModel::ColumnCount));
         QVERIFY(!header->isSectionHidden(OdEditorModel::Pdo));
+    }
+
+    // In German the editor names the parameters as the inverter's German manual does, the English
+    // name in the tooltip; the filter finds a parameter by either name.
+    void namesInTheProgramsLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("fixedFrequency");
+        QTest::addColumn<QString>("version");
+        QTest::newRow("en") << "en"
+                            << "Fixed frequency 2"
+                            << "Inverter software version";
+        QTest::newRow("de") << "de"
+                            << "Festfrequenz 2"
+                            << "FU-Softwareversion";
+    }
+    void namesInTheProgramsLanguage()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, fixedFrequency);
+        QFETCH(QString, version);
+        QVERIFY(i18n::installTranslations(*qApp, language));
+        OdEditor editor;
+        editor.setConnection(m_connection.get());
+        OdEditorModel *model = editor.model();
+        const QModelIndex ff2 = model->indexOf(dataSet(kFixedFrequency2, 1), OdEditorModel::Name);
+        QCOMPARE(model->data(ff2).toString(), fixedFrequency);
+        const QModelIndex sw = model->indexOf(kSoftwareVersion, OdEditorModel::Name);
+        QCOMPARE(model->data(sw).toString(), version);
+        const QString tip = model->data(sw, Qt::ToolTipRole).toString();
+        QCOMPARE(tip.contains(QLatin1String("Inverter software version")), language == u"de");
+
+        const auto shown = [&editor](ObjectAddress a) {
+            return editor.filter()
+                ->mapFromSource(editor.model()->indexOf(a, OdEditorModel::Name))
+                .isValid();
+        };
+        for (const QString &text :
+             { QStringLiteral("softwareversion"), QStringLiteral("software version") }) {
+            editor.setFilterText(text);
+            QVERIFY2(shown(kSoftwareVersion), qPrintable(text));
+            QVERIFY2(!shown(dataSet(kFixedFrequency2, 1)), qPrintable(text));
+        }
     }
 
     void editWritesTheDataSetToEeprom()

@@ -123,9 +123,12 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case StatusTextRole:
         return column == Value ? cell.message : QVariant();
     case FilterTextRole:
-        return QString(addressFormat().format(def.address) + QLatin1Char(' ') + def.name
-                       + QLatin1Char(' ') + def.objectName + QLatin1Char(' ')
-                       + odtext::display(def, cell.raw, m_hex))
+        // Every language's name: a name from any of the device's manuals finds the object.
+        return QStringList({ addressFormat().format(def.address), def.name, def.objectName,
+                             QStringList(def.localNames.values()).join(QLatin1Char(' ')),
+                             QStringList(def.localObjectNames.values()).join(QLatin1Char(' ')),
+                             odtext::display(def, cell.raw, m_hex) })
+            .join(QLatin1Char(' '))
             .toLower();
     case Qt::FontRole:
         if (column == Address || column == Value || column == Default || column == Limits)
@@ -154,8 +157,16 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
                 tip = tip.isEmpty() ? tr("read-only") : tip;
             return tip.isEmpty() ? QVariant() : QVariant(tip);
         }
-        if (column == Name && !def.description.isEmpty())
-            return def.description;
+        if (column == Name) {
+            // A name shown in another language than English also shows the English one: the
+            // name files and scripts use.
+            QStringList tip;
+            if (def.displayName() != def.name)
+                tip.append(tr("English: %1").arg(def.name));
+            if (!def.description.isEmpty())
+                tip.append(def.description);
+            return tip.isEmpty() ? QVariant() : QVariant(tip.join(QLatin1Char('\n')));
+        }
         return {};
     case Qt::DisplayRole:
         break;
@@ -166,7 +177,7 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case Address:
         return addressFormat().format(def.address);
     case Name:
-        return def.name;
+        return def.displayName();
     case Type:
         return datatype::name(def.type);
     case AccessColumn:
