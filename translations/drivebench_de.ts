@@ -1547,6 +1547,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>velocity needs --vel V (signed) and --time MS</source>
         <translation>velocity braucht --vel V (mit Vorzeichen) und --time MS</translation>
     </message>
+    <message>
+        <source>  node %1: %2</source>
+        <translation>  Knoten %1: %2</translation>
+    </message>
+    <message>
+        <source>scanned nodes 1..127 on %1 in %2 ms</source>
+        <translation>Knoten 1..127 an %1 in %2 ms abgefragt</translation>
+    </message>
+    <message>
+        <source>drivebench-cli: warning: nothing on the drive&apos;s side stops MC_MoveVelocity if drivebench-cli dies on this connection (jog moves in leases)</source>
+        <translation>drivebench-cli: Warnung: auf dieser Verbindung hält nichts auf der Seite des Antriebs MC_MoveVelocity an, wenn drivebench-cli abstürzt (jog fährt mit Freigaben auf Zeit)</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -6610,6 +6622,17 @@ Letzter Fehler: %1</translation>
     <message>
         <source>to RAM (%1, lost at power-off)</source>
         <translation>ins RAM (%1, nach dem Ausschalten verloren)</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::OdEditorDelegate</name>
+    <message>
+        <source>0 (false)</source>
+        <translation>0 (falsch)</translation>
+    </message>
+    <message>
+        <source>1 (true)</source>
+        <translation>1 (wahr)</translation>
     </message>
 </context>
 <context>

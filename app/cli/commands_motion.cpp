@@ -436,8 +436,9 @@ int velocity(Context &c)
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
     if (!supervision && axis.cia->linkSupervision().isEmpty())
-        c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
-                 "drivebench-cli dies on this connection (jog moves in leases)"
+        c.err << Tr::tr("drivebench-cli: warning: nothing on the drive's side stops "
+                        "MC_MoveVelocity if drivebench-cli dies on this connection (jog moves in "
+                        "leases)")
               << Qt::endl;
     else if (!supervision && c.options.verbose)
         c.out << "supervision: " << axis.cia->linkSupervision() << Qt::endl;

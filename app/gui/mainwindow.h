@@ -117,8 +117,11 @@ public Q_SLOTS:
     void showAbout();
     // The About box's text: version, build commit, Qt version and the licence.
     QString aboutText() const;
-    // The README, built into the program, in a window of its own (Help → User Manual, F1).
+    // The user manual in the program's language, in a window of its own (Help → User Manual, F1).
     void showManual();
+    // The manual's file: share/drivebench/manual/manual.LANG.md beside the program, else the copy
+    // built in (":/manual/..."); LANG the program's language, else "en". Empty: none found.
+    static QString manualPath();
     void showSettings();
     // View → Reset Layout: every dock back where it was at the first start, shown and docked.
     void resetLayout();
