@@ -153,7 +153,7 @@ void TestPackaging::installsTheExpectedFiles()
     if (path.startsWith(QStringLiteral("bin/")))
         QVERIFY2(file.isExecutable(), qPrintable(path + QStringLiteral(" is not executable")));
 #ifdef DRIVEBENCH_PNG_ICONS
-    if (path.endsWith(QStringLiteral(".png"))) {
+    if (path.startsWith(QStringLiteral("share/icons/")) && path.endsWith(QStringLiteral(".png"))) {
         const QString size = path.section(QLatin1Char('/'), 3, 3); // "48x48"
         QFile png(file.filePath());
         QVERIFY(png.open(QIODevice::ReadOnly));

@@ -1,12 +1,13 @@
 // Level 4: the object editor against the simulated ACTIVE Cube over VABus/TCP: one column per
 // data set for four-data-set parameters and data set 0 for single ones, edits written to the
 // data set (EEPROM) or, on request, to its RAM copy (data set + 5), and the device's own error
-// text next to a refused value.
+// text next to a refused value; the parameter names in English and German.
 
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "translations/language.h"
 #include "widgets/odeditor/odeditor.h"
+#include "widgets/odeditor/odeditorfilter.h"
 #include "widgets/odeditor/odeditormodel.h"
 
 #include <QCheckBox>
