@@ -8,6 +8,7 @@
 #include "devices/nm17x/nm17xaddressing.h"
 #include "devices/nm17x/nm17xcodes.h"
 #include "devices/nm17x/nm17xline.h"
+#include "devices/nm17x/nm17xscan.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -89,50 +90,48 @@ int list(Context &c, NetworkSession &session, Nm17xLine &line)
     return ExitOk;
 }
 
-// The displays are delivered at 125 kbit/s by the prose of their manual, but their bit-rate
-// object 2100h defaults to 250 kbit/s: look at each bit rate asked for (default both), each on a
-// bus of its own, and tell at which the displays answer.
+// The displays may answer at 125 or 250 kbit/s (nm17xscan.h): look at each bit rate asked for
+// (default both), each on a bus of its own, and tell at which the displays answer.
 int scan(Context &c)
 {
-    const QString text = c.parser && c.parser->isSet(QStringLiteral("bitrates"))
-        ? c.parser->value(QStringLiteral("bitrates"))
-        : QStringLiteral("125000,250000");
-    QList<int> bitrates;
-    for (const QString &item : text.split(u',', Qt::SkipEmptyParts)) {
-        bool ok = false;
-        const int b = item.trimmed().toInt(&ok);
-        if (!ok || b <= 0)
-            return fail(c, usage(Tr::tr("--bitrates takes bit/s, e.g. 125000,250000")));
-        bitrates.append(b);
+    auto bitrates = BitrateScan::defaultBitrates();
+    if (c.parser && c.parser->isSet(QStringLiteral("bitrates"))) {
+        const auto parsed = BitrateScan::parseBitrates(c.parser->value(QStringLiteral("bitrates")));
+        if (!parsed)
+            return fail(c, parsed.error());
+        bitrates = parsed.value();
     }
     const auto uri = ConnectionUri::parse(c.args.at(0));
     if (!uri)
         return fail(c, uri.error());
+    BitrateScan scan(*uri, bitrates);
+    scan.setTimeouts(c.options.connectTimeoutMs, c.options.requestTimeoutMs);
+    QEventLoop loop;
+    QObject::connect(&scan, &BitrateScan::finished, &loop, &QEventLoop::quit);
+    scan.start();
+    if (scan.isRunning())
+        loop.exec();
     int found = 0;
-    for (const int bitrate : std::as_const(bitrates)) {
-        ConnectionUri at = *uri;
-        at.setQueryValue(QStringLiteral("bitrate"), QString::number(bitrate));
-        NetworkSession session;
-        if (auto opened = session.open(at.toString(), c.options.connectTimeoutMs); !opened) {
-            c.err << "drivebench-cli: " << printable(opened.error().toString()) << Qt::endl;
-            continue;
-        }
-        session.network()->sdo()->setTimeoutMs(c.options.requestTimeoutMs);
-        Nm17xLine line(session.network());
-        QList<DisplayState> displays;
-        if (const auto answered = Reply::wait(line.findDisplays()); answered)
-            displays = answered->value<QList<DisplayState>>();
-        c.out << Tr::tr("%1 kbit/s: %n display(s)", nullptr, int(displays.size()))
-                     .arg(bitrate / 1000.0)
+    for (const BitrateResult &r : scan.results()) {
+        c.out << Tr::tr("%1 kbit/s: %n display(s)", nullptr, int(r.displays.size()))
+                     .arg(r.bitrate / 1000.0)
               << Qt::endl;
-        for (const DisplayState &display : displays)
+        if (r.displays.isEmpty() && !r.problem.isEmpty())
+            c.err << "drivebench-cli: " << printable(r.problem) << Qt::endl;
+        for (const DisplayState &display : r.displays)
             c.out << "  " << printable(display.toString()) << Qt::endl;
-        found += int(displays.size());
+        found += int(r.displays.size());
     }
-    if (found == 0)
-        return fail(c,
-                    Error(Error::Kind::Timeout,
-                          Tr::tr("no NM170/NM172/NM174 display answered at %1 bit/s").arg(text)));
+    if (found == 0) {
+        QStringList rates;
+        for (const int b : std::as_const(bitrates))
+            rates.append(QString::number(b));
+        return fail(
+            c,
+            Error(
+                Error::Kind::Timeout,
+                Tr::tr("no NM170/NM172/NM174 display answered at %1 bit/s").arg(rates.join(u','))));
+    }
     return ExitOk;
 }
 
@@ -283,6 +282,105 @@ int oscillate(Context &c, NetworkSession &session)
         !written)
         return fail(c, written.error().prefixed(Tr::tr("node %1: 204Dh:02").arg(*node)));
     c.out << Tr::tr("node %1: oscillation %2").arg(*node).arg(what) << Qt::endl;
+    return ExitOk;
+}
+
+// A mode name or its number: "takten" or "1" (names as in `modes`, case-insensitive).
+std::optional<int> modeArg(const QString &text, const QStringList &modes)
+{
+    bool ok = false;
+    const int n = text.toInt(&ok);
+    if (ok)
+        return (n >= 0 && n < modes.size()) ? std::optional(n) : std::nullopt;
+    const qsizetype i = modes.indexOf(text.toLower());
+    return i >= 0 ? std::optional(int(i)) : std::nullopt;
+}
+
+// The operating modes and settings of one display by SDO: the writes asked for by options, then
+// every setting as the display has it.
+int settings(Context &c, Nm17xLine &line)
+{
+    if (c.args.size() != 3)
+        return fail(c,
+                    usage(Tr::tr("usage: nm17x URI settings NODE [--input-mode M] [--key-mode M] "
+                                 "[--pitch MM [--steps N]] [--filter-width STEPS] "
+                                 "[--filter-count N] [--pre-shutdown on|off]")));
+    const auto node = nodeArg(c.args.at(2));
+    if (!node)
+        return fail(c, node.error());
+    const auto state = Reply::wait(line.readState(*node));
+    if (!state)
+        return fail(c, state.error());
+    const Variant variant = state->value<DisplayState>().variant;
+    const auto option = [&c](const char *name) {
+        const QString key = QLatin1String(name);
+        return c.parser->isSet(key) ? std::optional(c.parser->value(key)) : std::nullopt;
+    };
+    QList<std::pair<ObjectAddress, qint64>> writes;
+    if (const auto m = option("input-mode")) {
+        const auto mode = modeArg(*m,
+                                  { QStringLiteral("standard"), QStringLiteral("takten"),
+                                    QStringLiteral("externposi"), QStringLiteral("off") });
+        if (!mode)
+            return fail(c, usage(Tr::tr("--input-mode takes standard, takten, externposi or off")));
+        writes.append({ { 0x2041, 3 }, *mode });
+    }
+    if (const auto m = option("key-mode")) {
+        const auto mode = modeArg(*m,
+                                  { QStringLiteral("standard"), QStringLiteral("slow"),
+                                    QStringLiteral("middle"), QStringLiteral("fast") });
+        if (!mode)
+            return fail(c, usage(Tr::tr("--key-mode takes standard, slow, middle or fast")));
+        writes.append({ { 0x2041, 4 }, *mode });
+    }
+    const auto steps =
+        intOption(c, QStringLiteral("steps"), stepsPerRevolution(variant), 1, 1 << 24);
+    if (!steps)
+        return fail(c, steps.error());
+    if (const auto p = option("pitch")) {
+        const auto pitch = parseMillimetres(*p);
+        if (!pitch || *pitch <= 0)
+            return fail(c, usage(Tr::tr("--pitch takes the spindle pitch in mm per revolution")));
+        writes.append({ { 0x2004, 0 }, scalingFor(*pitch, *steps) });
+    }
+    for (const auto &[name, sub] : { std::pair("filter-width", 1), std::pair("filter-count", 2) }) {
+        if (const auto v = option(name)) {
+            bool ok = false;
+            const qint64 n = v->toLongLong(&ok);
+            if (!ok)
+                return fail(c, usage(Tr::tr("--%1 takes a number").arg(QLatin1String(name))));
+            writes.append({ { 0x2005, quint8(sub) }, n });
+        }
+    }
+    if (const auto v = option("pre-shutdown")) {
+        if (*v != u"on" && *v != u"off")
+            return fail(c, usage(Tr::tr("--pre-shutdown takes on or off")));
+        writes.append({ { 0x2041, 2 }, *v == u"on" ? 1 : 0 });
+    }
+    for (const auto &[address, value] : std::as_const(writes)) {
+        if (auto written = Reply::wait(line.write(*node, address, value)); !written)
+            return fail(c, written.error());
+    }
+    const ObjectDictionary objects = dictionary(variant, *node);
+    QList<ObjectAddress> shown = { { 0x2004, 0 }, { 0x2005, 1 }, { 0x2005, 2 } };
+    if (hasMotor(variant))
+        shown.append({ { 0x2041, 3 }, { 0x2041, 4 }, { 0x2041, 2 }, { 0x2042, 3 } });
+    c.out << Tr::tr("node %1  %2").arg(*node).arg(variantName(variant)) << Qt::endl;
+    for (const ObjectAddress address : std::as_const(shown)) {
+        const auto read = Reply::wait(line.read(*node, address));
+        if (!read)
+            return fail(c, read.error());
+        const ObjectDef *def = objects.find(address);
+        const qint64 v = read->toLongLong();
+        const QString text = address == ObjectAddress(0x2004, 0)
+            ? Tr::tr("%1 = %2 mm/rev at %3 steps/rev")
+                  .arg(v)
+                  .arg(pitchOf(quint32(v), *steps) / 100.0, 0, 'f', 2)
+                  .arg(*steps)
+            : def->displayText(def->type == DataType::Integer32 ? QVariant(qlonglong(v))
+                                                                : QVariant(qulonglong(v)));
+        c.out << QStringLiteral("  %1 %2: %3").arg(address.toString(), def->name, text) << Qt::endl;
+    }
     return ExitOk;
 }
 
@@ -454,6 +552,24 @@ QList<QCommandLineOption> nm17xOptions()
           QStringLiteral("s") },
         { QStringLiteral("seconds"), Tr::tr("nm17x watch: how long to watch (default 5)."),
           QStringLiteral("s") },
+        { QStringLiteral("input-mode"),
+          Tr::tr("nm17x settings: inputs F/G: standard, takten, externposi or off."),
+          QStringLiteral("mode") },
+        { QStringLiteral("key-mode"),
+          Tr::tr("nm17x settings: keys: standard, slow, middle or fast."), QStringLiteral("mode") },
+        { QStringLiteral("pitch"),
+          Tr::tr("nm17x settings: spindle pitch in mm per revolution (sets the scaling)."),
+          QStringLiteral("mm") },
+        { QStringLiteral("steps"),
+          Tr::tr("nm17x settings: sensor steps per revolution (default 2304; NM174 4096)."),
+          QStringLiteral("n") },
+        { QStringLiteral("filter-width"),
+          Tr::tr("nm17x settings: jump filter width in sensor steps."), QStringLiteral("steps") },
+        { QStringLiteral("filter-count"),
+          Tr::tr("nm17x settings: jumps filtered before one is taken as real."),
+          QStringLiteral("n") },
+        { QStringLiteral("pre-shutdown"), Tr::tr("nm17x settings: dynamic pre-shutdown on or off."),
+          QStringLiteral("on|off") },
         { QStringLiteral("bitrates"),
           Tr::tr("nm17x scan: the bit rates to look at (default 125000,250000)."),
           QStringLiteral("list") },
@@ -467,7 +583,8 @@ int nm17x(Context &c)
                                        QStringLiteral("jog"),       QStringLiteral("stop"),
                                        QStringLiteral("broadcast"), QStringLiteral("address"),
                                        QStringLiteral("control"),   QStringLiteral("watch"),
-                                       QStringLiteral("scan"),      QStringLiteral("oscillate") };
+                                       QStringLiteral("scan"),      QStringLiteral("oscillate"),
+                                       QStringLiteral("settings") };
     if (!kSubs.contains(sub))
         return fail(c, usage(Tr::tr("unknown nm17x command '%1' (%2)").arg(sub, kSubs.join(u'|'))));
     if (sub == u"scan")
@@ -493,6 +610,8 @@ int nm17x(Context &c)
         return watch(c, session, line);
     if (sub == u"oscillate")
         return oscillate(c, session);
+    if (sub == u"settings")
+        return settings(c, line);
     return address(c, session);
 }
 

@@ -350,6 +350,7 @@ void MainWindow::attachCanopen(DeviceConnection *connection)
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
     m_nm17xPanel->setNetwork(at.network);
+    m_nm17xPanel->setBusUri(canopen ? canopen->uri() : ConnectionUri());
 }
 
 void MainWindow::showCanMonitor()
