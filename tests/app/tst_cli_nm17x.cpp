@@ -29,6 +29,7 @@ private Q_SLOTS:
     void usageErrors();
     void oscillatedAndStopped();
     void settingsReadAndWritten();
+    void displayErrorsNamed();
     void scanFindsTheBitrate();
     void thirdPartyMasterByteExact();
 
@@ -376,6 +377,33 @@ void TestCliNm17x::settingsReadAndWritten()
     QVERIFY2(r.out.contains(QLatin1String("1736111 = 4.00 mm/rev")), qPrintable(r.out));
     QVERIFY2(r.out.contains(QLatin1String("Input modes: 0 (Standard / Oscillating)")),
              qPrintable(r.out));
+}
+
+// A blocked shaft (Er 3) and a motor wired the wrong way round (Er 6), set on the simulator's
+// control socket: the setpoint fails naming the display error.
+void TestCliNm17x::displayErrorsNamed()
+{
+    QCOMPARE(control(QStringLiteral("fault 1 blocked")).constLast(), QStringLiteral("ok"));
+    const QStringList setpoint = { QStringLiteral("nm17x"),    uri(),
+                                   QStringLiteral("setpoint"), QStringLiteral("3"),
+                                   QStringLiteral("12.5"),     QStringLiteral("--release") };
+    CliRun r = cli(setpoint);
+    QVERIFY2(r.exitCode != 0, qPrintable(r.out));
+    QVERIFY2(r.err.contains(QLatin1String("node 3: Er 3 (shaft does not turn despite the drive "
+                                          "signal)")),
+             qPrintable(r.err));
+    QCOMPARE(control(QStringLiteral("fault 1 wiring")).constLast(), QStringLiteral("ok"));
+    r = cli(setpoint);
+    QVERIFY(r.exitCode != 0);
+    QVERIFY2(r.err.contains(QLatin1String("node 3: Er 6 (direction error")), qPrintable(r.err));
+    QCOMPARE(control(QStringLiteral("fault 1 none")).constLast(), QStringLiteral("ok"));
+    r = cli(setpoint);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QLatin1String("In Position")), qPrintable(r.out));
+    QVERIFY(control(QStringLiteral("fault 1 loose")).constLast().startsWith(u"error: "));
+    QCOMPARE(control(QStringLiteral("glitch 1 1000 3")).constLast(), QStringLiteral("ok"));
+    QVERIFY(control(QStringLiteral("glitch 1 many")).constLast().startsWith(u"error: "));
+    QCOMPARE(control(QStringLiteral("coast 1 0")).constLast(), QStringLiteral("ok"));
 }
 
 // A display left at 250 kbit/s (its 2100h default): list at 125 kbit/s finds nothing, scan

@@ -45,6 +45,7 @@ private Q_SLOTS:
     void modesOfTheSelectedDisplay();
     void settingsOfTheSelectedDisplay();
     void scanFindsTheDisplaysAtTheirBitrate();
+    void displayErrorsAreNamed();
     void screenshotOfARunningLine();
 
 private:
@@ -362,6 +363,39 @@ void TstNm17xLinePanel::scanFindsTheDisplaysAtTheirBitrate()
              qPrintable(m_panel->message()));
     QVERIFY2(m_panel->message().contains(QLatin1String("250 kbit/s: node 5")),
              qPrintable(m_panel->message()));
+}
+
+// TxPDO2 shows only the error bit: the panel reads the error word and names Er 3 and Er 6, with
+// the remedy in the tool tip.
+void TstNm17xLinePanel::displayErrorsAreNamed()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    SimulatedNm17x *nm172 = m_displays.at(0);
+    QVERIFY(nm172->write({ 0x2047, 2 }, 3u).ok()); // following error after 0.3 s
+    nm172->spindle().setShaftBlocked(true);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    const QModelIndex errors = m_panel->model()->index(1, widgets::Nm17xLineModel::Errors);
+    QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 3 (shaft")),
+                              qPrintable(errors.data().toString()), 5000);
+    QVERIFY(cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("Error")));
+    QVERIFY2(errors.data(Qt::ToolTipRole).toString().contains(QLatin1String("mechanics")),
+             qPrintable(errors.data(Qt::ToolTipRole).toString()));
+
+    nm172->spindle().setShaftBlocked(false);
+    nm172->spindle().setWiringReversed(true);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 6 (direction")),
+                              qPrintable(errors.data().toString()), 5000);
+
+    nm172->spindle().setWiringReversed(false);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Errors), QStringLiteral("-"));
 }
 
 // For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-nm17x.png of the panel
