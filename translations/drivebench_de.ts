@@ -471,6 +471,30 @@
         <source>node %1 is no NM170/NM172/NM174 (vendor 0x%2, product 0x%3)</source>
         <translation>Knoten %1 ist keine NM170/NM172/NM174 (Hersteller 0x%2, Produkt 0x%3)</translation>
     </message>
+    <message>
+        <source>node %1 has no writable object %2</source>
+        <translation>Knoten %1 hat kein beschreibbares Objekt %2</translation>
+    </message>
+    <message>
+        <source>node %1, %2 (%3)</source>
+        <translation>Knoten %1, %2 (%3)</translation>
+    </message>
+    <message>
+        <source>node %1 has no object %2</source>
+        <translation>Knoten %1 hat kein Objekt %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a bit rate in bit/s (e.g. 125000,250000)</source>
+        <translation>„%1“ ist keine Bitrate in bit/s (z. B. 125000,250000)</translation>
+    </message>
+    <message>
+        <source>no bit rate given (e.g. 125000,250000)</source>
+        <translation>keine Bitrate angegeben (z. B. 125000,250000)</translation>
+    </message>
+    <message>
+        <source>the bus did not open within %1 ms</source>
+        <translation>der Bus wurde nicht innerhalb von %1 ms geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -1476,10 +1500,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>jog, velocity: how long to move (ms).</source>
         <translation>jog, velocity: Fahrdauer (ms).</translation>
     </message>
-    <message>
-        <source>--bitrates takes bit/s, e.g. 125000,250000</source>
-        <translation>--bitrates erwartet bit/s, z. B. 125000,250000</translation>
-    </message>
     <message numerus="yes">
         <source>%1 kbit/s: %n display(s)</source>
         <translation>
@@ -1534,6 +1554,66 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>BLOCK is a motion block number, not &apos;%1&apos;</source>
         <translation>BLOCK ist eine Fahrsatznummer, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>usage: nm17x URI settings NODE [--input-mode M] [--key-mode M] [--pitch MM [--steps N]] [--filter-width STEPS] [--filter-count N] [--pre-shutdown on|off]</source>
+        <translation>Aufruf: nm17x URI settings KNOTEN [--input-mode M] [--key-mode M] [--pitch MM [--steps N]] [--filter-width SCHRITTE] [--filter-count N] [--pre-shutdown on|off]</translation>
+    </message>
+    <message>
+        <source>--input-mode takes standard, takten, externposi or off</source>
+        <translation>--input-mode erwartet standard, takten, externposi oder off</translation>
+    </message>
+    <message>
+        <source>--key-mode takes standard, slow, middle or fast</source>
+        <translation>--key-mode erwartet standard, slow, middle oder fast</translation>
+    </message>
+    <message>
+        <source>--pitch takes the spindle pitch in mm per revolution</source>
+        <translation>--pitch erwartet die Spindelsteigung in mm pro Umdrehung</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number</source>
+        <translation>--%1 erwartet eine Zahl</translation>
+    </message>
+    <message>
+        <source>--pre-shutdown takes on or off</source>
+        <translation>--pre-shutdown erwartet on oder off</translation>
+    </message>
+    <message>
+        <source>node %1  %2</source>
+        <translation>Knoten %1  %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm/rev at %3 steps/rev</source>
+        <translation>%1 = %2 mm/U bei %3 Schritten/U</translation>
+    </message>
+    <message>
+        <source>nm17x settings: inputs F/G: standard, takten, externposi or off.</source>
+        <translation>nm17x settings: Eingänge F/G: standard, takten, externposi oder off.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: keys: standard, slow, middle or fast.</source>
+        <translation>nm17x settings: Tasten: standard, slow, middle oder fast.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: spindle pitch in mm per revolution (sets the scaling).</source>
+        <translation>nm17x settings: Spindelsteigung in mm pro Umdrehung (setzt die Skalierung).</translation>
+    </message>
+    <message>
+        <source>nm17x settings: sensor steps per revolution (default 2304; NM174 4096).</source>
+        <translation>nm17x settings: Geberschritte pro Umdrehung (Standard 2304; NM174 4096).</translation>
+    </message>
+    <message>
+        <source>nm17x settings: jump filter width in sensor steps.</source>
+        <translation>nm17x settings: Breite des Sprungfilters in Geberschritten.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: jumps filtered before one is taken as real.</source>
+        <translation>nm17x settings: gefilterte Sprünge, bevor einer als echt gilt.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: dynamic pre-shutdown on or off.</source>
+        <translation>nm17x settings: dynamische Vorabschaltung on oder off.</translation>
     </message>
 </context>
 <context>
@@ -3619,16 +3699,24 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>nur eine NM174 hat einen externen Sensor</translation>
     </message>
     <message>
-        <source>fault INDEX motor|sensor|none</source>
-        <translation>fault INDEX motor|sensor|none (Anzeigenindex, Störung)</translation>
-    </message>
-    <message>
         <source>input INDEX F G (each 0 or 1)</source>
         <translation>input INDEX F G (jeweils 0 oder 1)</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input)</source>
-        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input)</translation>
+        <source>fault INDEX motor|sensor|blocked|wiring|none</source>
+        <translation>fault INDEX motor|sensor|blocked|wiring|none (Anzeigenindex, Störung)</translation>
+    </message>
+    <message>
+        <source>glitch INDEX STEPS [READINGS]</source>
+        <translation>glitch INDEX SCHRITTE [MESSUNGEN]</translation>
+    </message>
+    <message>
+        <source>coast INDEX MS (0..10000)</source>
+        <translation>coast INDEX MS (0..10000)</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input, glitch, coast)</source>
+        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input, glitch, coast)</translation>
     </message>
 </context>
 <context>
@@ -5539,6 +5627,157 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Addressing finished; the displays restart with their new node ids.</source>
         <translation>Adressierung beendet; die Anzeigen starten mit ihren neuen Knotennummern neu.</translation>
+    </message>
+    <message>
+        <source>Scan 125/250 kbit/s</source>
+        <translation>Suche bei 125/250 kbit/s</translation>
+    </message>
+    <message>
+        <source>Look for displays at 125 and 250 kbit/s: they are delivered at 125 kbit/s, but their bit-rate setting defaults to 250</source>
+        <translation>Anzeigen bei 125 und 250 kbit/s suchen: Sie werden mit 125 kbit/s ausgeliefert, ihre Bitrateneinstellung steht aber ab Werk auf 250</translation>
+    </message>
+    <message>
+        <source>Selected display: modes and settings</source>
+        <translation>Gewählte Anzeige: Betriebsarten und Einstellungen</translation>
+    </message>
+    <message>
+        <source>looking for displays at 125 and 250 kbit/s ...</source>
+        <translation>suche Anzeigen bei 125 und 250 kbit/s …</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s: no display</source>
+        <translation>%1 kbit/s: keine Anzeige</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s: node %2</source>
+        <translation>%1 kbit/s: Knoten %2</translation>
+    </message>
+    <message>
+        <source>The CAN bus %1 is not open (yet).</source>
+        <translation>Der CAN-Bus %1 ist (noch) nicht offen.</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::Nm17xSettingsBox</name>
+    <message>
+        <source>Oscillate</source>
+        <translation>Oszillieren</translation>
+    </message>
+    <message>
+        <source>Stop oscillating</source>
+        <translation>Oszillieren beenden</translation>
+    </message>
+    <message>
+        <source>Set scaling</source>
+        <translation>Skalierung setzen</translation>
+    </message>
+    <message>
+        <source>Set filter</source>
+        <translation>Filter setzen</translation>
+    </message>
+    <message>
+        <source>Dynamic pre-shutdown</source>
+        <translation>Dynamische Vorabschaltung</translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation> mm/U</translation>
+    </message>
+    <message>
+        <source> steps/rev</source>
+        <translation> Schritte/U</translation>
+    </message>
+    <message>
+        <source> steps</source>
+        <translation> Schritte</translation>
+    </message>
+    <message>
+        <source> jumps</source>
+        <translation> Sprünge</translation>
+    </message>
+    <message>
+        <source>What the external inputs F and G do</source>
+        <translation>Was die externen Eingänge F und G tun</translation>
+    </message>
+    <message>
+        <source>How the device keys drive the motor</source>
+        <translation>Wie die Gerätetasten den Motor fahren</translation>
+    </message>
+    <message>
+        <source>Position jumps larger than this are filtered out</source>
+        <translation>Positionssprünge, die größer sind, werden herausgefiltert</translation>
+    </message>
+    <message>
+        <source>Consecutive jumps filtered before one is taken as real</source>
+        <translation>Aufeinanderfolgende Sprünge, die gefiltert werden, bevor einer als echt gilt</translation>
+    </message>
+    <message>
+        <source>After each positioning, half the distance by which the target was missed moves the switch-off point</source>
+        <translation>Nach jeder Positionierung verschiebt die halbe Abweichung vom Ziel den Abschaltpunkt</translation>
+    </message>
+    <message>
+        <source>Inputs F/G:</source>
+        <translation>Eingänge F/G:</translation>
+    </message>
+    <message>
+        <source>Keys:</source>
+        <translation>Tasten:</translation>
+    </message>
+    <message>
+        <source>Pitch:</source>
+        <translation>Steigung:</translation>
+    </message>
+    <message>
+        <source>Jump filter:</source>
+        <translation>Sprungfilter:</translation>
+    </message>
+    <message>
+        <source>switch-off point %1</source>
+        <translation>Abschaltpunkt %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm/rev</source>
+        <translation>%1 = %2 mm/U</translation>
+    </message>
+    <message>
+        <source>node %1: %2</source>
+        <translation>Knoten %1: %2</translation>
+    </message>
+    <message>
+        <source>inputs F/G: %1</source>
+        <translation>Eingänge F/G: %1</translation>
+    </message>
+    <message>
+        <source>keys: %1</source>
+        <translation>Tasten: %1</translation>
+    </message>
+    <message>
+        <source>node %1: oscillating between D1 and D2</source>
+        <translation>Knoten %1: oszilliert zwischen D1 und D2</translation>
+    </message>
+    <message>
+        <source>node %1: oscillation stopped</source>
+        <translation>Knoten %1: Oszillieren beendet</translation>
+    </message>
+    <message>
+        <source>scaling %1 (%2 mm/rev, %3 steps/rev)</source>
+        <translation>Skalierung %1 (%2 mm/U, %3 Schritte/U)</translation>
+    </message>
+    <message>
+        <source>jump filter %1 steps</source>
+        <translation>Sprungfilter %1 Schritte</translation>
+    </message>
+    <message>
+        <source>jump filter count %1</source>
+        <translation>Sprungfilter-Anzahl %1</translation>
+    </message>
+    <message>
+        <source>dynamic pre-shutdown on</source>
+        <translation>dynamische Vorabschaltung ein</translation>
+    </message>
+    <message>
+        <source>dynamic pre-shutdown off</source>
+        <translation>dynamische Vorabschaltung aus</translation>
     </message>
 </context>
 <context>

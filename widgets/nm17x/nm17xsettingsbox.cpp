@@ -65,7 +65,7 @@ Nm17xSettingsBox::Nm17xSettingsBox(QWidget *parent)
     m_filterWidth->setRange(0, 2303);
     m_filterWidth->setSuffix(tr(" steps"));
     m_filterCount->setRange(0, 99);
-    m_filterCount->setSuffix(tr(" ×"));
+    m_filterCount->setSuffix(tr(" jumps"));
     m_inputs->setToolTip(tr("What the external inputs F and G do"));
     m_keys->setToolTip(tr("How the device keys drive the motor"));
     m_filterWidth->setToolTip(tr("Position jumps larger than this are filtered out"));
