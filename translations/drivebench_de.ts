@@ -515,10 +515,6 @@
         <translation>Knoten %1 hat kein beschreibbares Objekt %2</translation>
     </message>
     <message>
-        <source>node %1, %2 (%3)</source>
-        <translation>Knoten %1, %2 (%3)</translation>
-    </message>
-    <message>
         <source>node %1 has no object %2</source>
         <translation>Knoten %1 hat kein Objekt %2</translation>
     </message>

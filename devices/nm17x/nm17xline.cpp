@@ -220,10 +220,8 @@ Reply *Nm17xLine::write(NodeId node, ObjectAddress address, qint64 value)
                   Tr::tr("node %1 has no writable object %2").arg(node).arg(address.toString())));
     const auto raw = def->validate(QVariant(qlonglong(value)));
     if (!raw)
-        return Reply::failed(
-            address,
-            raw.error().prefixed(
-                Tr::tr("node %1, %2 (%3)").arg(node).arg(address.toString(), def->name)));
+        return Reply::failed(address,
+                             raw.error().prefixed(Tr::tr("node %1, %2").arg(node).arg(def->name)));
     const auto bytes = codec::encode(def->type, raw.value());
     if (!bytes)
         return Reply::failed(address, bytes.error());
