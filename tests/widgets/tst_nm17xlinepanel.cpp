@@ -46,6 +46,7 @@ private Q_SLOTS:
     void settingsOfTheSelectedDisplay();
     void scanFindsTheDisplaysAtTheirBitrate();
     void displayErrorsAreNamed();
+    void nm170HasNoMotorSettings();
     void screenshotOfARunningLine();
 
 private:
@@ -396,6 +397,23 @@ void TstNm17xLinePanel::displayErrorsAreNamed()
     QTRY_VERIFY_WITH_TIMEOUT(
         cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
     QCOMPARE(cell(1, widgets::Nm17xLineModel::Errors), QStringLiteral("-"));
+}
+
+// An NM170 (no motor): scaling and jump filter can be set, the modes and the pre-shutdown cannot.
+void TstNm17xLinePanel::nm170HasNoMotorSettings()
+{
+    nm17x::Nm17xLine line(m_network.get());
+    widgets::Nm17xSettingsBox box;
+    box.setDisplay(&line, 9, Variant::Nm170);
+    QVERIFY(!box.findChild<QComboBox *>("inputMode")->isEnabled());
+    QVERIFY(!box.findChild<QPushButton *>("oscillate")->isEnabled());
+    QVERIFY(!box.findChild<QCheckBox *>("preShutdown")->isEnabled());
+    QVERIFY(box.findChild<QPushButton *>("setScaling")->isEnabled());
+    QVERIFY(box.findChild<QPushButton *>("setFilter")->isEnabled());
+    box.setDisplay(&line, 9, Variant::Nm172);
+    QVERIFY(box.findChild<QComboBox *>("inputMode")->isEnabled());
+    box.setDisplay(nullptr, 0, Variant::Nm172);
+    QVERIFY(!box.findChild<QPushButton *>("setScaling")->isEnabled());
 }
 
 // For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-nm17x.png of the panel
