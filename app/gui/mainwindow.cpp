@@ -392,6 +392,8 @@ void MainWindow::showConnectDialog()
 void MainWindow::showConnectDialogFor(const QString &uri)
 {
     widgets::ConnectionDialog dialog(m_registry, m_recent, this);
+    if (m_descriptionEntries)
+        dialog.setDescriptionEntries(m_descriptionEntries());
     if (!uri.isEmpty())
         dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocolregistry.h"
+#include "description/descriptionlibrary.h"
 #include "settingsdialog.h"
 
 #include <QMainWindow>
@@ -108,6 +109,12 @@ public:
     // What "Start the demo" on the welcome page runs (the composition root starts the simulated
     // drive and opens connections to it); without one the button is hidden.
     void setDemoStarter(std::function<void()> start);
+    // The description library's entries the connection dialog offers (the composition root owns
+    // the library).
+    void setDescriptionEntries(std::function<QList<LibraryEntry>()> entries)
+    {
+        m_descriptionEntries = std::move(entries);
+    }
 
 public Q_SLOTS:
     void showConnectDialog();
@@ -178,6 +185,7 @@ private:
     widgets::ParamCompareView *m_compareView = nullptr;
     widgets::ParameterSetActions *m_paramActions = nullptr;
     widgets::ScopePage *m_scopePage = nullptr;
+    std::function<QList<LibraryEntry>()> m_descriptionEntries;
     QPointer<DeviceConnection> m_canopen; // the connection whose CANopen network is shown
     QLabel *m_connectionState = nullptr;
     QPointer<QDialog> m_manual; // made on first use
