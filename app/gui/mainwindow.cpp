@@ -5,6 +5,7 @@
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
 #include "widgets/common/wheelguard.h"
@@ -108,6 +109,9 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
+    // The bus of the current CANopen connection; the tab shows while there is one.
+    m_networkView = new widgets::NetworkView(m_pages);
+    m_pages->setTabVisible(m_pages->addTab(m_networkView, tr("CANopen Network")), false);
     createToolBar();
     createWelcome();
     statusBar()->addPermanentWidget(m_connectionState);
@@ -349,6 +353,8 @@ void MainWindow::attachCanopen(DeviceConnection *connection)
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
+    m_networkView->setConnection(canopen);
+    m_pages->setTabVisible(m_pages->indexOf(m_networkView), canopen != nullptr);
     m_nm17xPanel->setNetwork(at.network);
 }
 

@@ -24,6 +24,7 @@ class DeviceList;
 class DriveStatusPanel;
 class JogPanel;
 class LogConsole;
+class NetworkView;
 class NodeList;
 class Nm17xLinePanel;
 class ObjectAccessBox;
@@ -84,6 +85,8 @@ public:
     // CAN monitor and node list: attached to the current connection while it is a CANopen one.
     widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
     widgets::NodeList *nodeList() const { return m_nodeList; }
+    // The "CANopen Network" page (scan, PDOs, LSS, SYNC), shown while a CANopen node is current.
+    widgets::NetworkView *networkView() const { return m_networkView; }
     widgets::Nm17xLinePanel *nm17xPanel() const { return m_nm17xPanel; }
     // The central pages (tabs): "Drive Status" first, then the larger tools.
     QTabWidget *pages() const { return m_pages; }
@@ -179,6 +182,7 @@ private:
     widgets::LogConsole *m_log = nullptr;
     widgets::CanMonitor *m_canMonitor = nullptr;
     widgets::NodeList *m_nodeList = nullptr;
+    widgets::NetworkView *m_networkView = nullptr;
     widgets::Nm17xLinePanel *m_nm17xPanel = nullptr; // Baumer NM17x displays on the bus
     widgets::JogPanel *m_jogPanel = nullptr;
     widgets::OdEditor *m_odEditor = nullptr;

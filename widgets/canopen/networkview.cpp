@@ -58,6 +58,7 @@ NetworkView::NetworkView(QWidget *parent)
     splitter->addWidget(m_tools);
     splitter->setStretchFactor(0, 2);
     splitter->setStretchFactor(1, 3);
+    splitter->setSizes({ 400, 600 }); // the PDO mapping needs the room
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);

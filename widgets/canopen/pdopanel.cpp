@@ -66,8 +66,19 @@ PdoPanel::PdoPanel(QWidget *parent)
         tr("Write the changed PDOs: each is disabled, its mapping cleared, the entries written, "
            "then enabled again"));
     m_table->setHorizontalHeaderLabels({ tr("PDO"), tr("On"), tr("COB-ID"), tr("Type"),
-                                         tr("Inhibit (100 µs)"), tr("Event (ms)"),
-                                         tr("Mapping (index:sub/bits)") });
+                                         tr("Inhibit"), tr("Event"), tr("Mapping") });
+    const QString headerTips[] = {
+        tr("RPDO: the node receives it; TPDO: the node sends it"),
+        tr("Enabled (COB-ID bit 31 clear)"),
+        tr("CAN identifier (hex)"),
+        tr("Transmission type: 0 acyclic synchronous, 1..240 every n-th SYNC, 254/255 event "
+           "driven"),
+        tr("Inhibit time in multiples of 100 µs (minimum gap between two transmissions)"),
+        tr("Event timer in ms (0 = off)"),
+        tr("Mapped objects as index:sub/bits, in frame order"),
+    };
+    for (int c = 0; c < ColumnCount; ++c)
+        m_table->horizontalHeaderItem(c)->setToolTip(headerTips[c]);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setFont(style::monospaceFont());
@@ -76,12 +87,13 @@ PdoPanel::PdoPanel(QWidget *parent)
     const auto chars = [this](int n) {
         return fontMetrics().horizontalAdvance(QLatin1Char('0')) * n + 16;
     };
-    m_table->setColumnWidth(Pdo, chars(6));
-    m_table->setColumnWidth(Enabled, chars(3));
-    m_table->setColumnWidth(CobId, chars(11));
-    m_table->setColumnWidth(Type, chars(5));
-    m_table->setColumnWidth(Inhibit, chars(8));
-    m_table->setColumnWidth(Event, chars(7));
+    m_table->setColumnWidth(Pdo, chars(5));
+    m_table->setColumnWidth(Enabled, chars(2));
+    m_table->setColumnWidth(CobId, chars(6));
+    m_table->setColumnWidth(Type, chars(4));
+    m_table->setColumnWidth(Inhibit, chars(6));
+    m_table->setColumnWidth(Event, chars(5));
+    m_table->horizontalHeader()->setMinimumSectionSize(chars(2));
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
