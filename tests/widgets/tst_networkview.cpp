@@ -3,6 +3,8 @@
 // node, the SYNC switch, the PDO table read-edit-write in the safe order, LSS inquire and node id
 // assignment, and the CAN monitor's frame sender starting a node.
 #include "canopen/cannetwork.h"
+#include "canopen/device/lssslave.h"
+#include "canopen/lssmaster.h"
 #include "canopen/nmtmaster.h"
 #include "canopen/nodemonitor.h"
 #include "canopen/pdoclient.h"
@@ -10,6 +12,7 @@
 #include "common/protocols.h"
 #include "common/simnodes.h"
 #include "core/reply.h"
+#include "scriptedcanbus.h"
 #include "transport/canbus.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/framesender.h"
@@ -290,6 +293,41 @@ private Q_SLOTS:
         QVERIFY(bus.network->nmt()->send(canopen::NmtCommand::ResetCommunication, 7));
         QTRY_VERIFY_WITH_TIMEOUT(
             !booted.isEmpty() && booted.last().first().value<canopen::NodeId>() == 9, kTimeoutMs);
+    }
+
+    void lssFastscanFindsAnUnconfiguredSlave()
+    {
+        auto *bus = new test::ScriptedCanBus; // the network owns it
+        canopen::CanNetwork network(bus);
+        bus->open();
+        const canopen::LssAddress identity { 0xEC, 0x71, 0x00010001, 0x4D52F567 };
+        canopen::LssSlave unconfigured;
+        unconfigured.setIdentity(identity);
+        canopen::LssSlave configured; // has a node id: stays out of fastscan (CiA 305)
+        configured.setIdentity({ 0xEC, 0x71, 0x00010001, 0x11111111 });
+        configured.setActiveNodeId(3);
+        for (canopen::LssSlave *s : { &unconfigured, &configured }) {
+            connect(bus, &test::ScriptedCanBus::frameWritten, s, &canopen::LssSlave::receive);
+            connect(s, &canopen::LssSlave::transmit, bus,
+                    [bus](const QCanBusFrame &f) { bus->feedLater(f); });
+        }
+        network.lss()->setFastscanStepMs(5);
+        widgets::LssPanel panel;
+        panel.setNetwork(&network);
+        QSignalSpy done(&panel, &widgets::LssPanel::done);
+        QTest::mouseClick(panel.findChild<QPushButton *>(QStringLiteral("lssFastscan")),
+                          Qt::LeftButton);
+        QVERIFY(panel.isBusy());
+        QVERIFY(done.wait(kTimeoutMs));
+        QVERIFY2(done.takeFirst().first().toBool(), qPrintable(panel.logText()));
+        QVERIFY2(panel.logText().contains(identity.toString()), qPrintable(panel.logText()));
+        QCOMPARE(unconfigured.mode(), canopen::LssMode::Configuration);
+        QVERIFY(panel.assignNodeId(12));
+        QVERIFY(done.wait(kTimeoutMs));
+        QVERIFY2(done.takeFirst().first().toBool(), qPrintable(panel.logText()));
+        QVERIFY(panel.switchAll(false));
+        QCOMPARE(unconfigured.activeNodeId(), quint8(12));
+        QCOMPARE(configured.activeNodeId(), quint8(3));
     }
 
     void frameSenderStartsANode()
