@@ -258,6 +258,7 @@ void PdoPanel::fill(const QList<PdoConfig> &configs)
 {
     m_filling = true;
     m_configs = configs;
+    const ObjectDictionary dict = dictionary();
     m_table->setRowCount(0);
     m_table->setRowCount(int(configs.size()));
     for (int row = 0; row < configs.size(); ++row) {
@@ -282,7 +283,13 @@ void PdoPanel::fill(const QList<PdoConfig> &configs)
             c.inhibitTime.has_value());
         set(Event, c.eventTimer ? QString::number(*c.eventTimer) : tr("—"),
             c.eventTimer.has_value());
-        set(Mapping, mappingText(c.entries));
+        QTableWidgetItem *mapping = set(Mapping, mappingText(c.entries));
+        QStringList names; // the mapped objects by name, where the node's description has them
+        for (const PdoMappingEntry &e : c.entries) {
+            if (const ObjectDef *def = dict.find(e.address))
+                names.append(QStringLiteral("%1 %2").arg(e.address.toString(), def->name));
+        }
+        mapping->setToolTip(names.join(QLatin1Char('\n')));
     }
     m_filling = false;
 }
@@ -293,9 +300,15 @@ bool PdoPanel::read()
         return false;
     setBusy(true);
     showStatus(tr("reading the PDOs of node %1…").arg(m_node), false);
-    Reply *reply = m_client->readAll(m_node, dictionary());
-    connect(reply, &Reply::finished, this, [this, reply] {
+    const canopen::NodeId node = m_node;
+    Reply *reply = m_client->readAll(node, dictionary());
+    connect(reply, &Reply::finished, this, [this, reply, node] {
         reply->deleteLater();
+        if (node != m_node) { // another node was selected meanwhile: its table stays empty
+            setBusy(false);
+            Q_EMIT readFinished(false);
+            return;
+        }
         if (!reply->ok()) {
             setBusy(false);
             showStatus(tr("reading the PDOs failed: %1").arg(reply->error().message()), true);
@@ -332,23 +345,24 @@ bool PdoPanel::write()
         return false;
     }
     setBusy(true);
-    writeNext(changed, 0);
+    writeNext(m_node, changed, 0);
     return true;
 }
 
-void PdoPanel::writeNext(QList<PdoConfig> todo, int written)
+void PdoPanel::writeNext(canopen::NodeId node, QList<PdoConfig> todo, int written)
 {
     if (todo.isEmpty()) {
         setBusy(false);
         showStatus(tr("%n PDO(s) written", nullptr, written), false);
         Q_EMIT writeFinished(true);
-        read(); // what the node took
+        if (node == m_node)
+            read(); // what the node took
         return;
     }
     const PdoConfig config = todo.takeFirst();
     showStatus(tr("writing %1…").arg(config.name()), false);
-    Reply *reply = m_client->configure(m_node, config);
-    connect(reply, &Reply::finished, this, [this, reply, config, todo, written] {
+    Reply *reply = m_client->configure(node, config);
+    connect(reply, &Reply::finished, this, [this, reply, node, config, todo, written] {
         reply->deleteLater();
         if (!reply->ok()) {
             setBusy(false);
@@ -358,7 +372,7 @@ void PdoPanel::writeNext(QList<PdoConfig> todo, int written)
             Q_EMIT writeFinished(false);
             return;
         }
-        writeNext(todo, written + 1);
+        writeNext(node, todo, written + 1);
     });
 }
 

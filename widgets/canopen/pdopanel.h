@@ -64,7 +64,8 @@ Q_SIGNALS:
 
 private:
     void fill(const QList<canopen::PdoConfig> &configs);
-    void writeNext(QList<canopen::PdoConfig> todo, int written);
+    // The rest of a write to `node` (kept when another node is selected meanwhile).
+    void writeNext(canopen::NodeId node, QList<canopen::PdoConfig> todo, int written);
     void setBusy(bool busy);
     void showStatus(const QString &text, bool error);
     ObjectDictionary dictionary() const;
