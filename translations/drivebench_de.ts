@@ -3348,6 +3348,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>CANopen Network</source>
         <translation>CANopen-Netz</translation>
     </message>
+    <message>
+        <source>Description &amp;Library…</source>
+        <translation>Beschreibungsbib&amp;liothek…</translation>
+    </message>
+    <message>
+        <source>%1 added to the description library</source>
+        <translation>%1 zur Beschreibungsbibliothek hinzugefügt</translation>
+    </message>
 </context>
 <context>
     <name>db::gui::SettingsDialog</name>
@@ -4637,6 +4645,73 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>IP address or host name</source>
         <translation>IP-Adresse oder Hostname</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::DescriptionLibraryDialog</name>
+    <message>
+        <source>Add…</source>
+        <translation>Hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Description Library</source>
+        <translation>Beschreibungsbibliothek</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Vendor</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>Product</source>
+        <translation>Produkt</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Copy a description file (EDS, DCF, XDD, XDC or drivebench JSON) into the library folder; you can also drop files here</source>
+        <translation>Eine Beschreibungsdatei (EDS, DCF, XDD, XDC oder drivebench-JSON) in den Bibliotheksordner kopieren; Dateien können auch hierher gezogen werden</translation>
+    </message>
+    <message>
+        <source>Add descriptions to the library</source>
+        <translation>Beschreibungen zur Bibliothek hinzufügen</translation>
+    </message>
+    <message>
+        <source>No library folder is set; only the built-in descriptions are used.</source>
+        <translation>Kein Bibliotheksordner gesetzt; nur die eingebauten Beschreibungen werden verwendet.</translation>
+    </message>
+    <message>
+        <source>Devices without a description given get the one whose vendor, product and revision match their identity (1018h). Your files are in %1.</source>
+        <translation>Geräte ohne angegebene Beschreibung erhalten die, deren Hersteller, Produkt und Revision zu ihrer Identität (1018h) passen. Ihre Dateien liegen in %1.</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>built-in</source>
+        <translation>eingebaut</translation>
+    </message>
+    <message>
+        <source>Not used: %1</source>
+        <translation>Nicht verwendet: %1</translation>
+    </message>
+    <message>
+        <source>%1 not added: %2</source>
+        <translation>%1 nicht hinzugefügt: %2</translation>
+    </message>
+    <message>
+        <source>%1 added to the library</source>
+        <translation>%1 zur Bibliothek hinzugefügt</translation>
     </message>
 </context>
 <context>

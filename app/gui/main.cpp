@@ -90,12 +90,7 @@ int main(int argc, char *argv[])
                         .arg(path, added.error().message()));
         });
 
-    window.setDescriptionEntries([] {
-        db::DescriptionLibrary &library = db::app::descriptionLibrary();
-        library.setFolder(db::app::descriptionFolder()); // files added since are offered too
-        library.rescan();
-        return library.entries();
-    });
+    window.setDescriptionLibrary(&db::app::descriptionLibrary(), db::app::descriptionFolder);
 
     using Remember = db::gui::MainWindow::Remember; // the demo is never a recent connection
     // The demo: from --demo or the welcome page's button. A second start reconnects to the

@@ -16,6 +16,7 @@
 #include "widgets/morse/morsepanel.h"
 #include "widgets/motion/jogpanel.h"
 #include "widgets/nm17x/nm17xlinepanel.h"
+#include "widgets/odeditor/descriptionlibrarydialog.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/scope/scopepage.h"
 
@@ -216,6 +217,7 @@ void MainWindow::createMenus()
     m_connectAction->setShortcut(QKeySequence::Open);
     m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
     file->addSeparator();
+    file->addAction(tr("Description &Library…"), this, &MainWindow::showDescriptionLibrary);
     file->addAction(tr("&Settings…"), this, &MainWindow::showSettings)
         ->setMenuRole(QAction::PreferencesRole);
     file->addSeparator();
@@ -398,14 +400,38 @@ void MainWindow::showConnectDialog()
 void MainWindow::showConnectDialogFor(const QString &uri)
 {
     widgets::ConnectionDialog dialog(m_registry, m_recent, this);
-    if (m_descriptionEntries)
-        dialog.setDescriptionEntries(m_descriptionEntries());
+    if (m_library) {
+        rescanLibrary();
+        dialog.setDescriptionEntries(m_library->entries());
+    }
     if (!uri.isEmpty())
         dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)
         return;
     // The URI joins the recent connections once its device answered (onHealthChanged()).
     openConnection(dialog.plan());
+}
+
+void MainWindow::rescanLibrary()
+{
+    if (!m_library)
+        return;
+    if (m_libraryFolder)
+        m_library->setFolder(m_libraryFolder()); // the setting may have changed
+    m_library->rescan(); // files added since
+}
+
+void MainWindow::showDescriptionLibrary()
+{
+    if (!m_library)
+        return;
+    rescanLibrary();
+    widgets::DescriptionLibraryDialog dialog(*m_library, this);
+    connect(&dialog, &widgets::DescriptionLibraryDialog::fileAdded, this,
+            [this](const QString &path) {
+                m_log->info(tr("%1 added to the description library").arg(path));
+            });
+    dialog.exec();
 }
 
 void MainWindow::disconnectCurrent()

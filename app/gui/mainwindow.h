@@ -112,15 +112,18 @@ public:
     // What "Start the demo" on the welcome page runs (the composition root starts the simulated
     // drive and opens connections to it); without one the button is hidden.
     void setDemoStarter(std::function<void()> start);
-    // The description library's entries the connection dialog offers (the composition root owns
-    // the library).
-    void setDescriptionEntries(std::function<QList<LibraryEntry>()> entries)
+    // The description library (owned by the composition root) and where its folder is now: the
+    // connection dialog offers its files, File → Description Library… shows and adds to it.
+    void setDescriptionLibrary(DescriptionLibrary *library, std::function<QString()> folder)
     {
-        m_descriptionEntries = std::move(entries);
+        m_library = library;
+        m_libraryFolder = std::move(folder);
     }
 
 public Q_SLOTS:
     void showConnectDialog();
+    // File → Description Library…: the library's entries, Add… and drop (needs the library).
+    void showDescriptionLibrary();
     // The connection dialog with `uri` filled in (e.g. from the Morse panel).
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
@@ -153,6 +156,7 @@ private:
     // Attaches the CAN monitor, node list and NM17x panel to the connection's CANopen network
     // when it is on one, else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
+    void rescanLibrary();
     // mainwindow_motion.cpp: the Motion dock, the application-wide Esc stop and the stops on
     // window deactivation and before a connection is closed by the user.
     void createMotionDock();
@@ -189,7 +193,8 @@ private:
     widgets::ParamCompareView *m_compareView = nullptr;
     widgets::ParameterSetActions *m_paramActions = nullptr;
     widgets::ScopePage *m_scopePage = nullptr;
-    std::function<QList<LibraryEntry>()> m_descriptionEntries;
+    DescriptionLibrary *m_library = nullptr;
+    std::function<QString()> m_libraryFolder;
     QPointer<DeviceConnection> m_canopen; // the connection whose CANopen network is shown
     QLabel *m_connectionState = nullptr;
     QPointer<QDialog> m_manual; // made on first use
