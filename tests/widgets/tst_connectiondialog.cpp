@@ -147,6 +147,8 @@ private Q_SLOTS:
         QVERIFY(dialog.isVisible()); // stays open with the cause
         QVERIFY2(dialog.errorText().contains(QStringLiteral("/nonexistent/n.eds")),
                  qPrintable(dialog.errorText()));
+        QVERIFY(!dialog.findChild<QSpinBox *>(QStringLiteral("port"))->isVisible());
+        QCoreApplication::processEvents(); // the form takes the new label widths
         if (const QByteArray shots = qgetenv("DRIVEBENCH_SCREENSHOT_DIR"); !shots.isEmpty())
             dialog.grab().save(QString::fromLocal8Bit(shots)
                                + QStringLiteral("/connect-error.png"));
@@ -235,6 +237,11 @@ private Q_SLOTS:
                      .arg(devices.first().name()));
         QCOMPARE(dialog.findChild<QLineEdit *>(QStringLiteral("options"))->text(),
                  QStringLiteral("node=5&bitrate=500000"));
+
+        QVERIFY(!dialog.findChild<QSpinBox *>(QStringLiteral("port"))->isVisible());
+        QCoreApplication::processEvents(); // the form takes the new label widths
+        if (const QByteArray shots = qgetenv("DRIVEBENCH_SCREENSHOT_DIR"); !shots.isEmpty())
+            dialog.grab().save(QString::fromLocal8Bit(shots) + QStringLiteral("/connect-can.png"));
 
         // Back to the interface's own bit rate, and a URI fills the fields.
         bitrate->setFocus();

@@ -165,6 +165,7 @@ void ConnectionDialog::onProtocolChanged()
     m_port->setEnabled(hasPort);
     m_port->setValue(hasPort ? info->defaultPort : 0);
     m_port->setSpecialValueText(hasPort ? QString() : tr("none"));
+    m_form->setRowVisible(m_port, hasPort); // a CAN interface has no port
     updateCanopenFields(info);
 }
 
