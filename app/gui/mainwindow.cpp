@@ -2,12 +2,15 @@
 
 #include "cameralivesource.h"
 #include "canopen/cannetwork.h"
+#include "core/changelog.h"
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
+#include "widgets/common/changelogview.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/common/logpanel.h"
 #include "widgets/common/wheelguard.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
@@ -107,6 +110,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     createDocks();
     createMenus();
     createParameterPages();
+    createChangeLog();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
@@ -169,8 +173,13 @@ void MainWindow::createDocks()
     QDockWidget *nodes = addDock(m_nodeList, tr("CANopen Nodes"), QStringLiteral("nodeListDock"),
                                  Qt::LeftDockWidgetArea);
     splitDockWidget(devices, nodes, Qt::Vertical); // between the devices and object access
-    QDockWidget *log =
-        addDock(m_log, tr("Log"), QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    QDockWidget *log = addDock(new widgets::LogPanel(m_log, this), tr("Log"),
+                               QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    m_changeLog = new ChangeLog(this);
+    m_changes = new widgets::ChangeLogView(m_changeLog, this);
+    QDockWidget *changes =
+        addDock(m_changes, tr("Changes"), QStringLiteral("changesDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(log, changes);
     QDockWidget *canMonitor = addDock(m_canMonitor, tr("CAN Monitor"),
                                       QStringLiteral("canMonitorDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(log, canMonitor);

@@ -67,6 +67,10 @@ Q_SIGNALS:
     void selectedNodeChanged(db::canopen::NodeId node);
     void scanFinished(int nodesFound);
 
+Q_SIGNALS:
+    // An NMT command went out: its name ("start", ...) and the node (0: all nodes).
+    void commandSent(const QString &command, int node);
+
 private:
     void updateActions();
 
