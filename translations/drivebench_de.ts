@@ -5674,6 +5674,18 @@ send 605 40 08 10 00</translation>
         <source>%1: done</source>
         <translation>%1: erledigt</translation>
     </message>
+    <message>
+        <source>LSS node id</source>
+        <translation>LSS-Knotennummer</translation>
+    </message>
+    <message>
+        <source>LSS bit rate</source>
+        <translation>LSS-Bitrate</translation>
+    </message>
+    <message>
+        <source>LSS node id and bit rate</source>
+        <translation>LSS-Knotennummer und -Bitrate</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::MorsePanel</name>
@@ -7418,6 +7430,10 @@ Die jetzigen Werte des Geräts werden seine Einschaltwerte.</translation>
     <message>
         <source>%1 not written (it stays disabled): %2</source>
         <translation>%1 nicht geschrieben (es bleibt deaktiviert): %2</translation>
+    </message>
+    <message>
+        <source>%1 of node %2</source>
+        <translation>%1 von Knoten %2</translation>
     </message>
 </context>
 <context>

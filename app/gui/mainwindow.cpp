@@ -110,13 +110,13 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     createDocks();
     createMenus();
     createParameterPages();
-    createChangeLog();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
     // The bus of the current CANopen connection; the tab shows while there is one.
     m_networkView = new widgets::NetworkView(m_pages);
     m_pages->setTabVisible(m_pages->addTab(m_networkView, tr("CANopen Network")), false);
+    createChangeLog(); // after every widget that changes devices
     createToolBar();
     createWelcome();
     statusBar()->addPermanentWidget(m_connectionState);

@@ -6,6 +6,7 @@
 #include "canopen/cannetwork.h"
 #include "common/protocols.h"
 #include "common/simnodes.h"
+#include "core/changelog.h"
 #include "mainwindow.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/framesender.h"
@@ -84,8 +85,33 @@ private Q_SLOTS:
         QSignalSpy read(view->pdoPanel(), &widgets::PdoPanel::readFinished);
         QVERIFY(view->pdoPanel()->read());
         QVERIFY(read.wait(kTimeoutMs));
-        QVERIFY2(read.first().first().toBool(), qPrintable(view->pdoPanel()->status()));
+        QVERIFY2(read.takeFirst().first().toBool(), qPrintable(view->pdoPanel()->status()));
         QCOMPARE(view->pdoPanel()->table()->rowCount(), 4);
+        // A PDO write and an NMT command from the page go to the change log.
+        ChangeLog *changes = window.changeLog();
+        const int before = changes->count();
+        QTableWidget *table = view->pdoPanel()->table();
+        for (int row = 0; row < table->rowCount(); ++row) {
+            if (table->item(row, widgets::PdoPanel::Pdo)->text() == QLatin1String("TPDO1"))
+                table->item(row, widgets::PdoPanel::Event)->setText(QStringLiteral("300"));
+        }
+        QSignalSpy written(view->pdoPanel(), &widgets::PdoPanel::writeFinished);
+        QVERIFY(view->pdoPanel()->write());
+        QVERIFY(written.wait(kTimeoutMs));
+        QVERIFY2(written.first().first().toBool(), qPrintable(view->pdoPanel()->status()));
+        QVERIFY(view->nodeList()->sendCommand(canopen::NmtCommand::Start));
+        QCOMPARE(changes->count(), before + 2);
+        const ChangeLog::Entry &pdo = changes->entries().at(before);
+        QCOMPARE(pdo.kind, ChangeLog::Kind::Write);
+        QCOMPARE(pdo.object, QStringLiteral("TPDO1 of node 2"));
+        QCOMPARE(pdo.outcome, ChangeLog::Outcome::Ok);
+        QVERIFY2(pdo.newValue.contains(QStringLiteral("event 300 ms")), qPrintable(pdo.newValue));
+        QVERIFY2(!pdo.oldValue.contains(QStringLiteral("event 300 ms")), qPrintable(pdo.oldValue));
+        const ChangeLog::Entry &nmt = changes->entries().at(before + 1);
+        QCOMPARE(nmt.kind, ChangeLog::Kind::Nmt);
+        QCOMPARE(nmt.object, QStringLiteral("node 2"));
+        QVERIFY(read.wait(kTimeoutMs)); // the panel reads back after writing
+
         view->setSyncPeriodMs(100);
         QVERIFY(view->setSync(true));
 

@@ -2,6 +2,7 @@
 
 #include "canopen/cannetwork.h"
 #include "canopen/lssmaster.h"
+#include "core/changelog.h"
 #include "core/reply.h"
 #include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
@@ -101,6 +102,11 @@ LssPanel::LssPanel(QWidget *parent)
 
 LssPanel::~LssPanel() = default;
 
+void LssPanel::setChangeLog(ChangeLog *log)
+{
+    m_changeLog = log;
+}
+
 void LssPanel::setNetwork(canopen::CanNetwork *network)
 {
     m_network = network;
@@ -196,8 +202,9 @@ bool LssPanel::assignNodeId(int node)
 {
     if (node < 1 || node > 127 || !ready())
         return false;
-    run(m_network->lss()->configureNodeId(canopen::NodeId(node)),
-        tr("assign node id %1").arg(node));
+    Reply *reply = m_network->lss()->configureNodeId(canopen::NodeId(node));
+    record(reply, false, tr("LSS node id"), QString::number(node));
+    run(reply, tr("assign node id %1").arg(node));
     return true;
 }
 
@@ -206,8 +213,9 @@ bool LssPanel::assignBitrate(int bitrate)
     const int index = lss::bitTimingIndex(bitrate);
     if (index < 0 || !ready())
         return false;
-    run(m_network->lss()->configureBitTiming(quint8(index)),
-        tr("assign %1 kbit/s").arg(bitrate / 1000));
+    Reply *reply = m_network->lss()->configureBitTiming(quint8(index));
+    record(reply, false, tr("LSS bit rate"), tr("%1 kbit/s").arg(bitrate / 1000));
+    run(reply, tr("assign %1 kbit/s").arg(bitrate / 1000));
     return true;
 }
 
@@ -215,7 +223,9 @@ bool LssPanel::store()
 {
     if (!ready())
         return false;
-    run(m_network->lss()->storeConfiguration(), tr("store"));
+    Reply *reply = m_network->lss()->storeConfiguration();
+    record(reply, true, tr("LSS node id and bit rate"), QString());
+    run(reply, tr("store"));
     return true;
 }
 
@@ -236,6 +246,18 @@ void LssPanel::run(Reply *reply, const QString &what, std::function<void(const Q
             log(tr("%1: done").arg(what));
         Q_EMIT done(true);
     });
+}
+
+void LssPanel::record(Reply *reply, bool store, const QString &object, const QString &value)
+{
+    if (!m_changeLog || !m_network)
+        return;
+    ChangeLog::Entry e;
+    e.device = m_network->name();
+    e.kind = store ? ChangeLog::Kind::Store : ChangeLog::Kind::Write;
+    e.object = object;
+    e.newValue = value;
+    m_changeLog->track(e, reply);
 }
 
 void LssPanel::log(const QString &text, bool error)

@@ -18,8 +18,9 @@ class QPushButton;
 class QSpinBox;
 
 namespace db {
+class ChangeLog;
 class Reply;
-}
+} // namespace db
 namespace db::canopen {
 class CanNetwork;
 } // namespace db::canopen
@@ -36,6 +37,8 @@ public:
     // Not owned; nullptr detaches.
     void setNetwork(canopen::CanNetwork *network);
     bool isBusy() const { return m_busy; }
+    // Node id and bit rate assignments and stores go to this log. Not owned.
+    void setChangeLog(ChangeLog *log);
     QString logText() const;
 
 public Q_SLOTS:
@@ -58,9 +61,12 @@ private:
              std::function<void(const QVariant &value)> then = {});
     void inquireNext(int cs, QStringList found);
     void log(const QString &text, bool error = false);
+    // The change log entry for a setting sent to the slave in configuration mode.
+    void record(Reply *reply, bool store, const QString &object, const QString &value);
     void setBusy(bool busy);
 
     QPointer<canopen::CanNetwork> m_network;
+    QPointer<ChangeLog> m_changeLog;
     bool m_busy = false;
     QList<QPushButton *> m_buttons;
     QSpinBox *m_nodeId;

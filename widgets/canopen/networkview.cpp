@@ -79,6 +79,12 @@ NetworkView::NetworkView(QWidget *parent)
 
 NetworkView::~NetworkView() = default;
 
+void NetworkView::setChangeLog(ChangeLog *log)
+{
+    m_pdo->setChangeLog(log);
+    m_lss->setChangeLog(log);
+}
+
 canopen::CanNetwork *NetworkView::network() const
 {
     return m_network;

@@ -16,8 +16,9 @@ class QSpinBox;
 class QTabWidget;
 
 namespace db {
+class ChangeLog;
 class DeviceConnection;
-}
+} // namespace db
 namespace db::canopen {
 class CanNetwork;
 }
@@ -46,6 +47,8 @@ public:
     PdoPanel *pdoPanel() const { return m_pdo; }
     LssPanel *lssPanel() const { return m_lss; }
     QTabWidget *tools() const { return m_tools; }
+    // PDO writes and LSS settings go to this log (NMT commands: NodeList::commandSent).
+    void setChangeLog(ChangeLog *log);
 
     // The SYNC producer of the network: on with the period of the spin box, or off. False
     // without a network or while its bus is closed (on only).

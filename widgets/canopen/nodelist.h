@@ -66,8 +66,6 @@ Q_SIGNALS:
     // The selected node changed (0 = none selected).
     void selectedNodeChanged(db::canopen::NodeId node);
     void scanFinished(int nodesFound);
-
-Q_SIGNALS:
     // An NMT command went out: its name ("start", ...) and the node (0: all nodes).
     void commandSent(const QString &command, int node);
 

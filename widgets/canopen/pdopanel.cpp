@@ -2,6 +2,7 @@
 
 #include "canopen/cannetwork.h"
 #include "canopen/pdoclient.h"
+#include "core/changelog.h"
 #include "core/datatype.h"
 #include "core/reply.h"
 #include "widgets/common/widgetstyle.h"
@@ -135,6 +136,11 @@ PdoPanel::PdoPanel(QWidget *parent)
 }
 
 PdoPanel::~PdoPanel() = default;
+
+void PdoPanel::setChangeLog(ChangeLog *log)
+{
+    m_changeLog = log;
+}
 
 void PdoPanel::setNetwork(canopen::CanNetwork *network)
 {
@@ -362,6 +368,18 @@ void PdoPanel::writeNext(canopen::NodeId node, QList<PdoConfig> todo, int writte
     const PdoConfig config = todo.takeFirst();
     showStatus(tr("writing %1…").arg(config.name()), false);
     Reply *reply = m_client->configure(node, config);
+    if (m_changeLog && m_network) {
+        ChangeLog::Entry e;
+        e.device = m_network->name();
+        e.kind = ChangeLog::Kind::Write;
+        e.object = tr("%1 of node %2").arg(config.name()).arg(node);
+        for (const PdoConfig &old : std::as_const(m_configs)) {
+            if (old.direction == config.direction && old.number == config.number)
+                e.oldValue = old.toString();
+        }
+        e.newValue = config.toString();
+        m_changeLog->track(e, reply);
+    }
     connect(reply, &Reply::finished, this, [this, reply, node, config, todo, written] {
         reply->deleteLater();
         if (!reply->ok()) {

@@ -18,6 +18,9 @@ class QLabel;
 class QPushButton;
 class QTableWidget;
 
+namespace db {
+class ChangeLog;
+}
 namespace db::canopen {
 class CanNetwork;
 class PdoClient;
@@ -38,6 +41,8 @@ public:
     void setNetwork(canopen::CanNetwork *network);
     void setNode(canopen::NodeId node);
     canopen::NodeId node() const { return m_node; }
+    // Every PDO written goes to this log (old and new configuration, outcome). Not owned.
+    void setChangeLog(ChangeLog *log);
 
     QTableWidget *table() const { return m_table; }
     // As read from the node (the last read).
@@ -71,6 +76,7 @@ private:
     ObjectDictionary dictionary() const;
 
     QPointer<canopen::CanNetwork> m_network;
+    QPointer<ChangeLog> m_changeLog;
     canopen::PdoClient *m_client = nullptr;
     canopen::NodeId m_node = 0;
     QList<canopen::PdoConfig> m_configs;
