@@ -4,14 +4,18 @@
 #include <QCanBus>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFile>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMimeData>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUrl>
 
 using namespace db;
 using db::widgets::ConnectionDialog;
@@ -306,6 +310,21 @@ private Q_SLOTS:
                  QStringLiteral("canopen+slcan://10.0.0.2:15001?eds=%1&node=3").arg(file));
         QTest::keyClick(description, Qt::Key_Up);
         QCOMPARE(dialog.uri(), QStringLiteral("canopen+slcan://10.0.0.2:15001?node=3"));
+
+        // A description file dropped onto the dialog becomes the URI's description.
+        {
+            QMimeData data;
+            data.setUrls({ QUrl::fromLocalFile(QStringLiteral("/data/dropped.xdd")) });
+            QDragEnterEvent enter(QPoint(5, 5), Qt::CopyAction, &data, Qt::LeftButton,
+                                  Qt::NoModifier);
+            QCoreApplication::sendEvent(&dialog, &enter);
+            QVERIFY(enter.isAccepted());
+            QDropEvent drop(QPointF(5, 5), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(&dialog, &drop);
+        }
+        QCOMPARE(dialog.uri(),
+                 QStringLiteral("canopen+slcan://10.0.0.2:15001?eds=/data/dropped.xdd&node=3"));
+        QCOMPARE(description->currentText(), QStringLiteral("dropped.xdd"));
 
         // A file named in the URI becomes a choice of its own.
         dialog.setUri(QStringLiteral("canopen+slcan://10.0.0.2?node=3&eds=/data/other.dcf"));

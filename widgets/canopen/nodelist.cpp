@@ -214,7 +214,7 @@ void NodeList::updateActions()
     const bool enabled = m_nmt && targetNode() >= 0;
     for (QToolButton *button : std::as_const(m_commandButtons))
         button->setEnabled(enabled);
-    m_scanButton->setEnabled(m_network && !isScanning());
+    m_scanButton->setEnabled(m_network && m_network->isOpen() && !isScanning());
     m_scanButton->setText(isScanning() ? tr("Scanning…") : tr("Scan"));
     const QModelIndexList rows = m_view->selectionModel()->selectedRows();
     const canopen::NodeId selected = rows.isEmpty() ? 0 : m_model->nodeAt(rows.first().row());

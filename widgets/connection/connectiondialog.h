@@ -43,6 +43,8 @@ public:
     // The description files the user may pick for a CANopen node (entries that are not files are
     // left out: the library gives those by identity). "Automatic by identity" stays the default.
     void setDescriptionEntries(const QList<LibraryEntry> &entries);
+    // A description file dropped onto the dialog becomes the description (eds=) of the URI.
+    bool useDroppedDescription(const QString &path);
 
     // The prepared plan (after exec() returned Accepted).
     const ConnectionPlan &plan() const { return m_plan; }
@@ -53,6 +55,10 @@ public:
     QStringList recentUris() const;
     // `uri` moved to the front of `recent`, duplicates removed, at most kMaxRecent entries.
     static QStringList withRecent(QStringList recent, const QString &uri);
+
+protected:
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
 
 private:
     void onProtocolChanged();
@@ -66,6 +72,8 @@ private:
     void setOption(const QString &key, const QString &value);
     void chooseDescriptionFile();
     int descriptionIndexOf(const QString &path);
+    // Makes `path` the current choice (added to the list when it is none of its files).
+    void selectDescription(const QString &path);
 
     const ProtocolRegistry &m_registry;
     QStringList m_recent;

@@ -9,6 +9,8 @@
 
 #include <QCanBus>
 #include <QComboBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -62,6 +64,7 @@ void ConnectionDialog::createCanopenFields()
     m_form->addRow(tr("&Node:"), m_node);
     m_form->addRow(tr("&Bit rate:"), m_bitrate);
     m_form->addRow(tr("&Description:"), m_description);
+    setAcceptDrops(true); // a description file dropped onto the dialog
 
     connect(m_node, &QSpinBox::valueChanged, this, [this](int node) {
         if (!m_updating)
@@ -108,7 +111,30 @@ void ConnectionDialog::chooseDescriptionFile()
         m_description->setCurrentIndex(qMax(0, index));
         return;
     }
-    setOption(QStringLiteral("eds"), path); // the URI fills the combo box
+    setOption(QStringLiteral("eds"), path);
+    selectDescription(path);
+}
+
+bool ConnectionDialog::useDroppedDescription(const QString &path)
+{
+    if (path.isEmpty() || !m_description->isVisibleTo(this))
+        return false; // only a CANopen connection takes a description file
+    setOption(QStringLiteral("eds"), path);
+    selectDescription(path);
+    return true;
+}
+
+void ConnectionDialog::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (m_description->isVisibleTo(this)
+        && !DescriptionPrompt::droppedDescription(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void ConnectionDialog::dropEvent(QDropEvent *event)
+{
+    if (useDroppedDescription(DescriptionPrompt::droppedDescription(event->mimeData())))
+        event->acceptProposedAction();
 }
 
 void ConnectionDialog::updateCanopenFields(const ProtocolInfo *info)
@@ -170,12 +196,16 @@ void ConnectionDialog::fillCanopenFields(const ConnectionUri &uri)
     m_node->setValue(ok && node >= 1 && node <= 127 ? node : 0);
     const int bitrate = uri.queryValue(QStringLiteral("bitrate")).toInt(&ok);
     m_bitrate->setCurrentIndex(qMax(0, m_bitrate->findData(ok ? bitrate : 0)));
-    const QString eds = uri.queryValue(QStringLiteral("eds"));
-    int index = descriptionIndexOf(eds);
-    if (index < 0) { // a file given in the URI: offered as a choice of its own
+    selectDescription(uri.queryValue(QStringLiteral("eds")));
+}
+
+void ConnectionDialog::selectDescription(const QString &path)
+{
+    int index = descriptionIndexOf(path);
+    if (index < 0) { // a file of no library entry: offered as a choice of its own
         index = m_description->count() - 1;
-        m_description->insertItem(index, QFileInfo(eds).fileName(), eds);
-        m_description->setItemData(index, eds, Qt::ToolTipRole);
+        m_description->insertItem(index, QFileInfo(path).fileName(), path);
+        m_description->setItemData(index, path, Qt::ToolTipRole);
     }
     m_description->setCurrentIndex(index);
 }
