@@ -104,10 +104,13 @@ private Q_SLOTS:
     void scanListsTheNodesWithNamesAndConsumerTimes()
     {
         Bus bus;
-        QVERIFY(bus.start({ 1, 2, 5 }));
-        QTRY_VERIFY_WITH_TIMEOUT(bus.connection->isConnected(), kTimeoutMs);
         NetworkView view;
-        view.setConnection(bus.connection.get());
+        QVERIFY(bus.start({ 1, 2, 5 }));
+        view.setConnection(bus.connection.get()); // before the bus is open: Scan waits for it
+        auto *scan = view.nodeList()->findChild<QToolButton *>(QStringLiteral("scan"));
+        QVERIFY(!bus.network->isOpen() && !scan->isEnabled());
+        QTRY_VERIFY_WITH_TIMEOUT(bus.connection->isConnected(), kTimeoutMs);
+        QVERIFY(scan->isEnabled());
         view.resize(1200, 600);
         view.show();
         const NodeListModel *model = view.nodeList()->model();

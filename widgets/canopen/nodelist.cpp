@@ -125,7 +125,13 @@ void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,
 {
     if (m_scanner)
         m_scanner->deleteLater(); // its SDO client belongs to the old network
+    if (m_network)
+        disconnect(m_network, nullptr, this, nullptr);
     m_network = network;
+    if (network) { // Scan follows the bus
+        connect(network, &canopen::CanNetwork::opened, this, &NodeList::updateActions);
+        connect(network, &canopen::CanNetwork::closed, this, &NodeList::updateActions);
+    }
     m_nmt = network ? network->nmt() : nullptr;
     m_model->setOwnNode(0);
     m_model->setSources(nullptr, nullptr); // forgets the previous bus's nodes
