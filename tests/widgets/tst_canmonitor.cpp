@@ -355,7 +355,7 @@ private Q_SLOTS:
         QVERIFY(sender->runMacro());
         QCOMPARE(bus.sent().size(), 1); // the first frame at once, then the wait
         QVERIFY(finished.wait(5000));
-        QVERIFY(clock.elapsed() >= 60);
+        QVERIFY(clock.elapsed() >= 55); // the wait, less a timer that may fire a little early
         QCOMPARE(finished.first().first().toBool(), true);
         const QList<QCanBusFrame> sent = bus.takeSent();
         QCOMPARE(sent.size(), 3);
