@@ -3539,6 +3539,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Mit %1 verbinden</translation>
     </message>
     <message>
+        <source>CANopen Network</source>
+        <translation>CANopen-Netz</translation>
+    </message>
+    <message>
+        <source>Description &amp;Library…</source>
+        <translation>Beschreibungsbib&amp;liothek…</translation>
+    </message>
+    <message>
+        <source>%1 added to the description library</source>
+        <translation>%1 zur Beschreibungsbibliothek hinzugefügt</translation>
+    </message>
+    <message>
         <source>Changes</source>
         <translation>Änderungen</translation>
     </message>
@@ -4867,6 +4879,149 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>Connects to %1</source>
         <translation>Verbindet mit %1</translation>
     </message>
+    <message>
+        <source>not set</source>
+        <translation>nicht gesetzt</translation>
+    </message>
+    <message>
+        <source>CANopen node id of the device (1..127)</source>
+        <translation>CANopen-Knotennummer des Geräts (1..127)</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>Automatic by identity (1018h)</source>
+        <translation>Automatisch nach Identität (1018h)</translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation>Andere Datei…</translation>
+    </message>
+    <message>
+        <source>Automatic: the description library&apos;s file for the vendor, product and revision the node reports. Or a description file for this connection.</source>
+        <translation>Automatisch: die Datei der Beschreibungsbibliothek für Hersteller, Produkt und Revision, die der Knoten meldet. Oder eine Beschreibungsdatei für diese Verbindung.</translation>
+    </message>
+    <message>
+        <source>&amp;Node:</source>
+        <translation>&amp;Knoten:</translation>
+    </message>
+    <message>
+        <source>&amp;Bit rate:</source>
+        <translation>&amp;Bitrate:</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beschreibung:</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Description of the device</source>
+        <translation>Beschreibung des Geräts</translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation>&amp;Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>default (%1 kbit/s)</source>
+        <translation>Standard (%1 kbit/s)</translation>
+    </message>
+    <message>
+        <source>as the interface is set</source>
+        <translation>wie an der Schnittstelle eingestellt</translation>
+    </message>
+    <message>
+        <source>no interface found; type its name</source>
+        <translation>keine Schnittstelle gefunden; Namen eingeben</translation>
+    </message>
+    <message>
+        <source>no interface found (%1); type its name</source>
+        <translation>keine Schnittstelle gefunden (%1); Namen eingeben</translation>
+    </message>
+    <message>
+        <source>choose an interface: %1</source>
+        <translation>Schnittstelle wählen: %1</translation>
+    </message>
+    <message>
+        <source>IP address or host name of the SLCAN gateway</source>
+        <translation>IP-Adresse oder Hostname des SLCAN-Gateways</translation>
+    </message>
+    <message>
+        <source>IP address or host name</source>
+        <translation>IP-Adresse oder Hostname</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::DescriptionLibraryDialog</name>
+    <message>
+        <source>Add…</source>
+        <translation>Hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Description Library</source>
+        <translation>Beschreibungsbibliothek</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Vendor</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>Product</source>
+        <translation>Produkt</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Copy a description file (EDS, DCF, XDD, XDC or drivebench JSON) into the library folder; you can also drop files here</source>
+        <translation>Eine Beschreibungsdatei (EDS, DCF, XDD, XDC oder drivebench-JSON) in den Bibliotheksordner kopieren; Dateien können auch hierher gezogen werden</translation>
+    </message>
+    <message>
+        <source>Add descriptions to the library</source>
+        <translation>Beschreibungen zur Bibliothek hinzufügen</translation>
+    </message>
+    <message>
+        <source>No library folder is set; only the built-in descriptions are used.</source>
+        <translation>Kein Bibliotheksordner gesetzt; nur die eingebauten Beschreibungen werden verwendet.</translation>
+    </message>
+    <message>
+        <source>Devices without a description given get the one whose vendor, product and revision match their identity (1018h). Your files are in %1.</source>
+        <translation>Geräte ohne angegebene Beschreibung erhalten die, deren Hersteller, Produkt und Revision zu ihrer Identität (1018h) passen. Ihre Dateien liegen in %1.</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>built-in</source>
+        <translation>eingebaut</translation>
+    </message>
+    <message>
+        <source>Not used: %1</source>
+        <translation>Nicht verwendet: %1</translation>
+    </message>
+    <message>
+        <source>%1 not added: %2</source>
+        <translation>%1 nicht hinzugefügt: %2</translation>
+    </message>
+    <message>
+        <source>%1 added to the library</source>
+        <translation>%1 zur Bibliothek hinzugefügt</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::DescriptionPrompt</name>
@@ -4899,8 +5054,8 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Es hat seine Identität (1018h) nicht gemeldet.</translation>
     </message>
     <message>
-        <source>&lt;b&gt;No description for this device.&lt;/b&gt; %1 No description in the library matches it, so its objects are not listed; read and write them with &lt;i&gt;By index…&lt;/i&gt;, or choose its description file.</source>
-        <translation>&lt;b&gt;Keine Beschreibung für dieses Gerät.&lt;/b&gt; %1 Keine Beschreibung der Bibliothek passt, daher werden seine Objekte nicht aufgeführt; lesen und schreiben Sie sie mit &lt;i&gt;Über Index…&lt;/i&gt; oder wählen Sie seine Beschreibungsdatei.</translation>
+        <source>&lt;b&gt;No description for this device.&lt;/b&gt; %1 No description in the library matches it, so its objects are not listed; read and write them with &lt;i&gt;By index…&lt;/i&gt;, or choose its description file (Browse… or drop it here).</source>
+        <translation>&lt;b&gt;Keine Beschreibung für dieses Gerät.&lt;/b&gt; %1 Keine Beschreibung in der Bibliothek passt dazu, daher werden seine Objekte nicht aufgelistet; lesen und schreiben Sie sie mit &lt;i&gt;Nach Index…&lt;/i&gt;, oder wählen Sie seine Beschreibungsdatei (Durchsuchen… oder hierher ziehen).</translation>
     </message>
 </context>
 <context>
@@ -5014,6 +5169,130 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Fault:</source>
         <translation>Störung:</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::FrameSender</name>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>CAN identifier in hex (above 7FF: 29-bit)</source>
+        <translation>CAN-Identifier hexadezimal (über 7FF: 29 Bit)</translation>
+    </message>
+    <message>
+        <source>data bytes, e.g. 01 05</source>
+        <translation>Datenbytes, z. B. 01 05</translation>
+    </message>
+    <message>
+        <source>Up to 8 data bytes in hex</source>
+        <translation>Bis zu 8 Datenbytes hexadezimal</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Send the frame once</source>
+        <translation>Den Frame einmal senden</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Period of periodic sending</source>
+        <translation>Periode des zyklischen Sendens</translation>
+    </message>
+    <message>
+        <source>Periodic</source>
+        <translation>Zyklisch</translation>
+    </message>
+    <message>
+        <source>Send the frame every period until switched off</source>
+        <translation>Den Frame in jeder Periode senden, bis ausgeschaltet</translation>
+    </message>
+    <message>
+        <source>Macro…</source>
+        <translation>Makro…</translation>
+    </message>
+    <message>
+        <source>A list of send ID DATA and wait MS lines</source>
+        <translation>Eine Liste von Zeilen send ID DATEN und wait MS</translation>
+    </message>
+    <message>
+        <source># one step a line
+send 000 01 05
+wait 100
+send 605 40 08 10 00</source>
+        <translation># ein Schritt je Zeile
+send 000 01 05
+wait 100
+send 605 40 08 10 00</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no CAN identifier (hex, 0..1FFFFFFF)</source>
+        <translation>&apos;%1&apos; ist kein CAN-Identifier (hexadezimal, 0..1FFFFFFF)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; are no data bytes (hex, e.g. 01 05)</source>
+        <translation>&apos;%1&apos; sind keine Datenbytes (hexadezimal, z. B. 01 05)</translation>
+    </message>
+    <message>
+        <source>%1 data bytes; a CAN frame carries at most 8</source>
+        <translation>%1 Datenbytes; ein CAN-Frame trägt höchstens 8</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: send needs an ID and data bytes</source>
+        <translation>%1: send braucht eine ID und Datenbytes</translation>
+    </message>
+    <message>
+        <source>%1: wait takes milliseconds (0..%2)</source>
+        <translation>%1: wait erwartet Millisekunden (0..%2)</translation>
+    </message>
+    <message>
+        <source>%1: unknown command &apos;%2&apos; (send or wait)</source>
+        <translation>%1: unbekannter Befehl &apos;%2&apos; (send oder wait)</translation>
+    </message>
+    <message>
+        <source>not sent: the bus is not open</source>
+        <translation>nicht gesendet: der Bus ist nicht offen</translation>
+    </message>
+    <message>
+        <source>not sent: the bus refused the frame</source>
+        <translation>nicht gesendet: der Bus hat den Frame abgelehnt</translation>
+    </message>
+    <message>
+        <source>sent %1</source>
+        <translation>gesendet: %1</translation>
+    </message>
+    <message>
+        <source>sending %1 every %2 ms</source>
+        <translation>sende %1 alle %2 ms</translation>
+    </message>
+    <message>
+        <source>macro stopped at step %1 of %2</source>
+        <translation>Makro bei Schritt %1 von %2 angehalten</translation>
+    </message>
+    <message numerus="yes">
+        <source>macro done: %n step(s)</source>
+        <translation>
+            <numerusform>Makro fertig: %n Schritt</numerusform>
+            <numerusform>Makro fertig: %n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
     </message>
 </context>
 <context>
@@ -5334,6 +5613,165 @@ Letzter Fehler: %1</translation>
     </message>
 </context>
 <context>
+    <name>db::widgets::LssPanel</name>
+    <message>
+        <source>All: configuration</source>
+        <translation>Alle: Konfiguration</translation>
+    </message>
+    <message>
+        <source>Every LSS slave to configuration mode (use it when only one is on the bus)</source>
+        <translation>Alle LSS-Slaves in den Konfigurationsmodus (wenn nur einer am Bus ist)</translation>
+    </message>
+    <message>
+        <source>All: waiting</source>
+        <translation>Alle: Warten</translation>
+    </message>
+    <message>
+        <source>Every LSS slave back to waiting (normal operation)</source>
+        <translation>Alle LSS-Slaves zurück in den Wartemodus (Normalbetrieb)</translation>
+    </message>
+    <message>
+        <source>Fastscan</source>
+        <translation>Fastscan</translation>
+    </message>
+    <message>
+        <source>Find one slave without a node id; it stays in configuration mode</source>
+        <translation>Einen Slave ohne Knotennummer finden; er bleibt im Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>Inquire identity</source>
+        <translation>Identität abfragen</translation>
+    </message>
+    <message>
+        <source>Vendor, product, revision, serial and node id of the slave in configuration mode</source>
+        <translation>Hersteller, Produkt, Revision, Seriennummer und Knotennummer des Slaves im Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>Assign node id</source>
+        <translation>Knotennummer zuweisen</translation>
+    </message>
+    <message>
+        <source>Give the slave in configuration mode this node id (applied at its next reset communication; Store keeps it)</source>
+        <translation>Dem Slave im Konfigurationsmodus diese Knotennummer geben (gilt ab seinem nächsten Reset Communication; Speichern behält sie)</translation>
+    </message>
+    <message>
+        <source>Assign bit rate</source>
+        <translation>Bitrate zuweisen</translation>
+    </message>
+    <message>
+        <source>Give the slave in configuration mode this bit rate (Store keeps it; it applies after a restart)</source>
+        <translation>Dem Slave im Konfigurationsmodus diese Bitrate geben (Speichern behält sie; sie gilt nach einem Neustart)</translation>
+    </message>
+    <message>
+        <source>Store</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>The slave in configuration mode keeps its node id and bit rate</source>
+        <translation>Der Slave im Konfigurationsmodus behält seine Knotennummer und Bitrate</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>Node id:</source>
+        <translation>Knotennummer:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Bitrate:</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>der Bus ist nicht offen</translation>
+    </message>
+    <message>
+        <source>switch mode not sent</source>
+        <translation>Moduswechsel nicht gesendet</translation>
+    </message>
+    <message>
+        <source>all slaves: configuration mode</source>
+        <translation>alle Slaves: Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>all slaves: waiting</source>
+        <translation>alle Slaves: Warten</translation>
+    </message>
+    <message>
+        <source>fastscan…</source>
+        <translation>Fastscan…</translation>
+    </message>
+    <message>
+        <source>fastscan</source>
+        <translation>Fastscan</translation>
+    </message>
+    <message>
+        <source>found %1 (now in configuration mode)</source>
+        <translation>%1 gefunden (jetzt im Konfigurationsmodus)</translation>
+    </message>
+    <message>
+        <source>inquire: %1 (is one slave in configuration mode?)</source>
+        <translation>Abfrage: %1 (ist genau ein Slave im Konfigurationsmodus?)</translation>
+    </message>
+    <message>
+        <source>vendor</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>product</source>
+        <translation>Produkt</translation>
+    </message>
+    <message>
+        <source>revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>serial</source>
+        <translation>Seriennummer</translation>
+    </message>
+    <message>
+        <source>node id</source>
+        <translation>Knotennummer</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>assign node id %1</source>
+        <translation>Knotennummer %1 zuweisen</translation>
+    </message>
+    <message>
+        <source>assign %1 kbit/s</source>
+        <translation>%1 kbit/s zuweisen</translation>
+    </message>
+    <message>
+        <source>store</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: done</source>
+        <translation>%1: erledigt</translation>
+    </message>
+    <message>
+        <source>LSS node id</source>
+        <translation>LSS-Knotennummer</translation>
+    </message>
+    <message>
+        <source>LSS bit rate</source>
+        <translation>LSS-Bitrate</translation>
+    </message>
+    <message>
+        <source>LSS node id and bit rate</source>
+        <translation>LSS-Knotennummer und -Bitrate</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::MorsePanel</name>
     <message>
         <source>Open video or CSV…</source>
@@ -5644,6 +6082,41 @@ Letzter Fehler: %1</translation>
     <message>
         <source>%1 not started: %2. Correct the input; the axis is unchanged.</source>
         <translation>%1 nicht gestartet: %2. Eingabe korrigieren; die Achse ist unverändert.</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::NetworkView</name>
+    <message>
+        <source>SYNC producer</source>
+        <translation>SYNC-Erzeuger</translation>
+    </message>
+    <message>
+        <source>Send SYNC (080h) on this bus every period; synchronous PDOs follow it</source>
+        <translation>SYNC (080h) auf diesem Bus in jeder Periode senden; synchrone PDOs folgen ihm</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>SYNC period (communication cycle)</source>
+        <translation>SYNC-Periode (Kommunikationszyklus)</translation>
+    </message>
+    <message>
+        <source>PDO mapping</source>
+        <translation>PDO-Mapping</translation>
+    </message>
+    <message>
+        <source>LSS</source>
+        <translation>LSS</translation>
+    </message>
+    <message>
+        <source>CANopen network on %1</source>
+        <translation>CANopen-Netz an %1</translation>
+    </message>
+    <message>
+        <source>No CANopen connection: connect to a CANopen node to see its network.</source>
+        <translation>Keine CANopen-Verbindung: verbinden Sie sich mit einem CANopen-Knoten, um sein Netz zu sehen.</translation>
     </message>
 </context>
 <context>
@@ -6110,6 +6583,22 @@ Letzter Fehler: %1</translation>
         <source>NMT reset communication</source>
         <translation>NMT Reset Communication</translation>
     </message>
+    <message>
+        <source>Scan</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Ask node ids 1..127 by SDO and list every node that answers, with its name (1008h) and identity (1018h)</source>
+        <translation>Knotennummern 1..127 per SDO fragen und jeden antwortenden Knoten mit Namen (1008h) und Identität (1018h) auflisten</translation>
+    </message>
+    <message>
+        <source>vendor %1, product %2, revision %3, serial %4</source>
+        <translation>Hersteller %1, Produkt %2, Revision %3, Seriennummer %4</translation>
+    </message>
+    <message>
+        <source>Scanning…</source>
+        <translation>Suche…</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeListModel</name>
@@ -6148,6 +6637,22 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Name</source>
         <translation>Name</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Heartbeat consumer time: silence longer than this after a heartbeat shows the node as lost (double-click to change; 0 = not watched)</source>
+        <translation>Heartbeat-Überwachungszeit: bleibt der Knoten nach einem Heartbeat länger still, gilt er als verloren (Doppelklick zum Ändern; 0 = nicht überwacht)</translation>
+    </message>
+    <message>
+        <source>Consumer</source>
+        <translation>Überwachung</translation>
     </message>
 </context>
 <context>
@@ -6995,6 +7500,175 @@ Die jetzigen Werte des Geräts werden seine Einschaltwerte.</translation>
     <message>
         <source>factory defaults</source>
         <translation>Werkseinstellungen</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::PdoPanel</name>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Read the node&apos;s PDO communication and mapping objects</source>
+        <translation>Die PDO-Kommunikations- und Mapping-Objekte des Knotens lesen</translation>
+    </message>
+    <message>
+        <source>Write the changed PDOs: each is disabled, its mapping cleared, the entries written, then enabled again</source>
+        <translation>Die geänderten PDOs schreiben: jedes wird deaktiviert, sein Mapping geleert, die Einträge geschrieben, dann wieder aktiviert</translation>
+    </message>
+    <message>
+        <source>PDO</source>
+        <translation>PDO</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <source>COB-ID</source>
+        <translation>COB-ID</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Inhibit</source>
+        <translation>Sperrzeit</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Ereignis</translation>
+    </message>
+    <message>
+        <source>Mapping</source>
+        <translation>Mapping</translation>
+    </message>
+    <message>
+        <source>RPDO: the node receives it; TPDO: the node sends it</source>
+        <translation>RPDO: der Knoten empfängt es; TPDO: der Knoten sendet es</translation>
+    </message>
+    <message>
+        <source>Enabled (COB-ID bit 31 clear)</source>
+        <translation>Aktiv (COB-ID Bit 31 gelöscht)</translation>
+    </message>
+    <message>
+        <source>CAN identifier (hex)</source>
+        <translation>CAN-Identifier (hexadezimal)</translation>
+    </message>
+    <message>
+        <source>Transmission type: 0 acyclic synchronous, 1..240 every n-th SYNC, 254/255 event driven</source>
+        <translation>Übertragungsart: 0 azyklisch synchron, 1..240 bei jedem n-ten SYNC, 254/255 ereignisgesteuert</translation>
+    </message>
+    <message>
+        <source>Inhibit time in multiples of 100 µs (minimum gap between two transmissions)</source>
+        <translation>Sperrzeit in Vielfachen von 100 µs (kleinster Abstand zweier Sendungen)</translation>
+    </message>
+    <message>
+        <source>Event timer in ms (0 = off)</source>
+        <translation>Ereignis-Timer in ms (0 = aus)</translation>
+    </message>
+    <message>
+        <source>Mapped objects as index:sub/bits, in frame order</source>
+        <translation>Abgebildete Objekte als Index:Sub/Bits, in der Reihenfolge im Frame</translation>
+    </message>
+    <message>
+        <source>PDOs of node %1</source>
+        <translation>PDOs von Knoten %1</translation>
+    </message>
+    <message>
+        <source>Select a node</source>
+        <translation>Knoten auswählen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no object address (e.g. 6041:0/16)</source>
+        <translation>&apos;%1&apos; ist keine Objektadresse (z. B. 6041:0/16)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the length is 1..64 bits</source>
+        <translation>&apos;%1&apos;: die Länge ist 1..64 Bit</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: give the length in bits (%2/16)</source>
+        <translation>&apos;%1&apos;: Länge in Bit angeben (%2/16)</translation>
+    </message>
+    <message>
+        <source>the mapping has %1 bits; a PDO carries at most 64</source>
+        <translation>das Mapping hat %1 Bit; ein PDO trägt höchstens 64</translation>
+    </message>
+    <message>
+        <source>%1 entries; at most %2</source>
+        <translation>%1 Einträge; höchstens %2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is no COB-ID</source>
+        <translation>%1: &apos;%2&apos; ist keine COB-ID</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is no transmission type (0..255)</source>
+        <translation>%1: &apos;%2&apos; ist keine Übertragungsart (0..255)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not 0..65535</source>
+        <translation>%1: &apos;%2&apos; liegt nicht in 0..65535</translation>
+    </message>
+    <message>
+        <source>communication %1h, mapping %2h</source>
+        <translation>Kommunikation %1h, Mapping %2h</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>reading the PDOs of node %1…</source>
+        <translation>lese die PDOs von Knoten %1…</translation>
+    </message>
+    <message>
+        <source>reading the PDOs failed: %1</source>
+        <translation>Lesen der PDOs fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>node %1 has no PDO objects</source>
+        <translation>Knoten %1 hat keine PDO-Objekte</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n PDO(s) read</source>
+        <translation>
+            <numerusform>%n PDO gelesen</numerusform>
+            <numerusform>%n PDOs gelesen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing changed</source>
+        <translation>nichts geändert</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n PDO(s) written</source>
+        <translation>
+            <numerusform>%n PDO geschrieben</numerusform>
+            <numerusform>%n PDOs geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>writing %1…</source>
+        <translation>Schreibe %1…</translation>
+    </message>
+    <message>
+        <source>%1 not written (it stays disabled): %2</source>
+        <translation>%1 nicht geschrieben (es bleibt deaktiviert): %2</translation>
+    </message>
+    <message>
+        <source>%1 of node %2</source>
+        <translation>%1 von Knoten %2</translation>
     </message>
 </context>
 <context>
