@@ -141,6 +141,33 @@ QString AcuAxis::featureNote() const
         .arg(m_configuration);
 }
 
+AcuAxis::Mode AcuAxis::modeFor(motion::CommandKind kind) const
+{
+    using motion::CommandKind;
+    if (!hasPositioning())
+        return Mode::None; // 1454 stays at 2; the other commands fail with featureNote()
+    switch (kind) {
+    case CommandKind::MoveAbsolute:
+    case CommandKind::MoveRelative:
+    case CommandKind::MoveAdditive:
+        return Mode::ProfilePosition;
+    case CommandKind::MoveVelocity:
+        return Mode::ProfileVelocity;
+    case CommandKind::Home:
+        return Mode::Homing;
+    case CommandKind::MotionBlock:
+        return Mode::TableTravel;
+    default:
+        return Mode::None;
+    }
+}
+
+bool AcuAxis::needsModeChange(motion::CommandKind kind) const
+{
+    const Mode mode = modeFor(kind);
+    return mode != Mode::None && mode != m_mode;
+}
+
 QString AcuAxis::linkSupervision() const
 {
     QString reaction;
@@ -328,8 +355,14 @@ Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode)
 {
     if (m_mode == mode)
         return {};
-    if (m_status.moving)
-        return Error(Error::Kind::Busy, Tr::tr("refused: mode change while moving"));
+    // Not the polled status, which may predate the end of the last motion: the speeds read
+    // now decide, before anything is written.
+    const QString refused = Tr::tr("refused: mode change while moving");
+    const auto still = [](qint64 speed) {
+        return speed == 0;
+    };
+    steps->checkValue(kSpeed, still, refused);
+    steps->checkValue(kActualSpeedRpm, still, refused);
     // 1454 changes only in "switched on" (0x0007): the inverter is safe there. The axis's own
     // pass through it does not count as the power stage going off.
     AcuAxis *self = this;
@@ -502,8 +535,8 @@ Reply *AcuAxis::home(const motion::HomingParams &params)
     steps->control(kEnableOperation | kBit4); // rising edge: start homing
     steps->waitStatus([](quint16 w) { return (w & kBit12) || (w & kBit13); }, kHomingTimeoutMs,
                       Tr::tr("homing not finished within %1 s").arg(kHomingTimeoutMs / 1000));
-    steps->call([this]() -> Result<void> {
-        if (m_status.rawStatus & kBit13)
+    steps->call([steps]() -> Result<void> {
+        if (steps->lastStatus() & kBit13)
             return Error(Error::Kind::DeviceError, Tr::tr("homing error (status bit 13)"));
         return {};
     });

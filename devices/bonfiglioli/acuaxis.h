@@ -76,6 +76,8 @@ public:
     QString positionUnit() const override;
     QString velocityUnit() const override;
     QString featureNote() const override;
+    // The MCO mode `kind` runs in differs from 1454 as last written or read.
+    bool needsModeChange(motion::CommandKind kind) const override;
     // 388 as read by initialize(), with the inverter's 10 s link watchdog; once the inverter
     // has not answered for kSilenceShownMs, also the time left until it reacts.
     QString linkSupervision() const override;
@@ -107,6 +109,8 @@ private:
     // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
     // when the change is refused.
     Result<void> addModeChange(AcuSteps *steps, Mode mode);
+    // The MCO mode a command runs in; None for those that work in any mode (halt, stop).
+    Mode modeFor(motion::CommandKind kind) const;
     // A step that fails unless the inverter is in "operation enabled" (411 read then).
     void requireEnabled(AcuSteps *steps) const;
 
