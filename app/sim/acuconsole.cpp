@@ -2,6 +2,8 @@
 
 #include "devices/bonfiglioli/simulatedacu.h"
 
+#include <cmath>
+
 namespace db::app {
 
 namespace {
@@ -81,9 +83,19 @@ void AcuConsole::execute(const QString &line)
     } else if (command == u"sto" && onOff) {
         m_acu->motion().setSto(words.at(1) == u"on");
         Q_EMIT answered(QStringLiteral("sto ") + words.at(1));
+    } else if (command == u"master" && words.size() == 2) {
+        bool ok = false;
+        const double speed = words.at(1).toDouble(&ok);
+        if (!ok || !std::isfinite(speed)) {
+            Q_EMIT answered(
+                QStringLiteral("error: master takes a speed in u/s, not '%1'").arg(words.at(1)));
+            return;
+        }
+        m_acu->motion().setMasterSpeed(speed);
+        Q_EMIT answered(QStringLiteral("master ") + QString::number(speed));
     } else if (!command.isEmpty()) {
         Q_EMIT answered(QStringLiteral("error: unknown command '%1' (state, standstill, drop, "
-                                       "fault CODE, mains on|off, sto on|off)")
+                                       "fault CODE, mains on|off, sto on|off, master SPEED)")
                             .arg(line.simplified()));
     }
 }

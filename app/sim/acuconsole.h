@@ -26,6 +26,7 @@ namespace db::app {
 //                         it, e.g. 2714 for F2714)
 //   mains on|off       -> "mains on|off": the simulated mains voltage (status bit 4)
 //   sto on|off         -> "sto on|off": the simulated STO hardware enable
+//   master SPEED       -> "master SPEED": the electronic gear's master speed in u/s
 //   anything else      -> "error: ..." naming the cause
 class AcuConsole : public QObject
 {

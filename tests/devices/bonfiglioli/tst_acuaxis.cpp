@@ -117,6 +117,7 @@ private Q_SLOTS:
 
     void moveAbsoluteHandshake()
     {
+        m_acu->motion().setTimeScale(5);
         QVERIFY(power(true));
         MotionCommand move(m_model.get(), CommandKind::MoveAbsolute);
         move.setParams(params(30000));
@@ -264,6 +265,7 @@ private Q_SLOTS:
 
     void tableTravelSingleAndSequence()
     {
+        m_acu->motion().setTimeScale(10); // block 4 travels 123000 u
         QVERIFY(power(true));
         QVERIFY(await(m_axis->startMotionBlock(2, false, false)).ok());
         QCOMPARE(m_acu->motion().mode(), qint16(-1));
@@ -313,6 +315,39 @@ private Q_SLOTS:
         m_acu->motion().setLimitSwitches(true, true); // both: F1449
         QVERIFY(!await(m_axis->moveAwayFromLimitSwitch()).ok());
         QCOMPARE(m_acu->fault(), quint16(0x1449));
+    }
+
+    // Electronic gear slave (1454 = -3): bit 4 starts the gear, status bit 10 rises once the
+    // slave runs at master speed x 1123 / 1124 for 1169 ms; halt brakes to 0 with bit 10 at
+    // speed 0; a positioning command afterwards changes the mode at rest.
+    void electronicGear()
+    {
+        QVERIFY(power(true));
+        m_acu->motion().setMasterSpeed(3000);
+        QVERIFY(await(m_connection->write(ObjectAddress(1123, 5), qlonglong(3))).ok()); // RAM
+        QVERIFY(await(m_connection->write(ObjectAddress(1124, 5), qulonglong(2))).ok());
+        QVERIFY(await(m_connection->write(ObjectAddress(1169, 5), qulonglong(50))).ok());
+        const Result<QVariant> geared = await(m_axis->gearIn(100000, 100000));
+        QVERIFY2(geared.ok(), qPrintable(geared.error().message()));
+        QCOMPARE(m_acu->motion().mode(), qint16(-3));
+        QCOMPARE(m_axis->mode(), AcuAxis::Mode::ElectronicGear);
+        QCOMPARE(m_acu->motion().velocity(), 4500.0); // 3000 x 3 / 2
+        QVERIFY(m_acu->statusWord() & 0x0400); // in gear
+        m_acu->motion().setMasterSpeed(1000); // the master slows: out of gear until coupled
+        DB_TRY_VERIFY(!(m_acu->statusWord() & 0x0400));
+        DB_TRY_COMPARE(m_acu->motion().velocity(), 1500.0);
+        DB_TRY_VERIFY(m_acu->statusWord() & 0x0400);
+        // Other modes are refused while the slave turns, then taken at rest.
+        QVERIFY(m_axis->needsModeChange(CommandKind::MoveAbsolute));
+        DB_TRY_VERIFY(m_axis->status().moving);
+        QCOMPARE(m_model->preview(CommandKind::MoveAbsolute, params(0)).refusal,
+                 Refusal::ModeChangeWhileMoving);
+        QVERIFY(await(m_axis->halt(100000)).ok());
+        DB_TRY_COMPARE(m_acu->motion().velocity(), 0.0);
+        QVERIFY(m_acu->statusWord() & 0x0400); // halt: bit 10 at speed 0
+        DB_TRY_VERIFY(!m_axis->status().moving);
+        QVERIFY(await(m_axis->moveTo(0, { 20000, 100000, 100000, 0 })).ok());
+        QCOMPARE(m_acu->motion().mode(), qint16(1));
     }
 
     // The jog moves in leases: when the renewals stop (the program died), the drive ends the
