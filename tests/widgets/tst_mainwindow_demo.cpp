@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <memory>
+
 using namespace db;
 using db::gui::MainWindow;
 
@@ -103,7 +105,10 @@ private Q_SLOTS:
             if (area == Qt::BottomDockWidgetArea || area == Qt::RightDockWidgetArea)
                 dock->hide();
         }
-        QVERIFY(window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port())));
+        const auto opened =
+            window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port()));
+        QVERIFY(opened.ok());
+        DeviceConnection *connection = opened.value();
         widgets::DriveStatusPanel *panel = window.statusPanel();
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isStale(ObjectAddress(411, 0)), 10000);
         QTest::qWait(300);
@@ -114,13 +119,36 @@ private Q_SLOTS:
         QTest::qWait(1500);
         QVERIFY(window.grab().save(dir + QStringLiteral("/acu-editor.png")));
 
+        // The motor turns while the scope records: profile velocity through the state machine,
+        // every value to a RAM data set: up, reversing, down.
+        const auto write = [connection](quint16 parameter, qlonglong value) {
+            std::unique_ptr<Reply> r(connection->write(ObjectAddress(parameter, 5), value));
+            return QTest::qWaitFor([&r] { return r->isFinished(); }, 3000) && r->ok();
+        };
+        for (const auto &[parameter, value] : { std::pair<quint16, qlonglong> { 412, 1 },
+                                                { 1454, 3 },
+                                                { 1457, 8000 },
+                                                { 1458, 8000 },
+                                                { 1460, 0 },
+                                                { 410, 0x0000 },
+                                                { 410, 0x0006 },
+                                                { 410, 0x0007 },
+                                                { 410, 0x000F } })
+            QVERIFY2(write(parameter, value), qPrintable(QString::number(parameter)));
         window.pages()->setCurrentWidget(window.scopePage());
         QVERIFY(window.scopePage()->addChannels({ { 210, 0 }, { 211, 0 } }, 20).ok());
         window.scopePage()->start();
-        QTest::qWait(4000);
+        QTest::qWait(400);
+        QVERIFY(write(1460, 9000));
+        QTest::qWait(1600);
+        QVERIFY(write(1460, -6000));
+        QTest::qWait(1800);
+        QVERIFY(write(1460, 0));
+        QTest::qWait(1200);
         window.scopePage()->stop();
         QTest::qWait(300);
         QVERIFY(window.grab().save(dir + QStringLiteral("/acu-scope.png")));
+        QVERIFY(write(410, 0x0000)); // disabled again before the window closes
         window.close();
     }
 };
