@@ -93,10 +93,22 @@ void AcuConsole::execute(const QString &line)
         }
         m_acu->motion().setMasterSpeed(speed);
         Q_EMIT answered(QStringLiteral("master ") + QString::number(speed));
+    } else if (command == u"watchdog" && words.size() == 2) {
+        bool ok = false;
+        const int ms = words.at(1).toInt(&ok);
+        if (!ok || ms < 1 || ms > 3600000) {
+            Q_EMIT answered(QStringLiteral("error: watchdog takes a time in ms (1..3600000), not "
+                                           "'%1'")
+                                .arg(words.at(1)));
+            return;
+        }
+        m_acu->setWatchdogMs(ms);
+        Q_EMIT answered(QStringLiteral("watchdog ") + QString::number(ms));
     } else if (!command.isEmpty()) {
-        Q_EMIT answered(QStringLiteral("error: unknown command '%1' (state, standstill, drop, "
-                                       "fault CODE, mains on|off, sto on|off, master SPEED)")
-                            .arg(line.simplified()));
+        Q_EMIT answered(
+            QStringLiteral("error: unknown command '%1' (state, standstill, drop, "
+                           "fault CODE, mains on|off, sto on|off, master SPEED, watchdog MS)")
+                .arg(line.simplified()));
     }
 }
 

@@ -27,6 +27,7 @@ namespace db::app {
 //   mains on|off       -> "mains on|off": the simulated mains voltage (status bit 4)
 //   sto on|off         -> "sto on|off": the simulated STO hardware enable
 //   master SPEED       -> "master SPEED": the electronic gear's master speed in u/s
+//   watchdog MS        -> "watchdog MS": the link watchdog's time from now on (as --watchdog-ms)
 //   anything else      -> "error: ..." naming the cause
 class AcuConsole : public QObject
 {

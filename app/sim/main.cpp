@@ -169,7 +169,7 @@ int main(int argc, char *argv[])
             "movingcap, acu: read commands from standard input while serving, one a line: state, "
             "standstill, drop (abort every client: a cut cable), fault CODE; movingcap: "
             "heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic "
-            "gear's master, u/s)."));
+            "gear's master, u/s), watchdog MS."));
     const QCommandLineOption devices(
         QStringLiteral("devices"),
         QCoreApplication::translate("sim",

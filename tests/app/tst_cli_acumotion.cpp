@@ -184,6 +184,11 @@ private Q_SLOTS:
         QCOMPARE(r.out.trimmed(), QStringLiteral("10004")); // 0x2714
         r = cli({ QStringLiteral("move"), uri, QStringLiteral("--abs"), QStringLiteral("100") });
         QVERIFY(r.exitCode != 0); // faulted: nothing moves
+        // No reaction from now on (RAM): the next CLI process may start later than 300 ms after
+        // this one, which would fault the inverter again right after the reset.
+        r = cli({ QStringLiteral("write"), uri, QStringLiteral("388"), QStringLiteral("0"),
+                  QStringLiteral("--ram") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = cli({ QStringLiteral("reset"), uri });
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = cli({ QStringLiteral("read"), uri, QStringLiteral("260") });
@@ -197,13 +202,12 @@ private Q_SLOTS:
 
 // The simulator's --control console: the inputs and a fault set while the simulator serves,
 // and a cut cable mid-motion: the link watchdog (388 = 1) then faults the inverter, which
-// stops the motor without anyone on the link.
+// stops the motor without anyone on the link. The watchdog keeps its 10 s until the motion
+// runs (one CLI process after the other leaves the link quiet in between), then it is shortened.
 void TstCliAcuMotion::controlConsole()
 {
     QProcess sim;
-    const QString uri = startSim(
-        sim,
-        { QStringLiteral("--control"), QStringLiteral("--watchdog-ms"), QStringLiteral("500") });
+    const QString uri = startSim(sim, { QStringLiteral("--control") });
     QVERIFY(!uri.isEmpty());
     QByteArray pending;
     QCOMPARE(ask(sim, pending, QStringLiteral("fly"), QStringLiteral("x")).left(32),
@@ -246,6 +250,8 @@ void TstCliAcuMotion::controlConsole()
     QTRY_VERIFY_WITH_TIMEOUT(ask(sim, pending, QStringLiteral("state"), QStringLiteral("state"))
                                  .contains(QLatin1String("velocity 3000.0")),
                              10000);
+    QCOMPARE(ask(sim, pending, QStringLiteral("watchdog 300"), QStringLiteral("watchdog")),
+             QStringLiteral("watchdog 300"));
     const QString dropped = ask(sim, pending, QStringLiteral("drop"), QStringLiteral("dropped"));
     QVERIFY2(dropped.startsWith(QLatin1String("dropped 1 ")), qPrintable(dropped));
     QVERIFY(move.waitForFinished(15000));
