@@ -7613,8 +7613,8 @@ Geräte:
         <translation>acu: beim Start abgeschaltete simulierte Eingänge, durch Kommas getrennt: mains, sto, oder aktive Endschalter: limit-pos, limit-neg.</translation>
     </message>
     <message>
-        <source>movingcap, acu: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic gear&apos;s master, u/s).</source>
-        <translation>movingcap, acu: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (der Master des elektronischen Getriebes, u/s).</translation>
+        <source>movingcap, acu: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic gear&apos;s master, u/s), watchdog MS.</source>
+        <translation>movingcap, acu: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (der Master des elektronischen Getriebes, u/s), watchdog MS.</translation>
     </message>
 </context>
 </TS>
