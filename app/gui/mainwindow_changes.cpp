@@ -10,6 +10,7 @@
 #include "widgets/motion/jogpanel.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/odeditor/odeditor.h"
+#include "widgets/parameters/paramcomparemodel.h"
 #include "widgets/parameters/paramcompareview.h"
 #include "widgets/parameters/parametersetactions.h"
 
@@ -41,6 +42,13 @@ void MainWindow::createChangeLog()
                 const bool canStore = m_compareView->connection()
                     && m_compareView->connection()->capabilities().testFlag(
                         DeviceConnection::Capability::StoreNonVolatile);
+                // The device's values before the restore: the comparison it was chosen from
+                // (its first side is the device) is refreshed only after this signal.
+                QHash<ObjectAddress, QString> before;
+                for (const CompareRow &r : m_compareView->model()->comparison().rows) {
+                    if (!r.values.isEmpty() && r.values.first().isValid())
+                        before.insert(r.address, r.valueText(0));
+                }
                 for (const RestoreRow &row : report.rows) {
                     if (row.outcome == RestoreOutcome::Skipped)
                         continue;
@@ -50,6 +58,7 @@ void MainWindow::createChangeLog()
                     e.object = report.addressFormat->format(row.address);
                     if (!row.name.isEmpty())
                         e.object += QLatin1Char(' ') + row.name;
+                    e.oldValue = before.value(row.address);
                     e.newValue = codec::toText(row.type, row.value);
                     const bool ok = row.outcome == RestoreOutcome::Verified
                         || row.outcome == RestoreOutcome::Written;
