@@ -2240,6 +2240,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>the inverter went to fault (status word 0x%1)</source>
         <translation>der Umrichter ist in Störung gegangen (Zustandswort 0x%1)</translation>
     </message>
+    <message>
+        <source>electronic gear</source>
+        <translation>elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>the inverter did not report &apos;in gear&apos; (status bit 10) within %1 s</source>
+        <translation>der Umrichter hat nicht innerhalb von %1 s „eingekuppelt“ (Statusbit 10) gemeldet</translation>
+    </message>
 </context>
 <context>
     <name>db::bonfiglioli::AcuStatusSource</name>
@@ -3781,6 +3789,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>this drive has no table of motion blocks</source>
         <translation>dieser Antrieb hat keine Fahrsatztabelle</translation>
+    </message>
+    <message>
+        <source>mode change while moving</source>
+        <translation>Betriebsartwechsel während der Bewegung</translation>
     </message>
 </context>
 <context>
@@ -8498,10 +8510,6 @@ Geräte:
         <translation>movingcap: der Antrieb startet mit diesem EMCY-Code in Störung (hexadezimal, z. B. 7121).</translation>
     </message>
     <message>
-        <source>movingcap: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on.</source>
-        <translation>movingcap: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE, heartbeat off|on.</translation>
-    </message>
-    <message>
         <source>nm17x: the bus&apos;s bit rate in bit/s (default 125000); SLCAN clients set to another one hear nothing.</source>
         <translation>nm17x: die Bitrate des Busses in bit/s (Standard 125000); auf eine andere eingestellte SLCAN-Clients hören nichts.</translation>
     </message>
@@ -8512,6 +8520,10 @@ Geräte:
     <message>
         <source>acu: simulated inputs off at start, comma-separated: mains, sto, or the limit switches on: limit-pos, limit-neg.</source>
         <translation>acu: beim Start abgeschaltete simulierte Eingänge, durch Kommas getrennt: mains, sto, oder aktive Endschalter: limit-pos, limit-neg.</translation>
+    </message>
+    <message>
+        <source>movingcap, acu: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic gear&apos;s master, u/s), watchdog MS.</source>
+        <translation>movingcap, acu: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (der Master des elektronischen Getriebes, u/s), watchdog MS.</translation>
     </message>
 </context>
 </TS>
