@@ -9,6 +9,12 @@ QString ChannelInfo::label() const
     return name.isEmpty() ? id : id + QLatin1Char(' ') + name;
 }
 
+QString ChannelInfo::displayLabel() const
+{
+    const QString shown = displayName();
+    return shown.isEmpty() ? id : id + QLatin1Char(' ') + shown;
+}
+
 ChannelInfo ChannelInfo::forObject(ObjectAddress address, const ObjectDictionary &dictionary,
                                    const QString &device, int rateMs, const AddressFormat *format)
 {
@@ -20,6 +26,7 @@ ChannelInfo ChannelInfo::forObject(ObjectAddress address, const ObjectDictionary
     info.sourceRateMs = rateMs;
     if (const ObjectDef *def = dictionary.find(address)) {
         info.name = def->name;
+        info.localNames = def->localNames;
         info.unit = def->unit;
         info.scale = def->factor;
         info.offset = def->offset;

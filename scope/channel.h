@@ -2,6 +2,7 @@
 // One recorded signal: what it is and how its raw values are shown.
 #include "core/addressformat.h"
 #include "core/objectaddress.h"
+#include "core/objectdef.h"
 #include <QList>
 #include <QMetaType>
 #include <QString>
@@ -23,6 +24,7 @@ struct ChannelInfo
     // of inverter parameters). Never null.
     const AddressFormat *addressFormat = &AddressFormat::canopen();
     QString name; // "Position actual value"; may be empty for objects without description
+    LocalTexts localNames = {}; // name in further languages (people read them, files keep name)
     QString unit; // unit of the displayed value ("inc", "mA"); may be empty
     QString device; // connection URI of the device the channel comes from
     double scale = 1.0;
@@ -34,6 +36,9 @@ struct ChannelInfo
     double raw(double value) const { return (value - offset) / scale; }
     // "6064:0 Position actual value" (the CSV column header and the CLI's name).
     QString label() const;
+    // name and label in the language the program speaks, for the scope's legend and lists.
+    QString displayName() const { return localText(name, localNames); }
+    QString displayLabel() const;
 
     // A channel for `address` with name, unit and scaling (factor/offset) taken from the
     // dictionary when it knows the object; otherwise named by the address only. The id is

@@ -61,7 +61,7 @@ QString PdoChannelPlan::missingText(const ObjectDictionary &dictionary) const
     for (ObjectAddress address : missing) {
         const ObjectDef *def = dictionary.find(address);
         const QString label = def && !def->name.isEmpty()
-            ? QStringLiteral("%1 %2").arg(address.toString(), def->name)
+            ? QStringLiteral("%1 %2").arg(address.toString(), def->displayName())
             : address.toString();
         parts.append(Tr::tr("%1 is in no TPDO of node %2").arg(label).arg(node));
     }

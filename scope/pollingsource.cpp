@@ -65,11 +65,11 @@ Result<int> PollingSource::addChannel(const ChannelInfo &info)
         if (const ObjectDef *def = m_connection->dictionary().find(info.address)) {
             if (!def->readable())
                 return Error(Error::Kind::AccessDenied,
-                             tr("%1 (%2) is write-only").arg(info.id, def->name));
+                             tr("%1 (%2) is write-only").arg(info.id, def->displayName()));
             if (!datatype::isNumeric(def->type))
-                return Error(
-                    Error::Kind::InvalidArgument,
-                    tr("%1 (%2) is not a number and cannot be recorded").arg(info.id, def->name));
+                return Error(Error::Kind::InvalidArgument,
+                             tr("%1 (%2) is not a number and cannot be recorded")
+                                 .arg(info.id, def->displayName()));
         }
     }
     m_entries.append({ info, nullptr, 0 });

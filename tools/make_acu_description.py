@@ -118,12 +118,22 @@ def infer_type(row, decimals, lo, hi):
     return 'UNSIGNED16'
 
 
+# A section number of the source ("7.2", "11.4.6", "11.1/11.2"), not a version ("5.3.0 or higher").
+SECTION = re.compile(r'(?<![\d.])\d{1,2}\.\d{1,2}(?:\.\d{1,2})?(?!\d|\.\d| or higher)')
+
+
+# What is left of worked examples and remarks once their section numbers are gone.
+LEFTOVER = re.compile(r'\bDS \d|^(?:write|read) |^NB\b|^\d+[.:]$|\d+,\d+ ?(?:Hz|kW)|\d ms ->')
+
+
 def clean(text):
     """The table's meaning column without references to sections or to the source."""
     text = re.sub(r'\s*\((?:\d+(?:\.\d+)*(?:,\s*)?)+\)', '', text)
-    keep = [s for s in re.split(r'(?<=[.;])\s+', text)
-            if not re.search(r'manual|handbuch|example|printed|seed|\bex\.|reading|§|inferred|rejected|probably|^\x27', s, re.I)]
-    return ' '.join(keep).strip()
+    keep = [s for s in re.split(r'(?<=[.;:])\s+', text)
+            if not re.search(r'manual|handbuch|example|printed|seed|\bex\.|reading|§|inferred|rejected|probably|^\x27', s, re.I)
+            and not SECTION.search(s) and not LEFTOVER.search(s)]
+    text = ' '.join(keep).strip()
+    return re.sub(r'[;:]$', '.', text)
 
 
 def tidy_name(text):
@@ -132,6 +142,18 @@ def tidy_name(text):
     text = re.sub(r"\s*\((?:Einzelname|Name) nicht angegeben\)|;\s*Name nicht angegeben", '', text)
     text = re.sub(r"\s*\((?:as printed|so im Handbuch)[^)]*\)", '', text)
     return text.replace("'Function'", 'Function').strip()
+
+
+# German words the table writes without umlauts.
+UMLAUTS = {'Digitaleingaenge': 'Digitaleingänge', 'Stoerverhalten': 'Störverhalten',
+           'Uebergang': 'Übergang', 'Verzoegerung': 'Verzögerung', 'Zaehler': 'Zähler',
+           'Getriebefaktoraenderung': 'Getriebefaktoränderung', 'fuer': 'für',
+           'unzulaessige': 'unzulässige', 'IP-Address': 'IP-Adresse'}
+
+
+def german(text):
+    """German text with its umlauts."""
+    return re.sub(r'[\w-]+', lambda m: UMLAUTS.get(m.group(0), m.group(0)), text)
 
 
 def group(n):
@@ -187,7 +209,7 @@ def main():
                 unit = ''
             four = row['datasets'].startswith('1-4')
             row['name_en'] = tidy_name(row['name_en'])
-            row['name_de'] = tidy_name(row['name_de'])
+            row['name_de'] = german(tidy_name(row['name_de']))
             base = dict(name=row['name_en'], type=dtype, access=access)
             if unit:
                 base['unit'] = unit
@@ -205,21 +227,25 @@ def main():
             if n in TRACE:
                 base['trace'] = True
             text = clean(row['description'])
-            desc = f"{row['name_de']}. {text}" if text else row['name_de']
-            base['description'] = f"{group(n)}: {desc}"
+            base['description'] = f"{group(n)}: {text}" if text else group(n)
             for ds in (range(5) if four else [0]):
                 o = dict(index=n, sub=ds)
                 o.update(base)
                 o['object'] = row['name_en']
+                o['object_de'] = row['name_de']
                 if four:
                     o['name'] = (f"{row['name_en']} (all data sets)" if ds == 0
                                  else f"{row['name_en']} (data set {ds})")
+                    o['name_de'] = (f"{row['name_de']} (alle Datensätze)" if ds == 0
+                                    else f"{row['name_de']} (Datensatz {ds})")
                     if ds == 0:
                         o['storable'] = False  # the four data sets are the stored values
                     if n in IP_OCTETS and ds > 0:
                         o['default'] = IP_OCTETS[n][ds - 1]
-                elif default is not None:
-                    o['default'] = default
+                else:
+                    o['name_de'] = row['name_de']
+                    if default is not None:
+                        o['default'] = default
                 if four and default is not None and n not in IP_OCTETS:
                     o['default'] = default
                 objects.append(o)
@@ -229,7 +255,10 @@ def main():
             code = row['code']
             if re.fullmatch(r'F\d{4}', code):
                 names = row['name'].split(' / ')
-                errors.append(dict(code='0x' + code[1:], name=code, text=names[-1]))
+                error = dict(code='0x' + code[1:], name=code, text=names[-1].strip())
+                if len(names) > 1:
+                    error['text_de'] = german(names[0].strip())
+                errors.append(error)
     doc = {
         'format': 'drivebench-device-description', 'version': 1,
         'device': {'vendor': 'Bonfiglioli Vectron', 'product': 'ACTIVE Cube ACU (VABus/TCP)',

@@ -106,6 +106,31 @@ TRACE = {0x6040, 0x6041, 0x6061, 0x6064, 0x606C, 0x6078, 0x607A, 0x60FF, 0x60FD,
          0x60FC, 0x1001}
 
 
+# Fault texts: English where the first sentence of the table's text does not do, and the German
+# texts of the drive's emergency list.
+ERROR_TEXTS = {
+    'ERROR_OVER_CURRENT': ('Over-current', 'Überstrom'),
+    'ERROR_OVER_VOLT': (None, 'Überspannung der UZK-Leistungsversorgung des Motors'),
+    'ERROR_UNDER_VOLT': (None, 'Unterspannung der UZK-Leistungsversorgung des Motors'),
+    'ERROR_OVER_TEMP': (None, 'Übertemperatur'),
+    'ERROR_DERATING': (None, 'Derating'),
+    'ERROR_ACK': (None, 'Quittierungsfehler'),
+    'ERROR_STROKE': ('Blocking / blocked travel / following error too large',
+                     'Blockade / Blockfahrt / Schleppfehler zu groß'),
+    'ERROR_COMMUNICATION': (None, 'Motorkommunikationsfehler'),
+    'ERROR_SENSOR_1': (None, 'Sensor-/Encoderfehler'),
+    'ERROR_HW_SW_ENABLE': (None, 'HW-Enable-Fehler (fehlende interne Freigabe) oder SW-Enable-'
+                                 'Fehler (siehe Eingangsfunktion 9 Software Enable; entsteht bei '
+                                 'jedem Einschaltversuch, solange der Software-Enable-Eingang '
+                                 'fehlt)'),
+    'ERROR_EXT_TORQUE': (None, 'Externe Krafteinwirkung / externes Moment auf den Antrieb'),
+    'ERROR_NEEDS_RESET': ('A power (voltage) reset is required before further operation, e.g. '
+                          'after a successful software update',
+                          'Vor dem Weiterbetrieb ist ein Spannungsreset nötig, z. B. nach einem '
+                          'erfolgreichen Software-Update'),
+}
+
+
 def user_text(text):
     """A description as users read it: without the bracketed references to where a fact was
     found ([seed ...], [STD], [EXT] ...), and with the drive's web page named as such."""
@@ -214,9 +239,12 @@ def main():
     errors = []
     with open(os.path.join(SPECS, 'movingcap_errors.csv'), newline='') as f:
         for row in csv.DictReader(f):
-            text = user_text(row['description'].split('.')[0])
-            errors.append(dict(code='0x%04X' % int(row['code_hex'], 16), name=row['name'],
-                               text=text))
+            english, german = ERROR_TEXTS.get(row['name'], (None, None))
+            text = english or user_text(row['description'].split('.')[0])
+            error = dict(code='0x%04X' % int(row['code_hex'], 16), name=row['name'], text=text)
+            if german:
+                error['text_de'] = german
+            errors.append(error)
 
     doc = {
         'format': 'drivebench-device-description',

@@ -100,8 +100,7 @@ Result<void> Session::open(const QString &uriText)
         // --ram is the URI's ?ram given on the command line.
         const ProtocolInfo *protocol = m_registry.find(plan->uri.scheme());
         if (!protocol || protocol->key != u"vabus")
-            return Error(Error::Kind::InvalidArgument,
-                         QStringLiteral("--ram needs a vabus:// URI"));
+            return Error(Error::Kind::InvalidArgument, Tr::tr("--ram needs a vabus:// URI"));
         plan.value().uri.setQueryValue(QStringLiteral("ram"), QString());
     }
     auto created = m_registry.create(plan.value());

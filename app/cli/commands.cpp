@@ -123,10 +123,9 @@ int read(Context &c)
         return fail(c, target.error());
     const auto value = session.read(target->address);
     if (!value)
-        return fail(
-            c,
-            value.error().prefixed(
-                QStringLiteral("reading %1").arg(session.addressFormat().format(target->address))));
+        return fail(c,
+                    value.error().prefixed(
+                        Tr::tr("reading %1").arg(session.addressFormat().format(target->address))));
     if (!c.file.isEmpty())
         return saveValueToFile(c, target->type, value.value());
     const auto format = c.options.hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
@@ -178,10 +177,9 @@ int write(Context &c)
     if (!raw)
         return fail(c, raw.error());
     if (auto written = session.write(target->address, raw.value()); !written)
-        return fail(
-            c,
-            written.error().prefixed(
-                QStringLiteral("writing %1").arg(session.addressFormat().format(target->address))));
+        return fail(c,
+                    written.error().prefixed(
+                        Tr::tr("writing %1").arg(session.addressFormat().format(target->address))));
     if (c.options.verbose)
         c.out << session.addressFormat().format(target->address) << " <- "
               << codec::toText(target->type, raw.value()) << " ok" << Qt::endl;

@@ -79,12 +79,15 @@ int scan(Context &c)
         c.out << printable(node.toString()) << Qt::endl; // holds the device's 1008h/100Ah strings
         if (c.options.verbose) {
             for (const QString &problem : node.problems)
-                c.err << "  node " << node.id << ": " << printable(problem) << Qt::endl;
+                c.err << Tr::tr("  node %1: %2").arg(int(node.id)).arg(printable(problem))
+                      << Qt::endl;
         }
     }
     if (c.options.verbose)
-        c.err << "scanned nodes 1..127 on " << session.bus()->name() << " in " << clock.elapsed()
-              << " ms" << Qt::endl;
+        c.err << Tr::tr("scanned nodes 1..127 on %1 in %2 ms")
+                     .arg(session.bus()->name())
+                     .arg(clock.elapsed())
+              << Qt::endl;
     if (nodes.isEmpty())
         return fail(c,
                     Error(Error::Kind::Timeout,
@@ -309,10 +312,9 @@ int dcf(Context &c)
         }
         const auto kind = value.error().kind();
         if (kind == Error::Kind::Timeout || kind == Error::Kind::Disconnected)
-            return fail(
-                c,
-                value.error().prefixed(
-                    QStringLiteral("reading %1").arg(session.addressFormat().format(def.address))));
+            return fail(c,
+                        value.error().prefixed(
+                            Tr::tr("reading %1").arg(session.addressFormat().format(def.address))));
         ++skipped;
         if (c.options.verbose)
             c.err << Tr::tr("warning: %1: %2")

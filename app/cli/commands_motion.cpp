@@ -413,7 +413,7 @@ int velocity(Context &c)
     if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("velocity needs --vel V (signed) and --time MS")));
+                          Tr::tr("velocity needs --vel V (signed) and --time MS")));
     const auto v = number(c, kVel);
     const auto t = number(c, kTime);
     if (!v || !t)
@@ -421,7 +421,7 @@ int velocity(Context &c)
     if (*t <= 0 || *t > kDefaultWaitMs)
         return fail(c,
                     Error(Error::Kind::InvalidArgument,
-                          QStringLiteral("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+                          Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
@@ -436,8 +436,9 @@ int velocity(Context &c)
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
     if (!supervision && axis.cia->linkSupervision().isEmpty())
-        c.err << "drivebench-cli: warning: nothing on the drive's side stops MC_MoveVelocity if "
-                 "drivebench-cli dies on this connection (jog moves in leases)"
+        c.err << Tr::tr("drivebench-cli: warning: nothing on the drive's side stops "
+                        "MC_MoveVelocity if drivebench-cli dies on this connection (jog moves in "
+                        "leases)")
               << Qt::endl;
     else if (!supervision && c.options.verbose)
         c.out << "supervision: " << axis.cia->linkSupervision() << Qt::endl;

@@ -1,12 +1,16 @@
-// Help → User Manual (F1): the README, built into the program, rendered in a window of its own;
-// Help → About.
+// Help → User Manual (F1): the user manual in the program's language, rendered in a window of its
+// own; Help → About.
 #include "mainwindow.h"
 
 #include "buildcommit.h"
 
+#include "core/objectdef.h" // textLanguage()
+
+#include <QCoreApplication>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QFile>
+#include <QDir>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QTextBrowser>
 #include <QVBoxLayout>
@@ -30,26 +34,49 @@ void MainWindow::showAbout()
     QMessageBox::about(this, tr("About drivebench"), aboutText());
 }
 
+QString MainWindow::manualPath()
+{
+    // share/drivebench/manual beside bin/ (installed) or app/ (build tree), with the screenshots;
+    // else the text built into the program. The language the program speaks, else English.
+    const QString shared = QDir::cleanPath(QCoreApplication::applicationDirPath()
+                                           + QStringLiteral("/../share/drivebench/manual"));
+    for (const QString &language : { textLanguage(), QStringLiteral("en") }) {
+        const QString name = QStringLiteral("manual.%1.md").arg(language);
+        for (const QString &dir : { shared, QStringLiteral(":/manual") }) {
+            if (QFileInfo::exists(dir + QLatin1Char('/') + name))
+                return dir + QLatin1Char('/') + name;
+        }
+    }
+    return {};
+}
+
 void MainWindow::showManual()
 {
     if (!m_manual) {
         m_manual = new QDialog(this);
         m_manual->setObjectName(QStringLiteral("manual"));
-        m_manual->setWindowTitle(tr("User Manual"));
         auto *browser = new QTextBrowser(m_manual);
         browser->setObjectName(QStringLiteral("manualText"));
         browser->setOpenExternalLinks(true);
-        QFile readme(QStringLiteral(":/manual/README.md"));
-        if (readme.open(QIODevice::ReadOnly))
-            browser->setMarkdown(QString::fromUtf8(readme.readAll()));
-        else
-            browser->setPlainText(tr("The manual is missing from this build."));
         auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, m_manual);
         connect(buttons, &QDialogButtonBox::rejected, m_manual, &QDialog::close);
         auto *layout = new QVBoxLayout(m_manual);
         layout->addWidget(browser);
         layout->addWidget(buttons);
         m_manual->resize(900, 700);
+    }
+    // Loaded on every opening: the language may have changed in between.
+    m_manual->setWindowTitle(tr("User Manual"));
+    auto *browser = m_manual->findChild<QTextBrowser *>(QStringLiteral("manualText"));
+    const QString path = manualPath();
+    if (path.isEmpty()) {
+        browser->setPlainText(tr("The manual is missing from this build."));
+    } else {
+        // As a source, so that the screenshots next to the file are found.
+        const QUrl url = path.startsWith(QLatin1Char(':')) ? QUrl(QStringLiteral("qrc") + path)
+                                                           : QUrl::fromLocalFile(path);
+        if (browser->source() != url)
+            browser->setSource(url, QTextDocument::MarkdownResource);
     }
     m_manual->show();
     m_manual->raise();

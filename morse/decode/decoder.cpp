@@ -4,6 +4,7 @@
 #include "messageparser.h"
 #include "morsecode.h"
 
+#include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QStringList>
 
@@ -14,7 +15,13 @@
 Q_LOGGING_CATEGORY(lcMorse, "drivebench.morse", QtInfoMsg)
 
 namespace db::morse {
+
 namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::morse)
+};
 
 constexpr std::size_t kFitWindow = 400; // intervals used for the unit estimate
 constexpr std::size_t kMinIntervals = 12; // before that, no unit estimate is tried
@@ -77,20 +84,20 @@ QString reasonText(Reason reason)
 {
     switch (reason) {
     case Reason::None:
-        return QStringLiteral("IP address decoded");
+        return Tr::tr("IP address decoded");
     case Reason::InvalidInput:
-        return QStringLiteral("no usable samples (empty, not finite or time not increasing)");
+        return Tr::tr("no usable samples (empty, not finite or time not increasing)");
     case Reason::NoModulation:
-        return QStringLiteral("no modulation: the brightness never shows two distinct levels "
-                              "(LED not in view, covered or not blinking)");
+        return Tr::tr("no modulation: the brightness never shows two distinct levels "
+                      "(LED not in view, covered or not blinking)");
     case Reason::NotMorse:
-        return QStringLiteral("the LED blinks, but not with Morse timing of 40-500 ms per unit");
+        return Tr::tr("the LED blinks, but not with Morse timing of 40-500 ms per unit");
     case Reason::TooShort:
-        return QStringLiteral("recording too short: not one complete message yet");
+        return Tr::tr("recording too short: not one complete message yet");
     case Reason::NoValidIp:
-        return QStringLiteral("Morse text without a valid \"MC+IPa+b+c+d:\" message");
+        return Tr::tr("Morse text without a valid \"MC+IPa+b+c+d:\" message");
     case Reason::LowConfidence:
-        return QStringLiteral("IP address seen, but the repetitions do not agree enough yet");
+        return Tr::tr("IP address seen, but the repetitions do not agree enough yet");
     }
     return {};
 }
@@ -177,14 +184,14 @@ QString Decoder::gapNote() const
         return {};
     QStringList where;
     for (const SampleGap &g : m_gaps) {
-        where << QStringLiteral("a %1 s gap in time after sample %2 (at %3 s)")
+        where << Tr::tr("a %1 s gap in time after sample %2 (at %3 s)")
                      .arg(g.length, 0, 'g', 3)
                      .arg(g.samples)
                      .arg(g.after, 0, 'f', 2);
     }
     if (m_gapCount > m_gaps.size())
-        where << QStringLiteral("%1 more").arg(m_gapCount - m_gaps.size());
-    return QStringLiteral("the recording has %1: read as %2 recordings")
+        where << Tr::tr("%1 more").arg(m_gapCount - m_gaps.size());
+    return Tr::tr("the recording has %1: read as %2 recordings")
         .arg(where.join(QStringLiteral(", ")))
         .arg(m_gapCount + 1);
 }
@@ -475,7 +482,7 @@ QString Decoder::reasonMessage() const
     // Octets voted so far tell the user that the drive was read in part (noise or a poor view
     // damaged every message), not that it sends something else.
     if (r == Reason::NoValidIp && m_ip.anyOctet())
-        message += QStringLiteral("; octets read so far: %1").arg(m_ip.toString());
+        message += Tr::tr("; octets read so far: %1").arg(m_ip.toString());
     if (m_gapCount > 0)
         message += QStringLiteral("; ") + gapNote();
     return message;

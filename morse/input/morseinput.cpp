@@ -97,10 +97,10 @@ Result<Recording> readCsv(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        return ioError(QStringLiteral("cannot open %1: %2").arg(path, file.errorString()));
+        return ioError(Tr::tr("cannot open %1: %2").arg(path, file.errorString()));
     Result<Recording> rec = readCsv(file, path);
     if (file.error() != QFileDevice::NoError)
-        return ioError(QStringLiteral("%1: %2").arg(path, file.errorString()));
+        return ioError(Tr::tr("%1: %2").arg(path, file.errorString()));
     return rec;
 }
 
@@ -123,7 +123,7 @@ Result<Recording> readCsv(QIODevice &file, const QString &path)
         const QByteArray raw = file.readLine(kMaxCsvLine + 2);
         ++line;
         if (raw.size() > kMaxCsvLine && !raw.endsWith('\n') && !file.atEnd())
-            return invalid(line, QStringLiteral("line longer than %1 characters").arg(kMaxCsvLine));
+            return invalid(line, Tr::tr("line longer than %1 characters").arg(kMaxCsvLine));
         const QString text = QString::fromUtf8(raw).trimmed();
         if (text.isEmpty() || text.startsWith(QLatin1Char('#')))
             continue;
@@ -153,19 +153,18 @@ Result<Recording> readCsv(QIODevice &file, const QString &path)
                 line,
                 QStringLiteral("brightness \"%1\" is not a finite number").arg(f[1].trimmed()));
         if (t < 0.0)
-            return invalid(line, QStringLiteral("time %1 s is negative").arg(seconds(t)));
+            return invalid(line, Tr::tr("time %1 s is negative").arg(seconds(t)));
         if (!rec.samples.empty() && t == rec.samples.back().t)
-            return invalid(
-                line, QStringLiteral("time %1 s repeats the previous row's time").arg(seconds(t)));
+            return invalid(line,
+                           Tr::tr("time %1 s repeats the previous row's time").arg(seconds(t)));
         if (!rec.samples.empty() && t < rec.samples.back().t)
             return invalid(line,
-                           QStringLiteral("time %1 s is before the previous row's %2 s "
-                                          "(rows must be in time order)")
+                           Tr::tr("time %1 s is before the previous row's %2 s "
+                                  "(rows must be in time order)")
                                .arg(seconds(t), seconds(rec.samples.back().t)));
         if (rec.samples.size() >= kMaxCsvSamples)
-            return invalid(
-                line,
-                QStringLiteral("more than %1 samples: cut the recording").arg(kMaxCsvSamples));
+            return invalid(line,
+                           Tr::tr("more than %1 samples: cut the recording").arg(kMaxCsvSamples));
         rec.samples.push_back({ t, v });
     }
     if (rec.samples.empty())
@@ -320,27 +319,27 @@ QRect toFrameRegion(const QRect &r, QSize frame, QSize analysis)
 Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion)
 {
     if (!QFileInfo::exists(path))
-        return ioError(QStringLiteral("%1: no such file").arg(path));
+        return ioError(Tr::tr("%1: no such file").arg(path));
     AvFormat fmt;
     const QByteArray name = QFile::encodeName(path);
     if (const int rc = avformat_open_input(&fmt.p, name.constData(), nullptr, nullptr); rc < 0)
-        return ioError(QStringLiteral("%1: not a readable video (%2)").arg(path, avText(rc)));
+        return ioError(Tr::tr("%1: not a readable video (%2)").arg(path, avText(rc)));
     if (avformat_find_stream_info(fmt.p, nullptr) < 0)
-        return ioError(QStringLiteral("%1: no stream information").arg(path));
+        return ioError(Tr::tr("%1: no stream information").arg(path));
     const AVCodec *codec = nullptr;
     const int si = av_find_best_stream(fmt.p, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
     if (si < 0 || !codec)
-        return ioError(QStringLiteral("%1: no decodable video stream").arg(path));
+        return ioError(Tr::tr("%1: no decodable video stream").arg(path));
     AVStream *stream = fmt.p->streams[si];
     AvCodec dec;
     dec.p = avcodec_alloc_context3(codec);
     avcodec_parameters_to_context(dec.p, stream->codecpar);
     if (avcodec_open2(dec.p, codec, nullptr) < 0)
-        return ioError(QStringLiteral("%1: cannot open the %2 decoder").arg(path, codec->name));
+        return ioError(Tr::tr("%1: cannot open the %2 decoder").arg(path, codec->name));
     const int w = dec.p->width;
     const int h = dec.p->height;
     if (w <= 0 || h <= 0)
-        return ioError(QStringLiteral("%1: video without a frame size").arg(path));
+        return ioError(Tr::tr("%1: video without a frame size").arg(path));
     const QSize analysis = analysisSize(QSize(w, h));
     const int sw = analysis.width();
     const int sh = analysis.height();
@@ -412,15 +411,15 @@ Result<Recording> readVideo(const QString &path, std::optional<QRect> userRegion
     avcodec_send_packet(dec.p, nullptr);
     drain();
     if (tooLong)
-        return ioError(QStringLiteral("%1: longer than %2 frames of %3x%4 pixels (%5 MB) at once: "
-                                      "cut the video")
+        return ioError(Tr::tr("%1: longer than %2 frames of %3x%4 pixels (%5 MB) at once: "
+                              "cut the video")
                            .arg(path)
                            .arg(grey.frames.size())
                            .arg(sw)
                            .arg(sh)
                            .arg(kMaxVideoBytes >> 20));
     if (grey.frames.size() < 2)
-        return ioError(QStringLiteral("%1: no frames decoded").arg(path));
+        return ioError(Tr::tr("%1: no frames decoded").arg(path));
 
     Recording rec;
     rec.frameSize = QSize(w, h);

@@ -61,10 +61,9 @@ CanopenConnection::CanopenConnection(const ConnectionUri &uri, std::shared_ptr<C
             return;
         Q_EMIT logLine(QStringLiteral("! node %1 heartbeat lost").arg(node));
         if (isConnected())
-            Q_EMIT supervisionLost(
-                QStringLiteral("heartbeat lost: node %1 silent for more than %2 ms")
-                    .arg(node)
-                    .arg(m_network->monitor()->consumerTime(node)));
+            Q_EMIT supervisionLost(Tr::tr("heartbeat lost: node %1 silent for more than %2 ms")
+                                       .arg(node)
+                                       .arg(m_network->monitor()->consumerTime(node)));
     });
 }
 
@@ -230,7 +229,7 @@ void CanopenConnection::finishConnecting()
         return;
     }
     qCInfo(lcCanopen).noquote() << "connected to node" << m_node << "on" << m_network->name();
-    Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
+    Q_EMIT logLine(Tr::tr("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
     setState(State::Connected);
     watchHeartbeat();
 }
@@ -294,7 +293,7 @@ void CanopenConnection::onBusClosed(const Error &error)
     if (previous == State::Disconnected)
         return;
     if (previous == State::Closing || !error.isError()) {
-        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_network->name()));
+        Q_EMIT logLine(Tr::tr("disconnected from %1").arg(m_network->name()));
         setState(State::Disconnected,
                  previous == State::Closing
                      ? Error()

@@ -103,7 +103,7 @@ void CanopenConnection::onIdentified(const std::optional<IdentityNumbers> &ident
     }
     qCInfo(lcCanopen).noquote() << m_descriptionNote;
     Q_EMIT logLine(m_descriptionNote);
-    Q_EMIT logLine(QStringLiteral("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
+    Q_EMIT logLine(Tr::tr("connected to node %1 on %2").arg(m_node).arg(m_network->name()));
     setState(State::Connected);
     watchHeartbeat();
 }

@@ -127,7 +127,7 @@ Reply *DriveSupervision::arm()
                        return nullptr;
                    },
                     {} };
-    return run(steps, QStringLiteral("setting up drive-side supervision"));
+    return run(steps, Tr::tr("setting up drive-side supervision"));
 }
 
 Reply *DriveSupervision::disarm()
@@ -156,7 +156,7 @@ Reply *DriveSupervision::disarm()
                     {} };
     if (hasAbortOption())
         steps << write(kAbortConnectionObject, m_previousAbort);
-    Reply *result = run(steps, QStringLiteral("restoring the drive's supervision settings"));
+    Reply *result = run(steps, Tr::tr("restoring the drive's supervision settings"));
     // Whatever happens to the writes, our side stops: the drive then reacts, which is safe.
     connect(result, &Reply::finished, this, [this, result] {
         stopOurSide();

@@ -4,11 +4,19 @@
 #include "nmtmaster.h"
 #include "sdocodec.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 
 namespace db::canopen {
 
 namespace {
+
+// The monitor's texts are for people: their words are translated, CANopen's own terms (NMT,
+// SDO, TPDO1, blksize, crc) and the numbers stay as they are.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen::FrameDecoder)
+};
 
 QString hex2(int value)
 {
@@ -20,7 +28,7 @@ QString hex2(int value)
 
 QString nodeText(NodeId node)
 {
-    return node == 0 ? QStringLiteral("all nodes") : QStringLiteral("node %1").arg(node);
+    return node == 0 ? Tr::tr("all nodes") : Tr::tr("node %1").arg(node);
 }
 
 // NMT command specifiers (CiA 301 7.2.8.3.1) as short verbs: "NMT start node 50".
@@ -28,17 +36,17 @@ QString nmtVerb(quint8 command)
 {
     switch (NmtCommand(command)) {
     case NmtCommand::Start:
-        return QStringLiteral("start");
+        return Tr::tr("start");
     case NmtCommand::Stop:
-        return QStringLiteral("stop");
+        return Tr::tr("stop");
     case NmtCommand::EnterPreOperational:
-        return QStringLiteral("pre-operational");
+        return Tr::tr("pre-operational");
     case NmtCommand::ResetNode:
-        return QStringLiteral("reset");
+        return Tr::tr("reset");
     case NmtCommand::ResetCommunication:
-        return QStringLiteral("reset communication");
+        return Tr::tr("reset communication");
     }
-    return QStringLiteral("command %1").arg(hex2(command));
+    return Tr::tr("command %1").arg(hex2(command));
 }
 
 // LSS command specifiers (CiA 305 4.x), byte 0 of 7E5h/7E4h.
@@ -46,47 +54,47 @@ QString lssCommand(quint8 cs)
 {
     switch (cs) {
     case 0x04:
-        return QStringLiteral("switch state global");
+        return Tr::tr("switch state global");
     case 0x11:
-        return QStringLiteral("configure node-id");
+        return Tr::tr("configure node-id");
     case 0x13:
-        return QStringLiteral("configure bit timing");
+        return Tr::tr("configure bit timing");
     case 0x15:
-        return QStringLiteral("activate bit timing");
+        return Tr::tr("activate bit timing");
     case 0x17:
-        return QStringLiteral("store configuration");
+        return Tr::tr("store configuration");
     case 0x40:
     case 0x41:
     case 0x42:
     case 0x43:
-        return QStringLiteral("switch state selective");
+        return Tr::tr("switch state selective");
     case 0x44:
-        return QStringLiteral("switch state selective response");
+        return Tr::tr("switch state selective response");
     case 0x4F:
-        return QStringLiteral("identify non-configured");
+        return Tr::tr("identify non-configured");
     case 0x50:
-        return QStringLiteral("identify slave");
+        return Tr::tr("identify slave");
     case 0x51:
-        return QStringLiteral("fastscan");
+        return Tr::tr("fastscan");
     case 0x5A:
-        return QStringLiteral("inquire vendor-id");
+        return Tr::tr("inquire vendor-id");
     case 0x5B:
-        return QStringLiteral("inquire product code");
+        return Tr::tr("inquire product code");
     case 0x5C:
-        return QStringLiteral("inquire revision");
+        return Tr::tr("inquire revision");
     case 0x5D:
-        return QStringLiteral("inquire serial number");
+        return Tr::tr("inquire serial number");
     case 0x5E:
-        return QStringLiteral("inquire node-id");
+        return Tr::tr("inquire node-id");
     }
-    return QStringLiteral("command %1").arg(hex2(cs));
+    return Tr::tr("command %1").arg(hex2(cs));
 }
 
 // TIME_OF_DAY (CiA 301 7.1.6.5): 28 bits ms after midnight, 16 bits days since 1984-01-01.
 QString timeOfDay(const QByteArray &data)
 {
     if (data.size() < 6)
-        return QStringLiteral("TIME (%1 bytes)").arg(data.size());
+        return Tr::tr("TIME (%1 bytes)").arg(data.size());
     const quint32 ms = sdocodec::u32(data, 0) & 0x0FFFFFFF;
     const int days = sdocodec::byteAt(data, 4) | (sdocodec::byteAt(data, 5) << 8);
     const QDateTime t(QDate(1984, 1, 1).addDays(days), QTime(0, 0).addMSecs(int(ms)), Qt::UTC);
@@ -98,16 +106,28 @@ QString timeOfDay(const QByteArray &data)
 QString errorMainClass(quint16 code)
 {
     if ((code & 0xFF00) == 0xFF00)
-        return QStringLiteral("device specific");
+        return Tr::tr("device specific");
     if ((code & 0xFF00) == 0xF000)
-        return QStringLiteral("additional functions");
+        return Tr::tr("additional functions");
     static const char *const classes[16] = {
-        "error reset", "generic",         "current",         "voltage",
-        "temperature", "device hardware", "device software", "additional modules",
-        "monitoring",  "external error",  "class A",         "class B",
-        "class C",     "class D",         "class E",         "class F",
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "error reset"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "generic"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "current"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "voltage"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "temperature"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "device hardware"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "device software"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "additional modules"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "monitoring"),
+        QT_TRANSLATE_NOOP("db::canopen::FrameDecoder", "external error"),
+        "class A",
+        "class B",
+        "class C",
+        "class D",
+        "class E",
+        "class F",
     };
-    return QString::fromLatin1(classes[code >> 12]);
+    return Tr::tr(classes[code >> 12]);
 }
 
 } // namespace
@@ -174,11 +194,11 @@ DecodedFrame FrameDecoder::decode(const QCanBusFrame &frame)
     DecodedFrame out;
     const QByteArray data = frame.payload();
     if (frame.frameType() == QCanBusFrame::ErrorFrame) {
-        out.text = QStringLiteral("error frame");
+        out.text = Tr::tr("error frame");
         return out;
     }
     if (frame.hasExtendedFrameFormat()) {
-        out.text = QStringLiteral("extended frame (not CANopen)");
+        out.text = Tr::tr("extended frame (not CANopen)");
         return out;
     }
     const bool remote = frame.frameType() == QCanBusFrame::RemoteRequestFrame;
@@ -191,7 +211,7 @@ DecodedFrame FrameDecoder::decode(const QCanBusFrame &frame)
     } else if (id == cob::Sync) {
         out.service = Service::Sync;
         out.text = data.isEmpty() ? QStringLiteral("SYNC")
-                                  : QStringLiteral("SYNC counter %1").arg(quint8(data.at(0)));
+                                  : Tr::tr("SYNC counter %1").arg(quint8(data.at(0)));
     } else if (function == cob::EmcyBase && node != 0) {
         out.service = Service::Emcy;
         out.node = node;
@@ -206,7 +226,7 @@ DecodedFrame FrameDecoder::decode(const QCanBusFrame &frame)
         out.pdoNumber = step / 2 + 1;
         out.node = node;
         if (remote)
-            out.text = QStringLiteral("%1 node %2: remote request")
+            out.text = Tr::tr("%1 node %2: remote request")
                            .arg(serviceName(out.service, out.pdoNumber))
                            .arg(node);
         else
@@ -218,25 +238,23 @@ DecodedFrame FrameDecoder::decode(const QCanBusFrame &frame)
         out.node = node;
         out.service = Service::Heartbeat;
         if (remote) {
-            out.text = QStringLiteral("Node guarding request node %1").arg(node);
+            out.text = Tr::tr("Node guarding request node %1").arg(node);
         } else if (data.isEmpty()) {
-            out.text = QStringLiteral("Heartbeat node %1: no data").arg(node);
+            out.text = Tr::tr("Heartbeat node %1: no data").arg(node);
         } else {
             const quint8 state = quint8(data.at(0)) & 0x7F; // bit 7: node guarding toggle
             if (state == quint8(NmtState::BootUp)) {
                 out.service = Service::BootUp;
-                out.text = QStringLiteral("Boot-up node %1").arg(node);
+                out.text = Tr::tr("Boot-up node %1").arg(node);
             } else {
                 const QString name = nmtStateName(NmtState(state));
-                out.text = QStringLiteral("Heartbeat node %1: %2").arg(node).arg(name);
+                out.text = Tr::tr("Heartbeat node %1: %2").arg(node).arg(name);
             }
         }
     } else if (id == cob::LssMaster || id == cob::LssSlave) {
         out.service = Service::Lss;
-        out.text =
-            QStringLiteral("LSS %1: %2")
-                .arg(id == cob::LssMaster ? QStringLiteral("master") : QStringLiteral("slave"))
-                .arg(data.isEmpty() ? QStringLiteral("no data") : lssCommand(quint8(data.at(0))));
+        out.text = (id == cob::LssMaster ? Tr::tr("LSS master: %1") : Tr::tr("LSS slave: %1"))
+                       .arg(data.isEmpty() ? Tr::tr("no data") : lssCommand(quint8(data.at(0))));
     }
     const qsizetype colon = out.text.indexOf(QLatin1String(": "));
     out.detail = colon > 0 ? out.text.mid(colon + 2) : out.text;
@@ -247,7 +265,7 @@ void FrameDecoder::decodeNmt(DecodedFrame &out, const QByteArray &data) const
 {
     out.service = Service::Nmt;
     if (data.size() < 2) {
-        out.text = QStringLiteral("NMT malformed (%1 bytes)").arg(data.size());
+        out.text = Tr::tr("NMT malformed (%1 bytes)").arg(data.size());
         return;
     }
     out.node = NodeId(quint8(data.at(1)));
@@ -259,24 +277,22 @@ void FrameDecoder::decodeEmcy(DecodedFrame &out, const QByteArray &data) const
     const ObjectDictionary *dict = dictionary(out.node);
     const auto decoded = emcy::decode(out.node, data, dict);
     if (!decoded) {
-        out.text =
-            QStringLiteral("EMCY node %1: malformed (%2 bytes)").arg(out.node).arg(data.size());
+        out.text = Tr::tr("EMCY node %1: malformed (%2 bytes)").arg(out.node).arg(data.size());
         return;
     }
     const Emergency &e = decoded.value();
     QString code = QStringLiteral("%1").arg(e.code, 4, 16, QLatin1Char('0')).toUpper();
     if (e.isReset()) {
-        code += QStringLiteral(" error reset");
+        code += QLatin1Char(' ') + Tr::tr("error reset");
     } else {
         const auto def = dict ? dict->errorCode(e.code) : std::nullopt;
         if (def && !def->name.isEmpty())
             code += QLatin1Char(' ') + def->name;
         code += QStringLiteral(" (%1)").arg(errorMainClass(e.code));
     }
-    out.text =
-        QStringLiteral("EMCY node %1: %2, reg %3").arg(out.node).arg(code, hex2(e.errorRegister));
+    out.text = Tr::tr("EMCY node %1: %2, reg %3").arg(out.node).arg(code, hex2(e.errorRegister));
     if (e.manufacturer.count('\0') != e.manufacturer.size())
-        out.text += QStringLiteral(", data %1").arg(hexBytes(e.manufacturer));
+        out.text += Tr::tr(", data %1").arg(hexBytes(e.manufacturer));
 }
 
 // PDO content from the mapping parameters in the node's dictionary (1600h/1A00h + n - 1, their
@@ -284,7 +300,7 @@ void FrameDecoder::decodeEmcy(DecodedFrame &out, const QByteArray &data) const
 void FrameDecoder::decodePdo(DecodedFrame &out, const QByteArray &data) const
 {
     const QString head =
-        QStringLiteral("%1 node %2").arg(serviceName(out.service, out.pdoNumber)).arg(out.node);
+        Tr::tr("%1 node %2").arg(serviceName(out.service, out.pdoNumber)).arg(out.node);
     QStringList parts;
     if (const ObjectDictionary *dict = dictionary(out.node)) {
         const quint16 mapping =
@@ -305,7 +321,7 @@ void FrameDecoder::decodePdo(DecodedFrame &out, const QByteArray &data) const
             bit += bits;
         }
     }
-    out.text = parts.isEmpty() ? QStringLiteral("%1: %2 bytes").arg(head).arg(data.size())
+    out.text = parts.isEmpty() ? Tr::tr("%1: %2 bytes").arg(head).arg(data.size())
                                : head + QStringLiteral(": ") + parts.join(QStringLiteral(", "));
 }
 
@@ -316,8 +332,8 @@ QString FrameDecoder::objectText(NodeId node, ObjectAddress address) const
     if (!def)
         return address.toString();
     const QString name = def->objectName.isEmpty() || def->objectName == def->name
-        ? def->name
-        : def->objectName + QStringLiteral(" / ") + def->name;
+        ? def->displayName()
+        : def->displayObjectName() + QStringLiteral(" / ") + def->displayName();
     return address.toString() + QLatin1Char(' ') + name;
 }
 

@@ -5,9 +5,16 @@
 #include "sdoabort.h"
 #include "sdocodec.h"
 
+#include <QCoreApplication>
+
 namespace db::canopen {
 
 namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::canopen::FrameDecoder)
+};
 
 QString segmentText(const QByteArray &bytes)
 {
@@ -27,9 +34,9 @@ QString toggleText(const QByteArray &data)
 void FrameDecoder::decodeSdo(DecodedFrame &out, const QByteArray &data, bool request)
 {
     out.service = request ? Service::SdoRequest : Service::SdoResponse;
-    const QString head = QStringLiteral("%1 node %2: ").arg(serviceName(out.service)).arg(out.node);
+    const QString head = Tr::tr("%1 node %2: ").arg(serviceName(out.service)).arg(out.node);
     if (data.isEmpty()) {
-        out.text = head + QStringLiteral("empty frame");
+        out.text = head + Tr::tr("empty frame");
         return;
     }
     // Block segments carry c | seqno in byte 0 instead of a command specifier.
@@ -45,9 +52,9 @@ void FrameDecoder::decodeSdo(DecodedFrame &out, const QByteArray &data, bool req
             it->lastSegment = true;
         }
         out.text = head
-            + QStringLiteral("block segment %1%2 %3: %4")
+            + Tr::tr("block segment %1%2 %3: %4")
                   .arg(sdocodec::segmentSequence(data))
-                  .arg(last ? QStringLiteral(" last") : QString())
+                  .arg(last ? Tr::tr(" last") : QString())
                   .arg(objectText(out.node, it->address), hexBytes(data.mid(1)));
         return;
     }
@@ -56,7 +63,7 @@ void FrameDecoder::decodeSdo(DecodedFrame &out, const QByteArray &data, bool req
         out.address = sdocodec::address(data);
         const quint32 code = sdocodec::abortCode(data);
         out.text = head
-            + QStringLiteral("abort %1: 0x%2 %3")
+            + Tr::tr("abort %1: 0x%2 %3")
                   .arg(objectText(out.node, out.address))
                   .arg(code, 8, 16, QLatin1Char('0'))
                   .arg(abortText(code));
@@ -92,53 +99,52 @@ void FrameDecoder::decodeSdoRequest(DecodedFrame &out, const QByteArray &data)
         const bool sized = b0 & 0x01;
         if (expedited) {
             const int n = sized ? 4 - ((b0 >> 2) & 0x03) : 4;
-            out.text += QStringLiteral("download %1 ← %2")
+            out.text += Tr::tr("download %1 ← %2")
                             .arg(objectText(out.node, address),
                                  valueText(out.node, address, data.mid(4, n)));
         } else {
-            out.text += QStringLiteral("download %1, %2 bytes")
-                            .arg(objectText(out.node, address))
-                            .arg(sized ? QString::number(sdocodec::u32(data, 4))
-                                       : QStringLiteral("unknown"));
+            out.text +=
+                Tr::tr("download %1, %2 bytes")
+                    .arg(objectText(out.node, address))
+                    .arg(sized ? QString::number(sdocodec::u32(data, 4)) : Tr::tr("unknown"));
         }
         break;
     }
     case sdo::CcsDownloadSegment: {
         const int n = 7 - ((b0 >> 1) & 0x07);
-        out.text +=
-            QStringLiteral("download segment %1 %2%3: %4")
-                .arg(known(), toggleText(data), (b0 & 0x01) ? QStringLiteral(" last") : QString(),
-                     segmentText(data.mid(1, n)));
+        out.text += Tr::tr("download segment %1 %2%3: %4")
+                        .arg(known(), toggleText(data), (b0 & 0x01) ? Tr::tr(" last") : QString(),
+                             segmentText(data.mid(1, n)));
         break;
     }
     case sdo::CcsInitiateUpload:
         initiate(true, false);
-        out.text += QStringLiteral("upload %1").arg(objectText(out.node, address));
+        out.text += Tr::tr("upload %1").arg(objectText(out.node, address));
         break;
     case sdo::CcsUploadSegment:
-        out.text += QStringLiteral("upload segment request %1 %2").arg(known(), toggleText(data));
+        out.text += Tr::tr("upload segment request %1 %2").arg(known(), toggleText(data));
         break;
     case sdo::CcsBlockUpload:
         switch (b0 & 0x03) {
         case 0:
             initiate(true, true);
-            out.text += QStringLiteral("block upload %1, blksize %2")
+            out.text += Tr::tr("block upload %1, blksize %2")
                             .arg(objectText(out.node, address))
                             .arg(sdocodec::byteAt(data, 4));
             break;
         case 3:
             t.blockData = true;
-            out.text += QStringLiteral("block upload start %1").arg(known());
+            out.text += Tr::tr("block upload start %1").arg(known());
             break;
         case 2:
             t.blockData = t.block && !t.lastSegment;
-            out.text += QStringLiteral("block upload ack %1: seq %2, blksize %3")
+            out.text += Tr::tr("block upload ack %1: seq %2, blksize %3")
                             .arg(known())
                             .arg(sdocodec::byteAt(data, 1))
                             .arg(sdocodec::byteAt(data, 2));
             break;
         default:
-            out.text += QStringLiteral("block upload end %1 ok").arg(known());
+            out.text += Tr::tr("block upload end %1 ok").arg(known());
             m_transfers.remove(out.node);
             break;
         }
@@ -146,18 +152,18 @@ void FrameDecoder::decodeSdoRequest(DecodedFrame &out, const QByteArray &data)
     case sdo::CcsBlockDownload:
         if ((b0 & 0x01) == 0) {
             initiate(false, true);
-            out.text += QStringLiteral("block download %1, %2 bytes")
+            out.text += Tr::tr("block download %1, %2 bytes")
                             .arg(objectText(out.node, address))
                             .arg(sdocodec::u32(data, 4));
         } else {
-            out.text += QStringLiteral("block download end %1, %2 unused, crc 0x%3")
+            out.text += Tr::tr("block download end %1, %2 unused, crc 0x%3")
                             .arg(known())
                             .arg(sdocodec::endUnused(data))
                             .arg(sdocodec::endCrc(data), 4, 16, QLatin1Char('0'));
         }
         break;
     default:
-        out.text += QStringLiteral("unknown command 0x%1").arg(b0, 2, 16, QLatin1Char('0'));
+        out.text += Tr::tr("unknown command 0x%1").arg(b0, 2, 16, QLatin1Char('0'));
         break;
     }
 }
@@ -180,28 +186,27 @@ void FrameDecoder::decodeSdoResponse(DecodedFrame &out, const QByteArray &data)
     };
     switch (sdocodec::specifier(data)) {
     case sdo::ScsInitiateDownload:
-        out.text += QStringLiteral("download %1 ok").arg(echoed());
+        out.text += Tr::tr("download %1 ok").arg(echoed());
         break;
     case sdo::ScsDownloadSegment:
-        out.text += QStringLiteral("download segment %1 %2 ok").arg(known(), toggleText(data));
+        out.text += Tr::tr("download segment %1 %2 ok").arg(known(), toggleText(data));
         break;
     case sdo::ScsInitiateUpload: {
         const auto r = sdocodec::parseInitiateUpload(data);
         if (r.expedited)
-            out.text += QStringLiteral("upload %1 → %2")
-                            .arg(echoed(), valueText(out.node, address, r.data));
+            out.text +=
+                Tr::tr("upload %1 → %2").arg(echoed(), valueText(out.node, address, r.data));
         else
             out.text +=
-                QStringLiteral("upload %1, %2 bytes")
-                    .arg(echoed(),
-                         r.sizeIndicated ? QString::number(r.size) : QStringLiteral("unknown"));
+                Tr::tr("upload %1, %2 bytes")
+                    .arg(echoed(), r.sizeIndicated ? QString::number(r.size) : Tr::tr("unknown"));
         break;
     }
     case sdo::ScsUploadSegment: {
         const auto s = sdocodec::parseUploadSegment(data);
-        out.text += QStringLiteral("upload segment %1 %2%3: %4")
-                        .arg(known(), toggleText(data),
-                             s.last ? QStringLiteral(" last") : QString(), segmentText(s.data));
+        out.text += Tr::tr("upload segment %1 %2%3: %4")
+                        .arg(known(), toggleText(data), s.last ? Tr::tr(" last") : QString(),
+                             segmentText(s.data));
         break;
     }
     case sdo::ScsBlockDownload:
@@ -210,19 +215,19 @@ void FrameDecoder::decodeSdoResponse(DecodedFrame &out, const QByteArray &data)
             t.block = true;
             t.upload = false;
             t.blockData = true;
-            out.text += QStringLiteral("block download %1 ok, blksize %2")
+            out.text += Tr::tr("block download %1 ok, blksize %2")
                             .arg(echoed())
                             .arg(sdocodec::byteAt(data, 4));
             break;
         case 2:
             t.blockData = t.block && !t.upload && !t.lastSegment;
-            out.text += QStringLiteral("block download ack %1: seq %2, blksize %3")
+            out.text += Tr::tr("block download ack %1: seq %2, blksize %3")
                             .arg(known())
                             .arg(sdocodec::byteAt(data, 1))
                             .arg(sdocodec::byteAt(data, 2));
             break;
         default:
-            out.text += QStringLiteral("block download end %1 ok").arg(known());
+            out.text += Tr::tr("block download end %1 ok").arg(known());
             m_transfers.remove(out.node);
             break;
         }
@@ -231,19 +236,18 @@ void FrameDecoder::decodeSdoResponse(DecodedFrame &out, const QByteArray &data)
         if (sdocodec::serverSubcommand(data) == 0) {
             t.block = true;
             t.upload = true;
-            out.text += QStringLiteral("block upload %1, %2 bytes")
-                            .arg(echoed())
-                            .arg(sdocodec::u32(data, 4));
+            out.text +=
+                Tr::tr("block upload %1, %2 bytes").arg(echoed()).arg(sdocodec::u32(data, 4));
         } else {
             t.blockData = false;
-            out.text += QStringLiteral("block upload end %1, %2 unused, crc 0x%3")
+            out.text += Tr::tr("block upload end %1, %2 unused, crc 0x%3")
                             .arg(known())
                             .arg(sdocodec::endUnused(data))
                             .arg(sdocodec::endCrc(data), 4, 16, QLatin1Char('0'));
         }
         break;
     default:
-        out.text += QStringLiteral("unknown command 0x%1").arg(b0, 2, 16, QLatin1Char('0'));
+        out.text += Tr::tr("unknown command 0x%1").arg(b0, 2, 16, QLatin1Char('0'));
         break;
     }
 }

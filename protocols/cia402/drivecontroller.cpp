@@ -92,7 +92,7 @@ Reply *DriveController::run(Sequence *sequence)
 Reply *DriveController::goTo(State target, const QString &name)
 {
     auto *seq = new Sequence(m_connection, name, this);
-    seq->waitFor(QStringLiteral("reading the state"),
+    seq->waitFor(Tr::tr("reading the state"),
                  [](quint16, QString &) { return WaitVerdict::Reached; });
     seq->call([target](Sequence *s) {
         const State from = decodeState(s->lastStatusword());
@@ -123,23 +123,23 @@ Reply *DriveController::shutdown()
 
 Reply *DriveController::switchOn()
 {
-    return goTo(State::SwitchedOn, QStringLiteral("switch on"));
+    return goTo(State::SwitchedOn, Tr::tr("switch on"));
 }
 
 Reply *DriveController::enableOperation()
 {
-    return goTo(State::OperationEnabled, QStringLiteral("enable operation"));
+    return goTo(State::OperationEnabled, Tr::tr("enable operation"));
 }
 
 Reply *DriveController::disableVoltage()
 {
-    return goTo(State::SwitchOnDisabled, QStringLiteral("disable voltage"));
+    return goTo(State::SwitchOnDisabled, Tr::tr("disable voltage"));
 }
 
 Reply *DriveController::faultReset()
 {
-    auto *seq = new Sequence(m_connection, QStringLiteral("fault reset"), this);
-    seq->waitFor(QStringLiteral("reading the state"),
+    auto *seq = new Sequence(m_connection, Tr::tr("fault reset"), this);
+    seq->waitFor(Tr::tr("reading the state"),
                  [](quint16, QString &) { return WaitVerdict::Reached; });
     seq->call([](Sequence *s) {
         const State from = decodeState(s->lastStatusword());
@@ -157,11 +157,11 @@ Reply *DriveController::faultReset()
 
 Reply *DriveController::quickStop()
 {
-    auto *seq = new Sequence(m_connection, QStringLiteral("quick stop"), this);
+    auto *seq = new Sequence(m_connection, Tr::tr("quick stop"), this);
     // Written at once, without reading first: a stop must not wait for a round trip.
     seq->controlword(cw::QuickStopCmd | cw::SwitchOn | cw::EnableOperation);
     seq->waitFor(
-        QStringLiteral("quick stop active or switch on disabled"),
+        Tr::tr("quick stop active or switch on disabled"),
         [](quint16 word, QString &) {
             const State s = decodeState(word);
             return s == State::OperationEnabled ? WaitVerdict::Pending : WaitVerdict::Reached;

@@ -59,7 +59,7 @@ Sequence *selectMode(Sequence *s, Mode mode)
 
 Sequence *profilePosition(DeviceConnection *c, const PositionSetPoint &sp, QObject *parent)
 {
-    auto *s = new Sequence(c, QStringLiteral("profile position"), parent);
+    auto *s = new Sequence(c, Tr::tr("profile position"), parent);
     selectMode(s, Mode::ProfilePosition);
     s->write(obj::ProfileVelocity, i64(sp.velocity));
     s->write(obj::ProfileAcceleration, i64(sp.acceleration));
@@ -81,13 +81,13 @@ Sequence *profilePosition(DeviceConnection *c, const PositionSetPoint &sp, QObje
 Sequence *profileVelocity(DeviceConnection *c, qint64 velocity, quint32 acceleration,
                           quint32 deceleration, QObject *parent)
 {
-    auto *s = new Sequence(c, QStringLiteral("profile velocity"), parent);
+    auto *s = new Sequence(c, Tr::tr("profile velocity"), parent);
     selectMode(s, Mode::ProfileVelocity);
     s->write(obj::ProfileAcceleration, i64(acceleration));
     s->write(obj::ProfileDeceleration, i64(deceleration));
     s->write(obj::TargetVelocity, i64(velocity));
     s->controlword(cw::EnableOperationCmd);
-    s->waitFor(QStringLiteral("operation enabled"), bitsSet(sw::OperationEnabled));
+    s->waitFor(Tr::tr("operation enabled"), bitsSet(sw::OperationEnabled));
     return s;
 }
 
@@ -104,7 +104,7 @@ Sequence *homing(DeviceConnection *c, const HomingSetPoint &sp, QObject *parent)
     s->controlword(cw::EnableOperationCmd);
     s->controlword(cw::EnableOperationCmd | cw::NewSetPoint);
     s->waitFor(
-        QStringLiteral("homing attained (6041h bits 12 and 10)"),
+        Tr::tr("homing attained (6041h bits 12 and 10)"),
         [](quint16 word, QString &why) {
             if (word & (sw::FollowingError | sw::Fault)) {
                 why = Tr::tr("homing error");
@@ -120,7 +120,7 @@ Sequence *homing(DeviceConnection *c, const HomingSetPoint &sp, QObject *parent)
 
 Sequence *profileTorque(DeviceConnection *c, qint16 torque, quint32 slope, QObject *parent)
 {
-    auto *s = new Sequence(c, QStringLiteral("profile torque"), parent);
+    auto *s = new Sequence(c, Tr::tr("profile torque"), parent);
     selectMode(s, Mode::ProfileTorque);
     s->write(obj::TorqueSlope, i64(slope));
     s->write(obj::TargetTorque, i64(torque));

@@ -1,8 +1,29 @@
 #include "objectdef.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 
 namespace db {
+
+QString textLanguage()
+{
+    // Each translation says which language it is, the way Qt's own translations say their layout
+    // direction (QT_LAYOUT_DIRECTION): no state to keep in step with the installed translators.
+    const QString code = QCoreApplication::translate(
+        "db::TextLanguage", "en",
+        "The code of this translation's language (de, fr, ...): device descriptions show the "
+        "names they have in it.");
+    return code.isEmpty() ? QStringLiteral("en") : code;
+}
+
+QString localText(const QString &english, const LocalTexts &local)
+{
+    if (local.isEmpty())
+        return english;
+    const QString text = local.value(textLanguage());
+    return text.isEmpty() ? english : text;
+}
 
 QString access::name(Access access)
 {

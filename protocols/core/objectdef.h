@@ -13,6 +13,17 @@ namespace db {
 
 enum class Access { ReadOnly, WriteOnly, ReadWrite, Const };
 
+// Texts of a device in further languages than English, by language code ("de" -> "Statuswort"):
+// the terms of the device's own manuals. The English text stays the one that files, exports and
+// scripts use; these are what people read.
+using LocalTexts = QMap<QString, QString>;
+
+// The language device texts are shown in: the one the installed translation speaks ("de"), "en"
+// without a translation. Follows a language change at once.
+QString textLanguage();
+// `local`'s text for textLanguage(), else `english`.
+QString localText(const QString &english, const LocalTexts &local);
+
 namespace access {
 QString name(Access access); // "ro", "wo", "rw", "const"
 std::optional<Access> fromName(const QString &text);
@@ -52,6 +63,12 @@ struct ObjectDef
     bool pdoMappable = false;
     bool traceable = false; // worth offering as a scope channel
     QString description;
+    LocalTexts localNames = {}; // name in further languages
+    LocalTexts localObjectNames = {}; // objectName in further languages
+
+    // name and objectName in the language the program speaks (see textLanguage()).
+    QString displayName() const { return localText(name, localNames); }
+    QString displayObjectName() const { return localText(objectName, localObjectNames); }
 
     bool readable() const { return access != Access::WriteOnly; }
     bool writable() const { return access == Access::ReadWrite || access == Access::WriteOnly; }

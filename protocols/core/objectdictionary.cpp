@@ -1,5 +1,7 @@
 #include "objectdictionary.h"
 
+#include <QCoreApplication>
+
 namespace db {
 
 void ObjectDictionary::insert(const ObjectDef &def)
@@ -33,58 +35,59 @@ std::optional<ErrorCodeDef> ObjectDictionary::errorCode(quint32 code) const
 QString ObjectDictionary::errorText(quint32 code) const
 {
     if (const auto def = errorCode(code))
-        return def->text.isEmpty() ? def->name : def->text;
+        return def->text.isEmpty() ? def->name : localText(def->text, def->localTexts);
     return cia301ErrorClassText(quint16(code));
 }
 
 QString cia301ErrorClassText(quint16 code)
 {
     if (code == 0x0000)
-        return QStringLiteral("no error / error reset");
+        return QCoreApplication::translate("db::Cia301", "no error / error reset");
     const struct
     {
         quint16 mask;
         quint16 value;
         const char *text;
     } classes[] = {
-        { 0xFF00, 0x1000, "generic error" },
-        { 0xFF00, 0x2100, "current, device input side" },
-        { 0xFF00, 0x2200, "current inside the device" },
-        { 0xFF00, 0x2300, "current, device output side" },
-        { 0xF000, 0x2000, "current" },
-        { 0xFF00, 0x3100, "mains voltage" },
-        { 0xFF00, 0x3200, "voltage inside the device" },
-        { 0xFF00, 0x3300, "output voltage" },
-        { 0xF000, 0x3000, "voltage" },
-        { 0xFF00, 0x4100, "ambient temperature" },
-        { 0xFF00, 0x4200, "device temperature" },
-        { 0xF000, 0x4000, "temperature" },
-        { 0xFF00, 0x5000, "device hardware" },
-        { 0xFF00, 0x6100, "internal software" },
-        { 0xFF00, 0x6200, "user software" },
-        { 0xFF00, 0x6300, "data set" },
-        { 0xF000, 0x6000, "device software" },
-        { 0xFF00, 0x7000, "additional modules" },
-        { 0xF000, 0x7000, "additional modules" },
-        { 0xFF00, 0x8100, "communication" },
-        { 0xFFFF, 0x8110, "CAN overrun (objects lost)" },
-        { 0xFFFF, 0x8120, "CAN in error passive mode" },
-        { 0xFFFF, 0x8130, "life guard or heartbeat error" },
-        { 0xFFFF, 0x8140, "recovered from bus off" },
-        { 0xFF00, 0x8200, "protocol error" },
-        { 0xF000, 0x8000, "monitoring" },
-        { 0xFF00, 0x9000, "external error" },
-        { 0xFF00, 0xF000, "additional functions" },
-        { 0xFF00, 0xFF00, "device specific" },
+        { 0xFF00, 0x1000, QT_TRANSLATE_NOOP("db::Cia301", "generic error") },
+        { 0xFF00, 0x2100, QT_TRANSLATE_NOOP("db::Cia301", "current, device input side") },
+        { 0xFF00, 0x2200, QT_TRANSLATE_NOOP("db::Cia301", "current inside the device") },
+        { 0xFF00, 0x2300, QT_TRANSLATE_NOOP("db::Cia301", "current, device output side") },
+        { 0xF000, 0x2000, QT_TRANSLATE_NOOP("db::Cia301", "current") },
+        { 0xFF00, 0x3100, QT_TRANSLATE_NOOP("db::Cia301", "mains voltage") },
+        { 0xFF00, 0x3200, QT_TRANSLATE_NOOP("db::Cia301", "voltage inside the device") },
+        { 0xFF00, 0x3300, QT_TRANSLATE_NOOP("db::Cia301", "output voltage") },
+        { 0xF000, 0x3000, QT_TRANSLATE_NOOP("db::Cia301", "voltage") },
+        { 0xFF00, 0x4100, QT_TRANSLATE_NOOP("db::Cia301", "ambient temperature") },
+        { 0xFF00, 0x4200, QT_TRANSLATE_NOOP("db::Cia301", "device temperature") },
+        { 0xF000, 0x4000, QT_TRANSLATE_NOOP("db::Cia301", "temperature") },
+        { 0xFF00, 0x5000, QT_TRANSLATE_NOOP("db::Cia301", "device hardware") },
+        { 0xFF00, 0x6100, QT_TRANSLATE_NOOP("db::Cia301", "internal software") },
+        { 0xFF00, 0x6200, QT_TRANSLATE_NOOP("db::Cia301", "user software") },
+        { 0xFF00, 0x6300, QT_TRANSLATE_NOOP("db::Cia301", "data set") },
+        { 0xF000, 0x6000, QT_TRANSLATE_NOOP("db::Cia301", "device software") },
+        { 0xFF00, 0x7000, QT_TRANSLATE_NOOP("db::Cia301", "additional modules") },
+        { 0xF000, 0x7000, QT_TRANSLATE_NOOP("db::Cia301", "additional modules") },
+        { 0xFF00, 0x8100, QT_TRANSLATE_NOOP("db::Cia301", "communication") },
+        { 0xFFFF, 0x8110, QT_TRANSLATE_NOOP("db::Cia301", "CAN overrun (objects lost)") },
+        { 0xFFFF, 0x8120, QT_TRANSLATE_NOOP("db::Cia301", "CAN in error passive mode") },
+        { 0xFFFF, 0x8130, QT_TRANSLATE_NOOP("db::Cia301", "life guard or heartbeat error") },
+        { 0xFFFF, 0x8140, QT_TRANSLATE_NOOP("db::Cia301", "recovered from bus off") },
+        { 0xFF00, 0x8200, QT_TRANSLATE_NOOP("db::Cia301", "protocol error") },
+        { 0xF000, 0x8000, QT_TRANSLATE_NOOP("db::Cia301", "monitoring") },
+        { 0xFF00, 0x9000, QT_TRANSLATE_NOOP("db::Cia301", "external error") },
+        { 0xFF00, 0xF000, QT_TRANSLATE_NOOP("db::Cia301", "additional functions") },
+        { 0xFF00, 0xFF00, QT_TRANSLATE_NOOP("db::Cia301", "device specific") },
     };
     // most specific mask first
     for (quint16 mask : { quint16(0xFFFF), quint16(0xFF00), quint16(0xF000) }) {
         for (const auto &c : classes) {
             if (c.mask == mask && (code & c.mask) == c.value)
-                return QString::fromLatin1(c.text);
+                return QCoreApplication::translate("db::Cia301", c.text);
         }
     }
-    return QStringLiteral("unknown error 0x%1").arg(code, 4, 16, QLatin1Char('0'));
+    return QCoreApplication::translate("db::Cia301", "unknown error 0x%1")
+        .arg(code, 4, 16, QLatin1Char('0'));
 }
 
 } // namespace db

@@ -26,6 +26,7 @@ struct ErrorCodeDef
     quint32 code = 0;
     QString name;
     QString text;
+    LocalTexts localTexts = {}; // text in further languages
 };
 
 // The objects of one device type, sorted by address. Value type; cheap to copy (implicitly
@@ -53,7 +54,8 @@ public:
 
     void insertErrorCode(const ErrorCodeDef &def) { m_errors.insert(def.code, def); }
     std::optional<ErrorCodeDef> errorCode(quint32 code) const;
-    // The device's own text for a code, else the CiA 301 error class ("voltage", ...).
+    // The device's own text for a code (in the language the program speaks where the description
+    // has it), else the CiA 301 error class ("voltage", ...).
     QString errorText(quint32 code) const;
 
 private:

@@ -6,12 +6,16 @@
 //                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "decimals",
 //                    "default", "min", "max", "enum": { "1": "Profile Position" },
 //                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on" } ],
-//                    "storable", "pdo", "trace", "description" } ],
-//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current" } ],
+//                    "storable", "pdo", "trace", "description",
+//                    "name_de": "Statuswort", "object_de": ... } ],
+//     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current",
+//                   "text_de": "Überstrom" } ],
 //     "addresses": "canopen" }
 // "addresses" says how people write the objects' addresses: "canopen" (hex INDEX:SUB, the
 // default) or "parameter" (decimal NUMBER:DATASET, index = parameter number, sub = data set).
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
+// "name", "object" and an error's "text" are English; "name_LANG", "object_LANG" and "text_LANG"
+// give them in further languages (LANG: a language code such as "de").
 #include "descriptionfile.h"
 #include "core/filereader.h"
 
@@ -23,6 +27,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -51,6 +56,31 @@ bool toUInt(const QJsonValue &v, quint32 *out)
     *out = s.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? s.mid(2).toUInt(&ok, 16)
                                                                   : s.toUInt(&ok, 10);
     return ok;
+}
+
+// The "KEY_LANG" members of o: LANG -> text. Errors name the member when its value is not a
+// non-empty string or LANG is not a language code.
+Result<LocalTexts> localTexts(const QJsonObject &o, QLatin1String key)
+{
+    LocalTexts texts;
+    const QString prefix = key + QLatin1Char('_');
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        if (!it.key().startsWith(prefix))
+            continue;
+        const QString language = it.key().mid(prefix.size());
+        const bool code = language.size() >= 2 && language.size() <= 3
+            && std::all_of(language.begin(), language.end(),
+                           [](QChar c) { return c >= u'a' && c <= u'z'; });
+        if (!code)
+            return Error(Error::Kind::Malformed,
+                         Tr::tr("\"%1\": \"%2\" is not a language code such as \"de\"")
+                             .arg(it.key(), language));
+        if (!it.value().isString() || it.value().toString().trimmed().isEmpty())
+            return Error(Error::Kind::Malformed,
+                         Tr::tr("\"%1\" must be a non-empty text").arg(it.key()));
+        texts.insert(language, it.value().toString());
+    }
+    return texts;
 }
 
 Result<QVariant> rawValue(DataType type, const QJsonValue &v)
@@ -131,6 +161,14 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         def.address = ObjectAddress(quint16(index), quint8(sub));
         def.name = o.value(QLatin1String("name")).toString();
         def.objectName = o.value(QLatin1String("object")).toString();
+        const auto names = localTexts(o, QLatin1String("name"));
+        if (!names)
+            return fail(names.error().message());
+        def.localNames = *names;
+        const auto objectNames = localTexts(o, QLatin1String("object"));
+        if (!objectNames)
+            return fail(objectNames.error().message());
+        def.localObjectNames = *objectNames;
         const auto type = datatype::fromName(o.value(QLatin1String("type")).toString());
         if (!type)
             return fail(Tr::tr("unknown type '%1'").arg(o.value(QLatin1String("type")).toString()));
@@ -174,12 +212,19 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         def.description = o.value(QLatin1String("description")).toString();
         dict.insert(def);
     }
-    for (const QJsonValue &e : root.value(QLatin1String("errors")).toArray()) {
-        const QJsonObject eo = e.toObject();
+    const QJsonArray errors = root.value(QLatin1String("errors")).toArray();
+    for (qsizetype i = 0; i < errors.size(); ++i) {
+        const QJsonObject eo = errors.at(i).toObject();
         ErrorCodeDef def;
         toUInt(eo.value(QLatin1String("code")), &def.code);
         def.name = eo.value(QLatin1String("name")).toString();
         def.text = eo.value(QLatin1String("text")).toString();
+        const auto texts = localTexts(eo, QLatin1String("text"));
+        if (!texts)
+            return Error(
+                Error::Kind::Malformed,
+                Tr::tr("%1: error #%2: %3").arg(origin).arg(i + 1).arg(texts.error().message()));
+        def.localTexts = *texts;
         dict.insertErrorCode(def);
     }
     return dict;

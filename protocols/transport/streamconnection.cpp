@@ -66,18 +66,18 @@ void StreamConnection::stopReconnecting()
 
 QString StreamConnection::reconnectingLine() const
 {
-    return QStringLiteral("reconnecting to %1").arg(m_stream->peerName());
+    return Tr::tr("reconnecting to %1").arg(m_stream->peerName());
 }
 
 QString StreamConnection::connectedLine() const
 {
-    return QStringLiteral("connected to %1").arg(m_stream->peerName());
+    return Tr::tr("connected to %1").arg(m_stream->peerName());
 }
 
 void StreamConnection::doOpen()
 {
     m_reconnectTimer.stop();
-    Q_EMIT logLine(QStringLiteral("connecting to %1").arg(m_stream->peerName()));
+    Q_EMIT logLine(Tr::tr("connecting to %1").arg(m_stream->peerName()));
     m_stream->setConnectTimeoutMs(connectTimeoutMs());
     if (m_stream->isOpen())
         onOpened();
@@ -108,7 +108,7 @@ void StreamConnection::onClosed(const Error &error)
     if (previous == State::Disconnected)
         return;
     if (previous == State::Closing) {
-        Q_EMIT logLine(QStringLiteral("disconnected from %1").arg(m_stream->peerName()));
+        Q_EMIT logLine(Tr::tr("disconnected from %1").arg(m_stream->peerName()));
         setState(State::Disconnected);
         return;
     }

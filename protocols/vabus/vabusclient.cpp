@@ -2,9 +2,16 @@
 
 #include "vabuslogging.h"
 
+#include <QCoreApplication>
+
 namespace db::vabus {
 
 namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::vabus)
+};
 
 Error invalid(const QString &message)
 {
@@ -85,10 +92,8 @@ Reply *VabusClient::writeData(quint16 parameter, quint8 dataSet, const QByteArra
                               ObjectAddress address)
 {
     if (dataSet > kMaxWriteDataSet)
-        return Reply::failed(
-            address, invalid(QStringLiteral("VABus writes data sets 0-9, not %1").arg(dataSet)));
-    if (data.isEmpty())
-        return Reply::failed(address, invalid(QStringLiteral("nothing to write")));
+        return Reply::failed(address,
+                             invalid(Tr::tr("VABus writes data sets 0-9, not %1").arg(dataSet)));
     return submit(Telegram::writeRequest(parameter, dataSet, data, m_sys), std::nullopt, address);
 }
 
@@ -118,13 +123,14 @@ Verdict VabusClient::Protocol::Matcher::operator()(const Answer &answer) const
                 .arg(t.write ? QStringLiteral("write") : QStringLiteral("read"), label(t)));
     if (t.error) {
         const quint16 code = t.errorCode();
-        return Verdict::mine(Error(
-            Error::Kind::DeviceError,
-            QStringLiteral("inverter refused %1 %2: VABus error %3, %4")
-                .arg(request.write ? QStringLiteral("write of") : QStringLiteral("read of"), what)
-                .arg(code)
-                .arg(errorText(code)),
-            code));
+        return Verdict::mine(
+            Error(Error::Kind::DeviceError,
+                  (request.write ? Tr::tr("inverter refused write of %1: VABus error %2, %3")
+                                 : Tr::tr("inverter refused read of %1: VABus error %2, %3"))
+                      .arg(what)
+                      .arg(code)
+                      .arg(errorText(code)),
+                  code));
     }
     if (request.write) {
         if (t.data != request.data)

@@ -2,9 +2,16 @@
 
 #include "transport/bytestream.h"
 
+#include <QCoreApplication>
+
 namespace db::vabus {
 
 namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::vabus)
+};
 
 constexpr int kMaxNodeId = 63;
 
@@ -62,7 +69,7 @@ void VabusConnection::init()
 
 QString VabusConnection::reconnectingLine() const
 {
-    return QStringLiteral("connecting to %1 again (the inverter may be starting up)")
+    return Tr::tr("connecting to %1 again (the inverter may be starting up)")
         .arg(stream()->peerName());
 }
 

@@ -1,6 +1,7 @@
 #include "canopen/framedecoder.h"
 #include "canopen/sdoabort.h"
 #include "resources/builtindescriptions.h"
+#include "translations/language.h"
 
 #include <QTest>
 
@@ -41,6 +42,7 @@ ObjectDictionary pdoDictionary()
     ObjectDef position;
     position.address = { 0x6064, 0 };
     position.name = QStringLiteral("Position actual value");
+    position.localNames.insert(QStringLiteral("de"), QStringLiteral("Lageistwert"));
     position.type = DataType::Integer32;
     d.insert(position);
     return d;
@@ -210,6 +212,29 @@ private Q_SLOTS:
         decoder.removeDictionary(3);
         QCOMPARE(decoder.decode(frame(0x183, "2704E8030000")).text,
                  QStringLiteral("TPDO1 node 3: 6 bytes"));
+    }
+
+    // With the German translation the monitor's words are German, the device's names those of
+    // its German manual, and CANopen's own terms, numbers and the "service: detail" form stay.
+    void decodesInGerman()
+    {
+        QVERIFY(i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("de")));
+        FrameDecoder decoder;
+        decoder.setDictionary(3, pdoDictionary());
+        const DecodedFrame pdo = decoder.decode(frame(0x183, "2704E8030000"));
+        const DecodedFrame nmt = decoder.decode(frame(0x000, "0100"));
+        const DecodedFrame heartbeat = decoder.decode(frame(0x703, "7F"));
+        const DecodedFrame emcy = decoder.decode(frame(0x083, "2132050000000000"));
+        QVERIFY(i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("en")));
+        QCOMPARE(pdo.text,
+                 QStringLiteral("TPDO1 Knoten 3: 6041:0 Statusword = 0x0427, "
+                                "6064:0 Lageistwert = 1000"));
+        QCOMPARE(pdo.detail,
+                 QStringLiteral("6041:0 Statusword = 0x0427, 6064:0 Lageistwert = 1000"));
+        QCOMPARE(nmt.text, QStringLiteral("NMT Start alle Knoten"));
+        QCOMPARE(heartbeat.text, QStringLiteral("Heartbeat Knoten 3: pre-operational"));
+        QCOMPARE(emcy.text, QStringLiteral("EMCY Knoten 3: 3221 (Spannung), Reg. 0x05"));
+        QCOMPARE(decoder.decode(frame(0x000, "0100")).text, QStringLiteral("NMT start all nodes"));
     }
 
     void extendedAndErrorFramesAreNotCanopen()

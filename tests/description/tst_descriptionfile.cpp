@@ -2,6 +2,7 @@
 #include "core/objectdictionary.h"
 #include "description/descriptionfile.h"
 #include "resources/builtindescriptions.h"
+#include "textlanguage.h"
 
 #include <QRegularExpression>
 #include <QTest>
@@ -15,6 +16,8 @@ private Q_SLOTS:
     void movingCapDescriptionLoads();
     void movingCapObjectsFollowTheSpec();
     void movingCapErrorTexts();
+    void namesInFurtherLanguages();
+    void movingCapErrorTextsInGerman();
     void builtinTextsAreForUsers();
     void brokenFilesGiveClearErrors_data();
     void brokenFilesGiveClearErrors();
@@ -63,9 +66,62 @@ void TestDescriptionFile::movingCapErrorTexts()
 {
     const ObjectDictionary &dict = resources::movingCapDictionary();
     QVERIFY(dict.errorText(0x3221).contains(QLatin1String("Under-voltage")));
+    QCOMPARE(dict.errorText(0x2220), QStringLiteral("Over-current"));
     QCOMPARE(dict.errorCode(0x2220)->name, QStringLiteral("ERROR_OVER_CURRENT"));
     QCOMPARE(dict.errorText(0x8130), QStringLiteral("life guard or heartbeat error"));
     QCOMPARE(dict.errorText(0x3299), QStringLiteral("voltage inside the device"));
+}
+
+// "name_de", "object_de" and an error's "text_de" are what people read when the program speaks
+// German; the English texts stay the names files use, and are shown in every other language.
+void TestDescriptionFile::namesInFurtherLanguages()
+{
+    const QByteArray json = R"({"format":"drivebench-device-description","version":1,
+        "objects":[{"index":"0x6041","sub":0,"type":"U16","name":"Statusword",
+                    "name_de":"Statuswort"},
+                   {"index":"0x2000","sub":1,"type":"U8","name":"Minimum","object":"Limits",
+                    "name_de":"Minimum","object_de":"Grenzen","name_fr":"Minimum"},
+                   {"index":"0x2001","sub":0,"type":"U8","name":"Plain"}],
+        "errors":[{"code":"0x2220","name":"OVER","text":"Over-current","text_de":"Überstrom"}]})";
+    const auto dict = parseJsonDescription(json, QStringLiteral("test.json"));
+    QVERIFY2(dict.ok(), qPrintable(dict.error().toString()));
+    const ObjectDef *sw = dict->find(ObjectAddress(0x6041, 0));
+    const ObjectDef *min = dict->find(ObjectAddress(0x2000, 1));
+    const ObjectDef *plain = dict->find(ObjectAddress(0x2001, 0));
+    QCOMPARE(sw->localNames.value(QStringLiteral("de")), QStringLiteral("Statuswort"));
+    QCOMPARE(min->localNames.size(), 2);
+
+    QCOMPARE(textLanguage(), QStringLiteral("en"));
+    QCOMPARE(sw->displayName(), QStringLiteral("Statusword"));
+    QCOMPARE(min->displayObjectName(), QStringLiteral("Limits"));
+    QCOMPARE(dict->errorText(0x2220), QStringLiteral("Over-current"));
+    {
+        const test::TextLanguage german(QStringLiteral("de"));
+        QCOMPARE(textLanguage(), QStringLiteral("de"));
+        QCOMPARE(sw->displayName(), QStringLiteral("Statuswort"));
+        QCOMPARE(min->displayObjectName(), QStringLiteral("Grenzen"));
+        QCOMPARE(plain->displayName(), QStringLiteral("Plain")); // no German name: English
+        QCOMPARE(dict->errorText(0x2220), QStringLiteral("Überstrom"));
+        QCOMPARE(sw->name, QStringLiteral("Statusword")); // what files and scripts use
+    }
+    {
+        const test::TextLanguage italian(QStringLiteral("it"));
+        QCOMPARE(sw->displayName(), QStringLiteral("Statusword"));
+    }
+    QCOMPARE(sw->displayName(), QStringLiteral("Statusword"));
+}
+
+void TestDescriptionFile::movingCapErrorTextsInGerman()
+{
+    const ObjectDictionary &dict = resources::movingCapDictionary();
+    const test::TextLanguage german(QStringLiteral("de"));
+    QCOMPARE(dict.errorText(0x2220), QStringLiteral("Überstrom"));
+    QCOMPARE(dict.errorText(0x7121),
+             QStringLiteral("Blockade / Blockfahrt / Schleppfehler zu groß"));
+    for (const quint32 code : { 0x2220, 0x3211, 0x3221, 0x4210, 0x4220, 0x5200, 0x7121, 0x7510,
+                                0xFFF1, 0xFFF2, 0xFFF4, 0xFFF5 })
+        QVERIFY2(dict.errorCode(code)->localTexts.contains(QStringLiteral("de")),
+                 qPrintable(QString::number(code, 16)));
 }
 
 // What the editor shows as a description or error text names no source document and carries no
@@ -100,6 +156,15 @@ void TestDescriptionFile::brokenFilesGiveClearErrors_data()
     QTest::newRow("default out of range")
         << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","default":300}]})"
         << "default";
+    QTest::newRow("not a language")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","name_German":"x"}]})"
+        << "\"German\" is not a language code";
+    QTest::newRow("empty local name")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","object_de":""}]})"
+        << "\"object_de\" must be a non-empty text";
+    QTest::newRow("local text not a string")
+        << head + R"("errors":[{"code":"0x2220","text":"x","text_de":5}]})"
+        << "error #1: \"text_de\" must be a non-empty text";
 }
 
 void TestDescriptionFile::brokenFilesGiveClearErrors()

@@ -57,6 +57,7 @@ private Q_SLOTS:
     void manPagesAreMadeFromHelp();
     void bashCompletion_data();
     void bashCompletion();
+    void germanManualIsComplete();
 
 private:
     QString installed(const QString &relative) const { return m_root.filePath(relative); }
@@ -100,6 +101,47 @@ void TestPackaging::installsTheExpectedFiles_data()
     QTest::newRow("completion") << QStringLiteral(
         "share/bash-completion/completions/drivebench-cli");
     QTest::newRow("copyright") << QStringLiteral("share/doc/drivebench/copyright");
+    QTest::newRow("manual en") << QStringLiteral("share/drivebench/manual/manual.en.md");
+    QTest::newRow("manual de") << QStringLiteral("share/drivebench/manual/manual.de.md");
+    QTest::newRow("manual screenshot")
+        << QStringLiteral("share/drivebench/manual/docs/screenshot-main.png");
+}
+
+// The installed German manual is the English one translated: the same sections, the same
+// screenshots and the same commands; every screenshot either shows is installed beside it.
+void TestPackaging::germanManualIsComplete()
+{
+    struct Outline
+    {
+        QStringList levels; // "##", "###" per heading, in order
+        QStringList images;
+        QStringList commands; // indented lines, up to a comment
+    };
+    const auto outline = [this](const QString &name) {
+        Outline o;
+        QFile file(installed(QStringLiteral("share/drivebench/manual/") + name));
+        if (!file.open(QIODevice::ReadOnly))
+            return o;
+        static const QRegularExpression image(QStringLiteral(R"(!\[[^\]]*\]\(([^)]+)\))"));
+        for (const QString &line : QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'))) {
+            if (line.startsWith(QLatin1Char('#')))
+                o.levels.append(line.section(QLatin1Char(' '), 0, 0));
+            for (auto it = image.globalMatch(line); it.hasNext();)
+                o.images.append(it.next().captured(1));
+            if (line.startsWith(QLatin1String("    ")) && !line.trimmed().isEmpty())
+                o.commands.append(line.section(QLatin1String("  #"), 0, 0).trimmed());
+        }
+        return o;
+    };
+    const Outline en = outline(QStringLiteral("manual.en.md"));
+    const Outline de = outline(QStringLiteral("manual.de.md"));
+    QVERIFY(en.levels.size() > 10);
+    QCOMPARE(de.levels, en.levels);
+    QCOMPARE(de.images, en.images);
+    QCOMPARE(de.commands.size(), en.commands.size());
+    for (const QString &image : en.images)
+        QVERIFY2(QFileInfo::exists(installed(QStringLiteral("share/drivebench/manual/") + image)),
+                 qPrintable(image));
 }
 
 void TestPackaging::installsTheExpectedFiles()
@@ -111,7 +153,7 @@ void TestPackaging::installsTheExpectedFiles()
     if (path.startsWith(QStringLiteral("bin/")))
         QVERIFY2(file.isExecutable(), qPrintable(path + QStringLiteral(" is not executable")));
 #ifdef DRIVEBENCH_PNG_ICONS
-    if (path.endsWith(QStringLiteral(".png"))) {
+    if (path.startsWith(QStringLiteral("share/icons/")) && path.endsWith(QStringLiteral(".png"))) {
         const QString size = path.section(QLatin1Char('/'), 3, 3); // "48x48"
         QFile png(file.filePath());
         QVERIFY(png.open(QIODevice::ReadOnly));

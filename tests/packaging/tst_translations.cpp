@@ -2,6 +2,7 @@
 // finished translation and nothing stale is left there (lupdate run on a copy), translations keep
 // the placeholders of their source, the German .qm built into the programs loads, and the language
 // follows --lang, DRIVEBENCH_LANG and the POSIX locale variables as text.
+#include "core/objectdef.h"
 #include "translations/language.h"
 
 #include <QCoreApplication>
@@ -172,8 +173,10 @@ private slots:
         QVERIFY(db::i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("de")));
         QCOMPARE(QCoreApplication::translate("db::Error", "timeout"),
                  QStringLiteral("Zeitüberschreitung"));
+        QCOMPARE(db::textLanguage(), QStringLiteral("de")); // device texts follow: German names
         QVERIFY(db::i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("en")));
         QCOMPARE(QCoreApplication::translate("db::Error", "timeout"), QStringLiteral("timeout"));
+        QCOMPARE(db::textLanguage(), QStringLiteral("en"));
     }
 
     void languageFromLocaleName_data()

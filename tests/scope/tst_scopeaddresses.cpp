@@ -6,6 +6,7 @@
 #include "scope/pollingsource.h"
 #include "scope/recording.h"
 #include "scope/trigger.h"
+#include "textlanguage.h"
 
 #include <QTest>
 
@@ -23,6 +24,7 @@ ObjectDictionary inverterDictionary()
     ObjectDef def;
     def.address = kAcceleration;
     def.name = QStringLiteral("Acceleration");
+    def.localNames.insert(QStringLiteral("de"), QStringLiteral("Beschleunigung"));
     def.type = DataType::Unsigned16;
     def.access = Access::ReadWrite;
     dict.insert(def);
@@ -53,6 +55,7 @@ private Q_SLOTS:
     void canopenCsvIsUnchanged();
     void unknownFormatInACsvIsRefused();
     void triggersFindDecimalChannels();
+    void namesFollowTheLanguageFilesDoNot();
 };
 
 void TestScopeAddresses::channelsAreNamedInTheFormat()
@@ -143,6 +146,21 @@ void TestScopeAddresses::triggersFindDecimalChannels()
     QVERIFY(!hex);
     QVERIFY2(hex.error().message().contains(QLatin1String("NUMBER:DATASET")),
              qPrintable(hex.error().message()));
+}
+
+// The scope's legend and lists show a channel's name in the program's language; the CSV keeps the
+// English name, so that a recording reads the same in every language.
+void TestScopeAddresses::namesFollowTheLanguageFilesDoNot()
+{
+    const ChannelInfo info =
+        ChannelInfo::forObject(kAcceleration, inverterDictionary(), QStringLiteral("fake://x"));
+    QCOMPARE(info.displayLabel(), QStringLiteral("372:2 Acceleration"));
+    const test::TextLanguage german(QStringLiteral("de"));
+    QCOMPARE(info.displayLabel(), QStringLiteral("372:2 Beschleunigung"));
+    QCOMPARE(info.label(), QStringLiteral("372:2 Acceleration"));
+    const QByteArray text = csv::toCsv(recordingOf(info));
+    QVERIFY2(text.contains("# channel: 372:2; name: Acceleration;"), text.constData());
+    QVERIFY2(!text.contains("Beschleunigung"), text.constData());
 }
 
 QTEST_GUILESS_MAIN(TestScopeAddresses)

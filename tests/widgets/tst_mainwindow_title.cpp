@@ -5,6 +5,7 @@
 #include "fakeconnection.h"
 #include "mainwindow.h"
 #include "resources/builtindescriptions.h"
+#include "textlanguage.h"
 #include "widgets/connection/devicelist.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/parameters/parametersetactions.h"
@@ -163,15 +164,38 @@ private Q_SLOTS:
         QVERIFY(edit);
         QTRY_VERIFY(edit->hasFocus());
 
-        // F1: the user manual (the README) in a window of its own.
+        // F1: the user manual (the README's part for users) in a window of its own: the file
+        // beside the program where it is installed (tst_packaging checks that tree), else the
+        // copy built in, as here in the test's folder.
         QAction *manual = actionNamed(window, QStringLiteral("manualAction"));
         QVERIFY(manual);
         QCOMPARE(manual->shortcut(), QKeySequence(QKeySequence::HelpContents));
-        manual->trigger();
+        QTest::keyClick(&window, Qt::Key_F1);
         auto *text = window.findChild<QTextBrowser *>(QStringLiteral("manualText"));
         QVERIFY(text);
         QTRY_VERIFY(text->isVisible());
-        QVERIFY2(text->toPlainText().contains(QStringLiteral("How the code is organised")),
+        QVERIFY2(text->toPlainText().contains(QStringLiteral("Reaching a real drive")),
+                 qPrintable(text->toPlainText().left(200)));
+        QVERIFY(!text->toPlainText().contains(QStringLiteral("How the code is organised")));
+        QVERIFY(!text->toPlainText().contains(QStringLiteral("How it works")));
+        QCOMPARE(text->source().fileName(), QStringLiteral("manual.en.md"));
+        QCOMPARE(MainWindow::manualPath().section(QLatin1Char('/'), -1),
+                 QStringLiteral("manual.en.md"));
+    }
+
+    // In German the manual is the German one.
+    void germanManual()
+    {
+        const test::TextLanguage german(QStringLiteral("de"));
+        MainWindow window(m_registry);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::keyClick(&window, Qt::Key_F1);
+        auto *text = window.findChild<QTextBrowser *>(QStringLiteral("manualText"));
+        QVERIFY(text);
+        QTRY_VERIFY(text->isVisible());
+        QCOMPARE(text->source().fileName(), QStringLiteral("manual.de.md"));
+        QVERIFY2(text->toPlainText().contains(QStringLiteral("Einen echten Antrieb erreichen")),
                  qPrintable(text->toPlainText().left(200)));
     }
 };

@@ -1,11 +1,13 @@
 // Level 4: the object editor against the simulated ACTIVE Cube over VABus/TCP: one column per
 // data set for four-data-set parameters and data set 0 for single ones, edits written to the
 // data set (EEPROM) or, on request, to its RAM copy (data set + 5), and the device's own error
-// text next to a refused value.
+// text next to a refused value; the parameter names in English and German.
 
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
+#include "translations/language.h"
 #include "widgets/odeditor/odeditor.h"
+#include "widgets/odeditor/odeditorfilter.h"
 #include "widgets/odeditor/odeditormodel.h"
 
 #include <QCheckBox>
@@ -57,6 +59,7 @@ private Q_SLOTS:
     }
     void cleanup()
     {
+        i18n::installTranslations(*qApp, QStringLiteral("en"));
         m_connection.reset();
         m_acu.reset();
     }
@@ -112,6 +115,49 @@ private Q_SLOTS:
         editor.setConnection(nullptr);
         QCOMPARE(model->columnCount(), int(OdEditorModel::ColumnCount));
         QVERIFY(!header->isSectionHidden(OdEditorModel::Pdo));
+    }
+
+    // In German the editor names the parameters as the inverter's German manual does, the English
+    // name in the tooltip; the filter finds a parameter by either name.
+    void namesInTheProgramsLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("fixedFrequency");
+        QTest::addColumn<QString>("version");
+        QTest::newRow("en") << "en"
+                            << "Fixed frequency 2"
+                            << "Inverter software version";
+        QTest::newRow("de") << "de"
+                            << "Festfrequenz 2"
+                            << "FU-Softwareversion";
+    }
+    void namesInTheProgramsLanguage()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, fixedFrequency);
+        QFETCH(QString, version);
+        QVERIFY(i18n::installTranslations(*qApp, language));
+        OdEditor editor;
+        editor.setConnection(m_connection.get());
+        OdEditorModel *model = editor.model();
+        const QModelIndex ff2 = model->indexOf(dataSet(kFixedFrequency2, 1), OdEditorModel::Name);
+        QCOMPARE(model->data(ff2).toString(), fixedFrequency);
+        const QModelIndex sw = model->indexOf(kSoftwareVersion, OdEditorModel::Name);
+        QCOMPARE(model->data(sw).toString(), version);
+        const QString tip = model->data(sw, Qt::ToolTipRole).toString();
+        QCOMPARE(tip.contains(QLatin1String("Inverter software version")), language == u"de");
+
+        const auto shown = [&editor](ObjectAddress a) {
+            return editor.filter()
+                ->mapFromSource(editor.model()->indexOf(a, OdEditorModel::Name))
+                .isValid();
+        };
+        for (const QString &text :
+             { QStringLiteral("softwareversion"), QStringLiteral("software version") }) {
+            editor.setFilterText(text);
+            QVERIFY2(shown(kSoftwareVersion), qPrintable(text));
+            QVERIFY2(!shown(dataSet(kFixedFrequency2, 1)), qPrintable(text));
+        }
     }
 
     void editWritesTheDataSetToEeprom()

@@ -176,7 +176,7 @@ QVariant CanMonitorModel::data(const QModelIndex &index, int role) const
         case Length:
             return int(e.frame.payload().size());
         case Data:
-            return remote ? QStringLiteral("remote request") : canopen::hexBytes(e.frame.payload());
+            return remote ? tr("remote request") : canopen::hexBytes(e.frame.payload());
         case Service:
             return canopen::FrameDecoder::serviceName(e.decoded.service, e.decoded.pdoNumber);
         case Node:

@@ -191,9 +191,9 @@ void ObjectAccessBox::updateInfo()
         style::setTextColor(m_info, style::errorColor());
     } else if (known) {
         QString info = QStringLiteral("<b>%1</b>")
-                           .arg((known->objectName.isEmpty()
-                                     ? known->name
-                                     : known->objectName + QStringLiteral(" / ") + known->name)
+                           .arg((known->objectName.isEmpty() ? known->displayName()
+                                                             : known->displayObjectName()
+                                         + QStringLiteral(" / ") + known->displayName())
                                     .toHtmlEscaped());
         info += tr("<br>%1, %2").arg(datatype::name(known->type), access::name(known->access));
         if (!known->unit.isEmpty())
@@ -264,8 +264,9 @@ void ObjectAccessBox::write()
         return;
     }
     if (!def->writable()) {
-        showResult(false,
-                   tr("%1 %2 is read-only").arg(addressFormat().format(def->address), def->name));
+        showResult(
+            false,
+            tr("%1 %2 is read-only").arg(addressFormat().format(def->address), def->displayName()));
         Q_EMIT finished(false);
         return;
     }

@@ -117,12 +117,13 @@ void OdBitFieldView::setObject(const ObjectDef *def)
     }
     m_def = *def;
     style::setTextColor(m_title, QColor());
-    QString title = QStringLiteral("<b>%1</b> &nbsp;%2")
-                        .arg(m_addressFormat->format(def->address),
-                             (def->objectName.isEmpty() || def->objectName == def->name
-                                  ? def->name
-                                  : def->objectName + QStringLiteral(" / ") + def->name)
-                                 .toHtmlEscaped());
+    QString title =
+        QStringLiteral("<b>%1</b> &nbsp;%2")
+            .arg(m_addressFormat->format(def->address),
+                 (def->objectName.isEmpty() || def->objectName == def->name
+                      ? def->displayName()
+                      : def->displayObjectName() + QStringLiteral(" / ") + def->displayName())
+                     .toHtmlEscaped());
     title +=
         QStringLiteral(" &nbsp;<span style='color:gray'>%1, %2%3%4</span>")
             .arg(datatype::name(def->type), access::name(def->access),

@@ -80,8 +80,8 @@ QWidget *OdEditorDelegate::createEditor(QWidget *parent, const QStyleOptionViewI
         auto *combo = new QComboBox(parent);
         combo->setEditable(true);
         if (def->type == DataType::Boolean) {
-            combo->addItem(QStringLiteral("0 (false)"), QStringLiteral("0"));
-            combo->addItem(QStringLiteral("1 (true)"), QStringLiteral("1"));
+            combo->addItem(tr("0 (false)"), QStringLiteral("0"));
+            combo->addItem(tr("1 (true)"), QStringLiteral("1"));
         }
         for (auto it = def->enumeration.cbegin(); it != def->enumeration.cend(); ++it)
             combo->addItem(QStringLiteral("%1 (%2)").arg(it.key()).arg(*it),

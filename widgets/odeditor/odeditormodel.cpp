@@ -181,7 +181,7 @@ void OdEditorModel::insertObject(int group, const QList<ObjectDef> &subs)
         // One row; its data sets are columns (data set 0, "all four", is not shown).
         object.address = ObjectAddress(object.index, 1);
         object.dataSets = true;
-        object.title = first.objectName.isEmpty() ? first.name : first.objectName;
+        object.title = first.objectName.isEmpty() ? first.displayName() : first.displayObjectName();
         addNode(object);
         return;
     }
@@ -190,12 +190,12 @@ void OdEditorModel::insertObject(int group, const QList<ObjectDef> &subs)
         addNode(object);
         return;
     }
-    object.title = first.objectName;
+    object.title = first.displayObjectName();
     if (object.title.isEmpty() || object.title.startsWith(QLatin1Char('\''))) {
         // No object name (or only its signature): the name of the first real sub-index.
         const auto named = std::find_if(subs.begin(), subs.end(),
                                         [](const ObjectDef &d) { return d.address.sub != 0; });
-        object.title = named != subs.end() ? named->name : first.name;
+        object.title = named != subs.end() ? named->displayName() : first.displayName();
         if (!first.objectName.isEmpty())
             object.title += QLatin1Char(' ') + first.objectName;
     }

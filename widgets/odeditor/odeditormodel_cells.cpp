@@ -133,9 +133,12 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case StatusTextRole:
         return column == Value ? cell.message : QVariant();
     case FilterTextRole:
-        return QString(addressFormat().format(def.address) + QLatin1Char(' ') + def.name
-                       + QLatin1Char(' ') + def.objectName + QLatin1Char(' ')
-                       + odtext::display(def, cell.raw, m_hex))
+        // Every language's name: a name from any of the device's manuals finds the object.
+        return QStringList({ addressFormat().format(def.address), def.name, def.objectName,
+                             QStringList(def.localNames.values()).join(QLatin1Char(' ')),
+                             QStringList(def.localObjectNames.values()).join(QLatin1Char(' ')),
+                             odtext::display(def, cell.raw, m_hex) })
+            .join(QLatin1Char(' '))
             .toLower();
     case Qt::FontRole:
         if (column == Value && differsFromDefault(def, cell.raw)) {
@@ -181,8 +184,15 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
                           .arg(odtext::display(def, def.defaultValue, m_hex));
             return tip.isEmpty() ? QVariant() : QVariant(style::toolTip(tip));
         }
-        if (column == Name && !def.description.isEmpty())
-            return style::toolTip(def.description);
+        if (column == Name) {
+            // A name shown in another language than English also shows the English one: the
+            // name files and scripts use. Rich text, so that a long description wraps.
+            QString tip;
+            if (def.displayName() != def.name)
+                tip += style::toolTip(tr("English: %1").arg(def.name));
+            tip += style::toolTip(def.description);
+            return tip.isEmpty() ? QVariant() : QVariant(tip);
+        }
         return {};
     case Qt::DisplayRole:
         break;
@@ -193,7 +203,7 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
     case Address:
         return addressFormat().format(def.address);
     case Name:
-        return def.name;
+        return def.displayName();
     case Type:
         return datatype::name(def.type);
     case AccessColumn:

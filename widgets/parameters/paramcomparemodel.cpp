@@ -168,6 +168,9 @@ QVariant ParamCompareModel::data(const QModelIndex &index, int role) const
     case Address:
         return m_comparison.addressFormat->format(r.address);
     case Name:
+        // The description's name in the program's language where it has one, else the file's.
+        if (const ObjectDef *def = m_dictionary.find(r.address); def && def->name == r.name)
+            return printable(def->displayName());
         return printable(r.name);
     case DeviceValue:
         return printable(valueText(r, 0));

@@ -325,7 +325,8 @@ void ParamCompareView::restoreSelected()
     QStringList names;
     for (ObjectAddress a : rows.mid(0, 12)) {
         const ObjectDef *def = m_connection->dictionary().find(a);
-        names.append(QStringLiteral("%1  %2").arg(a.toString(), def ? def->name : QString()));
+        names.append(
+            QStringLiteral("%1  %2").arg(a.toString(), def ? def->displayName() : QString()));
     }
     if (rows.size() > names.size())
         names.append(tr("… and %n more", nullptr, int(rows.size() - names.size())));

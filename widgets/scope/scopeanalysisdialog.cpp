@@ -47,11 +47,11 @@ ScopeAnalysisDialog::ScopeAnalysisDialog(const scope::ChannelInfo &info,
     , m_statistics(scope::analysis::statistics(m_samples, t0, t1, info))
     , m_plot(new QCustomPlot(this))
 {
-    setWindowTitle(tr("Analysis: %1").arg(info.label()));
+    setWindowTitle(tr("Analysis: %1").arg(info.displayLabel()));
     setObjectName(QStringLiteral("scopeAnalysis"));
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(new QLabel(tr("<b>%1</b> from %2 s to %3 s (%4 samples)")
-                                     .arg(info.label().toHtmlEscaped(), scopeNumber(t0),
+                                     .arg(info.displayLabel().toHtmlEscaped(), scopeNumber(t0),
                                           scopeNumber(t1), QString::number(m_statistics.count))));
     auto *row = new QHBoxLayout;
     m_plot->setMinimumSize(460, 300);

@@ -111,7 +111,7 @@ QVariant ScopeChannelModel::data(const QModelIndex &index, int role) const
         const scope::TraceBuffer &b = m_recorder->buffer(row);
         return tr("%1 [%2]\ndevice: %3\ndisplay = raw × %4 + %5\n%6 samples, %7 lost\n"
                   "double-click the name to change the colour")
-            .arg(info.label(), info.unit, info.device, QString::number(info.scale),
+            .arg(info.displayLabel(), info.unit, info.device, QString::number(info.scale),
                  QString::number(info.offset), QLocale().toString(b.size()),
                  QLocale().toString(b.dropped()));
     }
@@ -121,7 +121,7 @@ QVariant ScopeChannelModel::data(const QModelIndex &index, int role) const
         return {};
     switch (index.column()) {
     case Name:
-        return info.label();
+        return info.displayLabel();
     case Scale:
         return edit ? QVariant(info.scale) : QVariant(QString::number(info.scale, 'g', 8));
     case Offset:

@@ -89,8 +89,8 @@ void ScopeMeasurements::update(const scope::Recorder &recorder, const ScopePlot 
                                    any ? s.max : NAN,
                                    any ? s.peakToPeak : NAN };
         auto *name = new QTableWidgetItem(
-            info.unit.isEmpty() ? info.label()
-                                : QStringLiteral("%1 [%2]").arg(info.label(), info.unit));
+            info.unit.isEmpty() ? info.displayLabel()
+                                : QStringLiteral("%1 [%2]").arg(info.displayLabel(), info.unit));
         name->setForeground(plot.channelStyle(channel).color.darker(115));
         name->setFont(font());
         m_table->setItem(r, Channel, name);

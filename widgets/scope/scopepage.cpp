@@ -341,7 +341,7 @@ void ScopePage::updateTriggerChannels()
     m_triggerChannelBox->clear();
     for (int i = 0; i < m_recorder->channelCount(); ++i) {
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        m_triggerChannelBox->addItem(info.label(), info.id);
+        m_triggerChannelBox->addItem(info.displayLabel(), info.id);
     }
     const int keep = m_triggerChannelBox->findData(current);
     const int fromRecorder = m_recorder->trigger().channel;

@@ -343,7 +343,7 @@ Result<void> ScopePage::rebuildSource()
         if (!added) {
             delete polling;
             delete pdo;
-            return added.error().prefixed(info.label());
+            return added.error().prefixed(info.displayLabel());
         }
         order.append({ mapping ? static_cast<scope::TraceSource *>(pdo) : polling, *added });
     }

@@ -129,8 +129,9 @@ void ScopePlot::rebuildLayout()
         QCPGraph *g = m_plot->addGraph(lane->rect->axis(QCPAxis::atBottom),
                                        lane->rect->axis(QCPAxis::atLeft));
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        g->setName(info.unit.isEmpty() ? info.label()
-                                       : QStringLiteral("%1 [%2]").arg(info.label(), info.unit));
+        g->setName(info.unit.isEmpty()
+                       ? info.displayLabel()
+                       : QStringLiteral("%1 [%2]").arg(info.displayLabel(), info.unit));
         g->setPen(QPen(s.color, 1.4));
         g->setAdaptiveSampling(false); // the data is decimated already
         g->addToLegend(lane->legend);

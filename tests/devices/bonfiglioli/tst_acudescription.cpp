@@ -2,6 +2,7 @@
 // them over VABus/TCP, shows and takes physical values with the parameter's decimals.
 
 #include "devices/bonfiglioli/acudescription.h"
+#include "textlanguage.h"
 #include "vabus/vabuscodec.h"
 
 #include <QRegularExpression>
@@ -24,7 +25,7 @@ private Q_SLOTS:
     {
         const ObjectDictionary &d = bonfiglioli::acuDictionary();
         static const QRegularExpression reference(
-            QStringLiteral(R"(manual|\(\d+(\.\d+)+\)|seed|§|inferred)"),
+            QStringLiteral(R"(manual|\(\d+(\.\d+)+\)|seed|§|inferred|\b(table|per|in) \d+\.\d)"),
             QRegularExpression::CaseInsensitiveOption);
         for (const ObjectDef &def : d.objects()) {
             QVERIFY2(vabus::isCarried(def.type), qPrintable(def.name));
@@ -83,6 +84,45 @@ private Q_SLOTS:
         QVERIFY(!d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048576")).ok());
         QVERIFY(d.find(ObjectAddress(1165, 0))->parseText(QStringLiteral("1048575")).ok());
         QCOMPARE(d.find(ObjectAddress(1459, 0))->type, DataType::Integer16);
+    }
+
+    // The German manual's names: every parameter has one, shown when the program speaks German;
+    // the English name stays what parameter sets and scripts use.
+    void germanNames()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        // Umlauts written out as two letters ("Verzoegerung") are not how German is written.
+        static const QRegularExpression transliterated(
+            QStringLiteral(R"(\bfuer\b|Ue|oeg|aend|aehl|aenge|Stoer)"));
+        for (const ObjectDef &def : d.objects()) {
+            const QString german = def.localNames.value(QStringLiteral("de"));
+            QVERIFY2(!german.isEmpty(), qPrintable(def.name));
+            QVERIFY2(!transliterated.match(german).hasMatch(), qPrintable(german));
+        }
+        const ObjectDef *status = d.find(ObjectAddress(411, 0));
+        const ObjectDef *rated = d.find(ObjectAddress(372, 2));
+        const ObjectDef *all = d.find(ObjectAddress(372, 0));
+        QCOMPARE(status->displayName(), QStringLiteral("Status word"));
+        QCOMPARE(rated->displayName(), QStringLiteral("Rated speed (data set 2)"));
+        const test::TextLanguage german(QStringLiteral("de"));
+        QCOMPARE(status->displayName(), QStringLiteral("Zustandswort"));
+        QCOMPARE(rated->displayName(), QStringLiteral("Bemessungsdrehzahl (Datensatz 2)"));
+        QCOMPARE(all->displayName(), QStringLiteral("Bemessungsdrehzahl (alle Datensätze)"));
+        QCOMPARE(rated->displayObjectName(), QStringLiteral("Bemessungsdrehzahl"));
+        QCOMPARE(d.find(ObjectAddress(421, 0))->displayName(),
+                 QStringLiteral("Verzögerung (Rechtslauf)"));
+        QCOMPARE(rated->name, QStringLiteral("Rated speed (data set 2)"));
+    }
+
+    void faultTextsInGerman()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        QCOMPARE(d.errorText(0x1442), QStringLiteral("Positive software limit switch"));
+        const test::TextLanguage german(QStringLiteral("de"));
+        QCOMPARE(d.errorText(0x1442), QStringLiteral("Pos. SW-Endschalter"));
+        QCOMPARE(d.errorText(0x1460), QStringLiteral("Pos. HW-Endsch.: unzulässige Signalquelle"));
+        // A code whose table gives no German text: the English one.
+        QVERIFY(d.errorText(0x2714).contains(QLatin1String("PLC")));
     }
 
     void faultCodes()

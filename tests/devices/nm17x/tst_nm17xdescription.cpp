@@ -1,7 +1,9 @@
 // NM17x descriptions: variant by identity, the objects of each variant, codes and texts.
 #include "devices/nm17x/nm17xcodes.h"
 #include "devices/nm17x/nm17xdescription.h"
+#include "textlanguage.h"
 
+#include <QSet>
 #include <QTest>
 
 using namespace db;
@@ -17,6 +19,7 @@ private Q_SLOTS:
     void enumerationsAndBits();
     void errorPriorityAndTexts();
     void emcyTexts();
+    void germanNames();
 };
 
 void TstNm17xDescription::variantFromIdentity()
@@ -103,6 +106,32 @@ void TstNm17xDescription::emcyTexts()
     QCOMPARE(emcyText(0x1234, 0), QString());
     const ObjectDictionary d = dictionary(Variant::Nm170);
     QCOMPARE(d.errorText(0x8130), QStringLiteral("heartbeat error"));
+}
+
+// Every object carries the German manual's name, distinct within its object and written with
+// umlauts; shown when the program speaks German.
+void TstNm17xDescription::germanNames()
+{
+    const ObjectDictionary d = dictionary(Variant::Nm174);
+    QMap<quint16, QSet<QString>> perObject;
+    for (const ObjectDef &def : d.objects()) {
+        const QString german = def.localNames.value(QStringLiteral("de"));
+        QVERIFY2(!german.isEmpty(), qPrintable(def.name));
+        QVERIFY2(!german.contains(QLatin1String("Groess")) && !german.contains(QLatin1String("ae"))
+                     && !german.contains(QLatin1String("fuer")),
+                 qPrintable(german));
+        QSet<QString> &names = perObject[def.address.index];
+        QVERIFY2(!names.contains(german), qPrintable(german));
+        names.insert(german);
+    }
+    const ObjectDef *endMin = d.find({ 0x2043, 1 });
+    QCOMPARE(endMin->displayName(), QStringLiteral("End limit MIN"));
+    const test::TextLanguage german(QStringLiteral("de"));
+    QCOMPARE(endMin->displayName(), QStringLiteral("Endlage MIN"));
+    QCOMPARE(d.find({ 0x2000, 2 })->displayName(), QStringLiteral("Zählrichtung"));
+    QCOMPARE(d.find({ 0x2020, 0 })->displayName(), QStringLiteral("Größter Subindex"));
+    QCOMPARE(d.find({ 0x6004, 0 })->displayName(), QStringLiteral("Position (Istwert)"));
+    QCOMPARE(endMin->name, QStringLiteral("End limit MIN"));
 }
 
 QTEST_GUILESS_MAIN(TstNm17xDescription)

@@ -1,0 +1,38 @@
+# cmake -DREADME=... -DGERMAN=... -DOUTPUT_DIR=... -DSCREENSHOTS=a.png;b.png -P manual.cmake
+# Writes OUTPUT_DIR/manual.en.md (the README from its "# drivebench" title up to its first section
+# for developers, without the notes for developers marked inside), OUTPUT_DIR/manual.de.md and
+# OUTPUT_DIR/docs/<screenshot>.
+cmake_minimum_required(VERSION 3.25)
+file(READ ${README} readme)
+string(FIND "${readme}" "# drivebench\n" start)
+string(FIND "${readme}" "\n## Building and testing by hand" end)
+if(start EQUAL -1 OR end EQUAL -1 OR end LESS start)
+    message(FATAL_ERROR "${README}: no \"# drivebench\" title or no \"## Building and testing by hand\"")
+endif()
+math(EXPR length "${end} - ${start} + 1")
+string(SUBSTRING "${readme}" ${start} ${length} manual)
+# Notes for developers inside the user's sections, between "<!-- Not in the user manual" and
+# "<!-- End of the part that is not in the user manual. -->".
+while(TRUE)
+    string(FIND "${manual}" "<!-- Not in the user manual" from)
+    if(from EQUAL -1)
+        break()
+    endif()
+    set(stop_marker "<!-- End of the part that is not in the user manual. -->\n")
+    string(FIND "${manual}" "${stop_marker}" to)
+    if(to LESS from)
+        message(FATAL_ERROR "${README}: a developer part without its end comment")
+    endif()
+    string(LENGTH "${stop_marker}" stop_length)
+    string(SUBSTRING "${manual}" 0 ${from} head)
+    math(EXPR tail_start "${to} + ${stop_length}")
+    string(SUBSTRING "${manual}" ${tail_start} -1 tail)
+    set(manual "${head}${tail}")
+endwhile()
+file(MAKE_DIRECTORY ${OUTPUT_DIR}/docs)
+file(WRITE ${OUTPUT_DIR}/manual.en.md "${manual}")
+configure_file(${GERMAN} ${OUTPUT_DIR}/manual.de.md COPYONLY)
+foreach(png ${SCREENSHOTS})
+    get_filename_component(name ${png} NAME)
+    configure_file(${png} ${OUTPUT_DIR}/docs/${name} COPYONLY)
+endforeach()
