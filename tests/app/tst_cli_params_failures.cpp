@@ -85,17 +85,17 @@ void TestCliParamsFailures::backupKeepsTheGoodFileWhenEveryReadFails_data()
     QTest::addColumn<int>("exitCode");
     QTest::addColumn<QString>("cause");
     QTest::addColumn<int>("failed");
-    // 201 objects and 1018h.2; 1018h.1 too where its answer is bad (not the first one behind).
+    // 201 objects, 1018h.3 and .2; 1018h.1 too where its answer is bad (not the first one behind).
     QTest::newRow("answer to the previous request")
-        << int(Fault::PreviousAnswer) << 5 << QStringLiteral("does not belong to") << 202;
+        << int(Fault::PreviousAnswer) << 5 << QStringLiteral("does not belong to") << 203;
     QTest::newRow("ERROR to everything")
-        << int(Fault::Error) << 6 << QStringLiteral("ERROR") << 203;
+        << int(Fault::Error) << 6 << QStringLiteral("ERROR") << 204;
     QTest::newRow("NUL byte in the value")
-        << int(Fault::NulByte) << 5 << QStringLiteral("\\x00") << 203;
+        << int(Fault::NulByte) << 5 << QStringLiteral("\\x00") << 204;
     QTest::newRow("value beyond 64 bits")
-        << int(Fault::HugeValue) << 5 << QStringLiteral("too large") << 203;
-    QTest::newRow("value outside the type") << int(Fault::OutOfRange) << 5 << QString() << 203;
-    QTest::newRow("answer for another object") << int(Fault::OtherObject) << 5 << QString() << 203;
+        << int(Fault::HugeValue) << 5 << QStringLiteral("too large") << 204;
+    QTest::newRow("value outside the type") << int(Fault::OutOfRange) << 5 << QString() << 204;
+    QTest::newRow("answer for another object") << int(Fault::OtherObject) << 5 << QString() << 204;
 }
 
 void TestCliParamsFailures::backupKeepsTheGoodFileWhenEveryReadFails()
@@ -144,7 +144,7 @@ void TestCliParamsFailures::backupAbortedByEverySdoKeepsTheGoodFile()
     QVERIFY(peer.aborts() > 200);
     QCOMPARE(contents(path), good);
     const QByteArray partial = contents(path + QStringLiteral(".partial"));
-    QCOMPARE(int(partial.count("\n# failed ")), 203); // 201 objects, 1018h.1 and 1018h.2
+    QCOMPARE(int(partial.count("\n# failed ")), 204); // 201 objects, 1018h.1, .2 and .3
     QVERIFY2(partial.contains("06020000"), partial.left(900).constData());
     QVERIFY(partial.contains("\nvendor unknown "));
 }
@@ -157,7 +157,7 @@ void TestCliParamsFailures::partialBackupListsEveryFailedRow()
     const Run r = cli({ QStringLiteral("backup"), peer.uri(), QStringLiteral("-o"), path });
     QCOMPARE(r.exitCode, 6);
     QCOMPARE(contents(path), good);
-    QVERIFY2(r.err.contains(QLatin1String("2 of 203 objects could not be read")),
+    QVERIFY2(r.err.contains(QLatin1String("2 of 204 objects could not be read")),
              qPrintable(r.err));
     QVERIFY(r.err.contains(QLatin1String("warning: 6084:0 Profile deceleration: device error: ")));
     const QByteArray partial = contents(path + QStringLiteral(".partial"));
