@@ -109,7 +109,6 @@ void ScopePlot::syncStyles()
         m_layoutKeys = keys;
         m_layoutDirty = true;
         m_following = true; // new channels or a loaded recording: show all of it
-        m_pyramids.assign(size_t(n), {});
     }
 }
 
@@ -261,8 +260,7 @@ void ScopePlot::fitValues()
             if (!m_graphs[size_t(i)] || channelStyle(i).lane != lane.number)
                 continue;
             const scope::TraceBuffer &b = m_recorder->buffer(i);
-            const scope::MinMaxPyramid::Extent x =
-                m_pyramids[size_t(i)].extent(b, b.lowerBound(m_t0), b.upperBound(m_t1));
+            const scope::TraceBuffer::Extent x = b.extent(b.lowerBound(m_t0), b.upperBound(m_t1));
             if (!x.valid)
                 continue;
             const scope::ChannelInfo &info = m_recorder->channelInfo(i);
@@ -299,13 +297,15 @@ void ScopePlot::updateData()
         if (!g)
             continue;
         const scope::TraceBuffer &b = m_recorder->buffer(i);
-        scope::MinMaxPyramid &pyramid = m_pyramids[size_t(i)];
-        pyramid.sync(b);
         const int width = g->keyAxis()->axisRect()->width();
-        const scope::DecimatedSeries d =
-            scope::decimate(b, pyramid, m_t0, m_t1, std::max(width, kMinColumns));
+        // Decimated into memory kept from the last frame: the graph's container lets go of
+        // the points it shares with m_points[i] first, so refilling them allocates nothing.
+        scope::DecimatedSeries &d = m_decimated[size_t(i)];
+        scope::decimate(b, m_t0, m_t1, std::max(width, kMinColumns), d);
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        QVector<QCPGraphData> points(qsizetype(d.time.size()));
+        g->data()->clear();
+        QVector<QCPGraphData> &points = m_points[size_t(i)];
+        points.resize(qsizetype(d.time.size()));
         for (size_t k = 0; k < d.time.size(); ++k)
             points[qsizetype(k)] = QCPGraphData(d.time[k], info.display(d.value[k]));
         g->data()->set(points, true);

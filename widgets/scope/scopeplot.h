@@ -14,6 +14,7 @@
 class QCustomPlot;
 class QCPAxisRect;
 class QCPGraph;
+class QCPGraphData;
 class QCPLegend;
 class QCPMarginGroup;
 class QMouseEvent;
@@ -127,7 +128,8 @@ private:
     bool m_settingRange = false;
     std::vector<Lane> m_lanes;
     std::vector<QCPGraph *> m_graphs; // per recorder channel; nullptr when hidden
-    std::vector<scope::MinMaxPyramid> m_pyramids; // per recorder channel
+    std::vector<scope::DecimatedSeries> m_decimated; // per recorder channel, reused each frame
+    std::vector<QVector<QCPGraphData>> m_points; // per recorder channel, shared with the graph
     QHash<QString, ScopeChannelStyle> m_styles;
     QStringList m_layoutKeys; // channel keys of the current layout, to detect re-ordering
     int m_nextColor = 0;
