@@ -16,6 +16,7 @@ namespace {
 
 constexpr int kMinColumns = 200; // before the first layout (offscreen, hidden)
 constexpr double kValueMargin = 0.08; // of the value span, above and below the data
+constexpr qint64 kSmoothPixels = 3; // points at least this far apart on average: antialiased
 
 } // namespace
 
@@ -297,11 +298,11 @@ void ScopePlot::updateData()
         if (!g)
             continue;
         const scope::TraceBuffer &b = m_recorder->buffer(i);
-        const int width = g->keyAxis()->axisRect()->width();
+        const int columns = std::max(g->keyAxis()->axisRect()->width(), kMinColumns);
         // Decimated into memory kept from the last frame: the graph's container lets go of
         // the points it shares with m_points[i] first, so refilling them allocates nothing.
         scope::DecimatedSeries &d = m_decimated[size_t(i)];
-        scope::decimate(b, m_t0, m_t1, std::max(width, kMinColumns), d);
+        scope::decimate(b, m_t0, m_t1, columns, d);
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
         g->data()->clear();
         QVector<QCPGraphData> &points = m_points[size_t(i)];
@@ -309,12 +310,14 @@ void ScopePlot::updateData()
         for (size_t k = 0; k < d.time.size(); ++k)
             points[qsizetype(k)] = QCPGraphData(d.time[k], info.display(d.value[k]));
         g->data()->set(points, true);
-        // Dense min/max columns gain nothing from antialiasing or a wide pen but would cost
-        // most of the frame (the stroker); raw samples get the smooth pen.
+        // Dense lines (min/max columns, or raw samples less than kSmoothPixels apart) gain
+        // nothing from antialiasing or a wide pen but would cost most of the frame (the
+        // stroker: 10 ms for 8 x 3000 raw points); sparse samples get the smooth pen.
+        const bool smooth = !d.decimated && qint64(d.time.size()) * kSmoothPixels <= columns;
         QPen pen = g->pen();
-        pen.setWidthF(d.decimated ? 1.0 : 1.4);
+        pen.setWidthF(smooth ? 1.4 : 1.0);
         g->setPen(pen);
-        g->setAntialiased(!d.decimated);
+        g->setAntialiased(smooth);
     }
     const scope::Trigger &trigger = m_recorder->trigger();
     const double t = m_recorder->triggerTime();
