@@ -4,7 +4,7 @@
 // and their CANopen reading. Bounded: a ring of capacity() frames; the oldest go first.
 //
 // Frames are not inserted one by one: they queue and join the table in one batch per
-// kFlushIntervalMs (10 Hz: a log that scrolls faster cannot be read, and each batch repaints the
+// kFlushIntervalMs (5 Hz: a log that scrolls faster cannot be read, and each batch repaints the
 // whole table), so a busy bus costs one row insertion (and one repaint) per tick. While paused,
 // frames keep queueing (up to capacity(), oldest dropped) and appear on resume: pause freezes the
 // view, not the capture. No widgets here; CanMonitor is the view.
@@ -27,7 +27,7 @@ class CanMonitorModel : public QAbstractTableModel
 public:
     enum Column { Time, Direction, Id, Length, Data, Service, Node, Decoded, ColumnCount };
     static constexpr int kDefaultCapacity = 100000;
-    static constexpr int kFlushIntervalMs = 100;
+    static constexpr int kFlushIntervalMs = 200;
 
     struct Entry
     {
