@@ -323,8 +323,10 @@ private slots:
         // One replot per frame, not per batch (2500 batches here).
         QVERIFY2(replots.size() <= rounds + 1, qPrintable(QString::number(replots.size())));
 
-        // Hidden: no replot at all, whatever arrives.
+        // Hidden: no replot at all, whatever arrives, and no frame timer.
+        QVERIFY(page.plot()->isRefreshing());
         page.hide();
+        QVERIFY(!page.plot()->isRefreshing());
         replots.clear();
         for (int i = 0; i < 100; ++i)
             Q_EMIT page.recorder()->dataAppended();

@@ -57,7 +57,6 @@ ScopePlot::ScopePlot(QWidget *parent)
 
     m_frameTimer.setInterval(1000 / kReplotHz);
     connect(&m_frameTimer, &QTimer::timeout, this, &ScopePlot::onFrame);
-    m_frameTimer.start();
     rebuildLayout();
 }
 
@@ -206,7 +205,14 @@ void ScopePlot::onFrame()
 void ScopePlot::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    m_frameTimer.start();
     markDirty();
+}
+
+void ScopePlot::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_frameTimer.stop();
 }
 
 void ScopePlot::refreshNow()

@@ -40,7 +40,7 @@ struct ScopeChannelStyle
 //   width in pixels, so the cost of a frame depends on the pixels, not on the recording length.
 // - Repaint is coalesced: dataAppended()/channelsChanged() only mark the view dirty; a kReplotHz
 //   timer refreshes and calls replot(rpQueuedReplot) when dirty AND visible. A hidden plot never
-//   replots; it catches up when shown.
+//   replots and its timer stops; it catches up when shown.
 // - Following: while the recorder runs (and after autoscale()), the view tracks the data
 //   (Run/Single/Normal: the whole buffer; Roll: the roll window) and scales the value axes. Any
 //   zoom or pan by the user stops following until autoscale().
@@ -83,6 +83,9 @@ public:
 
     // Refreshes the decimated data now (tests, export); replot() follows at the next frame.
     void refreshNow();
+    // Whether the frame timer runs: only while the plot is shown (a hidden plot costs no
+    // wake-ups at all).
+    bool isRefreshing() const { return m_frameTimer.isActive(); }
 
 Q_SIGNALS:
     // The time range or the drawn data changed (measurements may need an update).
@@ -91,6 +94,7 @@ Q_SIGNALS:
 
 protected:
     void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
 
 private:
     struct Lane
