@@ -13,6 +13,8 @@
 # runs the round-trip comparison, the record-based polling and the scope plot with real-time
 # priority (chrt, as root): on a machine busy with other work their figures then stand in for
 # an idle machine's. A benchmark that is not built yet is built first (ninja in --build).
+# The full run also measures the GUI idle with the demo (bench/gui/gui_idle_bench.sh, needs
+# xvfb-run and the target drivebench).
 #
 #   bench/run.sh [--build DIR] [--uri URI]... [--runs N] [--quick] [--rt] [--out DIR]
 set -euo pipefail
@@ -33,7 +35,7 @@ while (($#)); do
     --quick) quick=1; shift ;;
     --rt) rt=(--rt); shift ;;
     --out) out=$2; shift 2 ;;
-    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "run.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -178,6 +180,14 @@ if ((quick)); then
 else
     QT_QPA_PLATFORM=offscreen bench scope_plot_bench "$runs" "$plot_extract" \
         "$build/bench/scope/scope_plot_bench" 60 --append-seconds 3 "${rt[@]}"
+fi
+
+# ---- GUI idle cost: the demo under Xvfb, nothing changing on screen ----
+if ((${#uris[@]} == 0 && !quick)) && command -v xvfb-run >/dev/null; then
+    bench gui_idle_bench 1 '
+        /^idle CPU/ { gsub(/[()]/, ""); split($14, r, /\.\./); print b "|idle CPU, demo|" $9 "|" r[1] "|" r[2] "|% of a core" }
+        /^resident memory/ { gsub(/[()]/, ""); split($6, r, /\.\./); print b "|resident memory, demo|" $4 "|" r[1] "|" r[2] "|MB" }' \
+        "$here/gui/gui_idle_bench.sh" --build "$build" --runs "$runs" --seconds 30
 fi
 
 # ---- Morse ----
