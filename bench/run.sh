@@ -9,9 +9,12 @@
 # drivebench-sim); with --uri (repeatable) they measure those devices instead, each benchmark the
 # URIs of its protocol (refgo://, canopen+slcan://, canopen+socketcan://..., vabus://); the
 # device-free ones (scope plot, Morse, node scan) run as usual. --quick finishes in under a
-# minute (fewer and shorter runs, no scope plot, no record-based polling). --rt runs the
-# round-trip comparison and the record-based polling with real-time priority (chrt, as root): on
-# a machine busy with other work their figures then stand in for an idle machine's.
+# minute (fewer and shorter runs, the scope plot at 8 x 1e6 only, no record-based polling). --rt
+# runs the round-trip comparison, the record-based polling and the scope plot with real-time
+# priority (chrt, as root): on a machine busy with other work their figures then stand in for
+# an idle machine's. A benchmark that is not built yet is built first (ninja in --build).
+# The full run also measures the GUI idle with the demo (bench/gui/gui_idle_bench.sh, needs
+# xvfb-run and the target drivebench).
 #
 #   bench/run.sh [--build DIR] [--uri URI]... [--runs N] [--quick] [--rt] [--out DIR]
 set -euo pipefail
@@ -32,7 +35,7 @@ while (($#)); do
     --quick) quick=1; shift ;;
     --rt) rt=(--rt); shift ;;
     --out) out=$2; shift 2 ;;
-    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "run.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -54,9 +57,14 @@ uris_of() {
 bench() {
     local name=$1 n=$2 extract=$3 i
     shift 3
+    if [[ ! -x $1 && $1 == "$build"/bench/* && -f $build/build.ninja ]]; then
+        # A benchmark that was not built yet (e.g. a tree built for tests only): build it.
+        echo "run.sh: building $(basename "$1") ..." >&2
+        nice ninja -C "$build" "$(basename "$1")" >"$out/$name.build.txt" 2>&1 || true
+    fi
     if [[ ! -x $1 ]]; then
-        echo "run.sh: $name skipped: no $1" >&2
-        echo "$name|skipped (not built)|-|-" >>"$figures"
+        echo "run.sh: $name skipped: no $1 (see $out/$name.build.txt)" >&2
+        echo "$name|skipped (cannot be built, see $out/$name.build.txt)|-|-" >>"$figures"
         return 0
     fi
     printf 'run.sh: %s (%d runs) ...\n' "$name" "$n" >&2
@@ -158,10 +166,28 @@ if ((!quick)); then
                 print b "|" c " p99 interval error|" $9 "|" p[1] "|" p[2] "|% of period" }' \
             "${record[@]}"
     fi
-    QT_QPA_PLATFORM=offscreen bench scope_plot_bench 1 '
-        / fps / { for (i = 1; i <= NF; ++i) if ($i == "fps") v = $(i - 1)
-            print b "|" $1 " " $2 " " $3 " " $4 "|" v "|fps" }' \
-        "$build/bench/scope/scope_plot_bench" 30
+fi
+# Frame time (wall clock and CPU time of the frame) at 8 x 1e6, 8 x 1e7 and 1 x 1e7 samples,
+# against a bare QCustomPlot, and the CPU cost of recording 8 x 2.5 kHz.
+plot_extract='
+    $5 == "frame" && $10 == "fps" { c = $1 " " $2 " " $3 " " $4
+        print b "|" c "|" $9 "|fps"; print b "|" c " (CPU time)|" $16 "|fps" }
+    /^append: / { sub(/^append: /, ""); v = $(NF - 4); sub(/ [0-9.-]+ % of a core$/, "")
+        print b "|append 8 x 2.5 kHz: " $0 "|" v "|% of a core" }'
+if ((quick)); then
+    QT_QPA_PLATFORM=offscreen bench scope_plot_bench 1 "$plot_extract" \
+        "$build/bench/scope/scope_plot_bench" 30 --cases 8x1e6 --append-seconds 1 "${rt[@]}"
+else
+    QT_QPA_PLATFORM=offscreen bench scope_plot_bench "$runs" "$plot_extract" \
+        "$build/bench/scope/scope_plot_bench" 60 --append-seconds 3 "${rt[@]}"
+fi
+
+# ---- GUI idle cost: the demo under Xvfb, nothing changing on screen ----
+if ((${#uris[@]} == 0 && !quick)) && command -v xvfb-run >/dev/null; then
+    bench gui_idle_bench 1 '
+        /^idle CPU/ { gsub(/[()]/, ""); split($14, r, /\.\./); print b "|idle CPU, demo|" $9 "|" r[1] "|" r[2] "|% of a core" }
+        /^resident memory/ { gsub(/[()]/, ""); split($6, r, /\.\./); print b "|resident memory, demo|" $4 "|" r[1] "|" r[2] "|MB" }' \
+        "$here/gui/gui_idle_bench.sh" --build "$build" --runs "$runs" --seconds 30
 fi
 
 # ---- Morse ----

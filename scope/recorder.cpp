@@ -262,14 +262,14 @@ Recording Recorder::recording() const
     return rec;
 }
 
-void Recorder::load(const Recording &recording)
+void Recorder::load(Recording recording)
 {
     stop();
     removeAllChannels();
-    for (const RecordedChannel &c : recording.channels) {
+    for (RecordedChannel &c : recording.channels) {
         auto *slot = new Slot;
         slot->info = c.info;
-        slot->live = c.buffer;
+        slot->live = std::move(c.buffer);
         m_channels.append(slot);
     }
     m_showCapture = false;

@@ -106,8 +106,9 @@ public:
 
     // The displayed data as a value (channels, buffers, device, trigger, start time).
     Recording recording() const;
-    // Shows a saved recording (stops first; channels become orphans without source).
-    void load(const Recording &recording);
+    // Shows a saved recording (stops first; channels become orphans without source). Pass an
+    // rvalue to move the samples in instead of copying them.
+    void load(Recording recording);
 
 Q_SIGNALS:
     void stateChanged(db::scope::Recorder::State state);

@@ -125,6 +125,20 @@ void Cia402Axis::onRoundDone()
         Q_EMIT statusChanged();
     }
     if (m_connection->isConnected())
+        m_pollTimer.start(isIdle() ? kIdleStatusPollMs : kStatusPollMs);
+}
+
+bool Cia402Axis::isIdle() const
+{
+    return m_status.valid && !m_status.powered && !m_status.moving && !m_status.quickStopActive
+        && !(m_motion && m_motion->isRunning());
+}
+
+void Cia402Axis::pollSoon()
+{
+    // A command changes the drive's state: see it at the fast rate (a round in flight restarts
+    // the timer when it ends, and then the drive is no longer idle or the command has ended).
+    if (m_pollTimer.isActive() && m_pollTimer.remainingTime() > kStatusPollMs)
         m_pollTimer.start(kStatusPollMs);
 }
 
@@ -252,6 +266,7 @@ Reply *Cia402Axis::runMotion(Sequence *sequence)
             Error(Error::Kind::Cancelled,
                   m_motion->name() + QStringLiteral(": superseded by ") + sequence->name()));
     m_motion = sequence;
+    pollSoon();
     return sequence->start();
 }
 
@@ -259,11 +274,13 @@ Reply *Cia402Axis::power(bool on)
 {
     if (m_motion)
         m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("power changed")));
+    pollSoon();
     return on ? m_controller.enableOperation() : m_controller.disableVoltage();
 }
 
 Reply *Cia402Axis::reset()
 {
+    pollSoon();
     return m_controller.faultReset();
 }
 
@@ -329,6 +346,7 @@ Reply *Cia402Axis::stopNow()
 {
     if (m_motion)
         m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("stopped")));
+    pollSoon();
     return m_controller.quickStop();
 }
 

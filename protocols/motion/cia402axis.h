@@ -19,13 +19,18 @@ namespace db::motion {
 // (607Ah, 6081h, 6064h, 606Ch already carry the factor group); accelerations are converted when
 // the drive uses the rotary MovingCap unit [100 rpm/min] (movingcap.md 9.1).
 //
-// Status: 6041h, 6064h, 606Ch and 60FDh are read every kStatusPollMs while connected (one round
-// at a time, never more than four requests in flight); statusChanged() after each round.
+// Status: 6041h, 6064h, 606Ch and 60FDh are read in rounds while connected (one round at a
+// time, never more than four requests in flight); statusChanged() after each round. A round
+// follows kStatusPollMs after the last one while the drive is powered or moving, a motion of
+// this axis runs or the status is unknown, and kIdleStatusPollMs after it while the drive is
+// switched off and standing still (an idle window then costs no CPU and no bus load); any
+// command of this axis brings the next round forward to kStatusPollMs.
 class Cia402Axis : public AxisInterface
 {
     Q_OBJECT
 public:
     static constexpr int kStatusPollMs = 20;
+    static constexpr int kIdleStatusPollMs = 250;
     static constexpr int kHomingTimeoutMs = 30000;
 
     enum class AccelerationUnit { UserUnits, RotaryMotor };
@@ -64,6 +69,8 @@ public:
 private:
     void onConnectionState(DeviceConnection::State state);
     void pollStatus();
+    void pollSoon();
+    bool isIdle() const;
     void onRoundDone();
     Reply *runMotion(cia402::Sequence *sequence);
     quint32 accelerationRaw(double user) const;

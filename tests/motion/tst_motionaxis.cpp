@@ -302,6 +302,32 @@ private Q_SLOTS:
         QVERIFY(expired.wait(1000));
         QTRY_VERIFY(!a->rig->drive().axis().isMoving());
     }
+    void idleDriveIsPolledSlowly()
+    {
+        // A switched-off drive at standstill is read every kIdleStatusPollMs, a powered one
+        // every kStatusPollMs. Counted over the same window (a fixed wait on purpose: what is
+        // measured is how often something happens within it); only the idle bound is firm.
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a);
+        int rounds = 0;
+        connect(a->rig->connection.get(), &DeviceConnection::requestFinished, this,
+                [&rounds](ObjectAddress address, const Error &) {
+                    rounds += address == ObjectAddress(0x6041, 0) ? 1 : 0;
+                });
+        QTRY_VERIFY(a->cia->status().valid);
+        const auto roundsWithin = [&rounds](int ms) {
+            rounds = 0;
+            QTest::qWait(ms);
+            return rounds;
+        };
+        const int idle = roundsWithin(1000);
+        QVERIFY2(idle <= 1000 / Cia402Axis::kIdleStatusPollMs + 1,
+                 qPrintable(QString::number(idle)));
+        QVERIFY(powerOn(a->axis.get()));
+        const int powered = roundsWithin(1000);
+        QVERIFY2(powered > 2 * idle && powered > 1000 / Cia402Axis::kIdleStatusPollMs + 1,
+                 qPrintable(QStringLiteral("%1 rounds powered, %2 idle").arg(powered).arg(idle)));
+    }
     void stopNowAlwaysWorks()
     {
         auto a = makeAxis(QStringLiteral("sim"));

@@ -137,6 +137,31 @@ private slots:
                  qPrintable(panel.statusText()));
     }
 
+    void failedOpenClearsThePreviousResult()
+    {
+        MorsePanel panel;
+        panel.setLoader(load);
+        morse::SignalOptions o = signal(QStringLiteral("MC+IP10+20+30+40:"));
+        o.sampleRate = 60.0;
+        panel.setSource({ morse::generateSignal(o).samples, {}, {}, 0, QStringLiteral("test") });
+        panel.finishPlayback();
+        QCOMPARE(panel.ipText(), QStringLiteral("10.20.30.40"));
+        auto *connectButton = panel.findChild<QToolButton *>(QStringLiteral("morseConnect"));
+        QVERIFY(connectButton->isEnabled());
+        // A file that cannot be read: nothing of the previous decode is left to act on.
+        QVERIFY(!panel.openFile(QStringLiteral("/nonexistent/led.mp4")));
+        QVERIFY(panel.ipText().isEmpty());
+        QVERIFY(!connectButton->isEnabled());
+        QVERIFY(panel.findChild<QPlainTextEdit *>(QStringLiteral("morseText"))
+                    ->toPlainText()
+                    .isEmpty());
+        QVERIFY(!panel.findChild<QLabel *>(QStringLiteral("morseIp"))
+                     ->text()
+                     .contains(QLatin1String("10.20.30.40")));
+        QVERIFY2(panel.statusText().contains(QLatin1String("no such file")),
+                 qPrintable(panel.statusText()));
+    }
+
     void undecodableShowsReason()
     {
         MorsePanel panel;

@@ -6,6 +6,7 @@
 #include "widgets/canopen/nodelistmodel.h"
 
 #include <QCheckBox>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QTest>
 #include <QToolButton>
@@ -56,6 +57,21 @@ private Q_SLOTS:
         QCOMPARE(f.cell(50, NodeListModel::Heartbeat), QStringLiteral("never"));
         QCOMPARE(f.cell(50, NodeListModel::Name), QStringLiteral("MovingCap ETH"));
         QCOMPARE(f.list.targetNode(), 50);
+    }
+
+    void onlyHeardNodesAgeOnScreen()
+    {
+        // The age column of a node never heard says "never" and is not refreshed: nothing is
+        // repainted while nothing changes. A window of three refresh periods (fixed on purpose:
+        // what is checked is that nothing happens in it).
+        Fixture f;
+        QSignalSpy changed(f.list.model(), &QAbstractItemModel::dataChanged);
+        QTest::qWait(3 * NodeListModel::kAgeRefreshMs);
+        QCOMPARE(changed.count(), 0);
+        f.bus.feed(0x732, "05"); // heard now: its age moves on
+        changed.clear();
+        QTRY_VERIFY(!changed.isEmpty());
+        QCOMPARE(changed.last().at(0).toModelIndex().column(), int(NodeListModel::Heartbeat));
     }
 
     void showsBootUpAndHeartbeatNodes()

@@ -110,6 +110,29 @@ private slots:
         QCOMPARE(page.plot()->timeUpper(), 1000.0);
     }
 
+    void onlySparseLinesAreAntialiased()
+    {
+        // Antialiasing a dense line costs most of a frame (the stroker) and shows only where
+        // samples lie pixels apart.
+        ScopePage page;
+        page.resize(1200, 700);
+        page.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&page));
+        page.recorder()->load(syntheticRecording());
+        page.plot()->refreshNow();
+        page.plot()->customPlot()->replot(); // lays the lanes out
+        const QCPGraph *g = page.plot()->graph(0);
+        const int columns = g->keyAxis()->axisRect()->width();
+        QVERIFY(columns > 500);
+        page.plot()->setTimeRange(1.0, 1.0 + columns * 1e-3); // a raw sample per column
+        QVERIFY(g->data()->size() > columns / 2);
+        QVERIFY(!g->antialiased());
+        QCOMPARE(g->pen().widthF(), 1.0);
+        page.plot()->setTimeRange(1.0, 1.0 + columns * 1e-4); // ten columns per sample
+        QVERIFY(g->antialiased());
+        QVERIFY(g->pen().widthF() > 1.0);
+    }
+
     void separateLanesShareTheTimeAxis()
     {
         ScopePage page;
@@ -300,8 +323,10 @@ private slots:
         // One replot per frame, not per batch (2500 batches here).
         QVERIFY2(replots.size() <= rounds + 1, qPrintable(QString::number(replots.size())));
 
-        // Hidden: no replot at all, whatever arrives.
+        // Hidden: no replot at all, whatever arrives, and no frame timer.
+        QVERIFY(page.plot()->isRefreshing());
         page.hide();
+        QVERIFY(!page.plot()->isRefreshing());
         replots.clear();
         for (int i = 0; i < 100; ++i)
             Q_EMIT page.recorder()->dataAppended();

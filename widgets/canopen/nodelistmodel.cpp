@@ -167,8 +167,11 @@ void NodeListModel::onFrame(const QCanBusFrame &frame)
 
 void NodeListModel::refreshAges()
 {
-    if (!m_rows.isEmpty())
-        Q_EMIT dataChanged(index(0, Heartbeat), index(rowCount() - 1, Consumer));
+    // Only the ages of nodes that were heard move on; "never" stays (no repaint for nothing).
+    for (int row = 0; row < m_rows.size(); ++row) {
+        if (m_rows.at(row).heardMs >= 0)
+            Q_EMIT dataChanged(index(row, Heartbeat), index(row, Consumer));
+    }
 }
 
 int NodeListModel::rowOf(NodeId node) const

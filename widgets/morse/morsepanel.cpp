@@ -175,7 +175,10 @@ bool MorsePanel::openFile(const QString &path)
     }
     auto loaded = m_loader(path);
     if (!loaded) {
-        m_status->setText(loaded.error().message());
+        // The previous file's text and IP are not this file's: they go, the reason stays.
+        setSource({});
+        m_error = loaded.error().message();
+        refresh();
         return false;
     }
     setSource(std::move(loaded).value());

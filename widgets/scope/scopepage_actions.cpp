@@ -338,11 +338,15 @@ Result<void> ScopePage::openRecording(const QString &fileName)
     Result<scope::Recording> recording = scope::csv::load(fileName);
     if (!recording)
         return recording.error();
-    m_recorder->load(*recording);
+    const scope::Trigger trigger = recording->trigger;
+    QList<scope::ChannelInfo> infos;
     for (const scope::RecordedChannel &c : recording->channels)
-        m_model->setRateMs(c.info.id, c.info.sourceRateMs);
-    if (recording->trigger.isValid())
-        setTriggerSettings(recording->trigger);
+        infos.append(c.info);
+    m_recorder->load(std::move(*recording)); // the samples move, a large file is not copied
+    for (const scope::ChannelInfo &info : infos)
+        m_model->setRateMs(info.id, info.sourceRateMs);
+    if (trigger.isValid())
+        setTriggerSettings(trigger);
     m_plot->autoscale();
     return {};
 }

@@ -16,6 +16,7 @@ namespace {
 
 constexpr int kMinColumns = 200; // before the first layout (offscreen, hidden)
 constexpr double kValueMargin = 0.08; // of the value span, above and below the data
+constexpr qint64 kSmoothPixels = 3; // points at least this far apart on average: antialiased
 
 } // namespace
 
@@ -56,7 +57,6 @@ ScopePlot::ScopePlot(QWidget *parent)
 
     m_frameTimer.setInterval(1000 / kReplotHz);
     connect(&m_frameTimer, &QTimer::timeout, this, &ScopePlot::onFrame);
-    m_frameTimer.start();
     rebuildLayout();
 }
 
@@ -109,7 +109,6 @@ void ScopePlot::syncStyles()
         m_layoutKeys = keys;
         m_layoutDirty = true;
         m_following = true; // new channels or a loaded recording: show all of it
-        m_pyramids.assign(size_t(n), {});
     }
 }
 
@@ -206,7 +205,14 @@ void ScopePlot::onFrame()
 void ScopePlot::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    m_frameTimer.start();
     markDirty();
+}
+
+void ScopePlot::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_frameTimer.stop();
 }
 
 void ScopePlot::refreshNow()
@@ -261,8 +267,7 @@ void ScopePlot::fitValues()
             if (!m_graphs[size_t(i)] || channelStyle(i).lane != lane.number)
                 continue;
             const scope::TraceBuffer &b = m_recorder->buffer(i);
-            const scope::MinMaxPyramid::Extent x =
-                m_pyramids[size_t(i)].extent(b, b.lowerBound(m_t0), b.upperBound(m_t1));
+            const scope::TraceBuffer::Extent x = b.extent(b.lowerBound(m_t0), b.upperBound(m_t1));
             if (!x.valid)
                 continue;
             const scope::ChannelInfo &info = m_recorder->channelInfo(i);
@@ -299,22 +304,26 @@ void ScopePlot::updateData()
         if (!g)
             continue;
         const scope::TraceBuffer &b = m_recorder->buffer(i);
-        scope::MinMaxPyramid &pyramid = m_pyramids[size_t(i)];
-        pyramid.sync(b);
-        const int width = g->keyAxis()->axisRect()->width();
-        const scope::DecimatedSeries d =
-            scope::decimate(b, pyramid, m_t0, m_t1, std::max(width, kMinColumns));
+        const int columns = std::max(g->keyAxis()->axisRect()->width(), kMinColumns);
+        // Decimated into memory kept from the last frame: the graph's container lets go of
+        // the points it shares with m_points[i] first, so refilling them allocates nothing.
+        scope::DecimatedSeries &d = m_decimated[size_t(i)];
+        scope::decimate(b, m_t0, m_t1, columns, d);
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        QVector<QCPGraphData> points(qsizetype(d.time.size()));
+        g->data()->clear();
+        QVector<QCPGraphData> &points = m_points[size_t(i)];
+        points.resize(qsizetype(d.time.size()));
         for (size_t k = 0; k < d.time.size(); ++k)
             points[qsizetype(k)] = QCPGraphData(d.time[k], info.display(d.value[k]));
         g->data()->set(points, true);
-        // Dense min/max columns gain nothing from antialiasing or a wide pen but would cost
-        // most of the frame (the stroker); raw samples get the smooth pen.
+        // Dense lines (min/max columns, or raw samples less than kSmoothPixels apart) gain
+        // nothing from antialiasing or a wide pen but would cost most of the frame (the
+        // stroker: 10 ms for 8 x 3000 raw points); sparse samples get the smooth pen.
+        const bool smooth = !d.decimated && qint64(d.time.size()) * kSmoothPixels <= columns;
         QPen pen = g->pen();
-        pen.setWidthF(d.decimated ? 1.0 : 1.4);
+        pen.setWidthF(smooth ? 1.4 : 1.0);
         g->setPen(pen);
-        g->setAntialiased(!d.decimated);
+        g->setAntialiased(smooth);
     }
     const scope::Trigger &trigger = m_recorder->trigger();
     const double t = m_recorder->triggerTime();

@@ -14,6 +14,7 @@
 class QCustomPlot;
 class QCPAxisRect;
 class QCPGraph;
+class QCPGraphData;
 class QCPLegend;
 class QCPMarginGroup;
 class QMouseEvent;
@@ -39,7 +40,7 @@ struct ScopeChannelStyle
 //   width in pixels, so the cost of a frame depends on the pixels, not on the recording length.
 // - Repaint is coalesced: dataAppended()/channelsChanged() only mark the view dirty; a kReplotHz
 //   timer refreshes and calls replot(rpQueuedReplot) when dirty AND visible. A hidden plot never
-//   replots; it catches up when shown.
+//   replots and its timer stops; it catches up when shown.
 // - Following: while the recorder runs (and after autoscale()), the view tracks the data
 //   (Run/Single/Normal: the whole buffer; Roll: the roll window) and scales the value axes. Any
 //   zoom or pan by the user stops following until autoscale().
@@ -82,6 +83,9 @@ public:
 
     // Refreshes the decimated data now (tests, export); replot() follows at the next frame.
     void refreshNow();
+    // Whether the frame timer runs: only while the plot is shown (a hidden plot costs no
+    // wake-ups at all).
+    bool isRefreshing() const { return m_frameTimer.isActive(); }
 
 Q_SIGNALS:
     // The time range or the drawn data changed (measurements may need an update).
@@ -90,6 +94,7 @@ Q_SIGNALS:
 
 protected:
     void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
 
 private:
     struct Lane
@@ -127,7 +132,8 @@ private:
     bool m_settingRange = false;
     std::vector<Lane> m_lanes;
     std::vector<QCPGraph *> m_graphs; // per recorder channel; nullptr when hidden
-    std::vector<scope::MinMaxPyramid> m_pyramids; // per recorder channel
+    std::vector<scope::DecimatedSeries> m_decimated; // per recorder channel, reused each frame
+    std::vector<QVector<QCPGraphData>> m_points; // per recorder channel, shared with the graph
     QHash<QString, ScopeChannelStyle> m_styles;
     QStringList m_layoutKeys; // channel keys of the current layout, to detect re-ordering
     int m_nextColor = 0;

@@ -58,8 +58,8 @@ void ScopePlot::rebuildLayout()
     m_lanes.clear();
     const int n = m_recorder ? m_recorder->channelCount() : 0;
     m_graphs.assign(size_t(n), nullptr);
-    if (m_pyramids.size() != size_t(n))
-        m_pyramids.assign(size_t(n), {});
+    m_decimated.resize(size_t(n));
+    m_points.resize(size_t(n));
 
     std::set<int> used;
     for (int i = 0; i < n; ++i) {
