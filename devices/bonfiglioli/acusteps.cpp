@@ -153,6 +153,7 @@ void AcuSteps::readStatus()
             return;
         }
         const quint16 word = quint16(r->value().toUInt());
+        m_lastStatus = word;
         const Step &s = m_steps.at(m_index);
         if (s.pred(word)) {
             next();

@@ -43,6 +43,8 @@ public:
     // Reads 411 once; fails with `failText` unless pred(411) holds.
     void checkStatus(std::function<bool(quint16)> pred, const QString &failText);
     void call(std::function<Result<void>()> fn);
+    // 411 as the last wait or check step read it (0 before).
+    quint16 lastStatus() const { return m_lastStatus; }
     // The reply's value when all steps are done.
     void setResult(std::function<QVariant()> fn) { m_result = std::move(fn); }
 
@@ -75,6 +77,7 @@ private:
     QTimer m_retry;
     std::function<QVariant()> m_result;
     bool m_done = false;
+    quint16 m_lastStatus = 0;
 };
 
 } // namespace db::bonfiglioli
