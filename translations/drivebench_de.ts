@@ -2017,10 +2017,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Verbindung geschlossen</translation>
     </message>
     <message>
-        <source>connection to %1 closed</source>
-        <translation>Verbindung zu %1 geschlossen</translation>
-    </message>
-    <message>
         <source>the inverter did not give its configuration (30)</source>
         <translation>der Umrichter hat seine Konfiguration (30) nicht geliefert</translation>
     </message>
@@ -4470,6 +4466,17 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1: skipped a line that is not slcan: &apos;%2&apos;</source>
         <translation>%1: Zeile übersprungen, die kein SLCAN ist: „%2“</translation>
+    </message>
+</context>
+<context>
+    <name>db::vabus</name>
+    <message>
+        <source>VABus server</source>
+        <translation>VABus-Server</translation>
+    </message>
+    <message>
+        <source>refusing the connection from %1:%2: the PLC port takes one connection and %3:%4 holds it</source>
+        <translation>Verbindung von %1:%2 abgewiesen: der SPS-Port nimmt eine Verbindung an, und %3:%4 hält sie</translation>
     </message>
 </context>
 <context>
