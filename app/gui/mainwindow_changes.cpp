@@ -5,6 +5,7 @@
 #include "core/changelog.h"
 #include "core/valuecodec.h"
 #include "parameters/parameterrunner.h"
+#include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
 #include "widgets/motion/jogpanel.h"
@@ -23,16 +24,19 @@ void MainWindow::createChangeLog()
     m_jogPanel->setChangeLog(m_changeLog);
     m_paramActions->setChangeLog(m_changeLog);
 
-    connect(m_nodeList, &widgets::NodeList::commandSent, this,
-            [this](const QString &command, int node) {
-                ChangeLog::Entry e;
-                e.device = m_canopen ? m_canopen->uri().toString() : QString();
-                e.kind = ChangeLog::Kind::Nmt;
-                e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-                e.newValue = command;
-                e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
-                m_changeLog->add(e);
-            });
+    m_networkView->setChangeLog(m_changeLog);
+    const auto recordNmt = [this](const QString &command, int node) {
+        ChangeLog::Entry e;
+        e.device = m_canopen ? m_canopen->uri().toString() : QString();
+        e.kind = ChangeLog::Kind::Nmt;
+        e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
+        e.newValue = command;
+        e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
+        m_changeLog->add(e);
+    };
+    // The node dock and the network page send NMT commands alike.
+    connect(m_nodeList, &widgets::NodeList::commandSent, this, recordNmt);
+    connect(m_networkView->nodeList(), &widgets::NodeList::commandSent, this, recordNmt);
 
     connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
             [this](const RestoreReport &report) {
