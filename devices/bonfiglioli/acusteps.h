@@ -48,8 +48,6 @@ public:
     // step went on, unlike the axis's polled status, which may be older.
     quint16 lastStatus() const { return m_lastStatus; }
     void call(std::function<Result<void>()> fn);
-    // 411 as the last wait or check step read it (0 before).
-    quint16 lastStatus() const { return m_lastStatus; }
     // The reply's value when all steps are done.
     void setResult(std::function<QVariant()> fn) { m_result = std::move(fn); }
 
