@@ -2248,10 +2248,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Verbindung geschlossen</translation>
     </message>
     <message>
-        <source>connection to %1 closed</source>
-        <translation>Verbindung zu %1 geschlossen</translation>
-    </message>
-    <message>
         <source>the inverter did not give its configuration (30)</source>
         <translation>der Umrichter hat seine Konfiguration (30) nicht geliefert</translation>
     </message>
@@ -5332,6 +5328,17 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>connecting to %1 again (the inverter may be starting up)</source>
         <translation>erneutes Verbinden mit %1 (der Umrichter startet eventuell gerade)</translation>
+    </message>
+</context>
+<context>
+    <name>db::vabus</name>
+    <message>
+        <source>VABus server</source>
+        <translation>VABus-Server</translation>
+    </message>
+    <message>
+        <source>refusing the connection from %1:%2: the PLC port takes one connection and %3:%4 holds it</source>
+        <translation>Verbindung von %1:%2 abgewiesen: der SPS-Port nimmt eine Verbindung an, und %3:%4 hält sie</translation>
     </message>
 </context>
 <context>

@@ -205,6 +205,26 @@ void printPosition(Context &c, Axis &axis)
         c.out << p << Qt::endl;
 }
 
+// Runs the command to its end and prints where the axis stands then; 0 when it is Done.
+int runAndReport(Context &c, Axis &axis, MotionCommand &command)
+{
+    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
+        return rc;
+    printPosition(c, axis);
+    return ExitOk;
+}
+
+// The integer argument after the URI (a homing method, a motion block), then the axis: bad
+// input is refused before the drive is touched. notANumber names the argument, %1 its text.
+Result<std::unique_ptr<Axis>> openAxisFor(Context &c, int &number, const QString &notANumber)
+{
+    bool ok = false;
+    number = c.args.at(1).toInt(&ok);
+    if (!ok)
+        return Error(Error::Kind::InvalidArgument, notANumber.arg(c.args.at(1)));
+    return openAxis(c);
+}
+
 int power(Context &c, CommandKind kind, bool on)
 {
     auto axis = openAxis(c);
@@ -264,13 +284,8 @@ int reset(Context &c)
 
 int home(Context &c)
 {
-    bool ok = false;
-    const int method = c.args.at(1).toInt(&ok);
-    if (!ok)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("METHOD is a homing method number, not '%1'").arg(c.args.at(1))));
-    auto opened = openAxis(c);
+    int method = 0;
+    auto opened = openAxisFor(c, method, Tr::tr("METHOD is a homing method number, not '%1'"));
     if (!opened)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
@@ -289,10 +304,7 @@ int home(Context &c)
     h.speedSlow = h.speedFast;
     MotionCommand command(axis.model.get(), CommandKind::Home);
     command.setHoming(h);
-    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
-        return rc;
-    printPosition(c, axis);
-    return ExitOk;
+    return runAndReport(c, axis, command);
 }
 
 int move(Context &c)
@@ -332,10 +344,7 @@ int move(Context &c)
         return fail(c, given.error());
     MotionCommand command(axis.model.get(), kind);
     command.setParams(p);
-    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
-        return rc;
-    printPosition(c, axis);
-    return ExitOk;
+    return runAndReport(c, axis, command);
 }
 
 int jog(Context &c)
@@ -462,10 +471,7 @@ int velocity(Context &c)
     }
     MotionCommand halt(axis.model.get(), CommandKind::Halt);
     halt.setParams(p);
-    if (const int rc = runToEnd(c, axis, halt); rc != ExitOk)
-        return rc;
-    printPosition(c, axis);
-    return ExitOk;
+    return runAndReport(c, axis, halt);
 }
 
 namespace {
@@ -488,10 +494,7 @@ int brake(Context &c, CommandKind kind)
     p.jerk = axis.model->config().maxJerk;
     MotionCommand command(axis.model.get(), kind);
     command.setParams(p);
-    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
-        return rc;
-    printPosition(c, axis);
-    return ExitOk;
+    return runAndReport(c, axis, command);
 }
 } // namespace
 
@@ -507,13 +510,8 @@ int stop(Context &c)
 
 int travel(Context &c)
 {
-    bool ok = false;
-    const int block = c.args.at(1).toInt(&ok);
-    if (!ok)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("BLOCK is a motion block number, not '%1'").arg(c.args.at(1))));
-    auto opened = openAxis(c);
+    int block = 0;
+    auto opened = openAxisFor(c, block, Tr::tr("BLOCK is a motion block number, not '%1'"));
     if (!opened)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
@@ -523,10 +521,7 @@ int travel(Context &c)
     p.resume = c.parser->isSet(kResume);
     MotionCommand command(axis.model.get(), CommandKind::MotionBlock);
     command.setParams(p);
-    if (const int rc = runToEnd(c, axis, command); rc != ExitOk)
-        return rc;
-    printPosition(c, axis);
-    return ExitOk;
+    return runAndReport(c, axis, command);
 }
 
 } // namespace db::cli

@@ -131,6 +131,8 @@ Result<std::unique_ptr<DeviceConnection>> makeCanopen(const ConnectionPlan &plan
     connection->setDictionary(plan.dictionary);
     if (plan.dictionary.isEmpty())
         connection->setDescriptionChooser(chooseDescription);
+    // Polls only what the description has, also one chosen later from the device's identity.
+    connection->setStatusSource(new cia402::Cia402StatusSource(connection.get()));
     return std::unique_ptr<DeviceConnection>(std::move(connection));
 }
 

@@ -1,6 +1,7 @@
 #include "acuaxis.h"
 
 #include "acuaxis_p.h"
+#include "acustatussource.h"
 #include "acusteps.h"
 
 #include <QCoreApplication>
@@ -23,35 +24,32 @@ using namespace acuaxis;
 
 namespace {
 
-const QList<quint16> &statusParameters()
+QList<ObjectAddress> statusObjects()
 {
-    static const QList<quint16> list { kStatusWord, kPosition, kSpeed, kActualSpeedRpm,
-                                       kApplicationWarnings };
-    return list;
+    return { ObjectAddress(kStatusWord, 0), ObjectAddress(kPosition, 0), ObjectAddress(kSpeed, 0),
+             ObjectAddress(kActualSpeedRpm, 0), ObjectAddress(kApplicationWarnings, 0) };
+}
+
+// The connection's status source; an ACU one, made now, when it has none.
+StatusSource *statusSourceOf(DeviceConnection *connection)
+{
+    if (!connection->statusSource())
+        connection->setStatusSource(new AcuStatusSource(connection));
+    return connection->statusSource();
 }
 
 } // namespace
 
 AcuAxis::AcuAxis(DeviceConnection *connection, QObject *parent)
-    : AxisInterface(parent)
-    , m_connection(connection)
+    : ConnectionAxis(connection, parent)
 {
-    m_pollTimer.setSingleShot(true);
-    connect(&m_pollTimer, &QTimer::timeout, this, &AcuAxis::pollStatus);
-    connect(connection, &DeviceConnection::stateChanged, this, &AcuAxis::onConnectionState);
     m_limits.positionWindow = 182.0; // 1165 factory setting
     m_limits.positionWindowTimeMs = 1;
     m_limits.velocityWindow = 10.0;
-    if (connection->isConnected())
-        m_pollTimer.start(0);
+    attachStatus(statusSourceOf(connection), statusObjects());
 }
 
 AcuAxis::~AcuAxis() = default;
-
-bool AcuAxis::isConnected() const
-{
-    return m_connection->isConnected();
-}
 
 AxisInterface::Features AcuAxis::features() const
 {
@@ -145,72 +143,40 @@ QString AcuAxis::velocityUnit() const
     return hasPositioning() ? QStringLiteral("u/s") : QStringLiteral("rpm");
 }
 
-void AcuAxis::onConnectionState(DeviceConnection::State state)
+void AcuAxis::onDisconnected()
 {
-    if (state == DeviceConnection::State::Connected) {
-        m_pollTimer.start(0);
-        return;
-    }
-    if (state != DeviceConnection::State::Disconnected)
-        return;
-    m_pollTimer.stop();
-    m_status.valid = false;
     if (m_running)
         m_running->cancel(Error(Error::Kind::Disconnected, Tr::tr("connection closed")));
-    Error error = m_connection->lastError();
-    if (!error.isError())
-        error = Error(Error::Kind::Disconnected,
-                      Tr::tr("connection to %1 closed").arg(m_connection->uri().toString()));
-    Q_EMIT connectionLost(error);
-    Q_EMIT statusChanged();
 }
 
-void AcuAxis::pollStatus()
+bool AcuAxis::takeStatus(const StatusSource &source, Status &status)
 {
-    if (!m_connection->isConnected() || m_roundPending > 0)
-        return;
-    m_round.clear();
-    m_roundPending = int(statusParameters().size());
-    for (const quint16 p : statusParameters()) {
-        Reply *r = m_connection->read(ObjectAddress(p, 0));
-        connect(r, &Reply::finished, this, [this, r, p] {
-            r->deleteLater();
-            if (r->ok())
-                m_round.insert(p, r->value());
-            if (--m_roundPending == 0)
-                onRoundDone();
-        });
-    }
-}
-
-void AcuAxis::onRoundDone()
-{
-    if (m_round.contains(kStatusWord) && m_round.contains(kPosition)) {
-        const quint16 word = quint16(m_round.value(kStatusWord).toUInt());
-        const quint16 state = word & kStateMask;
-        const bool velocityMode = m_mode == Mode::Velocity || !hasPositioning();
-        m_status.valid = true;
-        m_lastAnswer.start();
-        m_status.rawStatus = word;
-        m_status.powered =
-            state == kOperationEnabled || (m_modeChanging && m_running && state == kSwitchedOn);
-        m_status.fault = word & kFaultBit;
-        m_status.quickStopActive = state == kQuickStopActive;
-        m_status.position = m_round.value(kPosition).toDouble();
-        m_status.velocity = velocityMode ? m_round.value(kActualSpeedRpm).toDouble()
-                                         : m_round.value(kSpeed).toDouble();
-        m_status.moving = m_round.value(kSpeed).toLongLong() != 0
-            || m_round.value(kActualSpeedRpm).toLongLong() != 0;
-        m_status.targetReached = word & kTargetReached;
-        if (m_mode == Mode::Homing)
-            m_status.homingAttained = (word & kBit12) && !(word & kBit13);
-        const quint16 app = quint16(m_round.value(kApplicationWarnings).toUInt());
-        m_status.hardwareLimitPositive = app & kHwLimitPositive;
-        m_status.hardwareLimitNegative = app & kHwLimitNegative;
-        Q_EMIT statusChanged();
-    }
-    if (m_connection->isConnected())
-        m_pollTimer.start(kStatusPollMs);
+    const auto value = [&source](quint16 parameter) {
+        return source.value(ObjectAddress(parameter, 0));
+    };
+    if (!source.isFresh(ObjectAddress(kStatusWord, 0))
+        || !source.isFresh(ObjectAddress(kPosition, 0)))
+        return false;
+    const quint16 word = quint16(value(kStatusWord).toUInt());
+    const quint16 state = word & kStateMask;
+    const bool velocityMode = m_mode == Mode::Velocity || !hasPositioning();
+    m_lastAnswer.start();
+    status.valid = true;
+    status.rawStatus = word;
+    status.powered =
+        state == kOperationEnabled || (m_modeChanging && m_running && state == kSwitchedOn);
+    status.fault = word & kFaultBit;
+    status.quickStopActive = state == kQuickStopActive;
+    status.position = value(kPosition).toDouble();
+    status.velocity = velocityMode ? value(kActualSpeedRpm).toDouble() : value(kSpeed).toDouble();
+    status.moving = value(kSpeed).toLongLong() != 0 || value(kActualSpeedRpm).toLongLong() != 0;
+    status.targetReached = word & kTargetReached;
+    if (m_mode == Mode::Homing)
+        status.homingAttained = (word & kBit12) && !(word & kBit13);
+    const quint16 app = quint16(value(kApplicationWarnings).toUInt());
+    status.hardwareLimitPositive = app & kHwLimitPositive;
+    status.hardwareLimitNegative = app & kHwLimitNegative;
+    return true;
 }
 
 Reply *AcuAxis::initialize()
@@ -224,7 +190,7 @@ Reply *AcuAxis::initialize()
     auto pending = std::make_shared<int>(int(wanted.size()));
     QPointer<Reply> guard(result);
     for (const quint16 p : wanted) {
-        Reply *r = m_connection->read(ObjectAddress(p, 0));
+        Reply *r = connection()->read(ObjectAddress(p, 0));
         connect(r, &Reply::finished, this, [=, this] {
             r->deleteLater();
             if (r->ok())
@@ -271,7 +237,7 @@ Reply *AcuAxis::run(AcuSteps *steps)
         m_running->cancel(
             Error(Error::Kind::Cancelled, Tr::tr("superseded by %1").arg(steps->name())));
     m_running = steps;
-    return steps->start();
+    return refreshedAfter(steps->start());
 }
 
 void AcuAxis::requireEnabled(AcuSteps *steps) const
@@ -327,7 +293,7 @@ Reply *AcuAxis::power(bool on)
                        Tr::tr("the inverter is in fault: reset it first"));
     // Control through the state machine; the RAM copy of all data sets, so nothing is stored.
     steps->write(kLocalRemote, 1);
-    if (m_status.valid && m_status.powered)
+    if (status().valid && status().powered)
         return run(steps);
     steps->control(kDisableVoltage); // from any state (quick stop active too) to the start
     steps->control(kShutdown);
@@ -352,7 +318,7 @@ Reply *AcuAxis::reset()
     auto *steps = new AcuSteps(this, Tr::tr("fault reset"));
     auto code = std::make_shared<quint16>(0);
     // 260 first, so that the reset names what it cleared.
-    Reply *fault = m_connection->read(ObjectAddress(kCurrentFault, 0));
+    Reply *fault = connection()->read(ObjectAddress(kCurrentFault, 0));
     connect(fault, &Reply::finished, this, [this, fault, code] {
         fault->deleteLater();
         if (fault->ok())

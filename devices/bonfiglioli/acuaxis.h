@@ -16,27 +16,24 @@
 // and -2 move away from the limit switch (bit 4), -3 electronic gear slave (bit 4; status bit 10
 // in gear). Halt is bit 8, quick stop 0x0002.
 //
-// Status: 411, 1108, 1107, 240 and 274 are read every kStatusPollMs while connected (one round
-// at a time); statusChanged() after each round. The rounds also keep the inverter's 10 s link
-// watchdog (388) fed.
+// Status: 411, 1108, 1107, 240 and 274 from the connection's status source (an ACU one is made
+// when the connection has none), a cycle at least every kStatusPollMs while connected;
+// statusChanged() after each cycle that read 411 and 1108. The cycles also keep the inverter's
+// 10 s link watchdog (388) fed.
 
-#include "motion/axisinterface.h"
-
-#include "core/deviceconnection.h"
+#include "motion/connectionaxis.h"
 
 #include <QElapsedTimer>
 #include <QPointer>
-#include <QTimer>
 
 namespace db::bonfiglioli {
 
 class AcuSteps;
 
-class AcuAxis : public motion::AxisInterface
+class AcuAxis : public motion::ConnectionAxis
 {
     Q_OBJECT
 public:
-    static constexpr int kStatusPollMs = 20;
     static constexpr int kStateTimeoutMs = 2000; // one state machine transition
     static constexpr int kHandshakeTimeoutMs = 2000; // set-point acknowledged
     static constexpr int kHomingTimeoutMs = 60000;
@@ -60,7 +57,6 @@ public:
     explicit AcuAxis(DeviceConnection *connection, QObject *parent = nullptr);
     ~AcuAxis() override;
 
-    DeviceConnection *connection() const { return m_connection; }
     // Configuration (30) read by initialize(); x40 has positioning control.
     int configuration() const { return m_configuration; }
     bool hasPositioning() const { return m_configuration % 100 == 40; }
@@ -69,8 +65,6 @@ public:
     quint16 faultCode() const { return m_faultCode; } // 260 as last read
 
     motion::AxisInterface::Features features() const override;
-    Status status() const override { return m_status; }
-    bool isConnected() const override;
 
     Reply *initialize() override;
     motion::AxisConfig limits() const override { return m_limits; }
@@ -108,11 +102,12 @@ public:
     // master source (1122) are the drive's own parameters.
     Reply *gearIn(double acceleration = 0, double deceleration = 0);
 
+protected:
+    bool takeStatus(const StatusSource &source, Status &status) override;
+    void onDisconnected() override;
+
 private:
     friend class AcuSteps;
-    void onConnectionState(DeviceConnection::State state);
-    void pollStatus();
-    void onRoundDone();
     Reply *run(AcuSteps *steps);
     // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
     // when the change is refused.
@@ -122,20 +117,14 @@ private:
     // A step that fails unless the inverter is in "operation enabled" (411 read then).
     void requireEnabled(AcuSteps *steps) const;
 
-    DeviceConnection *m_connection;
-    Status m_status;
-    QTimer m_pollTimer;
-    QHash<quint16, QVariant> m_round;
-    int m_roundPending = 0;
     QPointer<AcuSteps> m_running;
     quint16 m_controlWord = 0;
     Mode m_mode = Mode::None;
     int m_configuration = 0;
     int m_busErrorBehaviour = -1; // 388, -1 = not read
     quint16 m_faultCode = 0;
-    bool m_modeChanging = false;
-    QElapsedTimer m_lastAnswer; // since the last complete status round // passing "switched on" to
-                                // change 1454
+    bool m_modeChanging = false; // passing "switched on" to change 1454
+    QElapsedTimer m_lastAnswer; // since the last complete status cycle
     motion::AxisConfig m_limits;
     Profile m_profile;
     motion::HomingParams m_homing;

@@ -142,7 +142,7 @@ Reply *AcuAxis::stopNow()
     auto *steps = new AcuSteps(this, Tr::tr("quick stop"));
     steps->control(kQuickStop);
     m_running = nullptr; // nothing supersedes a quick stop
-    return steps->start();
+    return refreshedAfter(steps->start());
 }
 
 Reply *AcuAxis::startMotionBlock(int block, bool sequence, bool resume)

@@ -40,6 +40,14 @@ QList<vabus::BlockItem> blockItems(const ObjectDictionary &dictionary,
     return vabus::packBlock(items);
 }
 
+QList<ObjectAddress> addressesOf(const QList<vabus::BlockItem> &items)
+{
+    QList<ObjectAddress> addresses;
+    for (const auto &item : items)
+        addresses.append(item.address);
+    return addresses;
+}
+
 } // namespace
 
 AcuStatusSource::AcuStatusSource(DeviceConnection *connection, QObject *parent)
@@ -53,6 +61,8 @@ AcuStatusSource::AcuStatusSource(DeviceConnection *connection, QObject *parent)
             m_objects.append(address);
         }
     }
+    // Made on a link that is up already: connectionMade() has no state change to follow.
+    m_blockUsable = qobject_cast<vabus::VabusConnection *>(connection) != nullptr;
 }
 
 QString AcuStatusSource::statusWordLabel() const
@@ -198,55 +208,62 @@ void AcuStatusSource::connectionMade()
 
 void AcuStatusSource::poll()
 {
-    if (!m_blockUsable)
-        readEach(m_objects);
-    else if (!m_blockDefined)
-        defineBlock();
+    const QList<ObjectAddress> objects = cycleObjects();
+    if (!m_blockUsable) {
+        readEach(objects);
+        return;
+    }
+    // A holder's objects changed what the block must hold: define it again.
+    if (!m_blockDefined
+        || addressesOf(blockItems(connection()->dictionary(), objects)) != m_blockAddresses)
+        defineBlock(objects);
     else
-        readBlock();
+        readBlock(objects);
 }
 
-void AcuStatusSource::defineBlock()
+void AcuStatusSource::defineBlock(const QList<ObjectAddress> &objects)
 {
     auto *vabus = qobject_cast<vabus::VabusConnection *>(connection());
-    const auto items = blockItems(vabus->dictionary(), m_objects);
+    const auto items = blockItems(vabus->dictionary(), objects);
     const auto text = vabus::blockDefinition(items);
     if (!text) {
         m_blockUsable = false;
-        readEach(m_objects);
+        readEach(objects);
         return;
     }
     ++m_definitions;
+    m_blockDefined = false;
     // Data set 0 on purpose: 17 is volatile (lost at reset), never an EEPROM write.
     Reply *reply = vabus->client()->writeData(vabus::kBlockDefinitionParameter, 0, text.value(),
                                               ObjectAddress(vabus::kBlockDefinitionParameter, 0));
     reply->setParent(this);
     const quint64 gen = generation();
-    connect(reply, &Reply::finished, this, [this, reply, gen] {
+    connect(reply, &Reply::finished, this, [this, reply, gen, objects, items] {
         reply->deleteLater();
         if (gen != generation())
             return;
         if (reply->ok()) {
             m_blockDefined = true;
             m_blockFailures = 0;
-            readBlock();
+            m_blockAddresses = addressesOf(items);
+            readBlock(objects);
             return;
         }
         if (++m_blockFailures >= kMaxBlockFailures)
             m_blockUsable = false;
-        readEach(m_objects); // this cycle one by one; the next tries the block again
+        readEach(objects); // this cycle one by one; the next tries the block again
     });
 }
 
-void AcuStatusSource::readBlock()
+void AcuStatusSource::readBlock(const QList<ObjectAddress> &objects)
 {
     auto *vabus = qobject_cast<vabus::VabusConnection *>(connection());
-    const auto items = blockItems(vabus->dictionary(), m_objects);
+    const auto items = blockItems(vabus->dictionary(), objects);
     Reply *reply = vabus->client()->read(vabus::kBlockReadParameter, 0, DataType::VisibleString,
                                          ObjectAddress(vabus::kBlockReadParameter, 0));
     reply->setParent(this);
     const quint64 gen = generation();
-    connect(reply, &Reply::finished, this, [this, reply, gen, items] {
+    connect(reply, &Reply::finished, this, [this, reply, gen, objects, items] {
         reply->deleteLater();
         if (gen != generation())
             return;
@@ -259,12 +276,15 @@ void AcuStatusSource::readBlock()
             // A device error (e.g. an inverter reset lost the definition) or an answer that
             // does not fit: define the block again next cycle.
             m_blockDefined = false;
-            finishCycle();
-            return;
+        } else {
+            for (qsizetype i = 0; i < items.size(); ++i)
+                store(items.at(i).address, values.value().at(i));
         }
-        for (qsizetype i = 0; i < items.size(); ++i)
-            store(items.at(i).address, values.value().at(i));
-        finishCycle();
+        // What a block cannot hold (parameters from 1000 on) one by one; ends the cycle.
+        QList<ObjectAddress> rest = objects;
+        for (const auto &item : items)
+            rest.removeAll(item.address);
+        readEach(rest);
     });
 }
 

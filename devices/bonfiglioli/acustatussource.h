@@ -14,7 +14,8 @@ namespace db::bonfiglioli {
 // RAM only: the definition is volatile) once per connection and read with 19. A device error on
 // 19 (e.g. the inverter was reset and lost the definition) defines the block again in the next
 // cycle; after kMaxBlockFailures failed definitions in a row, and on other connections, every
-// parameter is read on its own. Polling never writes EEPROM.
+// parameter is read on its own. What a block cannot hold (a holder's parameters from 1000 on) is
+// read on its own after the block. Polling never writes EEPROM.
 class AcuStatusSource : public StatusSource
 {
     Q_OBJECT
@@ -46,13 +47,15 @@ protected:
     void connectionMade() override;
 
 private:
-    void defineBlock();
-    void readBlock();
+    // `objects`: what this cycle reads; the block holds those that fit.
+    void defineBlock(const QList<ObjectAddress> &objects);
+    void readBlock(const QList<ObjectAddress> &objects);
 
     QList<ObjectAddress> m_objects;
     QList<ObjectAddress> m_actualValues;
     bool m_blockUsable = false;
     bool m_blockDefined = false;
+    QList<ObjectAddress> m_blockAddresses; // what the defined block holds, in order
     int m_blockFailures = 0;
     int m_definitions = 0;
 };

@@ -28,6 +28,15 @@ Cia402StatusSource::Cia402StatusSource(DeviceConnection *connection, QObject *pa
     setStatusWordAddress(kStatusword);
 }
 
+StatusSource *Cia402StatusSource::sourceOf(DeviceConnection *connection)
+{
+    if (!connection)
+        return nullptr;
+    if (!connection->statusSource())
+        connection->setStatusSource(new Cia402StatusSource(connection));
+    return connection->statusSource();
+}
+
 QList<ObjectAddress> Cia402StatusSource::objects()
 {
     return { kStatusword,     kModeDisplay, kPosition, kVelocity, kCurrent,
@@ -46,7 +55,7 @@ QList<ObjectAddress> Cia402StatusSource::polledObjects() const
 
 void Cia402StatusSource::poll()
 {
-    readEach(polledObjects());
+    readEach(cycleObjects());
 }
 
 QString Cia402StatusSource::statusWordLabel() const

@@ -17,6 +17,9 @@ public:
 
     explicit Cia402StatusSource(DeviceConnection *connection, QObject *parent = nullptr);
 
+    // The connection's status source; a CiA 402 one, made now, when it has none.
+    static StatusSource *sourceOf(DeviceConnection *connection);
+
     // 6041h, 6061h, 6064h, 606Ch, 6078h, 1002h, 603Fh, 60FDh, 60FEh.1.
     static QList<ObjectAddress> objects();
 

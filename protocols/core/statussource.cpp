@@ -6,6 +6,8 @@
 
 #include <QCoreApplication>
 
+#include <limits>
+
 namespace db {
 
 StatusSource::StatusSource(DeviceConnection *connection, QObject *parent)
@@ -35,21 +37,85 @@ void StatusSource::release()
 {
     if (m_users == 0)
         return;
-    if (--m_users == 0)
+    --m_users;
+    if (!wanted())
         m_timer.stop(); // a cycle in flight finishes; schedule() then does nothing
+}
+
+void StatusSource::acquire(const QObject *holder, int intervalMs, const QList<ObjectAddress> &extra)
+{
+    if (!holder)
+        return;
+    const bool first = !wanted();
+    Demand &demand = m_holders[holder];
+    demand.intervalMs = qMax(10, intervalMs);
+    demand.extra = extra;
+    if (!demand.destroyed)
+        demand.destroyed =
+            connect(holder, &QObject::destroyed, this, [this, holder] { release(holder); });
+    if (first)
+        schedule(0);
+    else if (m_timer.isActive() && m_timer.remainingTime() > effectiveIntervalMs())
+        m_timer.start(effectiveIntervalMs());
+}
+
+void StatusSource::release(const QObject *holder)
+{
+    const auto it = m_holders.find(holder);
+    if (it == m_holders.end())
+        return;
+    disconnect(it->destroyed);
+    m_holders.erase(it);
+    if (!wanted())
+        m_timer.stop();
+}
+
+int StatusSource::effectiveIntervalMs() const
+{
+    int ms = m_users > 0 || m_holders.isEmpty() ? m_intervalMs : std::numeric_limits<int>::max();
+    for (const Demand &demand : m_holders)
+        ms = qMin(ms, demand.intervalMs);
+    return ms;
 }
 
 void StatusSource::setIntervalMs(int ms)
 {
     m_intervalMs = qMax(10, ms);
     if (m_timer.isActive())
-        m_timer.start(m_intervalMs);
+        m_timer.start(effectiveIntervalMs());
+}
+
+quint64 StatusSource::refresh()
+{
+    if (!m_connection || !m_connection->isConnected())
+        return m_serial + 1;
+    m_refresh = true;
+    if (m_busy)
+        return m_serial + 2; // the running cycle, then the fresh one
+    m_timer.start(0);
+    return m_serial + 1;
+}
+
+QList<ObjectAddress> StatusSource::cycleObjects() const
+{
+    QList<ObjectAddress> objects = polledObjects();
+    if (m_holders.isEmpty() || !m_connection)
+        return objects;
+    const ObjectDictionary &dictionary = m_connection->dictionary();
+    for (const Demand &demand : m_holders) {
+        for (ObjectAddress address : demand.extra) {
+            if (!objects.contains(address) && dictionary.contains(address))
+                objects.append(address);
+        }
+    }
+    return objects;
 }
 
 void StatusSource::onStateChanged()
 {
     ++m_generation; // replies still in flight belong to the old link
     m_busy = false;
+    m_refresh = false;
     m_pending = 0;
     m_timer.stop();
     m_fresh.clear();
@@ -65,16 +131,17 @@ void StatusSource::onStateChanged()
 
 void StatusSource::schedule(int delayMs)
 {
-    if (m_busy || m_users == 0 || !m_connection || !m_connection->isConnected())
+    if (m_busy || !wanted() || !m_connection || !m_connection->isConnected())
         return;
     m_timer.start(delayMs);
 }
 
 void StatusSource::start()
 {
-    if (m_busy || m_users == 0 || !m_connection || !m_connection->isConnected())
+    if (m_busy || !wanted() || !m_connection || !m_connection->isConnected())
         return;
     m_busy = true;
+    m_refresh = false; // this cycle's reads start now: it is the fresh one
     m_fresh.clear();
     m_errors.clear();
     poll();
@@ -126,8 +193,10 @@ void StatusSource::finishCycle()
     if (!m_connection || !m_connection->isConnected())
         m_fresh.clear(); // the link went away during the cycle
     ++m_cycles;
+    ++m_serial;
     Q_EMIT updated();
-    schedule(ConnectionHealth::pollIntervalMs(m_connection, m_intervalMs));
+    // A device that stopped answering is asked less often until it answers again.
+    schedule(m_refresh ? 0 : ConnectionHealth::pollIntervalMs(m_connection, effectiveIntervalMs()));
 }
 
 std::optional<quint32> StatusSource::statusWord() const

@@ -53,10 +53,12 @@ struct StatusIoRow
 // device is polled once however many views are open.
 //
 // Polling contract: polling runs while the connection is Connected and at least one user holds
-// it (acquire()/release()). One cycle reads what the family needs (every object at once, or one
-// block telegram); the next cycle starts intervalMs() after the previous one finished, so a slow
-// device is never flooded. A failed read keeps the old value, marked stale, with the error.
-// updated() follows every finished cycle and every disconnect.
+// it (acquire()/release()). One cycle reads what the family needs and what the holders asked
+// for (every object at once, or one block telegram); the next cycle starts intervalMs() after
+// the previous one finished (the shortest interval a holder asked for), so a slow device is
+// never flooded. A failed read keeps the old value, marked stale, with the error. updated()
+// follows every finished cycle and every disconnect. Whoever needs values read after its own
+// command (an axis after a control word) asks refresh() for them instead of reading itself.
 class StatusSource : public QObject
 {
     Q_OBJECT
@@ -85,21 +87,40 @@ public:
     DeviceConnection *connection() const;
 
     // ---- polling ----
-    // Users that want fresh values hold the source; it polls while the count is above zero.
+    // Users that want fresh values hold the source; it polls while anyone holds it.
     void acquire();
     void release();
-    int users() const { return m_users; }
+    // A holder with needs of its own (an axis following its motion): cycles at least every
+    // intervalMs (the shortest interval of all holders wins), and `extra` objects read in every
+    // cycle besides polledObjects(). Acquiring again replaces the holder's needs; release(holder)
+    // or the holder's destruction ends them.
+    void acquire(const QObject *holder, int intervalMs, const QList<ObjectAddress> &extra = {});
+    void release(const QObject *holder);
+    int users() const { return m_users + int(m_holders.size()); }
+    // The interval set for anonymous users (setIntervalMs); effectiveIntervalMs() is the one in
+    // use, holders' shorter ones included.
     int intervalMs() const { return m_intervalMs; }
+    int effectiveIntervalMs() const;
     void setIntervalMs(int ms);
     // A cycle is scheduled or in flight.
     bool isPolling() const { return m_timer.isActive() || m_busy; }
+    // Asks for values read after now, held or not: a cycle starts at once when none runs, or
+    // right after the running one (whose reads may predate the caller's last write). Returns
+    // the serial() that cycle will have: once serial() reaches it, updated() has brought
+    // values read after the call. Nothing happens while disconnected.
+    quint64 refresh();
+    // Cycles finished since the source was made (never reset, unlike cycles()).
+    quint64 serial() const { return m_serial; }
 
     // ---- what the family shows (fixed per source) ----
     virtual QString statusWordLabel() const = 0; // "Statusword (6041h)"
     virtual QList<StatusLamp> lamps() const = 0;
     virtual QList<StatusIoRow> ioRows() const { return {}; }
-    // Every object one cycle reads.
+    // Every object the family reads in one cycle.
     virtual QList<ObjectAddress> polledObjects() const = 0;
+    // What the next cycle reads: polledObjects() and the holders' extra objects that the
+    // connection's description has (a device would answer the others with errors only).
+    QList<ObjectAddress> cycleObjects() const;
 
     // ---- the data ----
     State state() const;
@@ -160,14 +181,25 @@ private:
     void onStateChanged();
     void schedule(int delayMs);
     void start();
+    bool wanted() const { return m_users > 0 || !m_holders.isEmpty() || m_refresh; }
+
+    struct Demand
+    {
+        int intervalMs = kDefaultIntervalMs;
+        QList<ObjectAddress> extra;
+        QMetaObject::Connection destroyed;
+    };
 
     QPointer<DeviceConnection> m_connection;
     QTimer m_timer;
     int m_users = 0;
+    QHash<const QObject *, Demand> m_holders;
     int m_intervalMs = kDefaultIntervalMs;
     bool m_busy = false;
+    bool m_refresh = false; // a cycle was asked for that starts after the running one
     int m_pending = 0;
     int m_cycles = 0;
+    quint64 m_serial = 0;
     quint64 m_generation = 0;
     ObjectAddress m_statusWordAddress;
     QHash<ObjectAddress, QVariant> m_values;

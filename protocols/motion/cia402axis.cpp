@@ -2,9 +2,12 @@
 
 #include "axislimits.h"
 
+#include "cia402/cia402statussource.h"
 #include "cia402/statusword.h"
 
 #include <QCoreApplication>
+#include <QTimer>
+
 #include <cmath>
 #include <memory>
 
@@ -36,110 +39,43 @@ const QList<ObjectAddress> &statusObjects()
 } // namespace
 
 Cia402Axis::Cia402Axis(DeviceConnection *connection, QObject *parent)
-    : AxisInterface(parent)
-    , m_connection(connection)
+    : ConnectionAxis(connection, parent)
     , m_controller(connection)
 {
-    m_pollTimer.setSingleShot(true);
-    connect(&m_pollTimer, &QTimer::timeout, this, &Cia402Axis::pollStatus);
-    connect(connection, &DeviceConnection::stateChanged, this, &Cia402Axis::onConnectionState);
-    connect(connection, &DeviceConnection::supervisionLost, this, &AxisInterface::supervisionLost);
     m_jerkObject = profileJerk(connection->dictionary());
     if (m_jerkObject)
         m_features |= Feature::Jerk;
-    if (connection->isConnected())
-        m_pollTimer.start(0);
+    attachStatus(Cia402StatusSource::sourceOf(connection), statusObjects());
 }
 
 Cia402Axis::~Cia402Axis() = default;
 
-bool Cia402Axis::isConnected() const
+bool Cia402Axis::takeStatus(const StatusSource &source, Status &status)
 {
-    return m_connection->isConnected();
+    if (!source.isFresh(kStatusword) || !source.isFresh(obj::PositionActual))
+        return false;
+    const quint16 word = quint16(source.value(kStatusword).toULongLong());
+    const State state = decodeState(word);
+    status.valid = true;
+    status.rawStatus = word;
+    status.powered = state == State::OperationEnabled;
+    status.fault = state == State::Fault || state == State::FaultReactionActive;
+    status.quickStopActive = state == State::QuickStopActive;
+    status.moving = word & sw::Moving;
+    status.targetReached = word & sw::TargetReached;
+    status.homingAttained = (word & (sw::SetPointAcknowledge | sw::TargetReached))
+        == (sw::SetPointAcknowledge | sw::TargetReached);
+    status.position = source.value(obj::PositionActual).toDouble();
+    status.velocity = source.value(obj::VelocityActual).toDouble();
+    const quint32 inputs = quint32(source.value(obj::DigitalInputs).toULongLong());
+    status.hardwareLimitNegative = inputs & kNegativeLimitBit;
+    status.hardwareLimitPositive = inputs & kPositiveLimitBit;
+    return true;
 }
 
-void Cia402Axis::onConnectionState(DeviceConnection::State state)
+bool Cia402Axis::commandRunning() const
 {
-    if (state == DeviceConnection::State::Connected) {
-        m_pollTimer.start(0);
-        return;
-    }
-    if (state != DeviceConnection::State::Disconnected)
-        return;
-    m_pollTimer.stop();
-    m_status.valid = false;
-    Error error = m_connection->lastError();
-    if (!error.isError())
-        error = Error(Error::Kind::Disconnected,
-                      Tr::tr("connection to %1 closed").arg(m_connection->uri().toString()));
-    Q_EMIT connectionLost(error);
-    Q_EMIT statusChanged();
-}
-
-void Cia402Axis::pollStatus()
-{
-    if (!m_connection->isConnected() || m_roundPending > 0)
-        return;
-    // Only what the description has (none without a status word): polling objects a device
-    // lacks gives an endless stream of errors and no status.
-    const ObjectDictionary &dictionary = m_connection->dictionary();
-    if (!dictionary.contains(kStatusword)) {
-        m_pollTimer.start(kStatusPollMs); // the description may still arrive
-        return;
-    }
-    QList<ObjectAddress> objects = statusObjects();
-    objects.removeIf([&dictionary](ObjectAddress a) { return !dictionary.contains(a); });
-    m_round.clear();
-    m_roundPending = int(objects.size());
-    for (const ObjectAddress &address : objects) {
-        Reply *r = m_connection->read(address);
-        connect(r, &Reply::finished, this, [this, r, address] {
-            r->deleteLater();
-            if (r->ok())
-                m_round.insert(address, r->value());
-            if (--m_roundPending == 0)
-                onRoundDone();
-        });
-    }
-}
-
-void Cia402Axis::onRoundDone()
-{
-    if (m_round.contains(kStatusword) && m_round.contains(obj::PositionActual)) {
-        const quint16 word = quint16(m_round.value(kStatusword).toULongLong());
-        const State state = decodeState(word);
-        m_status.valid = true;
-        m_status.rawStatus = word;
-        m_status.powered = state == State::OperationEnabled;
-        m_status.fault = state == State::Fault || state == State::FaultReactionActive;
-        m_status.quickStopActive = state == State::QuickStopActive;
-        m_status.moving = word & sw::Moving;
-        m_status.targetReached = word & sw::TargetReached;
-        m_status.homingAttained = (word & (sw::SetPointAcknowledge | sw::TargetReached))
-            == (sw::SetPointAcknowledge | sw::TargetReached);
-        m_status.position = m_round.value(obj::PositionActual).toDouble();
-        m_status.velocity = m_round.value(obj::VelocityActual).toDouble();
-        const quint32 inputs = quint32(m_round.value(obj::DigitalInputs).toULongLong());
-        m_status.hardwareLimitNegative = inputs & kNegativeLimitBit;
-        m_status.hardwareLimitPositive = inputs & kPositiveLimitBit;
-        Q_EMIT statusChanged();
-    }
-    if (m_connection->isConnected())
-        m_pollTimer.start(isIdle() ? kIdleStatusPollMs : kStatusPollMs);
-}
-
-bool Cia402Axis::isIdle() const
-{
-    return m_status.valid && !m_status.powered && !m_status.moving && !m_status.quickStopActive
-        && !(m_motion && m_motion->isRunning());
-}
-
-void Cia402Axis::pollSoon()
-{
-    // A command changes the drive's state: see it at the fast rate (a round in flight restarts
-    // the timer when it ends, and then the drive is no longer idle or the command has ended).
-    if (m_pollTimer.isActive() && m_pollTimer.remainingTime() > kStatusPollMs)
-        m_pollTimer.start(kStatusPollMs);
+    return m_motion && m_motion->isRunning();
 }
 
 Reply *Cia402Axis::initialize()
@@ -148,7 +84,7 @@ Reply *Cia402Axis::initialize()
     auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
     QList<ObjectAddress> objects = Scaling::objects();
     objects.append(obj::SupportedModes);
-    const ObjectDictionary &dict = m_connection->dictionary();
+    const ObjectDictionary &dict = connection()->dictionary();
     for (ObjectAddress a : axislimits::objects(dict))
         if (!objects.contains(a))
             objects.append(a);
@@ -170,7 +106,7 @@ Reply *Cia402Axis::initialize()
         return result;
     }
     for (const ObjectAddress &address : objects) {
-        Reply *r = m_connection->read(address);
+        Reply *r = connection()->read(address);
         connect(r, &Reply::finished, this, [=, this] {
             r->deleteLater();
             if (r->ok())
@@ -221,7 +157,7 @@ void Cia402Axis::applyInitialValues(const QHash<ObjectAddress, QVariant> &values
         m_features = f;
     }
     const bool rotary = m_accelerationUnit == AccelerationUnit::RotaryMotor;
-    m_limits = axislimits::fromValues(values, m_connection->dictionary(), m_scaling, rotary);
+    m_limits = axislimits::fromValues(values, connection()->dictionary(), m_scaling, rotary);
     const auto user = [&](ObjectAddress a, bool acceleration) {
         const double raw = values.value(a).toDouble();
         return acceleration && rotary ? m_scaling.rotaryAccelerationToUser(raw) : raw;
@@ -241,13 +177,13 @@ void Cia402Axis::applyInitialValues(const QHash<ObjectAddress, QVariant> &values
 
 QString Cia402Axis::positionUnit() const
 {
-    const ObjectDef *pos = m_connection->dictionary().find(obj::PositionActual);
+    const ObjectDef *pos = connection()->dictionary().find(obj::PositionActual);
     return pos ? pos->unit : QString();
 }
 
 QString Cia402Axis::velocityUnit() const
 {
-    const ObjectDef *vel = m_connection->dictionary().find(obj::VelocityActual);
+    const ObjectDef *vel = connection()->dictionary().find(obj::VelocityActual);
     return vel ? vel->unit : QString();
 }
 
@@ -266,22 +202,19 @@ Reply *Cia402Axis::runMotion(Sequence *sequence)
             Error(Error::Kind::Cancelled,
                   m_motion->name() + QStringLiteral(": superseded by ") + sequence->name()));
     m_motion = sequence;
-    pollSoon();
-    return sequence->start();
+    return refreshedAfter(sequence->start());
 }
 
 Reply *Cia402Axis::power(bool on)
 {
     if (m_motion)
         m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("power changed")));
-    pollSoon();
-    return on ? m_controller.enableOperation() : m_controller.disableVoltage();
+    return refreshedAfter(on ? m_controller.enableOperation() : m_controller.disableVoltage());
 }
 
 Reply *Cia402Axis::reset()
 {
-    pollSoon();
-    return m_controller.faultReset();
+    return refreshedAfter(m_controller.faultReset());
 }
 
 Reply *Cia402Axis::moveTo(double target, const Profile &profile)
@@ -297,12 +230,12 @@ Reply *Cia402Axis::moveTo(double target, const Profile &profile)
         sp.jerk = quint32(std::llround(profile.jerk));
     }
     sp.immediate = true; // a new command aborts the running one (stoeber_motion.md 2.4)
-    return runMotion(profilePosition(m_connection, sp, this));
+    return runMotion(profilePosition(connection(), sp, this));
 }
 
 Reply *Cia402Axis::moveVelocity(double velocity, const Profile &profile)
 {
-    return runMotion(profileVelocity(m_connection, std::llround(velocity),
+    return runMotion(profileVelocity(connection(), std::llround(velocity),
                                      accelerationRaw(profile.acceleration),
                                      accelerationRaw(profile.deceleration), this));
 }
@@ -312,7 +245,7 @@ Reply *Cia402Axis::halt(double deceleration)
     std::optional<quint32> dec;
     if (deceleration > 0)
         dec = accelerationRaw(deceleration);
-    return runMotion(cia402::halt(m_connection, dec, this));
+    return runMotion(cia402::halt(connection(), dec, this));
 }
 
 Reply *Cia402Axis::home(const HomingParams &params)
@@ -324,12 +257,12 @@ Reply *Cia402Axis::home(const HomingParams &params)
     HomingSetPoint sp;
     sp.method = params.method;
     sp.speedFast = quint32(std::llround(params.speedFast));
-    if (m_connection->dictionary().contains(obj::HomingSpeedSlow))
+    if (connection()->dictionary().contains(obj::HomingSpeedSlow))
         sp.speedSlow = quint32(std::llround(params.speedSlow));
     sp.acceleration = accelerationRaw(params.acceleration);
     sp.offset = std::llround(params.offset);
     sp.timeoutMs = kHomingTimeoutMs;
-    return runMotion(homing(m_connection, sp, this));
+    return runMotion(homing(connection(), sp, this));
 }
 
 Reply *Cia402Axis::torque(double torquePerMille, double slope)
@@ -338,7 +271,7 @@ Reply *Cia402Axis::torque(double torquePerMille, double slope)
         return Reply::failed(
             obj::TargetTorque,
             Error(Error::Kind::NotSupported, Tr::tr("the drive has no profile torque mode")));
-    return runMotion(profileTorque(m_connection, qint16(std::lround(torquePerMille)),
+    return runMotion(profileTorque(connection(), qint16(std::lround(torquePerMille)),
                                    quint32(std::llround(std::abs(slope))), this));
 }
 
@@ -346,8 +279,7 @@ Reply *Cia402Axis::stopNow()
 {
     if (m_motion)
         m_motion->cancel(Error(Error::Kind::Cancelled, Tr::tr("stopped")));
-    pollSoon();
-    return m_controller.quickStop();
+    return refreshedAfter(m_controller.quickStop());
 }
 
 } // namespace db::motion

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "axisinterface.h"
+#include "connectionaxis.h"
 
 #include "cia402/drivecontroller.h"
 #include "cia402/modes.h"
@@ -8,7 +8,6 @@
 
 #include <QHash>
 #include <QPointer>
-#include <QTimer>
 
 #include <optional>
 
@@ -19,18 +18,14 @@ namespace db::motion {
 // (607Ah, 6081h, 6064h, 606Ch already carry the factor group); accelerations are converted when
 // the drive uses the rotary MovingCap unit [100 rpm/min] (movingcap.md 9.1).
 //
-// Status: 6041h, 6064h, 606Ch and 60FDh are read in rounds while connected (one round at a
-// time, never more than four requests in flight); statusChanged() after each round. A round
-// follows kStatusPollMs after the last one while the drive is powered or moving, a motion of
-// this axis runs or the status is unknown, and kIdleStatusPollMs after it while the drive is
-// switched off and standing still (an idle window then costs no CPU and no bus load); any
-// command of this axis brings the next round forward to kStatusPollMs.
-class Cia402Axis : public AxisInterface
+// Status: 6041h, 6064h, 606Ch and 60FDh from the connection's status source (a CiA 402 one is
+// made when the connection has none), a cycle at least every kStatusPollMs while connected
+// (kIdleStatusPollMs while the drive is off and still, see ConnectionAxis); statusChanged()
+// after each cycle that read the statusword and the position.
+class Cia402Axis : public ConnectionAxis
 {
     Q_OBJECT
 public:
-    static constexpr int kStatusPollMs = 20;
-    static constexpr int kIdleStatusPollMs = 250;
     static constexpr int kHomingTimeoutMs = 30000;
 
     enum class AccelerationUnit { UserUnits, RotaryMotor };
@@ -51,11 +46,8 @@ public:
     void setAccelerationUnit(AccelerationUnit unit) { m_accelerationUnit = unit; }
     AccelerationUnit accelerationUnit() const { return m_accelerationUnit; }
     const cia402::Scaling &scaling() const { return m_scaling; }
-    DeviceConnection *connection() const { return m_connection; }
 
     Features features() const override { return m_features; }
-    Status status() const override { return m_status; }
-    bool isConnected() const override;
 
     Reply *power(bool on) override;
     Reply *reset() override;
@@ -66,30 +58,24 @@ public:
     Reply *torque(double torquePerMille, double slope) override;
     Reply *stopNow() override;
 
+protected:
+    bool takeStatus(const StatusSource &source, Status &status) override;
+    bool commandRunning() const override;
+
 private:
-    void onConnectionState(DeviceConnection::State state);
-    void pollStatus();
-    void pollSoon();
-    bool isIdle() const;
-    void onRoundDone();
     Reply *runMotion(cia402::Sequence *sequence);
     quint32 accelerationRaw(double user) const;
     static QList<ObjectAddress> profileObjects();
     void applyInitialValues(const QHash<ObjectAddress, QVariant> &values);
 
-    DeviceConnection *m_connection;
     cia402::DriveController m_controller;
     cia402::Scaling m_scaling;
     AccelerationUnit m_accelerationUnit = AccelerationUnit::UserUnits;
     Features m_features = Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
     std::optional<ObjectAddress> m_jerkObject; // 60A4h.1 or .0, whichever is described
-    Status m_status;
     AxisConfig m_limits;
     Profile m_profile;
     HomingParams m_homing;
-    QTimer m_pollTimer;
-    QHash<ObjectAddress, QVariant> m_round; // values of the running status round
-    int m_roundPending = 0;
     QPointer<cia402::Sequence> m_motion;
 };
 

@@ -107,10 +107,14 @@ void QtCanBus::doOpen()
     connect(m_device, &QCanBusDevice::framesReceived, this, &QtCanBus::onFramesReceived);
     if (m_bitrate > 0)
         m_device->setConfigurationParameter(QCanBusDevice::BitRateKey, QVariant(m_bitrate));
+    m_openError.clear();
     if (!m_device->connectDevice()) {
-        failLater(Error(Error::Kind::ConnectionRefused,
-                        Tr::tr("cannot open %1 interface '%2': %3")
-                            .arg(m_plugin, m_interface, m_device->errorString())));
+        // A plugin that fails at once (socketcan without the interface) has reported it from
+        // inside connectDevice(), and onStateChanged() has released the device already.
+        if (m_device)
+            failLater(Error(Error::Kind::ConnectionRefused,
+                            Tr::tr("cannot open %1 interface '%2': %3")
+                                .arg(m_plugin, m_interface, m_device->errorString())));
         return;
     }
     if (m_device->state() == QCanBusDevice::ConnectedState)
@@ -153,6 +157,10 @@ void QtCanBus::onStateChanged(QCanBusDevice::CanBusDeviceState state)
         releaseDevice();
         if (was == State::Closing || was == State::Closed)
             setClosed();
+        else if (was == State::Opening && !m_openError.isEmpty())
+            setClosed(Error(Error::Kind::ConnectionRefused,
+                            Tr::tr("cannot open %1 interface '%2': %3")
+                                .arg(m_plugin, m_interface, m_openError)));
         else
             setClosed(
                 Error(Error::Kind::Disconnected, Tr::tr("%1 closed unexpectedly").arg(name())));
@@ -167,6 +175,7 @@ void QtCanBus::onError(QCanBusDevice::CanBusError error)
         return;
     case QCanBusDevice::ConnectionError:
         if (CanBus::state() == State::Opening) {
+            m_openError = text;
             failLater(Error(
                 Error::Kind::ConnectionRefused,
                 Tr::tr("cannot open %1 interface '%2': %3").arg(m_plugin, m_interface, text)));

@@ -55,6 +55,7 @@ private:
     QString m_interface;
     int m_bitrate;
     QPointer<QCanBusDevice> m_device;
+    QString m_openError; // what the device said while it was being opened
     bool m_receiveScheduled = false;
 };
 

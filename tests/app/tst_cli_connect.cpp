@@ -53,6 +53,7 @@ private Q_SLOTS:
     void connectTimeoutReachesTheTransport_data();
     void connectTimeoutReachesTheTransport();
     void unknownCanPluginIsNamed();
+    void missingInterfaceIsNamed();
     void badBitrateIsNamed();
     void unreadableDescriptionIsNamed();
 };
@@ -96,6 +97,20 @@ void TestCliConnect::unknownCanPluginIsNamed()
     QVERIFY2(r.err.contains(QStringLiteral("nosuchplugin")), qPrintable(r.err));
     QVERIFY2(r.err.contains(QStringLiteral("virtualcan")), qPrintable(r.err)); // what there is
     QVERIFY2(!r.err.contains(QStringLiteral("cannot make")), qPrintable(r.err));
+}
+
+void TestCliConnect::missingInterfaceIsNamed()
+{
+    // socketcan fails inside its open call when the interface does not exist (or names the
+    // missing plugin where it is not installed): the message says which interface, no crash.
+    const CliRun r =
+        runProgram(kCli,
+                   { QStringLiteral("read"), QStringLiteral("canopen+socketcan://nosuchif7?node=1"),
+                     QStringLiteral("1000:0") },
+                   10000);
+    QVERIFY2(r.exitCode > 0 && r.exitCode < 128, qPrintable(QString::number(r.exitCode)));
+    QVERIFY2(r.err.contains(QStringLiteral("nosuchif7")), qPrintable(r.err));
+    QVERIFY2(!r.err.contains(QStringLiteral("closed unexpectedly")), qPrintable(r.err));
 }
 
 void TestCliConnect::badBitrateIsNamed()

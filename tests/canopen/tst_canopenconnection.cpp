@@ -5,6 +5,7 @@
 #include "canopen/canopenconnection.h"
 #include "canopen/heartbeatproducer.h"
 #include "canopen/sdoclient.h"
+#include "objectdefs.h"
 #include "parameters/parameterrunner.h"
 #include "scriptedcanbus.h"
 #include "transport/qtcanbus.h"
@@ -29,15 +30,6 @@ ScriptedCanBus::Line rx(const char *hex)
 ConnectionUri uri(const QString &text)
 {
     return ConnectionUri::parse(text).value();
-}
-ObjectDef def(quint16 index, quint8 sub, DataType type, Access access = Access::ReadWrite)
-{
-    ObjectDef d;
-    d.address = ObjectAddress(index, sub);
-    d.name = QStringLiteral("obj %1").arg(index, 4, 16);
-    d.type = type;
-    d.access = access;
-    return d;
 }
 } // namespace
 
@@ -93,10 +85,10 @@ void TstCanopenConnection::open(const QString &text)
 {
     m_conn = new CanopenConnection(uri(text), m_bus);
     ObjectDictionary dict;
-    dict.insert(def(0x6041, 0, DataType::Unsigned16, Access::ReadOnly));
-    dict.insert(def(0x6040, 0, DataType::Unsigned16));
-    dict.insert(def(0x1008, 0, DataType::VisibleString, Access::Const));
-    dict.insert(def(0x1010, 1, DataType::Unsigned32));
+    dict.insert(test::objectDef(0x6041, 0, DataType::Unsigned16, Access::ReadOnly));
+    dict.insert(test::objectDef(0x6040, 0, DataType::Unsigned16, Access::ReadWrite));
+    dict.insert(test::objectDef(0x1008, 0, DataType::VisibleString, Access::Const));
+    dict.insert(test::objectDef(0x1010, 1, DataType::Unsigned32, Access::ReadWrite));
     m_conn->setDictionary(dict);
     m_conn->setRequestTimeoutMs(50);
     m_conn->open();

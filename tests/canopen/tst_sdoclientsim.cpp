@@ -5,6 +5,7 @@
 #include "canopen/device/simulatednode.h"
 #include "canopen/sdoabort.h"
 #include "canopen/sdoclient.h"
+#include "objectdefs.h"
 #include "transport/device/slcanserver.h"
 #include "transport/qtcanbus.h"
 #include "transport/slcanbus.h"
@@ -19,23 +20,14 @@ namespace {
 constexpr NodeId kNode = 50;
 constexpr int kWaitMs = 20000;
 
-ObjectDef def(quint16 index, DataType type)
-{
-    ObjectDef d;
-    d.address = ObjectAddress(index, 0);
-    d.name = QStringLiteral("obj");
-    d.type = type;
-    return d;
-}
-
 ObjectDictionary dictionary()
 {
     ObjectDictionary dict;
-    ObjectDef value = def(0x2000, DataType::Unsigned32);
+    ObjectDef value = test::objectDef(0x2000, 0, DataType::Unsigned32, Access::ReadWrite);
     value.defaultValue = QVariant::fromValue<qulonglong>(0x12345678);
     dict.insert(value);
-    dict.insert(def(0x2001, DataType::VisibleString));
-    dict.insert(def(0x2F00, DataType::Domain));
+    dict.insert(test::objectDef(0x2001, 0, DataType::VisibleString, Access::ReadWrite));
+    dict.insert(test::objectDef(0x2F00, 0, DataType::Domain, Access::ReadWrite));
     return dict;
 }
 

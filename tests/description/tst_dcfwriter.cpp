@@ -2,6 +2,7 @@
 #include "description/dcfwriter.h"
 #include "description/devicedescription.h"
 #include "description/edsloader.h"
+#include "objectdefs.h"
 
 #include "descriptiontestutil.h"
 
@@ -15,18 +16,6 @@ using db::test::sharedFile;
 
 namespace {
 
-ObjectDef def(quint16 index, quint8 sub, DataType type, Access access, const QString &name,
-              const QString &objectName = QString())
-{
-    ObjectDef d;
-    d.address = ObjectAddress(index, sub);
-    d.type = type;
-    d.access = access;
-    d.name = name;
-    d.objectName = objectName;
-    return d;
-}
-
 // A dictionary with every kind of value a DCF has to carry.
 ObjectDictionary handMade()
 {
@@ -36,10 +25,12 @@ ObjectDictionary handMade()
     d.identity.productName = QStringLiteral("Widget");
     d.identity.productCode = 77;
     d.identity.revision = QStringLiteral("0x00010002");
-    d.insert(def(0x1000, 0, DataType::Unsigned32, Access::ReadOnly, QStringLiteral("Device type")));
-    d.insert(def(0x1008, 0, DataType::VisibleString, Access::Const, QStringLiteral("Name")));
-    ObjectDef i16 =
-        def(0x2000, 0, DataType::Integer16, Access::ReadWrite, QStringLiteral("Offset"));
+    d.insert(test::namedObjectDef(0x1000, 0, DataType::Unsigned32, Access::ReadOnly,
+                                  QStringLiteral("Device type")));
+    d.insert(test::namedObjectDef(0x1008, 0, DataType::VisibleString, Access::Const,
+                                  QStringLiteral("Name")));
+    ObjectDef i16 = test::namedObjectDef(0x2000, 0, DataType::Integer16, Access::ReadWrite,
+                                         QStringLiteral("Offset"));
     i16.minimum = QVariant::fromValue(-100LL);
     i16.maximum = QVariant::fromValue(100LL);
     i16.defaultValue = QVariant::fromValue(-5LL);
@@ -47,16 +38,20 @@ ObjectDictionary handMade()
     i16.unit = QStringLiteral("mm");
     i16.factor = 0.01;
     d.insert(i16);
-    d.insert(def(0x2001, 0, DataType::Real32, Access::ReadWrite, QStringLiteral("Gain")));
-    d.insert(def(0x2002, 0, DataType::Domain, Access::ReadWrite, QStringLiteral("Blob")));
-    d.insert(def(0x2003, 0, DataType::Integer48, Access::ReadWrite, QStringLiteral("Wide")));
-    d.insert(def(0x2004, 0, DataType::Unsigned64, Access::ReadWrite, QStringLiteral("Big")));
-    d.insert(def(0x3000, 0, DataType::Unsigned8, Access::ReadOnly, QStringLiteral("Count"),
-                 QStringLiteral("Table")));
-    d.insert(def(0x3000, 1, DataType::Integer32, Access::ReadWrite, QStringLiteral("A"),
-                 QStringLiteral("Table")));
-    d.insert(def(0x3000, 2, DataType::Integer32, Access::WriteOnly, QStringLiteral("B"),
-                 QStringLiteral("Table")));
+    d.insert(test::namedObjectDef(0x2001, 0, DataType::Real32, Access::ReadWrite,
+                                  QStringLiteral("Gain")));
+    d.insert(test::namedObjectDef(0x2002, 0, DataType::Domain, Access::ReadWrite,
+                                  QStringLiteral("Blob")));
+    d.insert(test::namedObjectDef(0x2003, 0, DataType::Integer48, Access::ReadWrite,
+                                  QStringLiteral("Wide")));
+    d.insert(test::namedObjectDef(0x2004, 0, DataType::Unsigned64, Access::ReadWrite,
+                                  QStringLiteral("Big")));
+    d.insert(test::namedObjectDef(0x3000, 0, DataType::Unsigned8, Access::ReadOnly,
+                                  QStringLiteral("Count"), QStringLiteral("Table")));
+    d.insert(test::namedObjectDef(0x3000, 1, DataType::Integer32, Access::ReadWrite,
+                                  QStringLiteral("A"), QStringLiteral("Table")));
+    d.insert(test::namedObjectDef(0x3000, 2, DataType::Integer32, Access::WriteOnly,
+                                  QStringLiteral("B"), QStringLiteral("Table")));
     return d;
 }
 

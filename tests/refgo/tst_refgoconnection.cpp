@@ -1,6 +1,7 @@
 // Level 2: RefgoConnection over a scripted stream: OR/OW with type conversion, missing ",OK",
 // unsupported types, raw commands, store, connect errors, lost link, auto-reconnect.
 
+#include "objectdefs.h"
 #include "parameters/parameterrunner.h"
 #include "refgo/refgoconnection.h"
 #include "scriptedstream.h"
@@ -15,30 +16,33 @@ namespace {
 
 constexpr int kWaitMs = 5000;
 
-ObjectDef def(quint16 index, quint8 sub, DataType type, const char *name)
-{
-    ObjectDef d;
-    d.address = ObjectAddress(index, sub);
-    d.type = type;
-    d.name = QString::fromLatin1(name);
-    return d;
-}
-
 ObjectDictionary dictionary()
 {
     ObjectDictionary dict;
-    dict.insert(def(0x3511, 0x08, DataType::Integer32, "IN1 target position"));
-    dict.insert(def(0x6041, 0x00, DataType::Unsigned16, "Statusword"));
-    dict.insert(def(0x6078, 0x00, DataType::Integer16, "Current actual value"));
-    dict.insert(def(0x60FD, 0x00, DataType::Unsigned32, "Digital inputs"));
-    dict.insert(def(0x1003, 0x01, DataType::Unsigned32, "Error history 1"));
-    dict.insert(def(0x2001, 0x00, DataType::Boolean, "Some flag"));
-    dict.insert(def(0x2002, 0x00, DataType::Unsigned8, "Small"));
-    dict.insert(def(0x1010, 0x01, DataType::Unsigned32, "Save all parameters"));
-    dict.insert(def(0x1008, 0x00, DataType::VisibleString, "Device name"));
-    dict.insert(def(0x2003, 0x00, DataType::Real32, "Gain"));
-    dict.insert(def(0x2004, 0x00, DataType::Domain, "Blob"));
-    dict.insert(def(0x2005, 0x00, DataType::OctetString, "Bytes"));
+    dict.insert(test::namedObjectDef(0x3511, 0x08, DataType::Integer32, Access::ReadWrite,
+                                     QStringLiteral("IN1 target position")));
+    dict.insert(test::namedObjectDef(0x6041, 0x00, DataType::Unsigned16, Access::ReadWrite,
+                                     QStringLiteral("Statusword")));
+    dict.insert(test::namedObjectDef(0x6078, 0x00, DataType::Integer16, Access::ReadWrite,
+                                     QStringLiteral("Current actual value")));
+    dict.insert(test::namedObjectDef(0x60FD, 0x00, DataType::Unsigned32, Access::ReadWrite,
+                                     QStringLiteral("Digital inputs")));
+    dict.insert(test::namedObjectDef(0x1003, 0x01, DataType::Unsigned32, Access::ReadWrite,
+                                     QStringLiteral("Error history 1")));
+    dict.insert(test::namedObjectDef(0x2001, 0x00, DataType::Boolean, Access::ReadWrite,
+                                     QStringLiteral("Some flag")));
+    dict.insert(test::namedObjectDef(0x2002, 0x00, DataType::Unsigned8, Access::ReadWrite,
+                                     QStringLiteral("Small")));
+    dict.insert(test::namedObjectDef(0x1010, 0x01, DataType::Unsigned32, Access::ReadWrite,
+                                     QStringLiteral("Save all parameters")));
+    dict.insert(test::namedObjectDef(0x1008, 0x00, DataType::VisibleString, Access::ReadWrite,
+                                     QStringLiteral("Device name")));
+    dict.insert(test::namedObjectDef(0x2003, 0x00, DataType::Real32, Access::ReadWrite,
+                                     QStringLiteral("Gain")));
+    dict.insert(test::namedObjectDef(0x2004, 0x00, DataType::Domain, Access::ReadWrite,
+                                     QStringLiteral("Blob")));
+    dict.insert(test::namedObjectDef(0x2005, 0x00, DataType::OctetString, Access::ReadWrite,
+                                     QStringLiteral("Bytes")));
     return dict;
 }
 

@@ -18,4 +18,14 @@ inline ObjectDef objectDef(quint16 index, quint8 sub, DataType type, Access acce
     return d;
 }
 
+// The same with the name a test checks, and the name of the object a sub-index belongs to.
+inline ObjectDef namedObjectDef(quint16 index, quint8 sub, DataType type, Access access,
+                                const QString &name, const QString &objectName = {})
+{
+    ObjectDef d = objectDef(index, sub, type, access);
+    d.name = name;
+    d.objectName = objectName;
+    return d;
+}
+
 } // namespace db::test

@@ -64,9 +64,7 @@ void DriveStatusPanel::setConnection(DeviceConnection *connection)
     m_connection = connection;
     m_source = nullptr;
     if (connection) {
-        if (!connection->statusSource())
-            connection->setStatusSource(new cia402::Cia402StatusSource(connection));
-        m_source = connection->statusSource();
+        m_source = cia402::Cia402StatusSource::sourceOf(connection);
         m_source->setIntervalMs(m_intervalMs);
         m_signals = {
             connect(m_source, &StatusSource::updated, this, &DriveStatusPanel::onUpdated),

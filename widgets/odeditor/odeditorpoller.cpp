@@ -14,22 +14,72 @@ OdEditorPoller::OdEditorPoller(OdEditorModel *model, QObject *parent)
     connect(&m_timer, &QTimer::timeout, this, &OdEditorPoller::tick);
 }
 
+OdEditorPoller::~OdEditorPoller()
+{
+    holdStatusSource(false);
+}
+
 void OdEditorPoller::setConnection(DeviceConnection *connection)
 {
     if (connection == m_connection)
         return;
     clear();
     m_connection = connection;
+    bindStatusSource();
 }
 
 void OdEditorPoller::setPeriodMs(int ms)
 {
     m_periodMs = qMax(0, ms);
     if (m_periodMs == 0) {
+        holdStatusSource(false);
         m_timer.stop();
         return;
     }
+    if (m_holding && m_source)
+        m_source->acquire(this, m_periodMs);
     m_timer.start(m_periodMs);
+}
+
+void OdEditorPoller::bindStatusSource()
+{
+    StatusSource *source = m_connection ? m_connection->statusSource() : nullptr;
+    if (source == m_source)
+        return;
+    holdStatusSource(false);
+    disconnect(m_sourceUpdated);
+    m_source = source;
+    if (source)
+        m_sourceUpdated =
+            connect(source, &StatusSource::updated, this, &OdEditorPoller::onStatusUpdated);
+}
+
+void OdEditorPoller::holdStatusSource(bool on)
+{
+    if (on == m_holding)
+        return;
+    m_holding = on;
+    if (!m_source)
+        return;
+    if (on)
+        m_source->acquire(this, m_periodMs);
+    else
+        m_source->release(this);
+}
+
+void OdEditorPoller::onStatusUpdated()
+{
+    // Only while refreshing: with the refresh off the editor shows what it read last.
+    if (!m_source || m_periodMs == 0 || !m_connection || !m_connection->isConnected())
+        return;
+    for (ObjectAddress a : m_source->cycleObjects()) {
+        if (!m_model->definition(a))
+            continue;
+        if (m_source->isFresh(a))
+            m_model->setValue(a, m_source->value(a));
+        else if (const auto error = m_source->errors().find(a); error != m_source->errors().end())
+            m_model->setReadFailed(a, error.value());
+    }
 }
 
 bool OdEditorPoller::wanted(ObjectAddress address) const
@@ -82,6 +132,7 @@ void OdEditorPoller::backgroundFinished(ObjectAddress address)
 
 void OdEditorPoller::clear()
 {
+    holdStatusSource(false);
     ++m_generation; // replies in flight are dropped when they arrive
     m_inFlight = 0;
     m_urgent.clear();
@@ -103,7 +154,15 @@ void OdEditorPoller::tick()
     // answered again (ConnectionHealth probes it meanwhile).
     if (ConnectionHealth::isSilent(m_connection))
         return;
-    readNow(m_visibleRows(), true);
+    bindStatusSource();
+    QList<ObjectAddress> visible = m_visibleRows();
+    if (m_source) {
+        const QList<ObjectAddress> shared = m_source->cycleObjects();
+        const qsizetype before = visible.size();
+        visible.removeIf([&shared](ObjectAddress a) { return shared.contains(a); });
+        holdStatusSource(visible.size() != before);
+    }
+    readNow(visible, true);
 }
 
 void OdEditorPoller::pump()

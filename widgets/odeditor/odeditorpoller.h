@@ -20,6 +20,11 @@ class OdEditorModel;
 // Two queues: `urgent` (read-backs after writes, the visible rows of a refresh round) before
 // `background` (the one-time read of every object after connecting). Results go into the model
 // with setValue()/setReadFailed(); nothing here ever writes.
+//
+// The drive's status objects (status word, faults, actual values: whatever the connection's
+// StatusSource reads in its cycles) are not refreshed here: while such a row is visible the
+// poller holds the source at its own period and takes the values from its cycles, so the
+// device is polled for them once however many views show them.
 class OdEditorPoller : public QObject
 {
     Q_OBJECT
@@ -29,6 +34,7 @@ public:
     static constexpr int kPeriodsMs[] = { 0, 250, 1000, 5000 };
 
     explicit OdEditorPoller(OdEditorModel *model, QObject *parent = nullptr);
+    ~OdEditorPoller() override;
 
     void setConnection(DeviceConnection *connection);
     // Who is visible now; called at every refresh tick (empty or not set: nothing is refreshed).
@@ -52,6 +58,8 @@ public:
     // Statistics for tests and the status line.
     int requestsSent() const { return m_sent; }
     int maxInFlightSeen() const { return m_maxInFlight; }
+    // The status source is held for visible rows it reads.
+    bool holdsStatusSource() const { return m_source && m_holding; }
 
 Q_SIGNALS:
     // Emitted when a queue drains (e.g. the read-all pass has finished).
@@ -65,9 +73,16 @@ private:
     void pump();
     void onReply(Reply *reply, quint64 generation);
     bool wanted(ObjectAddress address) const;
+    // Follows the connection's status source (one may be set after the connection).
+    void bindStatusSource();
+    void holdStatusSource(bool on);
+    void onStatusUpdated();
 
     OdEditorModel *m_model;
     QPointer<DeviceConnection> m_connection;
+    QPointer<StatusSource> m_source;
+    QMetaObject::Connection m_sourceUpdated;
+    bool m_holding = false;
     std::function<QList<ObjectAddress>()> m_visibleRows;
     QTimer m_timer;
     int m_periodMs = 0;

@@ -62,6 +62,15 @@ int StreamServer::dropClients()
     return int(sockets.size());
 }
 
+void StreamServer::abortClient(QTcpSocket *client)
+{
+    if (!m_clients.remove(client))
+        return;
+    client->disconnect(this);
+    client->abort();
+    client->deleteLater();
+}
+
 bool StreamServer::mayRead(QTcpSocket *client) const
 {
     ClientThrottle *throttle = m_clients.value(client);

@@ -1,6 +1,6 @@
 #pragma once
 
-// The TCP side that the simulators' RefGo and SLCAN servers share: listens on loopback, accepts
+// The TCP side that the simulators' RefGo, SLCAN and VABus servers share: listens on loopback, accepts
 // clients with TCP_NODELAY, throttles each one (ClientThrottle: a client that does not read its
 // answers is paused, and dropped once it stays paused), and tells the protocol when a client
 // may be read and when it is gone. The protocol keeps its own per-client state keyed by the
@@ -38,6 +38,9 @@ public:
     // Aborts every client connection (RST, no goodbye) and keeps listening: a cut cable as the
     // clients see it. Returns how many were dropped. clientGone() is not emitted for them.
     int dropClients();
+    // Aborts one client (RST) and forgets it, e.g. one the protocol refuses; clientGone() is
+    // not emitted for it.
+    void abortClient(QTcpSocket *client);
     int clientCount() const { return int(m_clients.size()); }
     QList<QTcpSocket *> clients() const { return m_clients.keys(); }
     // Applies to clients that connect afterwards.

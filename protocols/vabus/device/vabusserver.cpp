@@ -1,11 +1,20 @@
 #include "vabusserver.h"
 
+#include "transport/device/streamserver.h"
 #include "vabus/vabuslogging.h"
 
+#include <QCoreApplication>
 #include <QPointer>
-#include <QTcpServer>
 #include <QTcpSocket>
 #include <QTimer>
+
+namespace {
+// The context of this file's translated messages.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(db::vabus)
+};
+} // namespace
 
 namespace db::vabus {
 
@@ -15,18 +24,20 @@ public:
     Private(Server *server, DeviceHandler *deviceHandler)
         : q(server)
         , handler(deviceHandler)
+        , tcp(Tr::tr("VABus server"), lcVabus(), server)
     { }
 
     Server *q;
     DeviceHandler *handler;
-    QTcpServer server;
-    QPointer<QTcpSocket> client;
-    QByteArray buffer;
+    StreamServer tcp;
+    QPointer<QTcpSocket> client; // the one PLC connection
+    QByteArray buffer; // its bytes not handled yet
     FailureMode failure;
     int answered = 0;
 
-    void accept();
-    void read();
+    void accept(QTcpSocket *socket);
+    void forget();
+    void read(QTcpSocket *socket);
     void respond(const QByteArray &frame);
     void send(const QByteArray &bytes);
 };
@@ -35,7 +46,12 @@ Server::Server(DeviceHandler *handler, QObject *parent)
     : QObject(parent)
     , d(new Private(this, handler))
 {
-    connect(&d->server, &QTcpServer::newConnection, this, [this] { d->accept(); });
+    connect(&d->tcp, &StreamServer::clientConnected, this, [this](QTcpSocket *s) { d->accept(s); });
+    connect(&d->tcp, &StreamServer::readable, this, [this](QTcpSocket *s) { d->read(s); });
+    connect(&d->tcp, &StreamServer::clientGone, this, [this](QTcpSocket *s) {
+        if (s == d->client)
+            d->forget();
+    });
 }
 
 Server::~Server()
@@ -46,35 +62,18 @@ Server::~Server()
 
 Result<void> Server::listen(quint16 port, const QHostAddress &address)
 {
-    if (d->server.isListening())
-        return Error(
-            Error::Kind::Busy,
-            QStringLiteral("VABus server already listens on port %1").arg(d->server.serverPort()));
-    if (!d->server.listen(address, port))
-        return Error(Error::Kind::Io,
-                     QStringLiteral("VABus server cannot listen on %1:%2: %3")
-                         .arg(address.toString())
-                         .arg(port)
-                         .arg(d->server.errorString()));
-    qCInfo(lcVabus).noquote() << "VABus server listening on" << address.toString()
-                              << d->server.serverPort();
-    return {};
+    return d->tcp.listen(port, address);
 }
 
 quint16 Server::port() const
 {
-    return d->server.serverPort();
+    return d->tcp.port();
 }
 
 void Server::close()
 {
-    d->server.close();
-    if (d->client) {
-        d->client->disconnect(this);
-        d->client->abort();
-        d->client->deleteLater();
-    }
-    d->buffer.clear();
+    d->tcp.close();
+    d->forget();
 }
 
 bool Server::hasClient() const
@@ -105,44 +104,39 @@ std::optional<Server::Failure> Server::failureFromName(const QString &name)
     return std::nullopt;
 }
 
-void Server::Private::accept()
+void Server::Private::accept(QTcpSocket *socket)
 {
-    while (QTcpSocket *socket = server.nextPendingConnection()) {
-        if (client) {
-            const QString line =
-                QStringLiteral("refusing the connection from %1:%2: the PLC port takes one "
-                               "connection and %3:%4 holds it")
-                    .arg(socket->peerAddress().toString())
-                    .arg(socket->peerPort())
-                    .arg(client->peerAddress().toString())
-                    .arg(client->peerPort());
-            qCWarning(lcVabus).noquote() << line;
-            Q_EMIT q->logLine(line);
-            socket->abort();
-            socket->deleteLater();
-            continue;
-        }
-        socket->setParent(q);
-        socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        client = socket;
-        buffer.clear();
-        answered = 0;
-        qCDebug(lcVabus) << "VABus client connected from" << socket->peerPort();
-        QObject::connect(socket, &QTcpSocket::readyRead, q, [this] { read(); });
-        QObject::connect(socket, &QTcpSocket::disconnected, q, [this, socket] {
-            if (client == socket)
-                client.clear();
-            socket->deleteLater();
-        });
+    if (client) {
+        const QString line = Tr::tr("refusing the connection from %1:%2: the PLC port takes one "
+                                    "connection and %3:%4 holds it")
+                                 .arg(socket->peerAddress().toString())
+                                 .arg(socket->peerPort())
+                                 .arg(client->peerAddress().toString())
+                                 .arg(client->peerPort());
+        qCWarning(lcVabus).noquote() << line;
+        Q_EMIT q->logLine(line);
+        tcp.abortClient(socket);
+        return;
     }
+    client = socket;
+    buffer.clear();
+    answered = 0;
 }
 
-void Server::Private::read()
+void Server::Private::forget()
 {
-    if (!client)
+    client.clear();
+    buffer.clear();
+}
+
+// Handles the complete telegrams of the PLC connection while it reads its answers; a paused
+// client's telegrams wait in the buffer (at most one read slice) and in the kernel.
+void Server::Private::read(QTcpSocket *socket)
+{
+    if (socket != client || !tcp.mayRead(socket))
         return;
-    buffer += client->readAll();
-    while (buffer.size() >= 2) {
+    buffer += socket->read(ClientThrottle::kReadSliceBytes);
+    while (client == socket && tcp.mayRead(socket) && buffer.size() >= 2) {
         const int nob = quint8(buffer.at(1));
         if (nob < kAddressBytes || nob > kMaxNob) {
             // Structurally broken: no answer (7.2); start afresh with the next bytes.
@@ -193,21 +187,21 @@ void Server::Private::respond(const QByteArray &frame)
 void Server::Private::send(const QByteArray &bytes)
 {
     if (!client)
-        return;
+        return; // a slot of requestHandled closed the connection
     switch (failure.failure) {
     case Failure::None:
-        client->write(bytes);
+        tcp.write(client, bytes);
         break;
     case Failure::Silent:
         return;
     case Failure::Garbage:
-        client->write(QByteArrayLiteral("\xff\xfe garbage, not VABus\r\n"));
+        tcp.write(client, QByteArrayLiteral("\xff\xfe garbage, not VABus\r\n"));
         break;
     case Failure::Slow: {
         QPointer<QTcpSocket> socket = client;
-        QTimer::singleShot(failure.slowMs, q, [socket, bytes] {
+        QTimer::singleShot(failure.slowMs, q, [this, socket, bytes] {
             if (socket)
-                socket->write(bytes);
+                tcp.write(socket, bytes);
         });
         break;
     }
@@ -216,11 +210,11 @@ void Server::Private::send(const QByteArray &bytes)
             client->abort();
             return;
         }
-        client->write(bytes);
+        tcp.write(client, bytes);
         break;
     case Failure::SplitBytes:
         for (const char c : bytes) {
-            client->write(&c, 1);
+            tcp.write(client, QByteArray(1, c));
             client->flush(); // one segment per byte (LowDelayOption: no Nagle)
         }
         break;

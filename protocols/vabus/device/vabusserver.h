@@ -1,7 +1,8 @@
 #pragma once
 
 // Device side of VABus/TCP (used by the simulated ACU): the module's PLC port as a TCP server
-// on loopback. It frames requests by NoB, hands each to a DeviceHandler and writes its answer.
+// on loopback (StreamServer: a client that does not read its answers is paused, then dropped).
+// It frames requests by NoB, hands each to a DeviceHandler and writes its answer.
 //
 // Contracts:
 // - One PLC connection at a time (the module has one logical connection per port). A second
