@@ -108,9 +108,9 @@ void TestParameterRunner::backupReadsEveryStorableObject()
     QCOMPARE(set->identity.productName, QStringLiteral("MovingCap ETH"));
     QCOMPARE(set->find({ 0x6083, 0 })->raw, rig.drive.read({ 0x6083, 0 }).value());
     QVERIFY(!set->contains({ 0x6041, 0 })); // a process value, not a parameter
-    // Two more reads: 1018h.1/.2 give the identity the device reports.
-    QCOMPARE(progress.last().at(0).toInt(), storable + 2);
-    QCOMPARE(progress.last().at(1).toInt(), storable + 2);
+    // Three more reads: 1018h.1/.2/.3 give the identity the device reports.
+    QCOMPARE(progress.last().at(0).toInt(), storable + 3);
+    QCOMPARE(progress.last().at(1).toInt(), storable + 3);
     QCOMPARE(set->identity.productCode, rig.drive.read({ 0x1018, 2 }).value().toUInt());
     QCOMPARE(set->identity.vendorId, 0x53Bu);
     QVERIFY(!set->contains({ 0x1018, 2 }));

@@ -1,8 +1,8 @@
 #pragma once
 
-// The TCP side that the simulators' RefGo, SLCAN and VABus servers share: listens on loopback, accepts
-// clients with TCP_NODELAY, throttles each one (ClientThrottle: a client that does not read its
-// answers is paused, and dropped once it stays paused), and tells the protocol when a client
+// The TCP side that the simulators' RefGo, SLCAN and VABus servers share: listens on loopback,
+// accepts clients with TCP_NODELAY, throttles each one (ClientThrottle: a client that does not read
+// its answers is paused, and dropped once it stays paused), and tells the protocol when a client
 // may be read and when it is gone. The protocol keeps its own per-client state keyed by the
 // socket, reads at most ClientThrottle::kReadSliceBytes per readable() and answers with write().
 
