@@ -5,10 +5,10 @@
 // velocity) plus the braking distance. Times and positions come from the simulator's own clock
 // and axis through its control console, so test and pipe latencies are not part of the figures.
 #include "clirun.h"
+#include "simcontrol.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
-#include <QRegularExpression>
 #include <QTest>
 
 #include <csignal>
@@ -28,15 +28,7 @@ private Q_SLOTS:
 
 private:
     using Run = db::test::CliRun;
-    struct Sample
-    {
-        bool ok = false;
-        qint64 ms = 0; // the drive's clock
-        double position = 0;
-        double velocity = 0;
-        int statusword = 0;
-        QString line;
-    };
+    using Sample = db::test::SimControl::Sample;
 
     Run cli(const QStringList &args, int timeoutMs = 30000)
     {
@@ -48,57 +40,20 @@ private:
             ? QStringLiteral("refgo://127.0.0.1:%1").arg(m_refgoPort)
             : QStringLiteral("canopen+slcan://127.0.0.1:%1?node=50").arg(m_slcanPort);
     }
-    // Sends one console command and returns the first answer line starting with `answer`.
-    QString ask(const QString &command, const QString &answer, int timeoutMs = 3000);
-    Sample sample(const QString &command, const QString &answer, int timeoutMs = 3000);
+    QString ask(const QString &command, const QString &answer, int timeoutMs = 3000)
+    {
+        return m_control.ask(command, answer, timeoutMs);
+    }
+    Sample sample(const QString &command, const QString &answer, int timeoutMs = 3000)
+    {
+        return m_control.sample(command, answer, timeoutMs);
+    }
 
     QProcess m_sim;
-    QByteArray m_pending; // simulator output not consumed yet
+    db::test::SimControl m_control { m_sim };
     quint16 m_refgoPort = 0;
     quint16 m_slcanPort = 0;
 };
-
-QString TestCliFailsafe::ask(const QString &command, const QString &answer, int timeoutMs)
-{
-    m_sim.write(command.toUtf8() + '\n');
-    QElapsedTimer clock;
-    clock.start();
-    for (;;) {
-        qsizetype nl;
-        while ((nl = m_pending.indexOf('\n')) >= 0) {
-            const QString line = QString::fromUtf8(m_pending.left(nl)).trimmed();
-            m_pending.remove(0, nl + 1);
-            if (line.startsWith(answer) || line.startsWith(QLatin1String("error:")))
-                return line;
-        }
-        const qint64 left = timeoutMs - clock.elapsed();
-        if (left <= 0 || m_sim.state() != QProcess::Running)
-            return {};
-        m_sim.waitForReadyRead(int(left));
-        m_pending += m_sim.readAllStandardOutput();
-    }
-}
-
-// "state T position P velocity V statusword 0xSSSS", "standstill T position P",
-// "dropped N T position P velocity V".
-TestCliFailsafe::Sample TestCliFailsafe::sample(const QString &command, const QString &answer,
-                                                int timeoutMs)
-{
-    Sample s;
-    s.line = ask(command, answer, timeoutMs);
-    static const QRegularExpression re(
-        QStringLiteral("^\\w+ (?:\\d+ )?(\\d+) position (-?[\\d.]+)(?: velocity (-?[\\d.]+))?"
-                       "(?: statusword 0x([0-9A-F]{4}))?$"));
-    const auto m = re.match(s.line);
-    if (!m.hasMatch())
-        return s;
-    s.ok = true;
-    s.ms = m.captured(1).toLongLong();
-    s.position = m.captured(2).toDouble();
-    s.velocity = m.captured(3).toDouble();
-    s.statusword = m.captured(4).toInt(nullptr, 16);
-    return s;
-}
 
 void TestCliFailsafe::initTestCase()
 {
