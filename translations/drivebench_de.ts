@@ -981,10 +981,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>move erwartet genau eines von --abs, --rel, --add</translation>
     </message>
     <message>
-        <source>jog needs --vel V (signed) and --time MS</source>
-        <translation>jog braucht --vel V (mit Vorzeichen) und --time MS</translation>
-    </message>
-    <message>
         <source>--time takes 1..%1 ms</source>
         <translation>--time erwartet 1..%1 ms</translation>
     </message>
@@ -1534,6 +1530,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>BLOCK is a motion block number, not &apos;%1&apos;</source>
         <translation>BLOCK ist eine Fahrsatznummer, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>drivebench-cli: warning: the axis is not known to be referenced (no homing seen, and the drive does not tell): positions count from the drive&apos;s present zero</source>
+        <translation>drivebench-cli: Warnung: Es ist nicht bekannt, ob die Achse referenziert ist (keine Referenzfahrt gesehen, und der Antrieb sagt es nicht): Positionen zählen vom jetzigen Nullpunkt des Antriebs</translation>
+    </message>
+    <message>
+        <source>%1 needs --vel V (signed) and --time MS</source>
+        <translation>%1 braucht --vel V (mit Vorzeichen) und --time MS</translation>
+    </message>
+    <message>
+        <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
+        <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
     </message>
 </context>
 <context>
@@ -3537,10 +3545,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>maximale Beschleunigung oder maximaler Ruck der Achse ist null</translation>
     </message>
     <message>
-        <source>axis not referenced</source>
-        <translation>Achse nicht referenziert</translation>
-    </message>
-    <message>
         <source>axis not at standstill</source>
         <translation>Achse nicht im Stillstand</translation>
     </message>
@@ -3559,6 +3563,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>this drive has no table of motion blocks</source>
         <translation>dieser Antrieb hat keine Fahrsatztabelle</translation>
+    </message>
+    <message>
+        <source>%1: the drive stopped at %2, short of the target %3 (halted by another program or the drive itself)</source>
+        <translation>%1: Der Antrieb hat bei %2 angehalten, vor dem Ziel %3 (angehalten von einem anderen Programm oder vom Antrieb selbst)</translation>
     </message>
 </context>
 <context>
@@ -5276,6 +5284,14 @@ Letzter Fehler: %1</translation>
     <message>
         <source>%1 not started: %2. Correct the input; the axis is unchanged.</source>
         <translation>%1 nicht gestartet: %2. Eingabe korrigieren; die Achse ist unverändert.</translation>
+    </message>
+    <message>
+        <source>MC_MoveVelocity in leases</source>
+        <translation>MC_MoveVelocity in befristeten Abschnitten</translation>
+    </message>
+    <message>
+        <source>axis not referenced: positions count from the drive&apos;s present zero</source>
+        <translation>Achse nicht referenziert: Positionen zählen vom jetzigen Nullpunkt des Antriebs</translation>
     </message>
 </context>
 <context>

@@ -26,6 +26,7 @@ constexpr double kMaxRawJerk = 0xFFFFFFFFu; // UNSIGNED32
 // Digital inputs 60FDh (CiA 402-2): bit 0 negative, bit 1 positive limit switch.
 constexpr quint32 kNegativeLimitBit = 0x1;
 constexpr quint32 kPositiveLimitBit = 0x2;
+constexpr quint16 kHomingError = 0x2000; // statusword bit 13 in homing mode
 
 const QList<ObjectAddress> &statusObjects()
 {
@@ -115,8 +116,10 @@ void Cia402Axis::onRoundDone()
         m_status.quickStopActive = state == State::QuickStopActive;
         m_status.moving = word & sw::Moving;
         m_status.targetReached = word & sw::TargetReached;
-        m_status.homingAttained = (word & (sw::SetPointAcknowledge | sw::TargetReached))
-            == (sw::SetPointAcknowledge | sw::TargetReached);
+        // Bit 12 means "homing attained" only in homing mode (set-point acknowledge in PP).
+        constexpr quint16 kAttained = sw::SetPointAcknowledge | sw::TargetReached;
+        m_status.homingAttained = m_referencedWithoutHoming
+            || (m_homingMode && (word & kAttained) == kAttained && !(word & kHomingError));
         m_status.position = m_round.value(obj::PositionActual).toDouble();
         m_status.velocity = m_round.value(obj::VelocityActual).toDouble();
         const quint32 inputs = quint32(m_round.value(obj::DigitalInputs).toULongLong());
@@ -134,6 +137,7 @@ Reply *Cia402Axis::initialize()
     auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
     QList<ObjectAddress> objects = Scaling::objects();
     objects.append(obj::SupportedModes);
+    objects.append(obj::ModesDisplay); // a drive still in homing mode tells its reference
     const ObjectDictionary &dict = m_connection->dictionary();
     for (ObjectAddress a : axislimits::objects(dict))
         if (!objects.contains(a))
@@ -191,6 +195,7 @@ QList<ObjectAddress> Cia402Axis::profileObjects()
 
 void Cia402Axis::applyInitialValues(const QHash<ObjectAddress, QVariant> &values)
 {
+    m_homingMode = values.value(obj::ModesDisplay).toInt() == int(Mode::Homing);
     if (auto s = Scaling::fromValues(values))
         m_scaling = s.value();
     if (values.contains(obj::SupportedModes)) {
@@ -245,8 +250,9 @@ quint32 Cia402Axis::accelerationRaw(double user) const
     return std::max(kRawAccelerationMin, quint32(std::llround(std::abs(raw))));
 }
 
-Reply *Cia402Axis::runMotion(Sequence *sequence)
+Reply *Cia402Axis::runMotion(Sequence *sequence, bool homing)
 {
+    m_homingMode = homing;
     if (m_motion)
         m_motion->cancel(
             Error(Error::Kind::Cancelled,
@@ -295,7 +301,7 @@ Reply *Cia402Axis::halt(double deceleration)
     std::optional<quint32> dec;
     if (deceleration > 0)
         dec = accelerationRaw(deceleration);
-    return runMotion(cia402::halt(m_connection, dec, this));
+    return runMotion(cia402::halt(m_connection, dec, this), m_homingMode); // mode unchanged
 }
 
 Reply *Cia402Axis::home(const HomingParams &params)
@@ -312,7 +318,7 @@ Reply *Cia402Axis::home(const HomingParams &params)
     sp.acceleration = accelerationRaw(params.acceleration);
     sp.offset = std::llround(params.offset);
     sp.timeoutMs = kHomingTimeoutMs;
-    return runMotion(homing(m_connection, sp, this));
+    return runMotion(homing(m_connection, sp, this), true);
 }
 
 Reply *Cia402Axis::torque(double torquePerMille, double slope)
