@@ -2,6 +2,45 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>MotionChangeLog</name>
+    <message>
+        <source>target %1 at %2</source>
+        <translation>Ziel %1 mit %2</translation>
+    </message>
+    <message>
+        <source>distance %1 at %2</source>
+        <translation>Weg %1 mit %2</translation>
+    </message>
+    <message>
+        <source>velocity %1</source>
+        <translation>Geschwindigkeit %1</translation>
+    </message>
+    <message>
+        <source>method %1</source>
+        <translation>Methode %1</translation>
+    </message>
+    <message>
+        <source>block %1</source>
+        <translation>Satz %1</translation>
+    </message>
+    <message>
+        <source>torque %1</source>
+        <translation>Moment %1</translation>
+    </message>
+    <message>
+        <source>command removed</source>
+        <translation>Befehl entfernt</translation>
+    </message>
+    <message>
+        <source>ended by another command</source>
+        <translation>von einem anderen Befehl beendet</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
     <name>Nm17x</name>
     <message>
         <source>%1 has %2 bytes, 8 expected</source>
@@ -1553,6 +1592,85 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>&apos;%1&apos; is not a parameter address: NUMBER:DATASET takes a parameter number of 0-65535 and a data set of 0-255, e.g. 372:2</source>
         <translation>„%1“ ist keine Parameteradresse: NUMMER:DATENSATZ erwartet eine Parameternummer 0-65535 und einen Datensatz 0-255, z. B. 372:2</translation>
+    </message>
+</context>
+<context>
+    <name>db::ChangeLog</name>
+    <message>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>write</source>
+        <translation>schreiben</translation>
+    </message>
+    <message>
+        <source>restore</source>
+        <translation>wiederherstellen</translation>
+    </message>
+    <message>
+        <source>store permanently</source>
+        <translation>dauerhaft speichern</translation>
+    </message>
+    <message>
+        <source>enable</source>
+        <translation>freigeben</translation>
+    </message>
+    <message>
+        <source>disable</source>
+        <translation>sperren</translation>
+    </message>
+    <message>
+        <source>motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <source>NMT</source>
+        <translation>NMT</translation>
+    </message>
+    <message>
+        <source>fault reset</source>
+        <translation>Fehler quittieren</translation>
+    </message>
+    <message>
+        <source>pending</source>
+        <translation>offen</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>RAM only</source>
+        <translation>nur RAM</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>RAM only, lost at power-off</source>
+        <translation>nur RAM, beim Ausschalten verloren</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>
@@ -3352,6 +3470,22 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>Connect to %1</source>
         <translation>Mit %1 verbinden</translation>
     </message>
+    <message>
+        <source>Changes</source>
+        <translation>Änderungen</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation>alle Knoten</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>all parameters</source>
+        <translation>alle Parameter</translation>
+    </message>
 </context>
 <context>
     <name>db::gui::SettingsDialog</name>
@@ -4509,6 +4643,97 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::widgets::ChangeLogModel</name>
+    <message>
+        <source>In the device&apos;s working memory only: lost at power-off until the device stores its parameters permanently.</source>
+        <translation>Nur im Arbeitsspeicher des Geräts: beim Ausschalten verloren, bis das Gerät seine Parameter dauerhaft speichert.</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Aktion</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Old value</source>
+        <translation>Alter Wert</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Stored</source>
+        <translation>Gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::ChangeLogView</name>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save the change log as a CSV file</source>
+        <translation>Das Änderungsprotokoll als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Writes, restores, stores, enables, motion and NMT commands of this session appear here.</source>
+        <translation>Schreibzugriffe, Wiederherstellungen, Speichern, Freigaben, Bewegungs- und NMT-Befehle dieser Sitzung erscheinen hier.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s)</source>
+        <translation>
+            <numerusform>%n Änderung</numerusform>
+            <numerusform>%n Änderungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n failed</source>
+        <translation>
+            <numerusform>%n fehlgeschlagen</numerusform>
+            <numerusform>%n fehlgeschlagen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write(s) not stored permanently</source>
+        <translation>
+            <numerusform>%n Schreibzugriff nicht dauerhaft gespeichert</numerusform>
+            <numerusform>%n Schreibzugriffe nicht dauerhaft gespeichert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved to %1</source>
+        <translation>Gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Save change log</source>
+        <translation>Änderungsprotokoll speichern</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::ConnectionDialog</name>
     <message>
         <source>Connect to Device</source>
@@ -4969,8 +5194,67 @@ Letzter Fehler: %1</translation>
         <translation>Leeren</translation>
     </message>
     <message>
-        <source>Show Protocol Traffic</source>
-        <translation>Protokollverkehr anzeigen</translation>
+        <source>Changes and events</source>
+        <translation>Änderungen und Ereignisse</translation>
+    </message>
+    <message>
+        <source>Changes only</source>
+        <translation>Nur Änderungen</translation>
+    </message>
+    <message>
+        <source>Warnings and errors</source>
+        <translation>Warnungen und Fehler</translation>
+    </message>
+    <message>
+        <source>Events and protocol traffic</source>
+        <translation>Ereignisse und Protokollverkehr</translation>
+    </message>
+    <message>
+        <source>Everything, with debug lines</source>
+        <translation>Alles, mit Debug-Zeilen</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Anzeigen</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::LogPanel</name>
+    <message>
+        <source>Which lines the log shows. Protocol traffic and debug lines are kept only while they are shown.</source>
+        <translation>Welche Zeilen das Protokoll zeigt. Protokollverkehr und Debug-Zeilen werden nur aufbewahrt, solange sie angezeigt werden.</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save the lines shown to a text file</source>
+        <translation>Die angezeigten Zeilen in eine Textdatei speichern</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>Anzeigen:</translation>
+    </message>
+    <message>
+        <source>Save log</source>
+        <translation>Protokoll speichern</translation>
+    </message>
+    <message>
+        <source>Log files (*.log *.txt)</source>
+        <translation>Protokolldateien (*.log *.txt)</translation>
+    </message>
+    <message>
+        <source>Saved to %1</source>
+        <translation>Gespeichert in %1</translation>
     </message>
 </context>
 <context>
@@ -6484,6 +6768,14 @@ Die jetzigen Werte des Geräts werden seine Einschaltwerte.</translation>
     <message>
         <source>Factory defaults not restored: the backup did not succeed</source>
         <translation>Werkseinstellungen nicht wiederhergestellt: die Sicherung ist fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>all parameters</source>
+        <translation>alle Parameter</translation>
+    </message>
+    <message>
+        <source>factory defaults</source>
+        <translation>Werkseinstellungen</translation>
     </message>
 </context>
 <context>

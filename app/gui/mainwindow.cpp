@@ -2,11 +2,14 @@
 
 #include "cameralivesource.h"
 #include "canopen/cannetwork.h"
+#include "core/changelog.h"
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/nodelist.h"
+#include "widgets/common/changelogview.h"
 #include "widgets/common/logconsole.h"
+#include "widgets/common/logpanel.h"
 #include "widgets/common/wheelguard.h"
 #include "widgets/common/widgetstyle.h"
 #include "widgets/connection/connectiondialog.h"
@@ -105,6 +108,7 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     createDocks();
     createMenus();
     createParameterPages();
+    createChangeLog();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
@@ -164,8 +168,13 @@ void MainWindow::createDocks()
     QDockWidget *nodes = addDock(m_nodeList, tr("CANopen Nodes"), QStringLiteral("nodeListDock"),
                                  Qt::LeftDockWidgetArea);
     splitDockWidget(devices, nodes, Qt::Vertical); // between the devices and object access
-    QDockWidget *log =
-        addDock(m_log, tr("Log"), QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    QDockWidget *log = addDock(new widgets::LogPanel(m_log, this), tr("Log"),
+                               QStringLiteral("logDock"), Qt::BottomDockWidgetArea);
+    m_changeLog = new ChangeLog(this);
+    m_changes = new widgets::ChangeLogView(m_changeLog, this);
+    QDockWidget *changes =
+        addDock(m_changes, tr("Changes"), QStringLiteral("changesDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(log, changes);
     QDockWidget *canMonitor = addDock(m_canMonitor, tr("CAN Monitor"),
                                       QStringLiteral("canMonitorDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(log, canMonitor);

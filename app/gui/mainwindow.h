@@ -17,8 +17,13 @@ class QStackedWidget;
 class QTabWidget;
 class QToolBar;
 
+namespace db {
+class ChangeLog;
+}
+
 namespace db::widgets {
 class CanMonitor;
+class ChangeLogView;
 class DeviceList;
 class DriveStatusPanel;
 class JogPanel;
@@ -80,6 +85,10 @@ public:
     widgets::DriveStatusPanel *statusPanel() const { return m_statusPanel; }
     widgets::ObjectAccessBox *objectAccessBox() const { return m_objectAccess; }
     widgets::LogConsole *logConsole() const { return m_log; }
+    // What the user changed on the devices this session (writes, restores, stores, enables,
+    // motion and NMT commands).
+    ChangeLog *changeLog() const { return m_changeLog; }
+    widgets::ChangeLogView *changeLogView() const { return m_changes; }
     // CAN monitor and node list: attached to the current connection while it is a CANopen one.
     widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
     widgets::NodeList *nodeList() const { return m_nodeList; }
@@ -158,6 +167,9 @@ private:
     // mainwindow_params.cpp: editor and parameter-set pages, the Parameters menu.
     void createParameterPages();
     void attachParameters(DeviceConnection *connection);
+    // mainwindow_changes.cpp: the change log fed by the editor, object access, parameter sets,
+    // motion dock and node list; each finished change as a line in the log.
+    void createChangeLog();
     void updateStatusBar();
     void loadSettings();
     void saveSettings() const;
@@ -170,6 +182,9 @@ private:
     widgets::DriveStatusPanel *m_statusPanel = nullptr;
     widgets::ObjectAccessBox *m_objectAccess = nullptr;
     widgets::LogConsole *m_log = nullptr;
+    ChangeLog *m_changeLog = nullptr;
+    widgets::ChangeLogView *m_changes = nullptr;
+    QSet<int> m_logged; // change-log entries already shown as a log line
     widgets::CanMonitor *m_canMonitor = nullptr;
     widgets::NodeList *m_nodeList = nullptr;
     widgets::Nm17xLinePanel *m_nm17xPanel = nullptr; // Baumer NM17x displays on the bus

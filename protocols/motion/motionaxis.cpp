@@ -102,6 +102,8 @@ bool MotionAxis::motionInProgress() const
 
 void MotionAxis::start(MotionCommand *command)
 {
+    if (command->kind() != CommandKind::DoNothing)
+        Q_EMIT commandStarted(command);
     switch (command->kind()) {
     case CommandKind::Power:
         startPower(command);

@@ -70,6 +70,9 @@ public:
 Q_SIGNALS:
     void stateChanged(db::motion::AxisState state);
     void watchdogExpired();
+    // A command got a rising Execute edge and is about to start (also when it will be refused,
+    // and when a running command restarts with new inputs).
+    void commandStarted(db::motion::MotionCommand *command);
 
 private:
     friend class MotionCommand;

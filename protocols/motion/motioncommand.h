@@ -54,6 +54,7 @@ public:
     LimitFlags limits() const { return m_limits; }
     double target() const { return m_target; } // latched absolute target (1-3)
     const MoveParams &latched() const { return m_latched; }
+    bool latchedEnable() const { return m_latchedEnable; } // MC_Power's input at the last start
 
 Q_SIGNALS:
     void statusChanged(db::motion::MotionCommand::Status status);

@@ -2,6 +2,10 @@
 
 #include <QApplication>
 #include <QClipboard>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
 
@@ -77,6 +81,75 @@ private Q_SLOTS:
         console.copyAll();
         QVERIFY(QApplication::clipboard()->text().endsWith(QStringLiteral("hello")));
         console.clear();
+        QCOMPARE(console.lineCount(), 0);
+    }
+
+    // Changes, events, problems, traffic and debug lines: the filter shows each kind apart, and
+    // what is kept (all but traffic and debug) comes back when the filter widens again.
+    void filterSeparatesChangesEventsTrafficAndDebug()
+    {
+        LogConsole console;
+        console.info(QStringLiteral("connected"));
+        console.change(QStringLiteral("write 6083:0 1000 -> 2000: ok"));
+        console.warning(QStringLiteral("slow answer"));
+        console.traffic(QStringLiteral("> OR6041,0")); // not shown: not kept
+        console.debug(QStringLiteral("internal")); // not shown: not kept
+        QCOMPARE(console.lineCount(), 3);
+
+        console.setFilter(LogConsole::Filter::Changes);
+        QCOMPARE(console.lineCount(), 1);
+        QVERIFY(console.toPlainText().endsWith(QStringLiteral("write 6083:0 1000 -> 2000: ok")));
+        console.setFilter(LogConsole::Filter::Problems);
+        QCOMPARE(console.lineCount(), 1);
+        QVERIFY(console.toPlainText().endsWith(QStringLiteral("slow answer")));
+
+        console.setFilter(LogConsole::Filter::Everything);
+        QCOMPARE(console.lineCount(), 3);
+        console.traffic(QStringLiteral("> OR6041,0"));
+        console.debug(QStringLiteral("internal"));
+        QCOMPARE(console.lineCount(), 5);
+        QVERIFY(console.showTraffic());
+        console.setFilter(LogConsole::Filter::WithTraffic); // debug lines are dropped
+        QCOMPARE(console.lineCount(), 4);
+        QVERIFY(!console.toPlainText().contains(QStringLiteral("internal")));
+        console.setFilter(LogConsole::Filter::Events); // and traffic too
+        QCOMPARE(console.lineCount(), 3);
+        console.setFilter(LogConsole::Filter::WithTraffic);
+        QCOMPARE(console.lineCount(), 3);
+    }
+
+    void saveWritesTheShownLinesWithDateAndKind()
+    {
+        QTemporaryDir dir;
+        LogConsole console;
+        console.info(QStringLiteral("connected"));
+        console.change(QStringLiteral("enable: ok"));
+        console.setFilter(LogConsole::Filter::Changes);
+        const QString path = dir.filePath(QStringLiteral("log.txt"));
+        QCOMPARE(console.save(path), QString());
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        QVERIFY2(
+            QRegularExpression(
+                QStringLiteral(
+                    "^\\d{4}-\\d\\d-\\d\\d \\d\\d:\\d\\d:\\d\\d\\.\\d{3} CHANGE enable: ok\n$"))
+                .match(text)
+                .hasMatch(),
+            qPrintable(text));
+        // A folder is not a file: the cause, and the folder untouched.
+        const QString problem = console.save(dir.path());
+        QVERIFY(!problem.isEmpty());
+        QVERIFY(problem.contains(QFileInfo(dir.path()).fileName()));
+    }
+
+    void clearForgetsHiddenLinesToo()
+    {
+        LogConsole console;
+        console.info(QStringLiteral("connected"));
+        console.setFilter(LogConsole::Filter::Changes);
+        console.clear();
+        console.setFilter(LogConsole::Filter::Events);
         QCOMPARE(console.lineCount(), 0);
     }
 

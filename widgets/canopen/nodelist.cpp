@@ -154,6 +154,7 @@ bool NodeList::sendCommand(canopen::NmtCommand command)
     if (!m_nmt->send(command, canopen::NodeId(node)))
         return false;
     m_model->noteCommand(canopen::NmtMaster::commandName(command), canopen::NodeId(node));
+    Q_EMIT commandSent(canopen::NmtMaster::commandName(command), node);
     return true;
 }
 

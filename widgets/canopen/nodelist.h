@@ -54,6 +54,10 @@ public Q_SLOTS:
     // Sends to targetNode(); false when there is none or the bus is not open.
     bool sendCommand(db::canopen::NmtCommand command);
 
+Q_SIGNALS:
+    // An NMT command went out: its name ("start", ...) and the node (0: all nodes).
+    void commandSent(const QString &command, int node);
+
 private:
     void updateActions();
 

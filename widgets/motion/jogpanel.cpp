@@ -5,6 +5,7 @@
 
 #include "cia402/modes.h"
 #include "devices/axisfactory.h"
+#include "motion/motionchangelog.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QApplication>
@@ -115,6 +116,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
                                                      : m_cia->velocityUnit();
     m_motion = std::make_unique<MotionAxis>(m_cia.get());
     m_motion->setWatchdogTimeout(kWatchdogMs);
+    motion::recordCommands(m_motion.get(), m_changeLog, connection->uri().toString());
     m_motion->setVelocityOverride(m_override->value());
     m_power = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Power);
     m_reset = std::make_unique<MotionCommand>(m_motion.get(), CommandKind::Reset);

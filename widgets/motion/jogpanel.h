@@ -1,6 +1,7 @@
 #pragma once
 
 #include "canopen/drivesupervision.h"
+#include "core/changelog.h"
 #include "core/deviceconnection.h"
 #include "motion/axisinterface.h"
 #include "motion/leasedmove.h"
@@ -62,6 +63,8 @@ public:
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
     motion::MotionAxis *motionAxis() const { return m_motion.get(); }
+    // Commands of the axes the panel makes from now on are recorded there (null: none).
+    void setChangeLog(ChangeLog *log) { m_changeLog = log; }
     // The device's axis; null without a connection or when the device has none.
     motion::AxisInterface *axis() const { return m_cia.get(); }
     motion::LeasedMove *leasedMove() const { return m_lease.get(); }
@@ -122,6 +125,7 @@ private:
     QPointer<DeviceConnection> m_connection;
     std::unique_ptr<motion::AxisInterface> m_cia;
     std::unique_ptr<motion::MotionAxis> m_motion;
+    QPointer<ChangeLog> m_changeLog;
     std::unique_ptr<motion::MotionCommand> m_power;
     std::unique_ptr<motion::MotionCommand> m_reset;
     std::unique_ptr<motion::LeasedMove> m_lease; // jog and step

@@ -282,6 +282,10 @@ void ObjectAccessBox::write()
     }
     Reply *reply = m_connection->write(def->address, raw.value());
     reply->setParent(this);
+    if (m_changeLog)
+        m_changeLog->track(ChangeLog::writeEntry(*m_connection, def->address, QString(),
+                                                 def->displayText(raw.value())),
+                           reply);
     m_lastRaw = raw.value();
     setBusy(true);
     m_result->clear();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/changelog.h"
 #include "core/deviceconnection.h"
 
 #include <QPointer>
@@ -28,6 +29,8 @@ public:
     // May be null; not owned.
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
+    // Every write is recorded there (null: none).
+    void setChangeLog(ChangeLog *log) { m_changeLog = log; }
 
     QString addressText() const;
     void setAddressText(const QString &text);
@@ -62,6 +65,7 @@ private:
     void onReplyFinished(class Reply *reply, bool isRead, quint64 generation);
 
     QPointer<DeviceConnection> m_connection;
+    QPointer<ChangeLog> m_changeLog;
     QList<QMetaObject::Connection> m_connectionSignals;
     quint64 m_generation = 0;
     bool m_busy = false;

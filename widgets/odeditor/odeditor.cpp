@@ -1,5 +1,6 @@
 #include "odeditor.h"
 
+#include "core/changelog.h"
 #include "description/devicedescription.h"
 #include "descriptionprompt.h"
 #include "objectaccessbox.h"
@@ -386,11 +387,21 @@ void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
         m_model->setWriteFinished(address, false, tr("not connected"));
         return;
     }
+    const ObjectDef *def = m_model->definition(address);
+    const QVariant before = m_model->value(address);
     m_model->setWriting(address, raw);
     // RAM: the same parameter at its working-memory address; the cell is the data set's.
     const auto ram = writesToRam() ? m_connection->ramAddress(address) : std::nullopt;
     Reply *reply = m_connection->write(ram.value_or(address), raw);
     reply->setParent(this);
+    if (m_changeLog) {
+        const auto text = [def](const QVariant &v) {
+            return !v.isValid() ? QString() : def ? odtext::display(*def, v, false) : v.toString();
+        };
+        m_changeLog->track(ChangeLog::writeEntry(*m_connection, ram.value_or(address), text(before),
+                                                 text(raw), ram.has_value()),
+                           reply);
+    }
     const quint64 generation = m_generation;
     QString shown = m_model->data(m_model->indexOf(address, OdEditorModel::Name)).toString();
     if (ram)

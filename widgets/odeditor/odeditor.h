@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/changelog.h"
 #include "core/deviceconnection.h"
 
 #include <QPointer>
@@ -41,6 +42,8 @@ public:
     // May be null; not owned. The dictionary is taken from the connection.
     void setConnection(DeviceConnection *connection);
     DeviceConnection *connection() const { return m_connection; }
+    // Every write the editor sends is recorded there (null: none).
+    void setChangeLog(ChangeLog *log) { m_changeLog = log; }
 
     // A drop-down button `title` with these actions in the editor's tool row (e.g. the
     // Parameters menu's backup, compare and store).
@@ -98,6 +101,7 @@ private:
     void updateCounts();
 
     QPointer<DeviceConnection> m_connection;
+    QPointer<ChangeLog> m_changeLog;
     QMetaObject::Connection m_stateConnection;
     QMetaObject::Connection m_dictionaryConnection;
     quint64 m_generation = 0;

@@ -250,8 +250,18 @@ void ParameterSetActions::storeNow()
     if (!m_connection || !m_connection->isConnected() || isBusy())
         return;
     Reply *reply = m_connection->storeNonVolatile();
+    if (m_changeLog) {
+        ChangeLog::Entry e;
+        e.device = m_connection->uri().toString();
+        e.kind = ChangeLog::Kind::Store;
+        e.object = tr("all parameters");
+        m_changeLog->track(e, reply);
+    }
     connect(reply, &Reply::finished, this,
-            [this, reply, connection = QPointer<DeviceConnection>(m_connection)] {
+            [this, reply, connection = QPointer<DeviceConnection>(m_connection),
+             device = m_connection->uri().toString()] {
+                if (reply->ok() && m_changeLog)
+                    m_changeLog->markStored(device);
                 if (reply->ok() && connection)
                     Q_EMIT storedPermanently(connection);
             });
@@ -262,7 +272,15 @@ void ParameterSetActions::restoreFactoryDefaultsNow()
 {
     if (!m_connection || !m_connection->isConnected() || isBusy())
         return;
-    writeSignature(m_connection->restoreFactoryDefaults(),
+    Reply *reply = m_connection->restoreFactoryDefaults();
+    if (m_changeLog) {
+        ChangeLog::Entry e;
+        e.device = m_connection->uri().toString();
+        e.kind = ChangeLog::Kind::Restore;
+        e.object = tr("factory defaults");
+        m_changeLog->track(e, reply);
+    }
+    writeSignature(reply,
                    tr("Factory defaults restored (1011h); they take effect after the next "
                       "reset or power cycle"));
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/changelog.h"
 #include "core/deviceconnection.h"
 #include "parameters/parameterrunner.h"
 
@@ -30,6 +31,8 @@ public:
     ~ParameterSetActions() override;
 
     void setConnection(DeviceConnection *connection);
+    // Stores and factory-default restores are recorded there (null: none).
+    void setChangeLog(ChangeLog *log) { m_changeLog = log; }
 
     QAction *backUpAction() const { return m_backUp; }
     QAction *compareAction() const { return m_compare; }
@@ -76,6 +79,7 @@ private:
 
     QWidget *m_dialogParent;
     QPointer<DeviceConnection> m_connection;
+    QPointer<ChangeLog> m_changeLog;
     QMetaObject::Connection m_stateConnection;
     std::unique_ptr<ParameterBackup> m_backup;
     QPointer<QProgressDialog> m_progress;

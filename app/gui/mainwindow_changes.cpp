@@ -1,0 +1,93 @@
+// The change log: what the user changed on the devices this session, fed by every widget that
+// changes a device, and each finished change as a line in the log console.
+#include "mainwindow.h"
+
+#include "core/changelog.h"
+#include "core/valuecodec.h"
+#include "parameters/parameterrunner.h"
+#include "widgets/canopen/nodelist.h"
+#include "widgets/common/logconsole.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/odeditor/objectaccessbox.h"
+#include "widgets/odeditor/odeditor.h"
+#include "widgets/parameters/paramcompareview.h"
+#include "widgets/parameters/parametersetactions.h"
+
+namespace db::gui {
+
+void MainWindow::createChangeLog()
+{
+    m_odEditor->setChangeLog(m_changeLog);
+    m_objectAccess->setChangeLog(m_changeLog);
+    m_jogPanel->setChangeLog(m_changeLog);
+    m_paramActions->setChangeLog(m_changeLog);
+
+    connect(m_nodeList, &widgets::NodeList::commandSent, this,
+            [this](const QString &command, int node) {
+                ChangeLog::Entry e;
+                e.device = m_canopen ? m_canopen->uri().toString() : QString();
+                e.kind = ChangeLog::Kind::Nmt;
+                e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
+                e.newValue = command;
+                e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
+                m_changeLog->add(e);
+            });
+
+    connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
+            [this](const RestoreReport &report) {
+                const QString device = m_compareView->connection()
+                    ? m_compareView->connection()->uri().toString()
+                    : QString();
+                const bool canStore = m_compareView->connection()
+                    && m_compareView->connection()->capabilities().testFlag(
+                        DeviceConnection::Capability::StoreNonVolatile);
+                for (const RestoreRow &row : report.rows) {
+                    if (row.outcome == RestoreOutcome::Skipped)
+                        continue;
+                    ChangeLog::Entry e;
+                    e.device = device;
+                    e.kind = ChangeLog::Kind::Restore;
+                    e.object = report.addressFormat->format(row.address);
+                    if (!row.name.isEmpty())
+                        e.object += QLatin1Char(' ') + row.name;
+                    e.newValue = codec::toText(row.type, row.value);
+                    const bool ok = row.outcome == RestoreOutcome::Verified
+                        || row.outcome == RestoreOutcome::Written;
+                    e.outcome = ok ? ChangeLog::Outcome::Ok : ChangeLog::Outcome::Failed;
+                    e.message = ok
+                        ? QString()
+                        : restoreOutcomeName(row.outcome) + QStringLiteral(": ") + row.reason;
+                    e.storable = canStore;
+                    e.stored = report.stored;
+                    m_changeLog->add(e);
+                }
+                if (report.storeRequested) {
+                    ChangeLog::Entry e;
+                    e.device = device;
+                    e.kind = ChangeLog::Kind::Store;
+                    e.object = tr("all parameters");
+                    e.outcome = report.stored ? ChangeLog::Outcome::Ok : ChangeLog::Outcome::Failed;
+                    e.message = report.stored ? QString() : report.storeReason;
+                    m_changeLog->add(e);
+                    if (report.stored)
+                        m_changeLog->markStored(device);
+                }
+            });
+
+    // One line per change once its outcome is known; entries made finished count at once.
+    const auto logFinished = [this](int index) {
+        const ChangeLog::Entry &e = m_changeLog->entries().at(index);
+        if (e.outcome == ChangeLog::Outcome::Pending || m_logged.contains(e.id))
+            return;
+        m_logged.insert(e.id);
+        if (m_logged.size() > ChangeLog::kMaxEntries) { // forget ids the log has dropped
+            const int first = m_changeLog->entries().first().id;
+            m_logged.removeIf([first](int id) { return id < first; });
+        }
+        m_log->change(ChangeLog::summary(e));
+    };
+    connect(m_changeLog, &ChangeLog::entryAdded, this, logFinished);
+    connect(m_changeLog, &ChangeLog::entryChanged, this, logFinished);
+}
+
+} // namespace db::gui
