@@ -61,7 +61,9 @@ void holdJogFromEnvironment(MainWindow &window)
     QObject::connect(
         timer, &QTimer::timeout, panel, [panel, timer, hold, enabled = false]() mutable {
             motion::MotionAxis *axis = panel->motionAxis();
-            if (!axis || !panel->limitsKnown() || !panel->isDeviceResponding())
+            // After a first status round: a drive enabled before is not enabled again.
+            if (!axis || !panel->limitsKnown() || !panel->isDeviceResponding()
+                || !panel->axis()->status().valid)
                 return;
             if (axis->state() == motion::AxisState::Disabled) {
                 if (!enabled)

@@ -47,7 +47,7 @@ int NodeMonitor::consumerTime(NodeId node) const
     const auto e = m_nodes.find(node);
     if (e == m_nodes.end() || e->second->intervals < kLearnIntervals)
         return 0;
-    return int(std::max<qint64>(1, e->second->longestMs * kLearnedFactor));
+    return int(std::max<qint64>(kLearnedMinMs, e->second->longestMs * kLearnedFactor));
 }
 
 NmtState NodeMonitor::state(NodeId node) const

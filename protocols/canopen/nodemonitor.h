@@ -7,7 +7,8 @@
 // Every node heard is watched, also one the tool never connected to (found by a scan, or only
 // heard): without a consumer time of its own or a default, it gets kLearnedFactor times the
 // longest interval between its heartbeats, once kLearnIntervals intervals were seen (silence
-// while it was lost does not count).
+// while it was lost does not count), and at least kLearnedMinMs, so that bursts (several nodes on
+// one id, frames queued by a busy host) do not make it flap.
 
 #include "canopenids.h"
 
@@ -33,6 +34,7 @@ public:
 
     static constexpr int kLearnedFactor = 3;
     static constexpr int kLearnIntervals = 2;
+    static constexpr int kLearnedMinMs = 500;
 
     // Silence longer than ms after a heartbeat means "lost"; 0 = not watched. Per node, and a
     // default for nodes without their own setting (0 unless set: then the learned time).

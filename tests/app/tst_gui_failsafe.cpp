@@ -126,7 +126,10 @@ void TestGuiFailsafe::jogEndsByItself()
     const Sample running = m_control.state();
     QTRY_VERIFY_WITH_TIMEOUT(m_control.state().ms > running.ms + 300, 2000);
     QVERIFY2(gui.state() == QProcess::Running, qPrintable(guiLog()));
-    QVERIFY2(qAbs(m_control.state().velocity - kVelocity) < 20, qPrintable(guiLog()));
+    // (A renewal late on a busy machine lets the drive slow down for a moment: that is the
+    // lease working. Wait for the jog velocity again.)
+    QTRY_VERIFY2_WITH_TIMEOUT(qAbs(m_control.state().velocity - kVelocity) < 20,
+                              qPrintable(guiLog()), 5000);
 
     Sample at;
     if (event == u"SIGKILL") {

@@ -153,32 +153,38 @@ void TstCanopenServices::noLossReportedWithoutConsumerTime()
     QVERIFY(monitor.isAlive(50));
 }
 
-// A node nobody configured (found by a scan, or only heard) beating every 40 ms is watched with
-// three times that once two intervals were seen; its silence while lost is not learned.
+// A node nobody configured (found by a scan, or only heard) beating every 200 ms is watched with
+// three times that once two intervals were seen; its silence while lost is not learned. A node
+// beating fast is watched with at least kLearnedMinMs.
 void TstCanopenServices::unconfiguredNodeWatchedWithLearnedTime()
 {
     NodeMonitor monitor(m_bus);
     QSignalSpy lost(&monitor, &NodeMonitor::heartbeatLost);
     QSignalSpy resumed(&monitor, &NodeMonitor::heartbeatResumed);
     QTimer beat;
-    beat.setInterval(40);
+    beat.setInterval(200);
     connect(&beat, &QTimer::timeout, this, [this] { m_bus->feed(0x70A, "05"); });
     m_bus->feed(0x70A, "05");
     beat.start();
-    QTRY_VERIFY(monitor.consumerTime(10) > 0);
-    QVERIFY2(monitor.consumerTime(10) >= 3 * 40 && monitor.consumerTime(10) < 3 * 40 * 3,
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.consumerTime(10) > 0, kWaitMs);
+    // (coarse timers may fire up to 5 % early)
+    QVERIFY2(monitor.consumerTime(10) >= 3 * 190 && monitor.consumerTime(10) < 3 * 200 * 3,
              qPrintable(QString::number(monitor.consumerTime(10))));
-    const int learned = monitor.consumerTime(10);
-    QVERIFY(!lost.wait(4 * 40)); // beating: not lost
+    QVERIFY(!lost.wait(3 * 200)); // beating: not lost
     beat.stop();
+    const int learned = monitor.consumerTime(10);
     QElapsedTimer clock;
     clock.start();
     QVERIFY(lost.wait(kWaitMs));
-    QVERIFY(clock.elapsed() >= learned - 45);
+    QVERIFY(clock.elapsed() >= learned - 205);
     QCOMPARE(lost.at(0).at(0).value<NodeId>(), NodeId(10));
     m_bus->feed(0x70A, "05");
     QCOMPARE(resumed.size(), 1);
     QCOMPARE(monitor.consumerTime(10), learned); // the silence was not learned
+
+    for (int i = 0; i < 3; ++i) // a burst: three frames at once
+        m_bus->feed(0x70B, "05");
+    QCOMPARE(monitor.consumerTime(11), NodeMonitor::kLearnedMinMs);
 }
 
 void TstCanopenServices::nodeGuardToggleBitIsIgnored()
