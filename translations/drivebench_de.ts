@@ -510,6 +510,26 @@
         <source>node %1 is no NM170/NM172/NM174 (vendor 0x%2, product 0x%3)</source>
         <translation>Knoten %1 ist keine NM170/NM172/NM174 (Hersteller 0x%2, Produkt 0x%3)</translation>
     </message>
+    <message>
+        <source>node %1 has no writable object %2</source>
+        <translation>Knoten %1 hat kein beschreibbares Objekt %2</translation>
+    </message>
+    <message>
+        <source>node %1 has no object %2</source>
+        <translation>Knoten %1 hat kein Objekt %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a bit rate in bit/s (e.g. 125000,250000)</source>
+        <translation>„%1“ ist keine Bitrate in bit/s (z. B. 125000,250000)</translation>
+    </message>
+    <message>
+        <source>no bit rate given (e.g. 125000,250000)</source>
+        <translation>keine Bitrate angegeben (z. B. 125000,250000)</translation>
+    </message>
+    <message>
+        <source>the bus did not open within %1 ms</source>
+        <translation>der Bus wurde nicht innerhalb von %1 ms geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -1511,10 +1531,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>jog, velocity: how long to move (ms).</source>
         <translation>jog, velocity: Fahrdauer (ms).</translation>
     </message>
-    <message>
-        <source>--bitrates takes bit/s, e.g. 125000,250000</source>
-        <translation>--bitrates erwartet bit/s, z. B. 125000,250000</translation>
-    </message>
     <message numerus="yes">
         <source>%1 kbit/s: %n display(s)</source>
         <translation>
@@ -1581,6 +1597,66 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
         <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
+    </message>
+    <message>
+        <source>usage: nm17x URI settings NODE [--input-mode M] [--key-mode M] [--pitch MM [--steps N]] [--filter-width STEPS] [--filter-count N] [--pre-shutdown on|off]</source>
+        <translation>Aufruf: nm17x URI settings KNOTEN [--input-mode M] [--key-mode M] [--pitch MM [--steps N]] [--filter-width SCHRITTE] [--filter-count N] [--pre-shutdown on|off]</translation>
+    </message>
+    <message>
+        <source>--input-mode takes standard, takten, externposi or off</source>
+        <translation>--input-mode erwartet standard, takten, externposi oder off</translation>
+    </message>
+    <message>
+        <source>--key-mode takes standard, slow, middle or fast</source>
+        <translation>--key-mode erwartet standard, slow, middle oder fast</translation>
+    </message>
+    <message>
+        <source>--pitch takes the spindle pitch in mm per revolution</source>
+        <translation>--pitch erwartet die Spindelsteigung in mm pro Umdrehung</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number</source>
+        <translation>--%1 erwartet eine Zahl</translation>
+    </message>
+    <message>
+        <source>--pre-shutdown takes on or off</source>
+        <translation>--pre-shutdown erwartet on oder off</translation>
+    </message>
+    <message>
+        <source>node %1  %2</source>
+        <translation>Knoten %1  %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm/rev at %3 steps/rev</source>
+        <translation>%1 = %2 mm/U bei %3 Schritten/U</translation>
+    </message>
+    <message>
+        <source>nm17x settings: inputs F/G: standard, takten, externposi or off.</source>
+        <translation>nm17x settings: Eingänge F/G: standard, takten, externposi oder off.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: keys: standard, slow, middle or fast.</source>
+        <translation>nm17x settings: Tasten: standard, slow, middle oder fast.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: spindle pitch in mm per revolution (sets the scaling).</source>
+        <translation>nm17x settings: Spindelsteigung in mm pro Umdrehung (setzt die Skalierung).</translation>
+    </message>
+    <message>
+        <source>nm17x settings: sensor steps per revolution (default 2304; NM174 4096).</source>
+        <translation>nm17x settings: Geberschritte pro Umdrehung (Standard 2304; NM174 4096).</translation>
+    </message>
+    <message>
+        <source>nm17x settings: jump filter width in sensor steps.</source>
+        <translation>nm17x settings: Breite des Sprungfilters in Geberschritten.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: jumps filtered before one is taken as real.</source>
+        <translation>nm17x settings: gefilterte Sprünge, bevor einer als echt gilt.</translation>
+    </message>
+    <message>
+        <source>nm17x settings: dynamic pre-shutdown on or off.</source>
+        <translation>nm17x settings: dynamische Vorabschaltung on oder off.</translation>
     </message>
 </context>
 <context>
@@ -2171,6 +2247,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>the inverter went to fault (status word 0x%1)</source>
         <translation>der Umrichter ist in Störung gegangen (Zustandswort 0x%1)</translation>
+    </message>
+    <message>
+        <source>electronic gear</source>
+        <translation>elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>the inverter did not report &apos;in gear&apos; (status bit 10) within %1 s</source>
+        <translation>der Umrichter hat nicht innerhalb von %1 s „eingekuppelt“ (Statusbit 10) gemeldet</translation>
     </message>
 </context>
 <context>
@@ -3471,6 +3555,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Mit %1 verbinden</translation>
     </message>
     <message>
+        <source>CANopen Network</source>
+        <translation>CANopen-Netz</translation>
+    </message>
+    <message>
+        <source>Description &amp;Library…</source>
+        <translation>Beschreibungsbib&amp;liothek…</translation>
+    </message>
+    <message>
+        <source>%1 added to the description library</source>
+        <translation>%1 zur Beschreibungsbibliothek hinzugefügt</translation>
+    </message>
+    <message>
         <source>Changes</source>
         <translation>Änderungen</translation>
     </message>
@@ -3702,6 +3798,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1: the drive stopped at %2, short of the target %3 (halted by another program or the drive itself)</source>
         <translation>%1: Der Antrieb hat bei %2 angehalten, vor dem Ziel %3 (angehalten von einem anderen Programm oder vom Antrieb selbst)</translation>
     </message>
+    <message>
+        <source>mode change while moving</source>
+        <translation>Betriebsartwechsel während der Bewegung</translation>
+    </message>
 </context>
 <context>
     <name>db::nm17x::BroadcastAddressing</name>
@@ -3761,16 +3861,24 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>nur eine NM174 hat einen externen Sensor</translation>
     </message>
     <message>
-        <source>fault INDEX motor|sensor|none</source>
-        <translation>fault INDEX motor|sensor|none (Anzeigenindex, Störung)</translation>
-    </message>
-    <message>
         <source>input INDEX F G (each 0 or 1)</source>
         <translation>input INDEX F G (jeweils 0 oder 1)</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input)</source>
-        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input)</translation>
+        <source>fault INDEX motor|sensor|blocked|wiring|none</source>
+        <translation>fault INDEX motor|sensor|blocked|wiring|none (Anzeigenindex, Störung)</translation>
+    </message>
+    <message>
+        <source>glitch INDEX STEPS [READINGS]</source>
+        <translation>glitch INDEX SCHRITTE [MESSUNGEN]</translation>
+    </message>
+    <message>
+        <source>coast INDEX MS (0..10000)</source>
+        <translation>coast INDEX MS (0..10000)</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (list, turn, key, fault, input, glitch, coast)</source>
+        <translation>unbekannter Befehl „%1“ (list, turn, key, fault, input, glitch, coast)</translation>
     </message>
 </context>
 <context>
@@ -4791,6 +4899,149 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>Connects to %1</source>
         <translation>Verbindet mit %1</translation>
     </message>
+    <message>
+        <source>not set</source>
+        <translation>nicht gesetzt</translation>
+    </message>
+    <message>
+        <source>CANopen node id of the device (1..127)</source>
+        <translation>CANopen-Knotennummer des Geräts (1..127)</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>Automatic by identity (1018h)</source>
+        <translation>Automatisch nach Identität (1018h)</translation>
+    </message>
+    <message>
+        <source>Other file…</source>
+        <translation>Andere Datei…</translation>
+    </message>
+    <message>
+        <source>Automatic: the description library&apos;s file for the vendor, product and revision the node reports. Or a description file for this connection.</source>
+        <translation>Automatisch: die Datei der Beschreibungsbibliothek für Hersteller, Produkt und Revision, die der Knoten meldet. Oder eine Beschreibungsdatei für diese Verbindung.</translation>
+    </message>
+    <message>
+        <source>&amp;Node:</source>
+        <translation>&amp;Knoten:</translation>
+    </message>
+    <message>
+        <source>&amp;Bit rate:</source>
+        <translation>&amp;Bitrate:</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>&amp;Beschreibung:</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Description of the device</source>
+        <translation>Beschreibung des Geräts</translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation>&amp;Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>default (%1 kbit/s)</source>
+        <translation>Standard (%1 kbit/s)</translation>
+    </message>
+    <message>
+        <source>as the interface is set</source>
+        <translation>wie an der Schnittstelle eingestellt</translation>
+    </message>
+    <message>
+        <source>no interface found; type its name</source>
+        <translation>keine Schnittstelle gefunden; Namen eingeben</translation>
+    </message>
+    <message>
+        <source>no interface found (%1); type its name</source>
+        <translation>keine Schnittstelle gefunden (%1); Namen eingeben</translation>
+    </message>
+    <message>
+        <source>choose an interface: %1</source>
+        <translation>Schnittstelle wählen: %1</translation>
+    </message>
+    <message>
+        <source>IP address or host name of the SLCAN gateway</source>
+        <translation>IP-Adresse oder Hostname des SLCAN-Gateways</translation>
+    </message>
+    <message>
+        <source>IP address or host name</source>
+        <translation>IP-Adresse oder Hostname</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::DescriptionLibraryDialog</name>
+    <message>
+        <source>Add…</source>
+        <translation>Hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Description Library</source>
+        <translation>Beschreibungsbibliothek</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Vendor</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>Product</source>
+        <translation>Produkt</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Copy a description file (EDS, DCF, XDD, XDC or drivebench JSON) into the library folder; you can also drop files here</source>
+        <translation>Eine Beschreibungsdatei (EDS, DCF, XDD, XDC oder drivebench-JSON) in den Bibliotheksordner kopieren; Dateien können auch hierher gezogen werden</translation>
+    </message>
+    <message>
+        <source>Add descriptions to the library</source>
+        <translation>Beschreibungen zur Bibliothek hinzufügen</translation>
+    </message>
+    <message>
+        <source>No library folder is set; only the built-in descriptions are used.</source>
+        <translation>Kein Bibliotheksordner gesetzt; nur die eingebauten Beschreibungen werden verwendet.</translation>
+    </message>
+    <message>
+        <source>Devices without a description given get the one whose vendor, product and revision match their identity (1018h). Your files are in %1.</source>
+        <translation>Geräte ohne angegebene Beschreibung erhalten die, deren Hersteller, Produkt und Revision zu ihrer Identität (1018h) passen. Ihre Dateien liegen in %1.</translation>
+    </message>
+    <message>
+        <source>any</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>built-in</source>
+        <translation>eingebaut</translation>
+    </message>
+    <message>
+        <source>Not used: %1</source>
+        <translation>Nicht verwendet: %1</translation>
+    </message>
+    <message>
+        <source>%1 not added: %2</source>
+        <translation>%1 nicht hinzugefügt: %2</translation>
+    </message>
+    <message>
+        <source>%1 added to the library</source>
+        <translation>%1 zur Bibliothek hinzugefügt</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::DescriptionPrompt</name>
@@ -4823,8 +5074,8 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Es hat seine Identität (1018h) nicht gemeldet.</translation>
     </message>
     <message>
-        <source>&lt;b&gt;No description for this device.&lt;/b&gt; %1 No description in the library matches it, so its objects are not listed; read and write them with &lt;i&gt;By index…&lt;/i&gt;, or choose its description file.</source>
-        <translation>&lt;b&gt;Keine Beschreibung für dieses Gerät.&lt;/b&gt; %1 Keine Beschreibung der Bibliothek passt, daher werden seine Objekte nicht aufgeführt; lesen und schreiben Sie sie mit &lt;i&gt;Über Index…&lt;/i&gt; oder wählen Sie seine Beschreibungsdatei.</translation>
+        <source>&lt;b&gt;No description for this device.&lt;/b&gt; %1 No description in the library matches it, so its objects are not listed; read and write them with &lt;i&gt;By index…&lt;/i&gt;, or choose its description file (Browse… or drop it here).</source>
+        <translation>&lt;b&gt;Keine Beschreibung für dieses Gerät.&lt;/b&gt; %1 Keine Beschreibung in der Bibliothek passt dazu, daher werden seine Objekte nicht aufgelistet; lesen und schreiben Sie sie mit &lt;i&gt;Nach Index…&lt;/i&gt;, oder wählen Sie seine Beschreibungsdatei (Durchsuchen… oder hierher ziehen).</translation>
     </message>
 </context>
 <context>
@@ -4938,6 +5189,130 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Fault:</source>
         <translation>Störung:</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::FrameSender</name>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>CAN identifier in hex (above 7FF: 29-bit)</source>
+        <translation>CAN-Identifier hexadezimal (über 7FF: 29 Bit)</translation>
+    </message>
+    <message>
+        <source>data bytes, e.g. 01 05</source>
+        <translation>Datenbytes, z. B. 01 05</translation>
+    </message>
+    <message>
+        <source>Up to 8 data bytes in hex</source>
+        <translation>Bis zu 8 Datenbytes hexadezimal</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Send the frame once</source>
+        <translation>Den Frame einmal senden</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Period of periodic sending</source>
+        <translation>Periode des zyklischen Sendens</translation>
+    </message>
+    <message>
+        <source>Periodic</source>
+        <translation>Zyklisch</translation>
+    </message>
+    <message>
+        <source>Send the frame every period until switched off</source>
+        <translation>Den Frame in jeder Periode senden, bis ausgeschaltet</translation>
+    </message>
+    <message>
+        <source>Macro…</source>
+        <translation>Makro…</translation>
+    </message>
+    <message>
+        <source>A list of send ID DATA and wait MS lines</source>
+        <translation>Eine Liste von Zeilen send ID DATEN und wait MS</translation>
+    </message>
+    <message>
+        <source># one step a line
+send 000 01 05
+wait 100
+send 605 40 08 10 00</source>
+        <translation># ein Schritt je Zeile
+send 000 01 05
+wait 100
+send 605 40 08 10 00</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no CAN identifier (hex, 0..1FFFFFFF)</source>
+        <translation>&apos;%1&apos; ist kein CAN-Identifier (hexadezimal, 0..1FFFFFFF)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; are no data bytes (hex, e.g. 01 05)</source>
+        <translation>&apos;%1&apos; sind keine Datenbytes (hexadezimal, z. B. 01 05)</translation>
+    </message>
+    <message>
+        <source>%1 data bytes; a CAN frame carries at most 8</source>
+        <translation>%1 Datenbytes; ein CAN-Frame trägt höchstens 8</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>%1: send needs an ID and data bytes</source>
+        <translation>%1: send braucht eine ID und Datenbytes</translation>
+    </message>
+    <message>
+        <source>%1: wait takes milliseconds (0..%2)</source>
+        <translation>%1: wait erwartet Millisekunden (0..%2)</translation>
+    </message>
+    <message>
+        <source>%1: unknown command &apos;%2&apos; (send or wait)</source>
+        <translation>%1: unbekannter Befehl &apos;%2&apos; (send oder wait)</translation>
+    </message>
+    <message>
+        <source>not sent: the bus is not open</source>
+        <translation>nicht gesendet: der Bus ist nicht offen</translation>
+    </message>
+    <message>
+        <source>not sent: the bus refused the frame</source>
+        <translation>nicht gesendet: der Bus hat den Frame abgelehnt</translation>
+    </message>
+    <message>
+        <source>sent %1</source>
+        <translation>gesendet: %1</translation>
+    </message>
+    <message>
+        <source>sending %1 every %2 ms</source>
+        <translation>sende %1 alle %2 ms</translation>
+    </message>
+    <message>
+        <source>macro stopped at step %1 of %2</source>
+        <translation>Makro bei Schritt %1 von %2 angehalten</translation>
+    </message>
+    <message numerus="yes">
+        <source>macro done: %n step(s)</source>
+        <translation>
+            <numerusform>Makro fertig: %n Schritt</numerusform>
+            <numerusform>Makro fertig: %n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
     </message>
 </context>
 <context>
@@ -5255,6 +5630,165 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Saved to %1</source>
         <translation>Gespeichert in %1</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::LssPanel</name>
+    <message>
+        <source>All: configuration</source>
+        <translation>Alle: Konfiguration</translation>
+    </message>
+    <message>
+        <source>Every LSS slave to configuration mode (use it when only one is on the bus)</source>
+        <translation>Alle LSS-Slaves in den Konfigurationsmodus (wenn nur einer am Bus ist)</translation>
+    </message>
+    <message>
+        <source>All: waiting</source>
+        <translation>Alle: Warten</translation>
+    </message>
+    <message>
+        <source>Every LSS slave back to waiting (normal operation)</source>
+        <translation>Alle LSS-Slaves zurück in den Wartemodus (Normalbetrieb)</translation>
+    </message>
+    <message>
+        <source>Fastscan</source>
+        <translation>Fastscan</translation>
+    </message>
+    <message>
+        <source>Find one slave without a node id; it stays in configuration mode</source>
+        <translation>Einen Slave ohne Knotennummer finden; er bleibt im Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>Inquire identity</source>
+        <translation>Identität abfragen</translation>
+    </message>
+    <message>
+        <source>Vendor, product, revision, serial and node id of the slave in configuration mode</source>
+        <translation>Hersteller, Produkt, Revision, Seriennummer und Knotennummer des Slaves im Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>Assign node id</source>
+        <translation>Knotennummer zuweisen</translation>
+    </message>
+    <message>
+        <source>Give the slave in configuration mode this node id (applied at its next reset communication; Store keeps it)</source>
+        <translation>Dem Slave im Konfigurationsmodus diese Knotennummer geben (gilt ab seinem nächsten Reset Communication; Speichern behält sie)</translation>
+    </message>
+    <message>
+        <source>Assign bit rate</source>
+        <translation>Bitrate zuweisen</translation>
+    </message>
+    <message>
+        <source>Give the slave in configuration mode this bit rate (Store keeps it; it applies after a restart)</source>
+        <translation>Dem Slave im Konfigurationsmodus diese Bitrate geben (Speichern behält sie; sie gilt nach einem Neustart)</translation>
+    </message>
+    <message>
+        <source>Store</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>The slave in configuration mode keeps its node id and bit rate</source>
+        <translation>Der Slave im Konfigurationsmodus behält seine Knotennummer und Bitrate</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>Node id:</source>
+        <translation>Knotennummer:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Bitrate:</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>der Bus ist nicht offen</translation>
+    </message>
+    <message>
+        <source>switch mode not sent</source>
+        <translation>Moduswechsel nicht gesendet</translation>
+    </message>
+    <message>
+        <source>all slaves: configuration mode</source>
+        <translation>alle Slaves: Konfigurationsmodus</translation>
+    </message>
+    <message>
+        <source>all slaves: waiting</source>
+        <translation>alle Slaves: Warten</translation>
+    </message>
+    <message>
+        <source>fastscan…</source>
+        <translation>Fastscan…</translation>
+    </message>
+    <message>
+        <source>fastscan</source>
+        <translation>Fastscan</translation>
+    </message>
+    <message>
+        <source>found %1 (now in configuration mode)</source>
+        <translation>%1 gefunden (jetzt im Konfigurationsmodus)</translation>
+    </message>
+    <message>
+        <source>inquire: %1 (is one slave in configuration mode?)</source>
+        <translation>Abfrage: %1 (ist genau ein Slave im Konfigurationsmodus?)</translation>
+    </message>
+    <message>
+        <source>vendor</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>product</source>
+        <translation>Produkt</translation>
+    </message>
+    <message>
+        <source>revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>serial</source>
+        <translation>Seriennummer</translation>
+    </message>
+    <message>
+        <source>node id</source>
+        <translation>Knotennummer</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>assign node id %1</source>
+        <translation>Knotennummer %1 zuweisen</translation>
+    </message>
+    <message>
+        <source>assign %1 kbit/s</source>
+        <translation>%1 kbit/s zuweisen</translation>
+    </message>
+    <message>
+        <source>store</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: done</source>
+        <translation>%1: erledigt</translation>
+    </message>
+    <message>
+        <source>LSS node id</source>
+        <translation>LSS-Knotennummer</translation>
+    </message>
+    <message>
+        <source>LSS bit rate</source>
+        <translation>LSS-Bitrate</translation>
+    </message>
+    <message>
+        <source>LSS node id and bit rate</source>
+        <translation>LSS-Knotennummer und -Bitrate</translation>
     </message>
 </context>
 <context>
@@ -5579,6 +6113,41 @@ Letzter Fehler: %1</translation>
     </message>
 </context>
 <context>
+    <name>db::widgets::NetworkView</name>
+    <message>
+        <source>SYNC producer</source>
+        <translation>SYNC-Erzeuger</translation>
+    </message>
+    <message>
+        <source>Send SYNC (080h) on this bus every period; synchronous PDOs follow it</source>
+        <translation>SYNC (080h) auf diesem Bus in jeder Periode senden; synchrone PDOs folgen ihm</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>SYNC period (communication cycle)</source>
+        <translation>SYNC-Periode (Kommunikationszyklus)</translation>
+    </message>
+    <message>
+        <source>PDO mapping</source>
+        <translation>PDO-Mapping</translation>
+    </message>
+    <message>
+        <source>LSS</source>
+        <translation>LSS</translation>
+    </message>
+    <message>
+        <source>CANopen network on %1</source>
+        <translation>CANopen-Netz an %1</translation>
+    </message>
+    <message>
+        <source>No CANopen connection: connect to a CANopen node to see its network.</source>
+        <translation>Keine CANopen-Verbindung: verbinden Sie sich mit einem CANopen-Knoten, um sein Netz zu sehen.</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::Nm17xAddressingDialog</name>
     <message>
         <source>Start</source>
@@ -5840,6 +6409,157 @@ Letzter Fehler: %1</translation>
         <source>Addressing finished; the displays restart with their new node ids.</source>
         <translation>Adressierung beendet; die Anzeigen starten mit ihren neuen Knotennummern neu.</translation>
     </message>
+    <message>
+        <source>Scan 125/250 kbit/s</source>
+        <translation>Suche bei 125/250 kbit/s</translation>
+    </message>
+    <message>
+        <source>Look for displays at 125 and 250 kbit/s: they are delivered at 125 kbit/s, but their bit-rate setting defaults to 250</source>
+        <translation>Anzeigen bei 125 und 250 kbit/s suchen: Sie werden mit 125 kbit/s ausgeliefert, ihre Bitrateneinstellung steht aber ab Werk auf 250</translation>
+    </message>
+    <message>
+        <source>Selected display: modes and settings</source>
+        <translation>Gewählte Anzeige: Betriebsarten und Einstellungen</translation>
+    </message>
+    <message>
+        <source>looking for displays at 125 and 250 kbit/s ...</source>
+        <translation>suche Anzeigen bei 125 und 250 kbit/s …</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s: no display</source>
+        <translation>%1 kbit/s: keine Anzeige</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s: node %2</source>
+        <translation>%1 kbit/s: Knoten %2</translation>
+    </message>
+    <message>
+        <source>The CAN bus %1 is not open (yet).</source>
+        <translation>Der CAN-Bus %1 ist (noch) nicht offen.</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::Nm17xSettingsBox</name>
+    <message>
+        <source>Oscillate</source>
+        <translation>Oszillieren</translation>
+    </message>
+    <message>
+        <source>Stop oscillating</source>
+        <translation>Oszillieren beenden</translation>
+    </message>
+    <message>
+        <source>Set scaling</source>
+        <translation>Skalierung setzen</translation>
+    </message>
+    <message>
+        <source>Set filter</source>
+        <translation>Filter setzen</translation>
+    </message>
+    <message>
+        <source>Dynamic pre-shutdown</source>
+        <translation>Dynamische Vorabschaltung</translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation> mm/U</translation>
+    </message>
+    <message>
+        <source> steps/rev</source>
+        <translation> Schritte/U</translation>
+    </message>
+    <message>
+        <source> steps</source>
+        <translation> Schritte</translation>
+    </message>
+    <message>
+        <source> jumps</source>
+        <translation> Sprünge</translation>
+    </message>
+    <message>
+        <source>What the external inputs F and G do</source>
+        <translation>Was die externen Eingänge F und G tun</translation>
+    </message>
+    <message>
+        <source>How the device keys drive the motor</source>
+        <translation>Wie die Gerätetasten den Motor fahren</translation>
+    </message>
+    <message>
+        <source>Position jumps larger than this are filtered out</source>
+        <translation>Positionssprünge, die größer sind, werden herausgefiltert</translation>
+    </message>
+    <message>
+        <source>Consecutive jumps filtered before one is taken as real</source>
+        <translation>Aufeinanderfolgende Sprünge, die gefiltert werden, bevor einer als echt gilt</translation>
+    </message>
+    <message>
+        <source>After each positioning, half the distance by which the target was missed moves the switch-off point</source>
+        <translation>Nach jeder Positionierung verschiebt die halbe Abweichung vom Ziel den Abschaltpunkt</translation>
+    </message>
+    <message>
+        <source>Inputs F/G:</source>
+        <translation>Eingänge F/G:</translation>
+    </message>
+    <message>
+        <source>Keys:</source>
+        <translation>Tasten:</translation>
+    </message>
+    <message>
+        <source>Pitch:</source>
+        <translation>Steigung:</translation>
+    </message>
+    <message>
+        <source>Jump filter:</source>
+        <translation>Sprungfilter:</translation>
+    </message>
+    <message>
+        <source>switch-off point %1</source>
+        <translation>Abschaltpunkt %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 mm/rev</source>
+        <translation>%1 = %2 mm/U</translation>
+    </message>
+    <message>
+        <source>node %1: %2</source>
+        <translation>Knoten %1: %2</translation>
+    </message>
+    <message>
+        <source>inputs F/G: %1</source>
+        <translation>Eingänge F/G: %1</translation>
+    </message>
+    <message>
+        <source>keys: %1</source>
+        <translation>Tasten: %1</translation>
+    </message>
+    <message>
+        <source>node %1: oscillating between D1 and D2</source>
+        <translation>Knoten %1: oszilliert zwischen D1 und D2</translation>
+    </message>
+    <message>
+        <source>node %1: oscillation stopped</source>
+        <translation>Knoten %1: Oszillieren beendet</translation>
+    </message>
+    <message>
+        <source>scaling %1 (%2 mm/rev, %3 steps/rev)</source>
+        <translation>Skalierung %1 (%2 mm/U, %3 Schritte/U)</translation>
+    </message>
+    <message>
+        <source>jump filter %1 steps</source>
+        <translation>Sprungfilter %1 Schritte</translation>
+    </message>
+    <message>
+        <source>jump filter count %1</source>
+        <translation>Sprungfilter-Anzahl %1</translation>
+    </message>
+    <message>
+        <source>dynamic pre-shutdown on</source>
+        <translation>dynamische Vorabschaltung ein</translation>
+    </message>
+    <message>
+        <source>dynamic pre-shutdown off</source>
+        <translation>dynamische Vorabschaltung aus</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeList</name>
@@ -5891,6 +6611,22 @@ Letzter Fehler: %1</translation>
         <source>NMT reset communication</source>
         <translation>NMT Reset Communication</translation>
     </message>
+    <message>
+        <source>Scan</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Ask node ids 1..127 by SDO and list every node that answers, with its name (1008h) and identity (1018h)</source>
+        <translation>Knotennummern 1..127 per SDO fragen und jeden antwortenden Knoten mit Namen (1008h) und Identität (1018h) auflisten</translation>
+    </message>
+    <message>
+        <source>vendor %1, product %2, revision %3, serial %4</source>
+        <translation>Hersteller %1, Produkt %2, Revision %3, Seriennummer %4</translation>
+    </message>
+    <message>
+        <source>Scanning…</source>
+        <translation>Suche…</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeListModel</name>
@@ -5929,6 +6665,22 @@ Letzter Fehler: %1</translation>
     <message>
         <source>Name</source>
         <translation>Name</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Heartbeat consumer time: silence longer than this after a heartbeat shows the node as lost (double-click to change; 0 = not watched)</source>
+        <translation>Heartbeat-Überwachungszeit: bleibt der Knoten nach einem Heartbeat länger still, gilt er als verloren (Doppelklick zum Ändern; 0 = nicht überwacht)</translation>
+    </message>
+    <message>
+        <source>Consumer</source>
+        <translation>Überwachung</translation>
     </message>
 </context>
 <context>
@@ -6779,6 +7531,175 @@ Die jetzigen Werte des Geräts werden seine Einschaltwerte.</translation>
     </message>
 </context>
 <context>
+    <name>db::widgets::PdoPanel</name>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Read the node&apos;s PDO communication and mapping objects</source>
+        <translation>Die PDO-Kommunikations- und Mapping-Objekte des Knotens lesen</translation>
+    </message>
+    <message>
+        <source>Write the changed PDOs: each is disabled, its mapping cleared, the entries written, then enabled again</source>
+        <translation>Die geänderten PDOs schreiben: jedes wird deaktiviert, sein Mapping geleert, die Einträge geschrieben, dann wieder aktiviert</translation>
+    </message>
+    <message>
+        <source>PDO</source>
+        <translation>PDO</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <source>COB-ID</source>
+        <translation>COB-ID</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Inhibit</source>
+        <translation>Sperrzeit</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Ereignis</translation>
+    </message>
+    <message>
+        <source>Mapping</source>
+        <translation>Mapping</translation>
+    </message>
+    <message>
+        <source>RPDO: the node receives it; TPDO: the node sends it</source>
+        <translation>RPDO: der Knoten empfängt es; TPDO: der Knoten sendet es</translation>
+    </message>
+    <message>
+        <source>Enabled (COB-ID bit 31 clear)</source>
+        <translation>Aktiv (COB-ID Bit 31 gelöscht)</translation>
+    </message>
+    <message>
+        <source>CAN identifier (hex)</source>
+        <translation>CAN-Identifier (hexadezimal)</translation>
+    </message>
+    <message>
+        <source>Transmission type: 0 acyclic synchronous, 1..240 every n-th SYNC, 254/255 event driven</source>
+        <translation>Übertragungsart: 0 azyklisch synchron, 1..240 bei jedem n-ten SYNC, 254/255 ereignisgesteuert</translation>
+    </message>
+    <message>
+        <source>Inhibit time in multiples of 100 µs (minimum gap between two transmissions)</source>
+        <translation>Sperrzeit in Vielfachen von 100 µs (kleinster Abstand zweier Sendungen)</translation>
+    </message>
+    <message>
+        <source>Event timer in ms (0 = off)</source>
+        <translation>Ereignis-Timer in ms (0 = aus)</translation>
+    </message>
+    <message>
+        <source>Mapped objects as index:sub/bits, in frame order</source>
+        <translation>Abgebildete Objekte als Index:Sub/Bits, in der Reihenfolge im Frame</translation>
+    </message>
+    <message>
+        <source>PDOs of node %1</source>
+        <translation>PDOs von Knoten %1</translation>
+    </message>
+    <message>
+        <source>Select a node</source>
+        <translation>Knoten auswählen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no object address (e.g. 6041:0/16)</source>
+        <translation>&apos;%1&apos; ist keine Objektadresse (z. B. 6041:0/16)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the length is 1..64 bits</source>
+        <translation>&apos;%1&apos;: die Länge ist 1..64 Bit</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: give the length in bits (%2/16)</source>
+        <translation>&apos;%1&apos;: Länge in Bit angeben (%2/16)</translation>
+    </message>
+    <message>
+        <source>the mapping has %1 bits; a PDO carries at most 64</source>
+        <translation>das Mapping hat %1 Bit; ein PDO trägt höchstens 64</translation>
+    </message>
+    <message>
+        <source>%1 entries; at most %2</source>
+        <translation>%1 Einträge; höchstens %2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is no COB-ID</source>
+        <translation>%1: &apos;%2&apos; ist keine COB-ID</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is no transmission type (0..255)</source>
+        <translation>%1: &apos;%2&apos; ist keine Übertragungsart (0..255)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not 0..65535</source>
+        <translation>%1: &apos;%2&apos; liegt nicht in 0..65535</translation>
+    </message>
+    <message>
+        <source>communication %1h, mapping %2h</source>
+        <translation>Kommunikation %1h, Mapping %2h</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>reading the PDOs of node %1…</source>
+        <translation>lese die PDOs von Knoten %1…</translation>
+    </message>
+    <message>
+        <source>reading the PDOs failed: %1</source>
+        <translation>Lesen der PDOs fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>node %1 has no PDO objects</source>
+        <translation>Knoten %1 hat keine PDO-Objekte</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n PDO(s) read</source>
+        <translation>
+            <numerusform>%n PDO gelesen</numerusform>
+            <numerusform>%n PDOs gelesen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing changed</source>
+        <translation>nichts geändert</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n PDO(s) written</source>
+        <translation>
+            <numerusform>%n PDO geschrieben</numerusform>
+            <numerusform>%n PDOs geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>writing %1…</source>
+        <translation>Schreibe %1…</translation>
+    </message>
+    <message>
+        <source>%1 not written (it stays disabled): %2</source>
+        <translation>%1 nicht geschrieben (es bleibt deaktiviert): %2</translation>
+    </message>
+    <message>
+        <source>%1 of node %2</source>
+        <translation>%1 von Knoten %2</translation>
+    </message>
+</context>
+<context>
     <name>db::widgets::ScopeAnalysisDialog</name>
     <message>
         <source>Analysis: %1</source>
@@ -7605,10 +8526,6 @@ Geräte:
         <translation>movingcap: der Antrieb startet mit diesem EMCY-Code in Störung (hexadezimal, z. B. 7121).</translation>
     </message>
     <message>
-        <source>movingcap: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on.</source>
-        <translation>movingcap: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE, heartbeat off|on.</translation>
-    </message>
-    <message>
         <source>nm17x: the bus&apos;s bit rate in bit/s (default 125000); SLCAN clients set to another one hear nothing.</source>
         <translation>nm17x: die Bitrate des Busses in bit/s (Standard 125000); auf eine andere eingestellte SLCAN-Clients hören nichts.</translation>
     </message>
@@ -7619,6 +8536,10 @@ Geräte:
     <message>
         <source>acu: simulated inputs off at start, comma-separated: mains, sto, or the limit switches on: limit-pos, limit-neg.</source>
         <translation>acu: beim Start abgeschaltete simulierte Eingänge, durch Kommas getrennt: mains, sto, oder aktive Endschalter: limit-pos, limit-neg.</translation>
+    </message>
+    <message>
+        <source>movingcap, acu: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic gear&apos;s master, u/s), watchdog MS.</source>
+        <translation>movingcap, acu: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (der Master des elektronischen Getriebes, u/s), watchdog MS.</translation>
     </message>
 </context>
 </TS>

@@ -1,5 +1,7 @@
 #include "commands_nm17x.h"
 
+#include "nm17xargs.h"
+
 #include "networksession.h"
 
 #include "canopen/nmtmaster.h"
@@ -8,6 +10,7 @@
 #include "devices/nm17x/nm17xaddressing.h"
 #include "devices/nm17x/nm17xcodes.h"
 #include "devices/nm17x/nm17xline.h"
+#include "devices/nm17x/nm17xscan.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -20,42 +23,13 @@ namespace {
 
 using namespace db::nm17x;
 using canopen::NodeId;
+using namespace nm17xargs;
 
 constexpr int kFlushMs = 1000; // time for the last frames to leave before the bus closes
 constexpr int kPollMs = 100; // reading the display while waiting for In Position
 constexpr int kDefaultWaitS = 30;
 constexpr int kDefaultWatchS = 5;
 constexpr int kDefaultStepS = 60;
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(cli)
-};
-
-Error usage(const QString &text)
-{
-    return Error(Error::Kind::InvalidArgument, text);
-}
-
-Result<NodeId> nodeArg(const QString &text)
-{
-    bool ok = false;
-    const uint node = text.toUInt(&ok);
-    if (!ok || node < 1 || node > 127)
-        return usage(Tr::tr("'%1' is not a node id 1..127").arg(text));
-    return NodeId(node);
-}
-
-Result<int> intOption(const Context &c, const QString &name, int fallback, int min, int max)
-{
-    if (!c.parser->isSet(name))
-        return fallback;
-    bool ok = false;
-    const int v = c.parser->value(name).toInt(&ok);
-    if (!ok || v < min || v > max)
-        return usage(Tr::tr("--%1 takes a number %2..%3").arg(name).arg(min).arg(max));
-    return v;
-}
 
 // Runs the event loop for ms (the CLI waits for frames from the bus).
 void spin(int ms)
@@ -89,50 +63,48 @@ int list(Context &c, NetworkSession &session, Nm17xLine &line)
     return ExitOk;
 }
 
-// The displays are delivered at 125 kbit/s by the prose of their manual, but their bit-rate
-// object 2100h defaults to 250 kbit/s: look at each bit rate asked for (default both), each on a
-// bus of its own, and tell at which the displays answer.
+// The displays may answer at 125 or 250 kbit/s (nm17xscan.h): look at each bit rate asked for
+// (default both), each on a bus of its own, and tell at which the displays answer.
 int scan(Context &c)
 {
-    const QString text = c.parser && c.parser->isSet(QStringLiteral("bitrates"))
-        ? c.parser->value(QStringLiteral("bitrates"))
-        : QStringLiteral("125000,250000");
-    QList<int> bitrates;
-    for (const QString &item : text.split(u',', Qt::SkipEmptyParts)) {
-        bool ok = false;
-        const int b = item.trimmed().toInt(&ok);
-        if (!ok || b <= 0)
-            return fail(c, usage(Tr::tr("--bitrates takes bit/s, e.g. 125000,250000")));
-        bitrates.append(b);
+    auto bitrates = BitrateScan::defaultBitrates();
+    if (c.parser && c.parser->isSet(QStringLiteral("bitrates"))) {
+        const auto parsed = BitrateScan::parseBitrates(c.parser->value(QStringLiteral("bitrates")));
+        if (!parsed)
+            return fail(c, parsed.error());
+        bitrates = parsed.value();
     }
     const auto uri = ConnectionUri::parse(c.args.at(0));
     if (!uri)
         return fail(c, uri.error());
+    BitrateScan scan(*uri, bitrates);
+    scan.setTimeouts(c.options.connectTimeoutMs, c.options.requestTimeoutMs);
+    QEventLoop loop;
+    QObject::connect(&scan, &BitrateScan::finished, &loop, &QEventLoop::quit);
+    scan.start();
+    if (scan.isRunning())
+        loop.exec();
     int found = 0;
-    for (const int bitrate : std::as_const(bitrates)) {
-        ConnectionUri at = *uri;
-        at.setQueryValue(QStringLiteral("bitrate"), QString::number(bitrate));
-        NetworkSession session;
-        if (auto opened = session.open(at.toString(), c.options.connectTimeoutMs); !opened) {
-            c.err << "drivebench-cli: " << printable(opened.error().toString()) << Qt::endl;
-            continue;
-        }
-        session.network()->sdo()->setTimeoutMs(c.options.requestTimeoutMs);
-        Nm17xLine line(session.network());
-        QList<DisplayState> displays;
-        if (const auto answered = Reply::wait(line.findDisplays()); answered)
-            displays = answered->value<QList<DisplayState>>();
-        c.out << Tr::tr("%1 kbit/s: %n display(s)", nullptr, int(displays.size()))
-                     .arg(bitrate / 1000.0)
+    for (const BitrateResult &r : scan.results()) {
+        c.out << Tr::tr("%1 kbit/s: %n display(s)", nullptr, int(r.displays.size()))
+                     .arg(r.bitrate / 1000.0)
               << Qt::endl;
-        for (const DisplayState &display : displays)
+        if (r.displays.isEmpty() && !r.problem.isEmpty())
+            c.err << "drivebench-cli: " << printable(r.problem) << Qt::endl;
+        for (const DisplayState &display : r.displays)
             c.out << "  " << printable(display.toString()) << Qt::endl;
-        found += int(displays.size());
+        found += int(r.displays.size());
     }
-    if (found == 0)
-        return fail(c,
-                    Error(Error::Kind::Timeout,
-                          Tr::tr("no NM170/NM172/NM174 display answered at %1 bit/s").arg(text)));
+    if (found == 0) {
+        QStringList rates;
+        for (const int b : std::as_const(bitrates))
+            rates.append(QString::number(b));
+        return fail(
+            c,
+            Error(
+                Error::Kind::Timeout,
+                Tr::tr("no NM170/NM172/NM174 display answered at %1 bit/s").arg(rates.join(u','))));
+    }
     return ExitOk;
 }
 
@@ -454,6 +426,24 @@ QList<QCommandLineOption> nm17xOptions()
           QStringLiteral("s") },
         { QStringLiteral("seconds"), Tr::tr("nm17x watch: how long to watch (default 5)."),
           QStringLiteral("s") },
+        { QStringLiteral("input-mode"),
+          Tr::tr("nm17x settings: inputs F/G: standard, takten, externposi or off."),
+          QStringLiteral("mode") },
+        { QStringLiteral("key-mode"),
+          Tr::tr("nm17x settings: keys: standard, slow, middle or fast."), QStringLiteral("mode") },
+        { QStringLiteral("pitch"),
+          Tr::tr("nm17x settings: spindle pitch in mm per revolution (sets the scaling)."),
+          QStringLiteral("mm") },
+        { QStringLiteral("steps"),
+          Tr::tr("nm17x settings: sensor steps per revolution (default 2304; NM174 4096)."),
+          QStringLiteral("n") },
+        { QStringLiteral("filter-width"),
+          Tr::tr("nm17x settings: jump filter width in sensor steps."), QStringLiteral("steps") },
+        { QStringLiteral("filter-count"),
+          Tr::tr("nm17x settings: jumps filtered before one is taken as real."),
+          QStringLiteral("n") },
+        { QStringLiteral("pre-shutdown"), Tr::tr("nm17x settings: dynamic pre-shutdown on or off."),
+          QStringLiteral("on|off") },
         { QStringLiteral("bitrates"),
           Tr::tr("nm17x scan: the bit rates to look at (default 125000,250000)."),
           QStringLiteral("list") },
@@ -467,7 +457,8 @@ int nm17x(Context &c)
                                        QStringLiteral("jog"),       QStringLiteral("stop"),
                                        QStringLiteral("broadcast"), QStringLiteral("address"),
                                        QStringLiteral("control"),   QStringLiteral("watch"),
-                                       QStringLiteral("scan"),      QStringLiteral("oscillate") };
+                                       QStringLiteral("scan"),      QStringLiteral("oscillate"),
+                                       QStringLiteral("settings") };
     if (!kSubs.contains(sub))
         return fail(c, usage(Tr::tr("unknown nm17x command '%1' (%2)").arg(sub, kSubs.join(u'|'))));
     if (sub == u"scan")
@@ -493,6 +484,8 @@ int nm17x(Context &c)
         return watch(c, session, line);
     if (sub == u"oscillate")
         return oscillate(c, session);
+    if (sub == u"settings")
+        return nm17xSettings(c, line);
     return address(c, session);
 }
 

@@ -287,11 +287,17 @@ int diff(Context &c)
     for (const CompareRow &row : comparison.rows) {
         if (!row.differs)
             continue;
+        // As the editor shows them: physical values with the parameter's decimals.
+        const ObjectDef *def = dictionary ? dictionary->find(row.address) : nullptr;
+        const auto text = [&](int side) {
+            const QVariant v = row.values.value(side);
+            return def && v.isValid() ? def->displayText(v, format) : row.valueText(side, format);
+        };
         c.out << compareStatusName(row.status).leftJustified(8)
               << comparison.addressFormat->format(row.address) << "  " << printable(row.name)
-              << ": " << printable(row.valueText(0, format)) << " | "
-              << printable(row.valueText(1, format));
-        if (!row.unit.isEmpty())
+              << ": " << printable(text(0)) << " | " << printable(text(1));
+        // displayText() names the unit itself, except for hexadecimal raw values.
+        if ((!def || format == codec::TextFormat::Hex) && !row.unit.isEmpty())
             c.out << ' ' << printable(row.unit);
         c.out << Qt::endl;
     }

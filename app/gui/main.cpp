@@ -91,6 +91,8 @@ int main(int argc, char *argv[])
                         .arg(path, added.error().message()));
         });
 
+    window.setDescriptionLibrary(&db::app::descriptionLibrary(), db::app::descriptionFolder);
+
     using Remember = db::gui::MainWindow::Remember; // the demo is never a recent connection
     // The demo: from --demo or the welcome page's button. A second start reconnects to the
     // drive that already runs.

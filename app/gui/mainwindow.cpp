@@ -6,6 +6,7 @@
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/changelogview.h"
 #include "widgets/common/logconsole.h"
@@ -18,6 +19,7 @@
 #include "widgets/morse/morsepanel.h"
 #include "widgets/motion/jogpanel.h"
 #include "widgets/nm17x/nm17xlinepanel.h"
+#include "widgets/odeditor/descriptionlibrarydialog.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/scope/scopepage.h"
 
@@ -108,10 +110,13 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     createDocks();
     createMenus();
     createParameterPages();
-    createChangeLog();
     // Scope: records objects of the current connection.
     m_scopePage = new widgets::ScopePage(m_pages);
     m_pages->addTab(m_scopePage, tr("Scope"));
+    // The bus of the current CANopen connection; the tab shows while there is one.
+    m_networkView = new widgets::NetworkView(m_pages);
+    m_pages->setTabVisible(m_pages->addTab(m_networkView, tr("CANopen Network")), false);
+    createChangeLog(); // after every widget that changes devices
     createToolBar();
     createWelcome();
     statusBar()->addPermanentWidget(m_connectionState);
@@ -221,6 +226,7 @@ void MainWindow::createMenus()
     m_connectAction->setShortcut(QKeySequence::Open);
     m_disconnectAction = file->addAction(tr("&Disconnect"), this, &MainWindow::disconnectCurrent);
     file->addSeparator();
+    file->addAction(tr("Description &Library…"), this, &MainWindow::showDescriptionLibrary);
     file->addAction(tr("&Settings…"), this, &MainWindow::showSettings)
         ->setMenuRole(QAction::PreferencesRole);
     file->addSeparator();
@@ -358,7 +364,10 @@ void MainWindow::attachCanopen(DeviceConnection *connection)
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
     m_nodeList->setConnection(canopen);
+    m_networkView->setConnection(canopen);
+    m_pages->setTabVisible(m_pages->indexOf(m_networkView), canopen != nullptr);
     m_nm17xPanel->setNetwork(at.network);
+    m_nm17xPanel->setBusUri(canopen ? canopen->uri() : ConnectionUri());
 }
 
 void MainWindow::showCanMonitor()
@@ -401,12 +410,38 @@ void MainWindow::showConnectDialog()
 void MainWindow::showConnectDialogFor(const QString &uri)
 {
     widgets::ConnectionDialog dialog(m_registry, m_recent, this);
+    if (m_library) {
+        rescanLibrary();
+        dialog.setDescriptionEntries(m_library->entries());
+    }
     if (!uri.isEmpty())
         dialog.setUri(uri);
     if (dialog.exec() != QDialog::Accepted)
         return;
     // The URI joins the recent connections once its device answered (onHealthChanged()).
     openConnection(dialog.plan());
+}
+
+void MainWindow::rescanLibrary()
+{
+    if (!m_library)
+        return;
+    if (m_libraryFolder)
+        m_library->setFolder(m_libraryFolder()); // the setting may have changed
+    m_library->rescan(); // files added since
+}
+
+void MainWindow::showDescriptionLibrary()
+{
+    if (!m_library)
+        return;
+    rescanLibrary();
+    widgets::DescriptionLibraryDialog dialog(*m_library, this);
+    connect(&dialog, &widgets::DescriptionLibraryDialog::fileAdded, this,
+            [this](const QString &path) {
+                m_log->info(tr("%1 added to the description library").arg(path));
+            });
+    dialog.exec();
 }
 
 void MainWindow::disconnectCurrent()

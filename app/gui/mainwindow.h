@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/protocolregistry.h"
+#include "description/descriptionlibrary.h"
 #include "settingsdialog.h"
 
 #include <QMainWindow>
@@ -28,6 +29,7 @@ class DeviceList;
 class DriveStatusPanel;
 class JogPanel;
 class LogConsole;
+class NetworkView;
 class NodeList;
 class Nm17xLinePanel;
 class ObjectAccessBox;
@@ -92,6 +94,8 @@ public:
     // CAN monitor and node list: attached to the current connection while it is a CANopen one.
     widgets::CanMonitor *canMonitor() const { return m_canMonitor; }
     widgets::NodeList *nodeList() const { return m_nodeList; }
+    // The "CANopen Network" page (scan, PDOs, LSS, SYNC), shown while a CANopen node is current.
+    widgets::NetworkView *networkView() const { return m_networkView; }
     widgets::Nm17xLinePanel *nm17xPanel() const { return m_nm17xPanel; }
     // The central pages (tabs): "Drive Status" first, then the larger tools.
     QTabWidget *pages() const { return m_pages; }
@@ -117,9 +121,18 @@ public:
     // What "Start the demo" on the welcome page runs (the composition root starts the simulated
     // drive and opens connections to it); without one the button is hidden.
     void setDemoStarter(std::function<void()> start);
+    // The description library (owned by the composition root) and where its folder is now: the
+    // connection dialog offers its files, File → Description Library… shows and adds to it.
+    void setDescriptionLibrary(DescriptionLibrary *library, std::function<QString()> folder)
+    {
+        m_library = library;
+        m_libraryFolder = std::move(folder);
+    }
 
 public Q_SLOTS:
     void showConnectDialog();
+    // File → Description Library…: the library's entries, Add… and drop (needs the library).
+    void showDescriptionLibrary();
     // The connection dialog with `uri` filled in (e.g. from the Morse panel).
     void showConnectDialogFor(const QString &uri);
     void disconnectCurrent();
@@ -152,6 +165,7 @@ private:
     // Attaches the CAN monitor, node list and NM17x panel to the connection's CANopen network
     // when it is on one, else detaches them (their frames stay).
     void attachCanopen(DeviceConnection *connection);
+    void rescanLibrary();
     // mainwindow_motion.cpp: the Motion dock, the application-wide Esc stop and the stops on
     // window deactivation and before a connection is closed by the user.
     void createMotionDock();
@@ -187,12 +201,15 @@ private:
     QSet<int> m_logged; // change-log entries already shown as a log line
     widgets::CanMonitor *m_canMonitor = nullptr;
     widgets::NodeList *m_nodeList = nullptr;
+    widgets::NetworkView *m_networkView = nullptr;
     widgets::Nm17xLinePanel *m_nm17xPanel = nullptr; // Baumer NM17x displays on the bus
     widgets::JogPanel *m_jogPanel = nullptr;
     widgets::OdEditor *m_odEditor = nullptr;
     widgets::ParamCompareView *m_compareView = nullptr;
     widgets::ParameterSetActions *m_paramActions = nullptr;
     widgets::ScopePage *m_scopePage = nullptr;
+    DescriptionLibrary *m_library = nullptr;
+    std::function<QString()> m_libraryFolder;
     QPointer<DeviceConnection> m_canopen; // the connection whose CANopen network is shown
     QLabel *m_connectionState = nullptr;
     QPointer<QDialog> m_manual; // made on first use

@@ -5,11 +5,13 @@
 #include "core/changelog.h"
 #include "core/valuecodec.h"
 #include "parameters/parameterrunner.h"
+#include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/logconsole.h"
 #include "widgets/motion/jogpanel.h"
 #include "widgets/odeditor/objectaccessbox.h"
 #include "widgets/odeditor/odeditor.h"
+#include "widgets/parameters/paramcomparemodel.h"
 #include "widgets/parameters/paramcompareview.h"
 #include "widgets/parameters/parametersetactions.h"
 
@@ -22,16 +24,19 @@ void MainWindow::createChangeLog()
     m_jogPanel->setChangeLog(m_changeLog);
     m_paramActions->setChangeLog(m_changeLog);
 
-    connect(m_nodeList, &widgets::NodeList::commandSent, this,
-            [this](const QString &command, int node) {
-                ChangeLog::Entry e;
-                e.device = m_canopen ? m_canopen->uri().toString() : QString();
-                e.kind = ChangeLog::Kind::Nmt;
-                e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-                e.newValue = command;
-                e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
-                m_changeLog->add(e);
-            });
+    m_networkView->setChangeLog(m_changeLog);
+    const auto recordNmt = [this](const QString &command, int node) {
+        ChangeLog::Entry e;
+        e.device = m_canopen ? m_canopen->uri().toString() : QString();
+        e.kind = ChangeLog::Kind::Nmt;
+        e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
+        e.newValue = command;
+        e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
+        m_changeLog->add(e);
+    };
+    // The node dock and the network page send NMT commands alike.
+    connect(m_nodeList, &widgets::NodeList::commandSent, this, recordNmt);
+    connect(m_networkView->nodeList(), &widgets::NodeList::commandSent, this, recordNmt);
 
     connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
             [this](const RestoreReport &report) {
@@ -41,6 +46,13 @@ void MainWindow::createChangeLog()
                 const bool canStore = m_compareView->connection()
                     && m_compareView->connection()->capabilities().testFlag(
                         DeviceConnection::Capability::StoreNonVolatile);
+                // The device's values before the restore: the comparison it was chosen from
+                // (its first side is the device) is refreshed only after this signal.
+                QHash<ObjectAddress, QString> before;
+                for (const CompareRow &r : m_compareView->model()->comparison().rows) {
+                    if (!r.values.isEmpty() && r.values.first().isValid())
+                        before.insert(r.address, r.valueText(0));
+                }
                 for (const RestoreRow &row : report.rows) {
                     if (row.outcome == RestoreOutcome::Skipped)
                         continue;
@@ -50,6 +62,7 @@ void MainWindow::createChangeLog()
                     e.object = report.addressFormat->format(row.address);
                     if (!row.name.isEmpty())
                         e.object += QLatin1Char(' ') + row.name;
+                    e.oldValue = before.value(row.address);
                     e.newValue = codec::toText(row.type, row.value);
                     const bool ok = row.outcome == RestoreOutcome::Verified
                         || row.outcome == RestoreOutcome::Written;

@@ -5,9 +5,11 @@
 //   drivebench-sim nm17x [--slcan-port PORT] [--virtualcan IFACE] [--control-port PORT]
 //                        --devices nm172@127,nm172@127,nm174@5
 //   drivebench-sim acu --vabus-port PORT [--watchdog-ms MS] [--fail MODE] [--slave ID ...]
+//                      [--control]
 #include "../common/demodrive.h"
 #include "../common/simconsole.h"
 #include "../common/simnodes.h"
+#include "acuconsole.h"
 #include "core/objectaddress.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "resources/builtindescriptions.h"
@@ -59,10 +61,11 @@ void quitOnSignals(QCoreApplication &app)
 }
 
 // --control: one console command per line on standard input, answers on standard output.
-void readControlLines(QCoreApplication &app, app::SimConsole *console, QTextStream &out)
+template<typename Console>
+void readControlLines(QCoreApplication &app, Console *console, QTextStream &out)
 {
     auto *notifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, &app);
-    QObject::connect(console, &app::SimConsole::answered, &app,
+    QObject::connect(console, &Console::answered, &app,
                      [&out](const QString &line) { out << line << Qt::endl; });
     QObject::connect(notifier, &QSocketNotifier::activated, console,
                      [notifier, console, pending = QByteArray()]() mutable {
@@ -163,8 +166,10 @@ int main(int argc, char *argv[])
         QStringLiteral("control"),
         QCoreApplication::translate(
             "sim",
-            "movingcap: read commands from standard input while serving, one a line: state, "
-            "standstill, drop (abort every client: a cut cable), fault CODE, heartbeat off|on."));
+            "movingcap, acu: read commands from standard input while serving, one a line: state, "
+            "standstill, drop (abort every client: a cut cable), fault CODE; movingcap: "
+            "heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic "
+            "gear's master, u/s), watchdog MS."));
     const QCommandLineOption devices(
         QStringLiteral("devices"),
         QCoreApplication::translate("sim",
@@ -192,7 +197,13 @@ int main(int argc, char *argv[])
 
     const QStringList args = parser.positionalArguments();
     if (args.size() == 1 && args.first() == QLatin1String("acu")) {
-        if (const int code = app::runAcu(parser, out, err); code >= 0)
+        const auto console = [&app, &out](app::AcuConsole *c) {
+            readControlLines(app, c, out);
+        };
+        if (const int code = app::runAcu(
+                parser, out, err,
+                parser.isSet(control) ? console : std::function<void(app::AcuConsole *)>());
+            code >= 0)
             return code;
         quitOnSignals(app);
         return app.exec();

@@ -1,5 +1,7 @@
 #include "simacu.h"
 
+#include "acuconsole.h"
+
 #include "devices/bonfiglioli/simulatedacu.h"
 
 #include <QCoreApplication>
@@ -108,7 +110,8 @@ void addAcuOptions(QCommandLineParser &parser)
                         slave(), acuFault(), inputs() });
 }
 
-int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
+int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
+           const std::function<void(AcuConsole *)> &readLines)
 {
     if (!parser.isSet(vabusPort())) {
         err << "drivebench-sim: acu needs --vabus-port PORT (0 = any free port)" << Qt::endl;
@@ -189,6 +192,8 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err)
     QObject::connect(
         QCoreApplication::instance(), &QCoreApplication::aboutToQuit, acu,
         [acu, &out] { out << "acu: " << acu->eepromWrites() << " EEPROM writes" << Qt::endl; });
+    if (readLines)
+        readLines(new AcuConsole(acu, acu));
     return -1; // serve: the caller runs the event loop
 }
 

@@ -1,5 +1,6 @@
 #include "acuaxis.h"
 
+#include "acuaxis_p.h"
 #include "acusteps.h"
 
 #include <QCoreApplication>
@@ -18,87 +19,15 @@ struct Tr
 namespace db::bonfiglioli {
 
 using motion::AxisInterface;
+using namespace acuaxis;
 
 namespace {
-
-// Parameters of the ACTIVE Cube used here.
-constexpr quint16 kConfiguration = 30;
-constexpr quint16 kActualSpeedRpm = 240;
-constexpr quint16 kCurrentFault = 260;
-constexpr quint16 kApplicationWarnings = 274;
-constexpr quint16 kBusErrorBehaviour = 388;
-constexpr quint16 kLocalRemote = 412;
-constexpr quint16 kStatusWord = 411;
-constexpr quint16 kSpeed = 1107; // u/s
-constexpr quint16 kPosition = 1108; // u
-constexpr quint16 kHomingMethod = 1130;
-constexpr quint16 kFastSpeed = 1132;
-constexpr quint16 kCreepSpeed = 1133;
-constexpr quint16 kHomingAcceleration = 1134;
-constexpr quint16 kTargetWindow = 1165;
-constexpr quint16 kTargetWindowTime = 1166;
-constexpr quint16 kActiveBlock = 1246;
-constexpr quint16 kMode = 1454;
-constexpr quint16 kTargetPosition = 1455;
-constexpr quint16 kProfileVelocity = 1456;
-constexpr quint16 kAcceleration = 1457;
-constexpr quint16 kDeceleration = 1458;
-constexpr quint16 kTargetVelocityRpm = 1459;
-constexpr quint16 kTargetVelocity = 1460;
-constexpr qint64 kOverrideOff = -1;
-constexpr int kFaultCheckMs = 100; // a fault that stays this long is not a transient // 1455-1460:
-                                   // the MCI value is used instead
-
-// Control word 410 (412 = 1).
-constexpr quint16 kDisableVoltage = 0x0000;
-constexpr quint16 kQuickStop = 0x0002;
-constexpr quint16 kShutdown = 0x0006;
-constexpr quint16 kSwitchOn = 0x0007;
-constexpr quint16 kEnableOperation = 0x000F;
-constexpr quint16 kBit4 = 0x0010; // new set-point / start homing / sequence / move off switch
-constexpr quint16 kBit5 = 0x0020; // change immediately (profile position); rfg unlock
-constexpr quint16 kBit6 = 0x0040; // relative (profile position); resume; rfg use ref
-constexpr quint16 kFaultReset = 0x0080;
-constexpr quint16 kHalt = 0x0100;
-constexpr quint16 kBit9 = 0x0200; // start motion block
-
-// Status word 411.
-constexpr quint16 kStateMask = 0x006F;
-constexpr quint16 kSwitchOnDisabled = 0x0040;
-constexpr quint16 kSwitchOnDisabledQs = 0x0060;
-constexpr quint16 kReadyToSwitchOn = 0x0021;
-constexpr quint16 kSwitchedOn = 0x0023;
-constexpr quint16 kOperationEnabled = 0x0027;
-constexpr quint16 kQuickStopActive = 0x0007;
-constexpr quint16 kFaultBit = 0x0008;
-constexpr quint16 kVoltageEnabled = 0x0010;
-constexpr quint16 kTargetReached = 0x0400;
-constexpr quint16 kBit8 = 0x0100; // motion block in progress
-constexpr quint16 kBit12 = 0x1000; // set-point acknowledged / homing attained
-constexpr quint16 kBit13 = 0x2000; // homing error / following error
-// 274: hardware limit switch warnings.
-constexpr quint16 kHwLimitPositive = 0x0008;
-constexpr quint16 kHwLimitNegative = 0x0010;
-
-bool inState(quint16 word, quint16 state)
-{
-    return (word & kStateMask) == state;
-}
-bool switchOnDisabled(quint16 w)
-{
-    return inState(w, kSwitchOnDisabled) || inState(w, kSwitchOnDisabledQs);
-}
 
 const QList<quint16> &statusParameters()
 {
     static const QList<quint16> list { kStatusWord, kPosition, kSpeed, kActualSpeedRpm,
                                        kApplicationWarnings };
     return list;
-}
-
-qint64 positive(double v)
-{
-    return std::max<qint64>(1, std::llround(std::abs(v)));
 }
 
 } // namespace
@@ -139,6 +68,33 @@ QString AcuAxis::featureNote() const
     return Tr::tr("configuration %1 has no positioning control (30 is not x40): velocity mode "
                   "(rpm) only")
         .arg(m_configuration);
+}
+
+AcuAxis::Mode AcuAxis::modeFor(motion::CommandKind kind) const
+{
+    using motion::CommandKind;
+    if (!hasPositioning())
+        return Mode::None; // 1454 stays at 2; the other commands fail with featureNote()
+    switch (kind) {
+    case CommandKind::MoveAbsolute:
+    case CommandKind::MoveRelative:
+    case CommandKind::MoveAdditive:
+        return Mode::ProfilePosition;
+    case CommandKind::MoveVelocity:
+        return Mode::ProfileVelocity;
+    case CommandKind::Home:
+        return Mode::Homing;
+    case CommandKind::MotionBlock:
+        return Mode::TableTravel;
+    default:
+        return Mode::None;
+    }
+}
+
+bool AcuAxis::needsModeChange(motion::CommandKind kind) const
+{
+    const Mode mode = modeFor(kind);
+    return mode != Mode::None && mode != m_mode;
 }
 
 QString AcuAxis::linkSupervision() const
@@ -328,8 +284,14 @@ Result<void> AcuAxis::addModeChange(AcuSteps *steps, Mode mode)
 {
     if (m_mode == mode)
         return {};
-    if (m_status.moving)
-        return Error(Error::Kind::Busy, Tr::tr("refused: mode change while moving"));
+    // Not the polled status, which may predate the end of the last motion: the speeds read
+    // now decide, before anything is written.
+    const QString refused = Tr::tr("refused: mode change while moving");
+    const auto still = [](qint64 speed) {
+        return speed == 0;
+    };
+    steps->checkValue(kSpeed, still, refused);
+    steps->checkValue(kActualSpeedRpm, still, refused);
     // 1454 changes only in "switched on" (0x0007): the inverter is safe there. The axis's own
     // pass through it does not count as the power stage going off.
     AcuAxis *self = this;
@@ -402,179 +364,6 @@ Reply *AcuAxis::reset()
                       Tr::tr("the fault stays after the reset: remove its cause first"), true);
     steps->control(kDisableVoltage);
     steps->setResult([code] { return QVariant(*code); });
-    return run(steps);
-}
-
-Reply *AcuAxis::moveTo(double target, const Profile &profile)
-{
-    if (!hasPositioning())
-        return Reply::failed(ObjectAddress(kTargetPosition, 0),
-                             Error(Error::Kind::NotSupported, featureNote()));
-    const qint64 t = std::llround(target);
-    if (t == kOverrideOff)
-        return Reply::failed(
-            ObjectAddress(kTargetPosition, 0),
-            Error(Error::Kind::OutOfRange,
-                  Tr::tr("target -1 u cannot be approached: 1455 = -1 switches the override "
-                         "off")));
-    auto *steps = new AcuSteps(this, Tr::tr("profile position"));
-    if (auto ok = addModeChange(steps, Mode::ProfilePosition); !ok) {
-        delete steps;
-        return Reply::failed(ObjectAddress(kMode, 0), ok.error());
-    }
-    requireEnabled(steps);
-    // The last set-point's bit 4 falls first; the drive then clears bit 12 and takes a new one.
-    steps->control(kEnableOperation | kBit5);
-    steps->waitStatus([](quint16 w) { return !(w & kBit12); }, kHandshakeTimeoutMs,
-                      Tr::tr("the inverter did not clear 'set-point acknowledged' (bit 12)"));
-    steps->write(kProfileVelocity, positive(profile.velocity));
-    steps->write(kAcceleration, positive(profile.acceleration));
-    steps->write(kDeceleration, positive(profile.deceleration));
-    steps->write(kTargetPosition, t);
-    steps->control(kEnableOperation | kBit5 | kBit4); // absolute, change immediately
-    steps->waitStatus([](quint16 w) { return w & kBit12; }, kHandshakeTimeoutMs,
-                      Tr::tr("the inverter did not acknowledge the set-point (bit 12)"));
-    steps->control(kEnableOperation | kBit5);
-    return run(steps);
-}
-
-Reply *AcuAxis::moveVelocity(double velocity, const Profile &profile)
-{
-    auto *steps = new AcuSteps(this, Tr::tr("velocity"));
-    const Mode mode = hasPositioning() ? Mode::ProfileVelocity : Mode::Velocity;
-    if (hasPositioning()) {
-        if (auto ok = addModeChange(steps, mode); !ok) {
-            delete steps;
-            return Reply::failed(ObjectAddress(kMode, 0), ok.error());
-        }
-    }
-    const qint64 v = std::llround(velocity);
-    if (v == kOverrideOff) {
-        delete steps;
-        return Reply::failed(
-            ObjectAddress(kTargetVelocity, 0),
-            Error(Error::Kind::OutOfRange,
-                  Tr::tr("velocity -1 cannot be set: -1 switches the override off")));
-    }
-    requireEnabled(steps);
-    if (mode == Mode::ProfileVelocity) {
-        steps->write(kAcceleration, positive(profile.acceleration));
-        steps->write(kDeceleration, positive(profile.deceleration));
-        steps->write(kTargetVelocity, v);
-        steps->control(kEnableOperation);
-    } else {
-        steps->write(kTargetVelocityRpm, v);
-        steps->control(kEnableOperation | kBit4 | kBit5 | kBit6); // ramp follows 1459
-    }
-    return run(steps);
-}
-
-Reply *AcuAxis::halt(double deceleration)
-{
-    auto *steps = new AcuSteps(this, Tr::tr("halt"));
-    if (deceleration > 0 && hasPositioning()
-        && (m_mode == Mode::ProfilePosition || m_mode == Mode::ProfileVelocity))
-        steps->write(kDeceleration, positive(deceleration));
-    // Bit 9 stays as it is: in table travel mode its fall would start another stop.
-    steps->control(quint16((m_controlWord & ~kBit4) | kHalt | kEnableOperation));
-    return run(steps);
-}
-
-Reply *AcuAxis::home(const motion::HomingParams &params)
-{
-    if (!hasPositioning())
-        return Reply::failed(ObjectAddress(kHomingMethod, 0),
-                             Error(Error::Kind::NotSupported, featureNote()));
-    auto *steps = new AcuSteps(this, Tr::tr("homing"));
-    if (auto ok = addModeChange(steps, Mode::Homing); !ok) {
-        delete steps;
-        return Reply::failed(ObjectAddress(kMode, 0), ok.error());
-    }
-    requireEnabled(steps);
-    steps->write(kHomingMethod, params.method);
-    if (params.speedFast > 0)
-        steps->write(kFastSpeed, positive(params.speedFast));
-    if (params.speedSlow > 0)
-        steps->write(kCreepSpeed, positive(params.speedSlow));
-    if (params.acceleration > 0)
-        steps->write(kHomingAcceleration, positive(params.acceleration));
-    steps->control(kEnableOperation);
-    steps->control(kEnableOperation | kBit4); // rising edge: start homing
-    steps->waitStatus([](quint16 w) { return (w & kBit12) || (w & kBit13); }, kHomingTimeoutMs,
-                      Tr::tr("homing not finished within %1 s").arg(kHomingTimeoutMs / 1000));
-    steps->call([this]() -> Result<void> {
-        if (m_status.rawStatus & kBit13)
-            return Error(Error::Kind::DeviceError, Tr::tr("homing error (status bit 13)"));
-        return {};
-    });
-    steps->control(kEnableOperation);
-    return run(steps);
-}
-
-Reply *AcuAxis::torque(double, double)
-{
-    return Reply::failed(ObjectAddress(kMode, 0),
-                         Error(Error::Kind::NotSupported,
-                               Tr::tr("the ACTIVE Cube has no torque mode over the override")));
-}
-
-Reply *AcuAxis::stopNow()
-{
-    if (m_running)
-        m_running->cancel(Error(Error::Kind::Cancelled, Tr::tr("stopped")));
-    auto *steps = new AcuSteps(this, Tr::tr("quick stop"));
-    steps->control(kQuickStop);
-    m_running = nullptr; // nothing supersedes a quick stop
-    return steps->start();
-}
-
-Reply *AcuAxis::startMotionBlock(int block, bool sequence, bool resume)
-{
-    if (!hasPositioning())
-        return Reply::failed(ObjectAddress(kActiveBlock, 0),
-                             Error(Error::Kind::NotSupported, featureNote()));
-    if (block < 1 || block > 32)
-        return Reply::failed(ObjectAddress(kActiveBlock, 0),
-                             Error(Error::Kind::InvalidArgument,
-                                   Tr::tr("motion block %1 does not exist (1-32)").arg(block)));
-    auto *steps = new AcuSteps(this, Tr::tr("table travel block %1").arg(block));
-    if (auto ok = addModeChange(steps, Mode::TableTravel); !ok) {
-        delete steps;
-        return Reply::failed(ObjectAddress(kMode, 0), ok.error());
-    }
-    requireEnabled(steps);
-    const quint16 select = quint16((block - 1) << 11);
-    const quint16 word =
-        quint16(kEnableOperation | select | (sequence ? kBit4 : 0) | (resume ? kBit6 : 0));
-    steps->control(word); // bit 9 low first: the block is taken on its rising edge
-    steps->control(quint16(word | kBit9));
-    steps->waitStatus([](quint16 w) { return w & kBit8; }, kHandshakeTimeoutMs,
-                      Tr::tr("the inverter did not start the motion block (status bit 8)"));
-    steps->waitStatus(
-        [](quint16 w) { return !(w & kBit8) && (w & kTargetReached); }, kTableTravelTimeoutMs,
-        Tr::tr("the motion block did not end within %1 s").arg(kTableTravelTimeoutMs / 1000));
-    steps->control(kEnableOperation);
-    auto last = std::make_shared<int>(block);
-    steps->setResult([last] { return QVariant(*last); });
-    return run(steps);
-}
-
-Reply *AcuAxis::moveAwayFromLimitSwitch()
-{
-    if (!hasPositioning())
-        return Reply::failed(ObjectAddress(kMode, 0),
-                             Error(Error::Kind::NotSupported, featureNote()));
-    auto *steps = new AcuSteps(this, Tr::tr("move away from limit switch"));
-    if (auto ok = addModeChange(steps, Mode::LimitSwitch); !ok) {
-        delete steps;
-        return Reply::failed(ObjectAddress(kMode, 0), ok.error());
-    }
-    requireEnabled(steps);
-    steps->control(kEnableOperation);
-    steps->control(kEnableOperation | kBit4);
-    steps->waitStatus([](quint16 w) { return w & kTargetReached; }, kHomingTimeoutMs,
-                      Tr::tr("the limit switch was not cleared"));
-    steps->control(kEnableOperation);
     return run(steps);
 }
 

@@ -13,7 +13,8 @@
 // handshake, "change immediately" bit 5), 3 profile velocity (moveVelocity in u/s), 2 velocity
 // (moveVelocity in rpm, the only mode of configurations without positioning control, 30 != x40),
 // 6 homing (bit 4; bit 12 attained, bit 13 error), -1 table travel record (bits 4, 6, 9, 11-15)
-// and -2 move away from the limit switch (bit 4). Halt is bit 8, quick stop 0x0002.
+// and -2 move away from the limit switch (bit 4), -3 electronic gear slave (bit 4; status bit 10
+// in gear). Halt is bit 8, quick stop 0x0002.
 //
 // Status: 411, 1108, 1107, 240 and 274 are read every kStatusPollMs while connected (one round
 // at a time); statusChanged() after each round. The rounds also keep the inverter's 10 s link
@@ -40,6 +41,7 @@ public:
     static constexpr int kHandshakeTimeoutMs = 2000; // set-point acknowledged
     static constexpr int kHomingTimeoutMs = 60000;
     static constexpr int kTableTravelTimeoutMs = 120000;
+    static constexpr int kGearTimeoutMs = 60000; // until in gear
     static constexpr int kLinkWatchdogMs = 10000; // the module's PLC link timeout
     static constexpr int kSilenceShownMs = 1000; // no answer this long: the time left is shown
 
@@ -52,6 +54,7 @@ public:
         Homing = 6,
         TableTravel = -1,
         LimitSwitch = -2,
+        ElectronicGear = -3, // slave
     };
 
     explicit AcuAxis(DeviceConnection *connection, QObject *parent = nullptr);
@@ -76,6 +79,8 @@ public:
     QString positionUnit() const override;
     QString velocityUnit() const override;
     QString featureNote() const override;
+    // The MCO mode `kind` runs in differs from 1454 as last written or read.
+    bool needsModeChange(motion::CommandKind kind) const override;
     // 388 as read by initialize(), with the inverter's 10 s link watchdog; once the inverter
     // has not answered for kSilenceShownMs, also the time left until it reacts.
     QString linkSupervision() const override;
@@ -97,6 +102,11 @@ public:
     Reply *startMotionBlock(int block, bool sequence, bool resume) override;
     // Moves off an active hardware limit switch (mode -2); finishes once it is cleared.
     Reply *moveAwayFromLimitSwitch();
+    // Electronic gear slave (mode -3): starts the gear (bit 4, without direct sync or phasing)
+    // with the override ramps 1457/1458 when given (> 0), and finishes once the inverter reports
+    // "in gear" (status bit 10). halt() or stopNow() end it. The gear factor (1123/1124) and the
+    // master source (1122) are the drive's own parameters.
+    Reply *gearIn(double acceleration = 0, double deceleration = 0);
 
 private:
     friend class AcuSteps;
@@ -107,6 +117,8 @@ private:
     // The steps that put the drive in `mode` (nothing when it is in it); false with the reason
     // when the change is refused.
     Result<void> addModeChange(AcuSteps *steps, Mode mode);
+    // The MCO mode a command runs in; None for those that work in any mode (halt, stop).
+    Mode modeFor(motion::CommandKind kind) const;
     // A step that fails unless the inverter is in "operation enabled" (411 read then).
     void requireEnabled(AcuSteps *steps) const;
 

@@ -3,9 +3,15 @@
 // The drive side of the simulated ACU: the state machine of control word 410 / status word 411
 // (412 = 1) and the remote contacts (412 = 2), with simulated mains and STO inputs, and a
 // simple motion model (constant-acceleration ramps) for the Motion Control Override modes 1, 2,
-// 3, 6, -1 and -2 with their status bits. The actual values 1108, 1107, 240, 1246 and 1249 and
-// the inputs 250 are written into the store's images (no EEPROM write). Electronic gear (-3) is
-// not simulated: 1454 = 253 is taken, and the axis then stands.
+// 3, 6, -1, -2 and -3 with their status bits. The actual values 1108, 1107, 240, 1246 and 1249
+// and the inputs 250 are written into the store's images (no EEPROM write).
+//
+// Electronic gear slave (-3): the master is a simulated speed (setMasterSpeed, u/s). Bit 4 runs
+// the slave at master speed x 1123 / 1124 with the ramp 1457, bit 4 low or halt brakes with
+// 1458. Once at that speed the slave is coupled (the model has no following error, so the 1168
+// threshold always holds) and bit 10 "in gear" rises after 1169 ms. Direct sync (bit 6), phasing
+// (bits 9, 12, 13; status bit 8) and the master/slave position correction (bit 5; status bit
+// 12) are not simulated: those bits are ignored.
 //
 // Status values as the inverter gives them in its sequences: 0x0050, 0x0031, 0x0033, 0x0237 (bit 9
 // remote is set while operation is enabled under 412 = 1; bit 4 follows the mains).
@@ -58,6 +64,13 @@ public:
     bool sto() const { return m_sto; }
     void setLimitSwitches(bool positive, bool negative);
     void setHomingFails(bool fails) { m_homingFails = fails; }
+    // The electronic gear's master (u/s).
+    void setMasterSpeed(double speed) { m_masterSpeed = speed; }
+    double masterSpeed() const { return m_masterSpeed; }
+    // Simulated time runs this many times faster than the clock (1 = real time; tests use more
+    // so that long moves end sooner). The ramps and the "in gear" time follow it; the state
+    // machine and the VABus exchange do not.
+    void setTimeScale(double scale) { m_timeScale = scale > 0 ? scale : 1.0; }
 
     double position() const { return m_position; }
     double velocity() const { return m_velocity; }
@@ -106,6 +119,9 @@ private:
     double m_blockSpeed = 0.0;
     double m_blockAcc = 0.0;
     double m_blockDec = 0.0;
+    double m_masterSpeed = 0.0;
+    double m_gearCoupledMs = -1.0; // time the slave has been coupled; < 0: not coupled
+    double m_timeScale = 1.0;
 };
 
 } // namespace db::bonfiglioli

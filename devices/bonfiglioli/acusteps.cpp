@@ -56,6 +56,17 @@ void AcuSteps::checkStatus(std::function<bool(quint16)> pred, const QString &fai
     waitStatus(std::move(pred), kOnce, failText, true);
 }
 
+void AcuSteps::checkValue(quint16 parameter, std::function<bool(qint64)> pred,
+                          const QString &failText)
+{
+    Step s;
+    s.kind = Step::Kind::Check;
+    s.parameter = parameter;
+    s.valuePred = std::move(pred);
+    s.failText = failText;
+    m_steps.append(s);
+}
+
 void AcuSteps::call(std::function<Result<void>()> fn)
 {
     Step s;
@@ -129,6 +140,9 @@ void AcuSteps::next()
             m_deadline.start(s.timeoutMs);
         readStatus();
         return;
+    case Step::Kind::Check:
+        readValue();
+        return;
     case Step::Kind::Call:
         if (auto ok = s.fn(); !ok) {
             fail(ok.error());
@@ -153,6 +167,7 @@ void AcuSteps::readStatus()
             return;
         }
         const quint16 word = quint16(r->value().toUInt());
+        m_lastStatus = word;
         const Step &s = m_steps.at(m_index);
         if (s.pred(word)) {
             next();
@@ -169,6 +184,27 @@ void AcuSteps::readStatus()
             return;
         }
         m_retry.start();
+    });
+}
+
+void AcuSteps::readValue()
+{
+    const Step &s = m_steps.at(m_index);
+    Reply *r = m_axis->connection()->read(ObjectAddress(s.parameter, 0));
+    connect(r, &Reply::finished, this, [this, r] {
+        r->deleteLater();
+        if (m_done)
+            return;
+        if (!r->ok()) {
+            fail(r->error());
+            return;
+        }
+        const Step &s = m_steps.at(m_index);
+        if (!s.valuePred(r->value().toLongLong())) {
+            fail(Error(Error::Kind::Busy, s.failText));
+            return;
+        }
+        next();
     });
 }
 

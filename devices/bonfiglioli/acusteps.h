@@ -42,6 +42,11 @@ public:
                     bool faultOk = false);
     // Reads 411 once; fails with `failText` unless pred(411) holds.
     void checkStatus(std::function<bool(quint16)> pred, const QString &failText);
+    // Reads `parameter` (data set 0) once; fails with `failText` (Busy) unless pred(value).
+    void checkValue(quint16 parameter, std::function<bool(qint64)> pred, const QString &failText);
+    // 411 as the last wait or check step read it (0 before any): what the drive said when the
+    // step went on, unlike the axis's polled status, which may be older.
+    quint16 lastStatus() const { return m_lastStatus; }
     void call(std::function<Result<void>()> fn);
     // The reply's value when all steps are done.
     void setResult(std::function<QVariant()> fn) { m_result = std::move(fn); }
@@ -53,8 +58,9 @@ public:
 private:
     struct Step
     {
-        enum class Kind { Write, Wait, Call } kind = Kind::Write;
+        enum class Kind { Write, Wait, Check, Call } kind = Kind::Write;
         quint16 parameter = 0;
+        std::function<bool(qint64)> valuePred;
         qint64 value = 0;
         std::function<bool(quint16)> pred;
         int timeoutMs = 0;
@@ -64,6 +70,7 @@ private:
     };
     void next();
     void readStatus();
+    void readValue();
     void fail(const Error &error);
 
     AcuAxis *m_axis;
@@ -75,6 +82,7 @@ private:
     QTimer m_retry;
     std::function<QVariant()> m_result;
     bool m_done = false;
+    quint16 m_lastStatus = 0;
 };
 
 } // namespace db::bonfiglioli

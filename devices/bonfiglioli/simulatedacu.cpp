@@ -208,6 +208,16 @@ void SimulatedAcu::restart(int offMs)
     });
 }
 
+int SimulatedAcu::dropClient()
+{
+    const bool had = m_server.hasClient();
+    const quint16 port = m_server.port();
+    m_server.close();
+    if (auto listening = m_server.listen(port); !listening)
+        Q_EMIT logLine(QStringLiteral("cannot listen again: %1").arg(listening.error().toString()));
+    return had ? 1 : 0;
+}
+
 quint16 SimulatedAcu::statusWord() const
 {
     quint16 status = m_motion.statusWord();

@@ -56,6 +56,9 @@ public:
     // (power off and the module starting up), then the inverter runs as after powerCycle().
     // Returns at once.
     void restart(int offMs);
+    // A cut cable: the PLC connection is aborted (the inverter keeps running, its link watchdog
+    // counts on) and the port listens again at once. Returns the connections aborted (0 or 1).
+    int dropClient();
 
     // The state machine, the simulated inputs (mains, STO, limit switches) and the axis.
     AcuMotion &motion() { return m_motion; }

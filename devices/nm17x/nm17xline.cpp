@@ -4,6 +4,7 @@
 
 #include "canopen/nodescanner.h"
 #include "canopen/sdoclient.h"
+#include "core/valuecodec.h"
 
 #include <QCoreApplication>
 #include <QtEndian>
@@ -40,6 +41,23 @@ Result<qint32> parseMillimetres(const QString &text)
         return Error(Error::Kind::InvalidArgument,
                      Tr::tr("'%1' is not a position in mm (-999.99 .. 9999.99)").arg(text));
     return qint32(qRound(hundredths));
+}
+
+quint32 scalingFor(qint32 pitchHundredths, int stepsPerRevolution)
+{
+    if (stepsPerRevolution <= 0 || pitchHundredths <= 0)
+        return 0;
+    return quint32(qRound64(double(pitchHundredths) / stepsPerRevolution * 1e7));
+}
+
+double pitchOf(quint32 scaling, int stepsPerRevolution)
+{
+    return double(scaling) * stepsPerRevolution / 1e7;
+}
+
+int stepsPerRevolution(Variant variant)
+{
+    return variant == Variant::Nm174 ? 4096 : 2304;
 }
 
 QString DisplayState::toString() const
@@ -181,6 +199,64 @@ Result<void> Nm17xLine::presetAll(qint32 value)
         return Error(Error::Kind::InvalidArgument,
                      Tr::tr("preset %1 is outside -99999..999999 (1/100 mm)").arg(value));
     return broadcast({ 0, 0x6003, 0, quint32(value) });
+}
+
+const ObjectDef *Nm17xLine::definition(NodeId node, ObjectAddress address) const
+{
+    const ObjectDictionary *known = m_network->dictionary(node);
+    if (known && !known->isEmpty())
+        return known->find(address);
+    static const ObjectDictionary every = dictionary(Variant::Nm174);
+    return every.find(address);
+}
+
+Reply *Nm17xLine::write(NodeId node, ObjectAddress address, qint64 value)
+{
+    const ObjectDef *def = definition(node, address);
+    if (!def || !def->writable())
+        return Reply::failed(
+            address,
+            Error(Error::Kind::NotSupported,
+                  Tr::tr("node %1 has no writable object %2").arg(node).arg(address.toString())));
+    const auto raw = def->validate(QVariant(qlonglong(value)));
+    if (!raw)
+        return Reply::failed(address,
+                             raw.error().prefixed(Tr::tr("node %1, %2").arg(node).arg(def->name)));
+    const auto bytes = codec::encode(def->type, raw.value());
+    if (!bytes)
+        return Reply::failed(address, bytes.error());
+    return m_network->sdo()->download(node, address, bytes.value());
+}
+
+Reply *Nm17xLine::read(NodeId node, ObjectAddress address)
+{
+    const ObjectDef *def = definition(node, address);
+    if (!def)
+        return Reply::failed(
+            address,
+            Error(Error::Kind::NotSupported,
+                  Tr::tr("node %1 has no object %2").arg(node).arg(address.toString())));
+    auto *outer = new Reply(address);
+    Reply *inner = m_network->sdo()->upload(node, address);
+    const DataType type = def->type;
+    connect(inner, &Reply::finished, outer, [outer, inner, type, node, address] {
+        inner->deleteLater();
+        if (!inner->ok()) {
+            outer->fail(
+                inner->error().prefixed(Tr::tr("node %1, %2").arg(node).arg(address.toString())));
+            return;
+        }
+        QByteArray bytes = inner->value().toByteArray();
+        if (const int size = datatype::byteSize(type); size > 0 && bytes.size() > size)
+            bytes.truncate(size); // an expedited answer without its size carries 4 bytes
+        const auto raw = codec::decode(type, bytes);
+        if (!raw) {
+            outer->fail(raw.error());
+            return;
+        }
+        outer->finish(QVariant(raw.value().toLongLong()));
+    });
+    return outer;
 }
 
 Reply *Nm17xLine::readState(NodeId node)

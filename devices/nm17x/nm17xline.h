@@ -42,6 +42,15 @@ QString formatPosition(qint32 hundredthsMm, bool inch);
 // "10", "-2.5", "9999.99" (mm) -> 1/100 mm; InvalidArgument outside -999.99..9999.99 mm.
 Result<qint32> parseMillimetres(const QString &text);
 
+// Scaling 2004h (units of 1e-7) for a spindle pitch (1/100 mm per revolution) and the sensor's
+// steps per revolution: pitch / steps x 10^7, e.g. 400 and 2304 give 1736111. 0 when steps <= 0.
+quint32 scalingFor(qint32 pitchHundredths, int stepsPerRevolution);
+// The pitch (1/100 mm per revolution) a scaling stands for.
+double pitchOf(quint32 scaling, int stepsPerRevolution);
+// The built-in multiturn sensor of NM170/NM172 counts 2304 steps per revolution; for the NM174
+// the SSI sensor decides, and 4096 (a common rotary encoder) is the starting value offered.
+int stepsPerRevolution(Variant variant);
+
 enum class SetpointKind {
     Standard, // without release: the display shows it, the motor waits for a start
     Release, // the motor starts at once
@@ -82,6 +91,12 @@ public:
     // vendors are left out, displays that fail to answer their state are named in problems().
     Reply *findDisplays();
     QStringList problems() const { return m_problems; }
+    // One object of a display, checked first against the display's description (the one its
+    // identity chose, else the NM174's, which has every object): a value outside the object's
+    // range fails at once, naming the range, and nothing is sent. Value: none.
+    Reply *write(canopen::NodeId node, ObjectAddress address, qint64 value);
+    // Value: the number as a qlonglong (signed by the object's type).
+    Reply *read(canopen::NodeId node, ObjectAddress address);
 
 Q_SIGNALS:
     // Decoded as they arrive, for every node (TxPDO COB-IDs 180h/280h + node).
@@ -91,6 +106,7 @@ Q_SIGNALS:
     void emergency(db::canopen::NodeId node, quint16 code, quint8 subCode, const QString &text);
 
 private:
+    const ObjectDef *definition(canopen::NodeId node, ObjectAddress address) const;
     Result<void> sendFrame(quint32 id, const QByteArray &payload);
     void readNext(Reply *outer, DisplayState state, QList<ObjectAddress> todo);
     void readStates(Reply *outer, QList<canopen::NodeId> todo, QList<DisplayState> done);

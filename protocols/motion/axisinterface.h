@@ -95,6 +95,14 @@ public:
     virtual QString linkSupervision() const { return {}; }
     // Why a feature is missing ("configuration 210 has no positioning control"), for display.
     virtual QString featureNote() const { return {}; }
+    // Whether starting `kind` now would switch the drive to another operating mode. A drive
+    // that answers true here cannot switch while the axis moves, so the command model refuses
+    // such a command then (Refusal::ModeChangeWhileMoving) before anything is sent.
+    virtual bool needsModeChange(CommandKind kind) const
+    {
+        Q_UNUSED(kind);
+        return false;
+    }
 
 Q_SIGNALS:
     void statusChanged();

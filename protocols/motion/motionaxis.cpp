@@ -119,10 +119,14 @@ void MotionAxis::start(MotionCommand *command)
     }
 }
 
-AxisSnapshot MotionAxis::snapshot() const
+AxisSnapshot MotionAxis::snapshot(CommandKind kind) const
 {
     const auto s = m_axis->status();
     AxisSnapshot a;
+    // A round read while the last command was taken may still show the motion it ended.
+    a.driveMoving = s.valid && (s.moving || std::abs(s.velocity) > m_config.velocityWindow)
+        && m_rounds > m_acceptedRound + 1;
+    a.modeChangeNeeded = m_axis->needsModeChange(kind);
     a.state = m_state;
     a.position = s.position;
     a.velocity = std::abs(s.velocity) > m_config.velocityWindow ? s.velocity : 0.0;
@@ -137,7 +141,7 @@ AxisSnapshot MotionAxis::snapshot() const
 
 Plan MotionAxis::preview(CommandKind kind, const MoveParams &params) const
 {
-    const AxisSnapshot axis = snapshot();
+    const AxisSnapshot axis = snapshot(kind);
     MoveParams inputs = params;
     if (usesOverride(kind))
         inputs.overridePercent *= m_override / 100.0;
@@ -150,7 +154,7 @@ void MotionAxis::startMotion(MotionCommand *command)
     const quint64 generation = ++command->m_generation;
     command->m_limits = {};
     command->setStatus(MotionCommand::Status::Busy); // S-30: Busy (no error) first
-    const AxisSnapshot axis = snapshot();
+    const AxisSnapshot axis = snapshot(command->kind());
     AxisConfig config = m_config;
     if (command->kind() == CommandKind::Home)
         config.homingMethod = command->m_latchedHoming.method;
@@ -240,7 +244,9 @@ void MotionAxis::refuse(MotionCommand *command, const Plan &plan)
         later(MotionCommand::Status::Done, {}, Refusal::None); // S-22b, S-25
         return;
     }
-    if (plan.refusal != Refusal::StopActive) { // R10 leaves the running MC_Stop alone
+    // R10 leaves the running MC_Stop alone; a mode change the drive cannot make now leaves the
+    // running motion alone.
+    if (plan.refusal != Refusal::StopActive && plan.refusal != Refusal::ModeChangeWhileMoving) {
         if (motionInProgress())
             emergencyStop(error, false); // D-10: quick stop of the running motion
         m_lastError = error;

@@ -19,7 +19,9 @@ namespace db::motion {
 // while MC_Stop is active (until standstill and Execute released) every command is refused;
 // MC_Home only from Standstill. A refusal puts the axis in ErrorStop and, if it moves, stops
 // it by quick stop [I: the seed says so for commands 1-3; the tool does it for all].
-// MC_Reset leaves ErrorStop.
+// MC_Reset leaves ErrorStop. Two refusals leave the running motion and the state alone: R10
+// (MC_Stop active) and a command that would need another operating mode of the drive while
+// the axis moves (AxisInterface::needsModeChange).
 //
 // Safety: stopNow() sends a quick stop at once in every state. The deadman watchdog
 // (setWatchdogTimeout, at most kMaxWatchdogMs) stops the axis the same way when keepAlive() has
@@ -96,7 +98,7 @@ private:
     bool motionInProgress() const;
     bool controlsAxis(const MotionCommand *command) const;
     static bool usesOverride(CommandKind kind);
-    AxisSnapshot snapshot() const;
+    AxisSnapshot snapshot(CommandKind kind) const;
     // Runs reply and calls done(reply) once on this axis; the reply is deleted afterwards.
     void whenFinished(Reply *reply, std::function<void(Reply *)> done);
 

@@ -178,15 +178,26 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
     }
     const MoveParams &p = params;
     const bool standstill = axis.state == AxisState::Standstill;
+    // A drive that switches its operating mode only at rest: the command is refused before
+    // anything is sent, and the running motion is left alone (no quick stop).
+    const bool inMotionState = axis.state == AxisState::DiscreteMotion
+        || axis.state == AxisState::ContinuousMotion || axis.state == AxisState::Homing;
+    const bool modeBlocked = axis.modeChangeNeeded && (axis.driveMoving || inMotionState);
     switch (kind) {
     case CommandKind::MoveAbsolute:
     case CommandKind::MoveRelative:
     case CommandKind::MoveAdditive:
+        if (modeBlocked) {
+            plan.refusal = Refusal::ModeChangeWhileMoving;
+            return plan;
+        }
         plan.refusal = positioningRefusal(kind, p, config, axis, plan, origin);
         plan.quickStop = plan.refused() && moving(axis);
         break;
     case CommandKind::MoveVelocity:
-        if (p.acceleration == 0 || p.deceleration == 0 || p.jerk == 0)
+        if (modeBlocked)
+            plan.refusal = Refusal::ModeChangeWhileMoving;
+        else if (p.acceleration == 0 || p.deceleration == 0 || p.jerk == 0)
             plan.refusal = Refusal::ZeroProfileValue; // R5v: velocity 0 is allowed
         else if (config.maxAcceleration == 0 || config.maxJerk == 0)
             plan.refusal = Refusal::ZeroAxisLimit; // R6
@@ -206,6 +217,8 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
     case CommandKind::Home:
         if (!standstill)
             plan.refusal = Refusal::NotAtStandstill; // R8
+        else if (modeBlocked)
+            plan.refusal = Refusal::ModeChangeWhileMoving;
         else if (config.homingMethod == 0)
             plan.refusal = Refusal::HomingInactive; // R9
         return plan; // never refused for zero speeds (S-29); limits via clampHoming
@@ -213,12 +226,17 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
         // The drive takes the block's own profile; starting it may change the drive's mode.
         if (!standstill)
             plan.refusal = Refusal::NotAtStandstill;
+        else if (modeBlocked)
+            plan.refusal = Refusal::ModeChangeWhileMoving;
         return plan;
     case CommandKind::TorqueControl:
+        if (modeBlocked)
+            plan.refusal = Refusal::ModeChangeWhileMoving;
+        return plan; // otherwise never refused (Sec. 3.9)
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:
-        return plan; // never refused (Sec. 3.9)
+        return plan;
     }
     if (!plan.refused()) {
         const bool notReferenced = plan.flags.notReferenced;

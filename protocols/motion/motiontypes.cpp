@@ -94,6 +94,8 @@ QString refusalText(Refusal refusal)
         return Tr::tr("MC_Stop is active");
     case Refusal::AxisNotReady:
         return Tr::tr("axis not enabled or in ErrorStop");
+    case Refusal::ModeChangeWhileMoving:
+        return Tr::tr("mode change while moving");
     }
     return {};
 }

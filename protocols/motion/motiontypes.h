@@ -55,6 +55,9 @@ enum class Refusal {
     HomingInactive, // R9
     StopActive, // R10
     AxisNotReady, // [I] power off or ErrorStop: only MC_Power / MC_Reset help
+    // The drive would have to change its operating mode for the command, which it cannot do
+    // while the axis moves: the running motion goes on.
+    ModeChangeWhileMoving,
 };
 QString refusalText(Refusal refusal);
 
@@ -132,6 +135,12 @@ struct AxisSnapshot
     bool hardwareLimitPositive = false;
     bool hardwareLimitNegative = false;
     double brakingDistance = 0.0; // from the present velocity, for starts from motion
+    // The drive reports motion in a status read after the last command was taken (velocity
+    // inside the window too).
+    bool driveMoving = false;
+    // The command needs another operating mode of the drive than the present one
+    // (AxisInterface::needsModeChange).
+    bool modeChangeNeeded = false;
 };
 
 } // namespace db::motion

@@ -249,9 +249,12 @@ void ParameterRestore::onReadBackDone(Reply *reply)
             row.outcome = RestoreOutcome::Verified;
         } else {
             row.outcome = RestoreOutcome::Mismatch;
-            row.reason =
-                tr("read back %1, expected %2")
-                    .arg(codec::toText(row.type, row.readBack), codec::toText(row.type, row.value));
+            // As the editor shows them: physical values with decimals and unit.
+            const ObjectDef *def = m_connection->dictionary().find(step.address);
+            const auto text = [&](const QVariant &raw) {
+                return def ? def->displayText(raw) : codec::toText(row.type, raw);
+            };
+            row.reason = tr("read back %1, expected %2").arg(text(row.readBack), text(row.value));
         }
     }
     advance();

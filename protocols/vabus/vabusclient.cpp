@@ -87,8 +87,6 @@ Reply *VabusClient::writeData(quint16 parameter, quint8 dataSet, const QByteArra
     if (dataSet > kMaxWriteDataSet)
         return Reply::failed(
             address, invalid(QStringLiteral("VABus writes data sets 0-9, not %1").arg(dataSet)));
-    if (data.isEmpty())
-        return Reply::failed(address, invalid(QStringLiteral("nothing to write")));
     return submit(Telegram::writeRequest(parameter, dataSet, data, m_sys), std::nullopt, address);
 }
 

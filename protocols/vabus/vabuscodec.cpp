@@ -170,10 +170,12 @@ Result<QByteArray> encodeValue(DataType type, const QVariant &raw)
                      QStringLiteral("VABus carries 16- and 32-bit integers and strings, not %1")
                          .arg(datatype::name(type)));
     if (type == DataType::VisibleString) {
+        // An empty string is a select telegram without data bytes (NoB 4): the length of a
+        // string is NoB - 4, with no terminator.
         const QByteArray text = raw.toString().toLatin1();
-        if (text.isEmpty() || text.size() > kMaxDataBytes)
+        if (text.size() > kMaxDataBytes)
             return Error(Error::Kind::OutOfRange,
-                         QStringLiteral("a VABus string has 1 to %1 characters, not %2")
+                         QStringLiteral("a VABus string has at most %1 characters, not %2")
                              .arg(kMaxDataBytes)
                              .arg(text.size()));
         return text;

@@ -5,7 +5,9 @@
 
 #include "clirun.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QtTest>
 
 using db::test::CliRun;
@@ -37,6 +39,38 @@ QString stopSim(QProcess &process)
     if (!process.waitForFinished(5000))
         process.kill();
     return QString::fromUtf8(process.readAllStandardOutput());
+}
+
+// Sends one --control line and returns the first answer line starting with `answer` (or an
+// "error:" line); empty when none came in time.
+QString ask(QProcess &sim, QByteArray &pending, const QString &command, const QString &answer,
+            int timeoutMs = 5000)
+{
+    sim.write(command.toUtf8() + '\n');
+    QElapsedTimer clock;
+    clock.start();
+    for (;;) {
+        qsizetype nl;
+        while ((nl = pending.indexOf('\n')) >= 0) {
+            const QString line = QString::fromUtf8(pending.left(nl)).trimmed();
+            pending.remove(0, nl + 1);
+            if (line.startsWith(answer) || line.startsWith(QLatin1String("error:")))
+                return line;
+        }
+        const qint64 left = timeoutMs - clock.elapsed();
+        if (left <= 0 || sim.state() != QProcess::Running)
+            return {};
+        sim.waitForReadyRead(int(left));
+        pending += sim.readAllStandardOutput();
+    }
+}
+
+// The status word in a "state ..." line of the console.
+int statusWordOf(const QString &state)
+{
+    static const QRegularExpression re(QStringLiteral("statusword 0x([0-9A-F]{4})"));
+    const auto m = re.match(state);
+    return m.hasMatch() ? m.captured(1).toInt(nullptr, 16) : -1;
 }
 
 double lastNumber(const QString &out)
@@ -133,6 +167,8 @@ private Q_SLOTS:
         stopSim(sim);
     }
 
+    void controlConsole();
+
     void faultResetAfterF2714()
     {
         QProcess sim;
@@ -148,6 +184,11 @@ private Q_SLOTS:
         QCOMPARE(r.out.trimmed(), QStringLiteral("10004")); // 0x2714
         r = cli({ QStringLiteral("move"), uri, QStringLiteral("--abs"), QStringLiteral("100") });
         QVERIFY(r.exitCode != 0); // faulted: nothing moves
+        // No reaction from now on (RAM): the next CLI process may start later than 300 ms after
+        // this one, which would fault the inverter again right after the reset.
+        r = cli({ QStringLiteral("write"), uri, QStringLiteral("388"), QStringLiteral("0"),
+                  QStringLiteral("--ram") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = cli({ QStringLiteral("reset"), uri });
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = cli({ QStringLiteral("read"), uri, QStringLiteral("260") });
@@ -158,6 +199,71 @@ private Q_SLOTS:
         QVERIFY2(out.contains(QLatin1String("acu: 0 EEPROM writes")), qPrintable(out));
     }
 };
+
+// The simulator's --control console: the inputs and a fault set while the simulator serves,
+// and a cut cable mid-motion: the link watchdog (388 = 1) then faults the inverter, which
+// stops the motor without anyone on the link. The watchdog keeps its 10 s until the motion
+// runs (one CLI process after the other leaves the link quiet in between), then it is shortened.
+void TstCliAcuMotion::controlConsole()
+{
+    QProcess sim;
+    const QString uri = startSim(sim, { QStringLiteral("--control") });
+    QVERIFY(!uri.isEmpty());
+    QByteArray pending;
+    QCOMPARE(ask(sim, pending, QStringLiteral("fly"), QStringLiteral("x")).left(32),
+             QStringLiteral("error: unknown command 'fly' (st"));
+    QVERIFY(ask(sim, pending, QStringLiteral("fault F0"), QStringLiteral("fault"))
+                .startsWith(QLatin1String("error: a fault is a code")));
+
+    QCOMPARE(ask(sim, pending, QStringLiteral("mains off"), QStringLiteral("mains")),
+             QStringLiteral("mains off"));
+    CliRun r = cli({ QStringLiteral("enable"), uri });
+    QVERIFY(r.exitCode != 0);
+    QVERIFY2(r.err.contains(QLatin1String("no mains voltage")), qPrintable(r.err));
+    QCOMPARE(ask(sim, pending, QStringLiteral("mains on"), QStringLiteral("mains")),
+             QStringLiteral("mains on"));
+    r = cli({ QStringLiteral("enable"), uri });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QString state = ask(sim, pending, QStringLiteral("state"), QStringLiteral("state"));
+    QCOMPARE(statusWordOf(state) & 0x006F, 0x0027); // operation enabled
+    QCOMPARE(ask(sim, pending, QStringLiteral("sto off"), QStringLiteral("sto")),
+             QStringLiteral("sto off"));
+    state = ask(sim, pending, QStringLiteral("state"), QStringLiteral("state"));
+    QCOMPARE(statusWordOf(state) & 0x006F, 0x0023); // STO lost: back to "switched on"
+    QCOMPARE(ask(sim, pending, QStringLiteral("sto on"), QStringLiteral("sto")),
+             QStringLiteral("sto on"));
+
+    QCOMPARE(ask(sim, pending, QStringLiteral("fault 5"), QStringLiteral("fault")),
+             QStringLiteral("fault 0005"));
+    r = cli({ QStringLiteral("read"), uri, QStringLiteral("260") });
+    QCOMPARE(r.out.trimmed(), QStringLiteral("5"));
+    r = cli({ QStringLiteral("reset"), uri });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    r = cli({ QStringLiteral("enable"), uri });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+    // A velocity move runs; the cable is cut. No one stops the motor but the inverter itself.
+    QProcess move;
+    move.start(QStringLiteral(DRIVEBENCH_CLI),
+               { QStringLiteral("velocity"), uri, QStringLiteral("--vel"), QStringLiteral("3000"),
+                 QStringLiteral("--time"), QStringLiteral("20000") });
+    QTRY_VERIFY_WITH_TIMEOUT(ask(sim, pending, QStringLiteral("state"), QStringLiteral("state"))
+                                 .contains(QLatin1String("velocity 3000.0")),
+                             10000);
+    QCOMPARE(ask(sim, pending, QStringLiteral("watchdog 300"), QStringLiteral("watchdog")),
+             QStringLiteral("watchdog 300"));
+    const QString dropped = ask(sim, pending, QStringLiteral("drop"), QStringLiteral("dropped"));
+    QVERIFY2(dropped.startsWith(QLatin1String("dropped 1 ")), qPrintable(dropped));
+    QVERIFY(move.waitForFinished(15000));
+    QVERIFY(move.exitCode() != 0); // the link is gone: the CLI says so
+    const QString still =
+        ask(sim, pending, QStringLiteral("standstill"), QStringLiteral("standstill"), 10000);
+    QVERIFY2(still.startsWith(QLatin1String("standstill ")), qPrintable(still));
+    state = ask(sim, pending, QStringLiteral("state"), QStringLiteral("state"));
+    QVERIFY2(state.endsWith(QLatin1String("fault 0x2714")), qPrintable(state)); // F2714
+    const QString out = stopSim(sim);
+    QVERIFY2(out.contains(QLatin1String("acu: 0 EEPROM writes")), qPrintable(out));
+}
 
 QTEST_GUILESS_MAIN(TstCliAcuMotion)
 #include "tst_cli_acumotion.moc"

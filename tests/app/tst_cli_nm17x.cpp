@@ -28,6 +28,8 @@ private Q_SLOTS:
     void wideCorrectionGoesThrough2010();
     void usageErrors();
     void oscillatedAndStopped();
+    void settingsReadAndWritten();
+    void displayErrorsNamed();
     void scanFindsTheBitrate();
     void thirdPartyMasterByteExact();
 
@@ -338,6 +340,70 @@ void TestCliNm17x::oscillatedAndStopped()
     r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("oscillate"), QStringLiteral("3"),
               QStringLiteral("sideways") });
     QCOMPARE(r.exitCode, 2);
+}
+
+// Input and key modes, scaling from the pitch, jump filter and dynamic pre-shutdown of one
+// display: written by name, shown as the display has them, and back to the defaults.
+void TestCliNm17x::settingsReadAndWritten()
+{
+    CliRun r = cli(
+        { QStringLiteral("nm17x"), uri(), QStringLiteral("settings"), QStringLiteral("4"),
+          QStringLiteral("--input-mode"), QStringLiteral("takten"), QStringLiteral("--key-mode"),
+          QStringLiteral("fast"), QStringLiteral("--pitch"), QStringLiteral("8"),
+          QStringLiteral("--filter-width"), QStringLiteral("40"), QStringLiteral("--filter-count"),
+          QStringLiteral("3"), QStringLiteral("--pre-shutdown"), QStringLiteral("on") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    for (const char *expected :
+         { "node 4  NM172", "2041:3 Input modes: 1 (Takten)", "2041:4 Key modes: 3 (Fast)",
+           "2004:0 Scaling (spindle pitch): 3472222 = 8.00 mm/rev at 2304 steps/rev",
+           "2005:1 Filter width: 40 steps", "2005:2 Filter count: 3",
+           "2041:2 Dynamic pre-shutdown: 1 (On)", "2042:3 Switch-off point: 0" })
+        QVERIFY2(r.out.contains(QLatin1String(expected)), qPrintable(expected + (u'\n' + r.out)));
+    // Out of range: refused before it is sent, naming the object.
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("settings"), QStringLiteral("4"),
+              QStringLiteral("--filter-width"), QStringLiteral("5000") });
+    QVERIFY(r.exitCode != 0);
+    QVERIFY2(r.err.contains(QLatin1String("2005:1")), qPrintable(r.err));
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("settings"), QStringLiteral("4"),
+              QStringLiteral("--input-mode"), QStringLiteral("sideways") });
+    QCOMPARE(r.exitCode, 2);
+    r = cli({ QStringLiteral("nm17x"), uri(), QStringLiteral("settings"), QStringLiteral("4"),
+              QStringLiteral("--input-mode"), QStringLiteral("standard"),
+              QStringLiteral("--key-mode"), QStringLiteral("0"), QStringLiteral("--pitch"),
+              QStringLiteral("4"), QStringLiteral("--filter-width"), QStringLiteral("100"),
+              QStringLiteral("--filter-count"), QStringLiteral("5"),
+              QStringLiteral("--pre-shutdown"), QStringLiteral("off") });
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QLatin1String("1736111 = 4.00 mm/rev")), qPrintable(r.out));
+    QVERIFY2(r.out.contains(QLatin1String("Input modes: 0 (Standard / Oscillating)")),
+             qPrintable(r.out));
+}
+
+// A blocked shaft (Er 3) and a motor wired the wrong way round (Er 6), set on the simulator's
+// control socket: the setpoint fails naming the display error.
+void TestCliNm17x::displayErrorsNamed()
+{
+    QCOMPARE(control(QStringLiteral("fault 1 blocked")).constLast(), QStringLiteral("ok"));
+    const QStringList setpoint = { QStringLiteral("nm17x"),    uri(),
+                                   QStringLiteral("setpoint"), QStringLiteral("3"),
+                                   QStringLiteral("12.5"),     QStringLiteral("--release") };
+    CliRun r = cli(setpoint);
+    QVERIFY2(r.exitCode != 0, qPrintable(r.out));
+    QVERIFY2(r.err.contains(QLatin1String("node 3: Er 3 (shaft does not turn despite the drive "
+                                          "signal)")),
+             qPrintable(r.err));
+    QCOMPARE(control(QStringLiteral("fault 1 wiring")).constLast(), QStringLiteral("ok"));
+    r = cli(setpoint);
+    QVERIFY(r.exitCode != 0);
+    QVERIFY2(r.err.contains(QLatin1String("node 3: Er 6 (direction error")), qPrintable(r.err));
+    QCOMPARE(control(QStringLiteral("fault 1 none")).constLast(), QStringLiteral("ok"));
+    r = cli(setpoint);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+    QVERIFY2(r.out.contains(QLatin1String("In Position")), qPrintable(r.out));
+    QVERIFY(control(QStringLiteral("fault 1 loose")).constLast().startsWith(u"error: "));
+    QCOMPARE(control(QStringLiteral("glitch 1 1000 3")).constLast(), QStringLiteral("ok"));
+    QVERIFY(control(QStringLiteral("glitch 1 many")).constLast().startsWith(u"error: "));
+    QCOMPARE(control(QStringLiteral("coast 1 0")).constLast(), QStringLiteral("ok"));
 }
 
 // A display left at 250 kbit/s (its 2100h default): list at 125 kbit/s finds nothing, scan

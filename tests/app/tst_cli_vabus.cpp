@@ -124,6 +124,21 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QLatin1String("decimal")), qPrintable(r.err));
     }
 
+    // An empty string is written as a select telegram without data, and reads back empty.
+    void emptyStringWrites()
+    {
+        CliRun r =
+            cli({ QStringLiteral("write"), m_uri, QStringLiteral("29"), QStringLiteral("Line 3") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({ QStringLiteral("read"), m_uri, QStringLiteral("29") });
+        QCOMPARE(r.out, QStringLiteral("Line 3\n"));
+        r = cli({ QStringLiteral("write"), m_uri, QStringLiteral("29"), QString() });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({ QStringLiteral("read"), m_uri, QStringLiteral("29") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.out, QStringLiteral("\n"));
+    }
+
     // backup, change two data sets, diff names them, restore writes them back, diff is clean.
     void backupDiffRestoreRoundTrip()
     {
@@ -143,6 +158,9 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QLatin1String("481:3")) && r.out.contains(QLatin1String("372:4"))
                      && r.out.contains(QLatin1String("2 changed")),
                  qPrintable(r.out));
+        // Physical values with their decimals and unit, as the editor shows them.
+        QVERIFY2(r.out.contains(QLatin1String(": 33.33 Hz | 20.00 Hz\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QLatin1String(": 1400 rpm | 1390 rpm\n")), qPrintable(r.out));
         r = cli({ QStringLiteral("restore"), m_uri, file });
         QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         r = cli({ QStringLiteral("diff"), m_uri, file });

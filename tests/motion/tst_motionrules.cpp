@@ -182,6 +182,34 @@ private Q_SLOTS:
                                                  << int(Refusal::HomingInactive) << false << false;
         QTest::newRow("S-29 home zero speeds")
             << home << MoveParams() << base << still << none << false << false;
+        // A drive that changes its operating mode only at rest (the ACTIVE Cube's 1454).
+        AxisSnapshot otherMode = continuous;
+        otherMode.modeChangeNeeded = true;
+        AxisSnapshot otherModeCreeping = still; // inside the velocity window, still turning
+        otherModeCreeping.driveMoving = true;
+        otherModeCreeping.modeChangeNeeded = true;
+        AxisSnapshot otherModeAtRest = still;
+        otherModeAtRest.modeChangeNeeded = true;
+        const auto modeChange = int(Refusal::ModeChangeWhileMoving);
+        QTest::newRow("mode change while moving: abs")
+            << abs << move(10) << base << otherMode << modeChange << false << false;
+        QTest::newRow("mode change while moving: abs, bad profile too")
+            << abs << zeroJerk << base << otherMode << modeChange << false << false;
+        QTest::newRow("mode change while moving: velocity")
+            << vel << move(0) << base << otherModeCreeping << modeChange << false << false;
+        QTest::newRow("mode change at rest accepted")
+            << abs << move(10) << base << otherModeAtRest << none << false << false;
+        // A velocity from a status read before the last command was taken does not count.
+        AxisSnapshot otherModeStale = otherModeAtRest;
+        otherModeStale.velocity = 50;
+        QTest::newRow("mode change, only a stale velocity")
+            << abs << move(10) << base << otherModeStale << none << false << false;
+        QTest::newRow("same mode while moving accepted")
+            << abs << move(10) << base << continuous << none << false << false;
+        QTest::newRow("halt needs no mode change")
+            << halt << move(0) << base << moving << none << false << false;
+        QTest::newRow("home in motion stays R8") << home << move(0) << base << otherMode
+                                                 << int(Refusal::NotAtStandstill) << false << false;
         QTest::newRow("S-34 torque never refused")
             << int(CommandKind::TorqueControl) << MoveParams() << noJerk << still << none << false
             << false;

@@ -6,7 +6,9 @@
 #include "core/reply.h"
 
 #include <QDeadlineTimer>
+#include <QEventLoop>
 #include <QSignalSpy>
+#include <QTimer>
 
 #include <memory>
 
@@ -31,6 +33,31 @@ bool waitUntil(const Sender *sender, Signal signal, Done done, int timeoutMs = k
         spy.wait(int(left));
     }
     return true;
+}
+
+// Turns the event loop until done() is true, checking it every `everyMs`: for conditions no
+// signal announces (a simulator's state, a text that changes with time). Unlike
+// QTest::qWaitFor (and so QTRY_*), which sleeps 10 ms after every turn of the loop, this
+// sleeps only in the event loop, so a request and its answer between a client and a server in
+// the same thread take microseconds, not 10 ms for each of their hops.
+template<typename Done>
+bool waitFor(Done done, int timeoutMs = kDefaultWaitMs, int everyMs = 2)
+{
+    if (done())
+        return true;
+    QEventLoop loop;
+    QTimer check;
+    QObject::connect(&check, &QTimer::timeout, &loop, [&] {
+        if (done())
+            loop.quit();
+    });
+    QTimer deadline;
+    deadline.setSingleShot(true);
+    QObject::connect(&deadline, &QTimer::timeout, &loop, &QEventLoop::quit);
+    check.start(everyMs);
+    deadline.start(timeoutMs);
+    loop.exec();
+    return done();
 }
 
 // Turns the event loop until `signal` has been emitted `count` times from now on.
@@ -65,3 +92,19 @@ bool runToEnd(Runner *runner, int timeoutMs = kDefaultWaitMs)
 }
 
 } // namespace db::test
+
+// QTRY_VERIFY / QTRY_COMPARE with a time limit, waiting with waitFor (see there) instead of
+// QTest::qWaitFor. The same checks: the condition is tested once more by QVERIFY / QCOMPARE.
+#define DB_TRY_VERIFY_WITH_TIMEOUT(expr, timeoutMs)                                                \
+    do {                                                                                           \
+        db::test::waitFor([&] { return bool(expr); }, timeoutMs);                                  \
+        QVERIFY(expr);                                                                             \
+    } while (false)
+#define DB_TRY_COMPARE_WITH_TIMEOUT(actual, expected, timeoutMs)                                   \
+    do {                                                                                           \
+        db::test::waitFor([&] { return (actual) == (expected); }, timeoutMs);                      \
+        QCOMPARE(actual, expected);                                                                \
+    } while (false)
+#define DB_TRY_VERIFY(expr) DB_TRY_VERIFY_WITH_TIMEOUT(expr, db::test::kDefaultWaitMs)
+#define DB_TRY_COMPARE(actual, expected)                                                           \
+    DB_TRY_COMPARE_WITH_TIMEOUT(actual, expected, db::test::kDefaultWaitMs)

@@ -197,6 +197,21 @@ private Q_SLOTS:
         QCOMPARE(decode(bytes("C0 06 00 09 E2 01 01 00")).value().errorCode(), quint16(1));
     }
 
+    // An empty string is a select telegram without data bytes (NoB = 4 + 0), distinct from an
+    // enquiry by its R/W bit; its echo is the same frame.
+    void emptyStringIsASelectWithoutData()
+    {
+        const auto data = encodeValue(DataType::VisibleString, QString());
+        QVERIFY2(data.ok(), qPrintable(data.error().message()));
+        QVERIFY(data.value().isEmpty());
+        QCOMPARE(encode(Telegram::writeRequest(29, 0, data.value())).value(),
+                 bytes("80 04 00 00 1D 00"));
+        const auto echo = decode(bytes("80 04 00 00 1D 00"));
+        QVERIFY(echo.ok());
+        QVERIFY(echo.value().write && echo.value().data.isEmpty());
+        QCOMPARE(decodeValue(DataType::VisibleString, {}).value(), QVariant(QString()));
+    }
+
     void errorTexts()
     {
         QCOMPARE(errorText(1), QStringLiteral("invalid parameter value"));

@@ -6,9 +6,11 @@
 #include "scriptedcanbus.h"
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/canmonitorlog.h"
+#include "widgets/canopen/framesender.h"
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -21,6 +23,7 @@ using namespace db;
 using db::test::ScriptedCanBus;
 using db::widgets::CanMonitor;
 using db::widgets::CanMonitorModel;
+using db::widgets::FrameSender;
 
 // Level 4: the CAN monitor offscreen against a ScriptedCanBus (frames of movingcap.md 4.3) and,
 // end to end, against the demo drive's SLCAN door.
@@ -279,6 +282,94 @@ private Q_SLOTS:
         bus.feed(0x732, "05");
         monitor.model()->flush();
         QCOMPARE(monitor.model()->rowCount(), 0);
+    }
+
+    void senderSendsOnceAndPeriodically()
+    {
+        ScriptedCanBus bus;
+        CanMonitor monitor;
+        setUp(monitor, bus);
+        FrameSender *sender = monitor.frameSender();
+        QVERIFY(sender);
+        // Bad input names the cause and sends nothing.
+        sender->setFrameText(QStringLiteral("6G1"), QStringLiteral("01"));
+        QVERIFY(!sender->sendOnce());
+        QVERIFY2(sender->status().contains(QStringLiteral("6G1")), qPrintable(sender->status()));
+        sender->setFrameText(QStringLiteral("601"), QStringLiteral("00 11 22 33 44 55 66 77 88"));
+        QVERIFY(!sender->sendOnce());
+        QVERIFY2(sender->status().contains(QStringLiteral("at most 8")),
+                 qPrintable(sender->status()));
+        QVERIFY(bus.takeSent().isEmpty());
+
+        // NMT start node 5, from the fields with the Send button.
+        sender->setFrameText(QStringLiteral("000"), QStringLiteral("0105"));
+        QTest::mouseClick(sender->findChild<QToolButton *>(QStringLiteral("send")), Qt::LeftButton);
+        QList<QCanBusFrame> sent = bus.takeSent();
+        QCOMPARE(sent.size(), 1);
+        QCOMPARE(test::describe(sent.first()), QStringLiteral("000 [2] 01 05"));
+        // The monitor shows what the sender sent.
+        monitor.model()->flush();
+        QCOMPARE(monitor.model()->rowCount(), 1);
+
+        // Periodic: every 20 ms until switched off; a closed bus stops it.
+        sender->setFrameText(QStringLiteral("080"), QString());
+        sender->setPeriodMs(20);
+        QTest::mouseClick(sender->findChild<QToolButton *>(QStringLiteral("sendPeriodic")),
+                          Qt::LeftButton);
+        QVERIFY(sender->isPeriodic());
+        QTRY_VERIFY(bus.sent().size() >= 4);
+        for (const QCanBusFrame &f : bus.takeSent())
+            QCOMPARE(test::describe(f).trimmed(), QStringLiteral("080 [0]"));
+        sender->setPeriodic(false);
+        QVERIFY(!sender->isPeriodic());
+        QVERIFY(sender->setPeriodic(true));
+        bus.close();
+        QTRY_VERIFY(!sender->isPeriodic());
+        QVERIFY2(sender->status().contains(QStringLiteral("not open")),
+                 qPrintable(sender->status()));
+    }
+
+    void senderRunsAMacroOfSendAndWait()
+    {
+        const auto bad = FrameSender::parseMacro(QStringLiteral("send 000 01 05\nsleep 10"));
+        QVERIFY(!bad);
+        QVERIFY2(bad.error().message().contains(QStringLiteral("line 2")),
+                 qPrintable(bad.error().message()));
+        QVERIFY(!FrameSender::parseMacro(QStringLiteral("wait -1")));
+        QVERIFY(!FrameSender::parseMacro(QStringLiteral("send")));
+        const auto steps = FrameSender::parseMacro(
+            QStringLiteral("# start node 5, then SYNC\n\nsend 000 01 05\nwait 60 # settle\n"
+                           "SEND 18FF0001 AA"));
+        QVERIFY2(steps, qPrintable(steps.error().toString()));
+        QCOMPARE(steps->size(), 3);
+        QVERIFY(steps->at(2).frame.hasExtendedFrameFormat());
+
+        ScriptedCanBus bus;
+        CanMonitor monitor;
+        setUp(monitor, bus);
+        FrameSender *sender = monitor.frameSender();
+        sender->setMacroText(QStringLiteral("send 000 01 05\nwait 60\nsend 080\nsend 18FF0001 AA"));
+        QSignalSpy finished(sender, &FrameSender::macroFinished);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(sender->runMacro());
+        QCOMPARE(bus.sent().size(), 1); // the first frame at once, then the wait
+        QVERIFY(finished.wait(5000));
+        QVERIFY(clock.elapsed() >= 55); // the wait, less a timer that may fire a little early
+        QCOMPARE(finished.first().first().toBool(), true);
+        const QList<QCanBusFrame> sent = bus.takeSent();
+        QCOMPARE(sent.size(), 3);
+        QCOMPARE(test::describe(sent.at(0)), QStringLiteral("000 [2] 01 05"));
+        QCOMPARE(test::describe(sent.at(1)).trimmed(), QStringLiteral("080 [0]"));
+        QCOMPARE(sent.at(2).frameId(), 0x18FF0001u);
+        QCOMPARE(sender->sentCount(), 3);
+
+        // Stop in the middle of a wait: nothing more goes out.
+        sender->setMacroText(QStringLiteral("send 080\nwait 10000\nsend 080"));
+        QVERIFY(sender->runMacro());
+        sender->stopMacro();
+        QVERIFY(!sender->isMacroRunning());
+        QCOMPARE(bus.takeSent().size(), 1);
     }
 
     void showsTheDemoDriveOverSlcan()

@@ -135,6 +135,7 @@ private Q_SLOTS:
         QVERIFY(result.ok());
         ParameterSet set = result.value();
         ParameterEntry velocity = *set.find(kVelocity);
+        const qulonglong original = velocity.raw.toULongLong();
         velocity.raw = QVariant::fromValue<qulonglong>(velocity.raw.toULongLong() + 11);
         set.insert(velocity);
         widgets::ParamCompareView *compare = window.compareView();
@@ -148,6 +149,7 @@ private Q_SLOTS:
         QCOMPARE(restores.size(), 1);
         QVERIFY2(restores.first().object.startsWith(QLatin1String("6081:0")),
                  qPrintable(restores.first().object));
+        QCOMPARE(restores.first().oldValue, QString::number(original));
         QCOMPARE(restores.first().newValue, QString::number(velocity.raw.toULongLong()));
         QCOMPARE(restores.first().outcome, ChangeLog::Outcome::Ok);
         QVERIFY(log.unstoredCount(device) >= 2); // the write and the restored row

@@ -5,16 +5,20 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "devices/movingcap/movingcapdrive.h"
+#include "devices/nm17x/device/nm17xsim.h"
 #include "mainwindow.h"
 #include "settingsdialog.h"
 #include "translations/language.h"
 #include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
+#include "widgets/nm17x/nm17xlinemodel.h"
+#include "widgets/nm17x/nm17xlinepanel.h"
 #include "widgets/scope/scopepage.h"
 
 #include <QAbstractScrollArea>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -128,6 +132,72 @@ private Q_SLOTS:
                                     .arg(inViewport.right())
                                     .arg(scroll->viewport()->width())));
         }
+    }
+
+    void nm17xDockFitsWithALine_data() { fitsWithTheDemoConnected_data(); }
+
+    // The NM17x Line dock with three displays found: every control of the panel lies inside
+    // the dock's viewport horizontally. With DRIVEBENCH_SCREENSHOT_DIR=DIR (under xvfb-run) it
+    // saves the window as DIR/screenshot-nm17x-dock-LANGUAGE.png.
+    void nm17xDockFitsWithALine()
+    {
+        QFETCH(QString, language);
+        QVERIFY(i18n::installTranslations(*qApp, language));
+        nm17x::Nm17xSim displays;
+        displays.create(
+            nm17x::Nm17xSim::parseDevices(QStringLiteral("nm172@2,nm172@3,nm174@4")).value());
+        QVERIFY(displays.startSlcan(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.resize(kLaptopWidth, kUsableHeight);
+        window.show();
+        const auto opened = window.openConnection(
+            QStringLiteral("canopen+slcan://127.0.0.1:%1?node=2").arg(displays.slcanPort()));
+        QVERIFY(opened.ok());
+        QTRY_VERIFY(opened.value()->isConnected());
+        auto *dock = window.findChild<QDockWidget *>(QStringLiteral("nm17xDock"));
+        QVERIFY(dock);
+        dock->show();
+        dock->raise();
+        auto *panel = dock->findChild<widgets::Nm17xLinePanel *>();
+        QVERIFY(panel);
+        auto *find = panel->findChild<QPushButton *>(QStringLiteral("find"));
+        QVERIFY(find->isEnabled()); // the line's network is attached
+        QTest::mouseClick(find, Qt::LeftButton);
+        QTRY_VERIFY2_WITH_TIMEOUT(panel->model()->rowCount() == 3, qPrintable(panel->message()),
+                                  10000);
+        panel->selectNode(3);
+        QTest::qWait(300); // the settings of node 3 arrive
+        const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+        if (!dir.isEmpty())
+            QVERIFY(window.grab().save(
+                QStringLiteral("%1/screenshot-nm17x-dock-%2.png").arg(dir, language)));
+
+        const QSize min = window.minimumSizeHint().expandedTo(window.minimumSize());
+        QVERIFY2(min.width() <= kLaptopWidth && min.height() <= kUsableHeight,
+                 qPrintable(QStringLiteral("%1: window needs %2x%3:%4")
+                                .arg(language)
+                                .arg(min.width())
+                                .arg(min.height())
+                                .arg(layoutReport(window))));
+        auto *scroll = qobject_cast<QAbstractScrollArea *>(dock->widget());
+        QVERIFY(scroll);
+        QList<QWidget *> controls;
+        for (QPushButton *b : panel->findChildren<QPushButton *>())
+            controls.append(b);
+        for (QComboBox *b : panel->findChildren<QComboBox *>())
+            controls.append(b);
+        for (QWidget *w : std::as_const(controls)) {
+            if (!w->isVisibleTo(panel))
+                continue;
+            const QRect inViewport(w->mapTo(scroll->viewport(), QPoint(0, 0)), w->size());
+            QVERIFY2(inViewport.left() >= 0 && inViewport.right() < scroll->viewport()->width(),
+                     qPrintable(QStringLiteral("%1: '%2' at x %3..%4, viewport %5 wide")
+                                    .arg(language, w->objectName())
+                                    .arg(inViewport.left())
+                                    .arg(inViewport.right())
+                                    .arg(scroll->viewport()->width())));
+        }
+        window.close();
     }
 
     void welcomePageUntilADeviceIsListed()

@@ -1,11 +1,13 @@
 // The NM17x line panel offscreen against simulated displays on a scripted bus: finding the
 // displays, live positions from TxPDO2, a setpoint with release, jog and stop, broadcasts.
+#include "devices/nm17x/device/nm17xsim.h"
 #include "devices/nm17x/device/simulatednm17x.h"
 #include "devices/nm17x/nm17xcodes.h"
 #include "scriptedcanbus.h"
 #include "widgets/nm17x/nm17xaddressingdialog.h"
 #include "widgets/nm17x/nm17xlinemodel.h"
 #include "widgets/nm17x/nm17xlinepanel.h"
+#include "widgets/nm17x/nm17xsettingsbox.h"
 
 #include "canopen/cannetwork.h"
 #include "canopen/canopenconnection.h"
@@ -13,8 +15,10 @@
 #include "widgets/canopen/canmonitor.h"
 #include "widgets/canopen/canmonitormodel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
@@ -38,6 +42,11 @@ private Q_SLOTS:
     void canMonitorNamesThePdoFieldsOfTheLine();
     void guidedAddressingAlongTheLine();
     void guidedAddressingTimeoutIsNamedPerStep();
+    void modesOfTheSelectedDisplay();
+    void settingsOfTheSelectedDisplay();
+    void scanFindsTheDisplaysAtTheirBitrate();
+    void displayErrorsAreNamed();
+    void nm170HasNoMotorSettings();
     void screenshotOfARunningLine();
 
 private:
@@ -256,6 +265,155 @@ void TstNm17xLinePanel::withoutNetworkNothingIsEnabled()
     QVERIFY(!button("send")->isEnabled());
     QVERIFY(!button("stopAll")->isEnabled());
     QCOMPARE(m_panel->model()->rowCount(), 0);
+}
+
+// Input mode, key mode and oscillation of the selected display from the dock: the combo boxes
+// show what the display has, and a choice is written to it.
+void TstNm17xLinePanel::modesOfTheSelectedDisplay()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    SimulatedNm17x *nm172 = m_displays.at(0);
+    QVERIFY(nm172->write({ 0x2041, 4 }, 2u).ok()); // the display has "Middle" before
+    m_panel->selectNode(3);
+    widgets::Nm17xSettingsBox *box = m_panel->settingsBox();
+    QCOMPARE(box->node(), canopen::NodeId(3));
+    auto *inputs = box->findChild<QComboBox *>("inputMode");
+    auto *keys = box->findChild<QComboBox *>("keyMode");
+    QTRY_COMPARE(keys->currentData().toInt(), 2);
+    QCOMPARE(inputs->currentText(), QStringLiteral("Standard / Oscillating"));
+
+    QTest::mouseClick(box->findChild<QPushButton *>("oscillate"), Qt::LeftButton);
+    QTRY_VERIFY(nm172->isOscillating());
+    QTRY_VERIFY(m_panel->message().contains(QLatin1String("oscillating")));
+    QVERIFY(nm172->statusWord() & status::Oscillating);
+    QTest::mouseClick(box->findChild<QPushButton *>("stopOscillating"), Qt::LeftButton);
+    QTRY_VERIFY(!nm172->isOscillating());
+
+    const int takten = inputs->findData(1);
+    inputs->setCurrentIndex(takten);
+    Q_EMIT inputs->activated(takten);
+    QTRY_COMPARE(nm172->read({ 0x2041, 3 }).value().toUInt(), 1u);
+    QTRY_VERIFY2(m_panel->message().contains(QLatin1String("Takten")),
+                 qPrintable(m_panel->message()));
+    const int fast = keys->findData(3);
+    keys->setCurrentIndex(fast);
+    Q_EMIT keys->activated(fast);
+    QTRY_COMPARE(nm172->read({ 0x2041, 4 }).value().toUInt(), 3u);
+    // In Takten, input F positions to D1.
+    QVERIFY(nm172->write({ 0x2045, 1 }, 1500).ok());
+    QTRY_COMPARE(nm172->read({ 0x2045, 1 }).value().toInt(), 1500);
+    nm172->setInputs(true, false);
+    QTRY_VERIFY_WITH_TIMEOUT(nm172->statusWord() & status::InPosition, 10000);
+    QCOMPARE(nm172->position(), 1500);
+
+    // Selecting the other display shows its own values.
+    m_panel->selectNode(2);
+    QTRY_COMPARE(inputs->currentData().toInt(), 0);
+    QCOMPARE(keys->currentData().toInt(), 0);
+}
+
+// Scaling from the pitch, the jump filter and the dynamic pre-shutdown, written to the selected
+// display and read back.
+void TstNm17xLinePanel::settingsOfTheSelectedDisplay()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    m_panel->selectNode(3);
+    widgets::Nm17xSettingsBox *box = m_panel->settingsBox();
+    auto *scaling = box->findChild<QLabel *>("scaling");
+    QTRY_COMPARE(scaling->text(), QStringLiteral("1736111 = 4.00 mm/rev"));
+    QCOMPARE(box->findChild<QSpinBox *>("filterWidth")->value(), 100);
+    QTRY_COMPARE(box->findChild<QSpinBox *>("filterCount")->value(), 5); // NM174's is 2
+
+    box->findChild<QDoubleSpinBox *>("pitch")->setValue(8.0);
+    QTest::mouseClick(box->findChild<QPushButton *>("setScaling"), Qt::LeftButton);
+    QTRY_COMPARE(m_displays.at(0)->read({ 0x2004, 0 }).value().toUInt(), 3472222u);
+    QTRY_COMPARE(scaling->text(), QStringLiteral("3472222 = 8.00 mm/rev"));
+
+    box->findChild<QSpinBox *>("filterWidth")->setValue(40);
+    box->findChild<QSpinBox *>("filterCount")->setValue(3);
+    QTest::mouseClick(box->findChild<QPushButton *>("setFilter"), Qt::LeftButton);
+    QTRY_COMPARE(m_displays.at(0)->read({ 0x2005, 1 }).value().toUInt(), 40u);
+    QTRY_COMPARE(m_displays.at(0)->read({ 0x2005, 2 }).value().toUInt(), 3u);
+
+    auto *preShutdown = box->findChild<QCheckBox *>("preShutdown");
+    QVERIFY(!preShutdown->isChecked());
+    QTest::mouseClick(preShutdown, Qt::LeftButton);
+    QTRY_COMPARE(m_displays.at(0)->read({ 0x2041, 2 }).value().toUInt(), 1u);
+    QTRY_VERIFY(box->switchOffText().contains(QLatin1String("0.00 mm")));
+}
+
+// A display at 250 kbit/s while the line's bus runs at 125: the scan names where it answers.
+void TstNm17xLinePanel::scanFindsTheDisplaysAtTheirBitrate()
+{
+    nm17x::Nm17xSim sim;
+    sim.create({ { Variant::Nm172, 5 } });
+    sim.setBitrate(250000);
+    QVERIFY(sim.startSlcan(0).ok());
+    QVERIFY(!button("scanBitrates")->isEnabled()); // no bus URI yet
+    const auto uri = ConnectionUri::parse(
+        QStringLiteral("canopen+slcan://127.0.0.1:%1?bitrate=125000").arg(sim.slcanPort()));
+    QVERIFY(uri.ok());
+    m_panel->setBusUri(*uri);
+    QVERIFY(button("scanBitrates")->isEnabled());
+    QTest::mouseClick(button("scanBitrates"), Qt::LeftButton);
+    QVERIFY(m_panel->isScanning());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_panel->isScanning(), 20000);
+    QVERIFY2(m_panel->message().contains(QLatin1String("125 kbit/s: no display")),
+             qPrintable(m_panel->message()));
+    QVERIFY2(m_panel->message().contains(QLatin1String("250 kbit/s: node 5")),
+             qPrintable(m_panel->message()));
+}
+
+// TxPDO2 shows only the error bit: the panel reads the error word and names Er 3 and Er 6, with
+// the remedy in the tool tip.
+void TstNm17xLinePanel::displayErrorsAreNamed()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    SimulatedNm17x *nm172 = m_displays.at(0);
+    QVERIFY(nm172->write({ 0x2047, 2 }, 3u).ok()); // following error after 0.3 s
+    nm172->spindle().setShaftBlocked(true);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    const QModelIndex errors = m_panel->model()->index(1, widgets::Nm17xLineModel::Errors);
+    QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 3 (shaft")),
+                              qPrintable(errors.data().toString()), 5000);
+    QVERIFY(cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("Error")));
+    QVERIFY2(errors.data(Qt::ToolTipRole).toString().contains(QLatin1String("mechanics")),
+             qPrintable(errors.data(Qt::ToolTipRole).toString()));
+
+    nm172->spindle().setShaftBlocked(false);
+    nm172->spindle().setWiringReversed(true);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 6 (direction")),
+                              qPrintable(errors.data().toString()), 5000);
+
+    nm172->spindle().setWiringReversed(false);
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
+    QCOMPARE(cell(1, widgets::Nm17xLineModel::Errors), QStringLiteral("-"));
+}
+
+// An NM170 (no motor): scaling and jump filter can be set, the modes and the pre-shutdown cannot.
+void TstNm17xLinePanel::nm170HasNoMotorSettings()
+{
+    nm17x::Nm17xLine line(m_network.get());
+    widgets::Nm17xSettingsBox box;
+    box.setDisplay(&line, 9, Variant::Nm170);
+    QVERIFY(!box.findChild<QComboBox *>("inputMode")->isEnabled());
+    QVERIFY(!box.findChild<QPushButton *>("oscillate")->isEnabled());
+    QVERIFY(!box.findChild<QCheckBox *>("preShutdown")->isEnabled());
+    QVERIFY(box.findChild<QPushButton *>("setScaling")->isEnabled());
+    QVERIFY(box.findChild<QPushButton *>("setFilter")->isEnabled());
+    box.setDisplay(&line, 9, Variant::Nm172);
+    QVERIFY(box.findChild<QComboBox *>("inputMode")->isEnabled());
+    box.setDisplay(nullptr, 0, Variant::Nm172);
+    QVERIFY(!box.findChild<QPushButton *>("setScaling")->isEnabled());
 }
 
 // For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-nm17x.png of the panel

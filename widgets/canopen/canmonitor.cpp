@@ -2,6 +2,7 @@
 
 #include "canmonitorlog.h"
 #include "canopen/cannetwork.h"
+#include "framesender.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
@@ -60,13 +61,16 @@ CanMonitor::CanMonitor(QWidget *parent)
     , m_model(new CanMonitorModel(this))
     , m_filter(new CanMonitorFilter(m_model, this))
     , m_view(new QTableView(this))
+    , m_sender(new FrameSender(this))
 {
+    m_sender->setObjectName(QStringLiteral("frameSender"));
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(4);
     layout->addWidget(createToolBar());
     layout->addWidget(createFilterBar());
     layout->addWidget(m_view, 1);
+    layout->addWidget(m_sender);
     setupView();
     connect(m_model, &CanMonitorModel::flushed, this, &CanMonitor::onFlushed);
     updateStatus();
@@ -208,6 +212,7 @@ void CanMonitor::setBus(CanBus *bus)
     if (bus == m_model->bus())
         return;
     m_model->setBus(bus);
+    m_sender->setBus(bus);
     updateStatus();
 }
 

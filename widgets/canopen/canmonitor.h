@@ -8,6 +8,7 @@
 // and never creates one.
 // Pause freezes the table; frames keep being captured and appear on resume (CanMonitorModel).
 // Save writes the frames the filters let through, atomically (QSaveFile).
+// Below the table a FrameSender puts frames on the same bus (once, periodic, or a macro).
 
 #include "canmonitorfilter.h"
 #include "canmonitormodel.h"
@@ -27,6 +28,8 @@ class DeviceConnection;
 
 namespace db::widgets {
 
+class FrameSender;
+
 class CanMonitor : public QWidget
 {
     Q_OBJECT
@@ -45,6 +48,7 @@ public:
     CanMonitorModel *model() const { return m_model; }
     CanMonitorFilter *filter() const { return m_filter; }
     QTableView *view() const { return m_view; }
+    FrameSender *frameSender() const { return m_sender; }
 
     bool isPaused() const { return m_model->isPaused(); }
     bool autoscroll() const;
@@ -70,6 +74,7 @@ private:
     CanMonitorModel *m_model;
     CanMonitorFilter *m_filter;
     QTableView *m_view;
+    FrameSender *m_sender;
     QToolButton *m_pauseButton = nullptr;
     QCheckBox *m_autoscroll = nullptr;
     QLineEdit *m_idEdit = nullptr;

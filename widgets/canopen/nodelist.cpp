@@ -2,6 +2,7 @@
 
 #include "canopen/cannetwork.h"
 #include "canopen/nmtmaster.h"
+#include "canopen/nodescanner.h"
 #include "nodelistmodel.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
@@ -22,6 +23,7 @@ NodeList::NodeList(QWidget *parent)
     , m_model(new NodeListModel(this))
     , m_view(new QTableView(this))
     , m_broadcast(new QCheckBox(tr("All nodes"), this))
+    , m_scanButton(new QToolButton(this))
 {
     m_view->setObjectName(QStringLiteral("nodes"));
     m_view->setModel(m_model);
@@ -46,12 +48,21 @@ NodeList::NodeList(QWidget *parent)
     m_view->horizontalHeader()->resizeSection(NodeListModel::State, width("pre-operational"));
     m_view->horizontalHeader()->setMinimumSectionSize(40);
     m_view->horizontalHeader()->resizeSection(NodeListModel::Heartbeat, width("00.0 s ago"));
+    m_view->horizontalHeader()->resizeSection(NodeListModel::Consumer, width("00000 ms"));
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
 
     m_broadcast->setObjectName(QStringLiteral("broadcast"));
     m_broadcast->setToolTip(tr("Send NMT commands to every node (node id 0)"));
     auto *buttons = new FlowLayout; // wraps in a narrow dock
     buttons->setContentsMargins(0, 0, 0, 0);
     buttons->setSpacing(2);
+    m_scanButton->setObjectName(QStringLiteral("scan"));
+    m_scanButton->setText(tr("Scan"));
+    m_scanButton->setToolTip(
+        tr("Ask node ids 1..127 by SDO and list every node that answers, with its name (1008h) "
+           "and identity (1018h)"));
+    connect(m_scanButton, &QToolButton::clicked, this, &NodeList::scan);
+    buttons->addWidget(m_scanButton);
     const struct
     {
         NmtCommand command;
@@ -112,6 +123,15 @@ void NodeList::setConnection(DeviceConnection *connection)
 void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,
                           const QString &ownName)
 {
+    if (m_scanner)
+        m_scanner->deleteLater(); // its SDO client belongs to the old network
+    if (m_network)
+        disconnect(m_network, nullptr, this, nullptr);
+    m_network = network;
+    if (network) { // Scan follows the bus
+        connect(network, &canopen::CanNetwork::opened, this, &NodeList::updateActions);
+        connect(network, &canopen::CanNetwork::closed, this, &NodeList::updateActions);
+    }
     m_nmt = network ? network->nmt() : nullptr;
     m_model->setOwnNode(0);
     m_model->setSources(nullptr, nullptr); // forgets the previous bus's nodes
@@ -158,11 +178,56 @@ bool NodeList::sendCommand(canopen::NmtCommand command)
     return true;
 }
 
+bool NodeList::isScanning() const
+{
+    return m_scanner && m_scanner->isRunning();
+}
+
+bool NodeList::scan()
+{
+    if (!m_network || !m_network->isOpen() || isScanning())
+        return false;
+    auto *scanner = new canopen::NodeScanner(m_network->sdo(), m_network->monitor(), this);
+    m_scanner = scanner;
+    connect(scanner, &canopen::NodeScanner::nodeFound, this,
+            [this](const canopen::NodeInfo &node) { m_model->addNode(node.id, {}); });
+    connect(scanner, &canopen::NodeScanner::finished, this, [this, scanner] {
+        const QList<canopen::NodeInfo> nodes = scanner->nodes();
+        for (const canopen::NodeInfo &node : nodes) {
+            const QString identity = node.hasIdentity
+                ? tr("vendor %1, product %2, revision %3, serial %4")
+                      .arg(QStringLiteral("%1h").arg(node.vendorId, 8, 16, QLatin1Char('0')),
+                           QStringLiteral("%1h").arg(node.productCode, 8, 16, QLatin1Char('0')),
+                           QStringLiteral("%1h").arg(node.revision, 8, 16, QLatin1Char('0')),
+                           QStringLiteral("%1h").arg(node.serial, 8, 16, QLatin1Char('0')))
+                : QString();
+            m_model->addNode(node.id, node.name, identity);
+        }
+        scanner->deleteLater();
+        updateActions();
+        Q_EMIT scanFinished(int(nodes.size()));
+    });
+    if (!scanner->start()) {
+        scanner->deleteLater();
+        return false;
+    }
+    updateActions();
+    return true;
+}
+
 void NodeList::updateActions()
 {
     const bool enabled = m_nmt && targetNode() >= 0;
     for (QToolButton *button : std::as_const(m_commandButtons))
         button->setEnabled(enabled);
+    m_scanButton->setEnabled(m_network && m_network->isOpen() && !isScanning());
+    m_scanButton->setText(isScanning() ? tr("Scanning…") : tr("Scan"));
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    const canopen::NodeId selected = rows.isEmpty() ? 0 : m_model->nodeAt(rows.first().row());
+    if (selected != m_selected) {
+        m_selected = selected;
+        Q_EMIT selectedNodeChanged(selected);
+    }
 }
 
 } // namespace db::widgets

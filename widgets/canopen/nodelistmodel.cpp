@@ -32,7 +32,7 @@ void NodeListModel::setSources(CanBus *bus, canopen::NodeMonitor *monitor)
     beginResetModel();
     m_rows.removeIf([this](const Row &r) { return r.node != m_own; });
     for (Row &r : m_rows)
-        r = Row { r.node, NmtState::Unknown, -1, false, r.name, {} };
+        r = Row { r.node, NmtState::Unknown, -1, false, r.name, r.toolTip, {} };
     endResetModel();
     if (!bus || !monitor) {
         m_ageTimer.stop();
@@ -75,6 +75,47 @@ void NodeListModel::setNodeName(NodeId node, const QString &name)
 {
     ensure(node).name = name;
     changed(node);
+}
+
+void NodeListModel::addNode(NodeId node, const QString &name, const QString &toolTip)
+{
+    Row &r = ensure(node);
+    if (!name.isEmpty())
+        r.name = name;
+    r.toolTip = toolTip;
+    changed(node);
+}
+
+QString NodeListModel::nodeName(NodeId node) const
+{
+    const int row = rowOf(node);
+    return row < 0 ? QString() : m_rows.at(row).name;
+}
+
+bool NodeListModel::setConsumerTime(NodeId node, int ms)
+{
+    if (!m_monitor || rowOf(node) < 0 || ms < 0)
+        return false;
+    m_monitor->setConsumerTime(node, ms);
+    changed(node);
+    return true;
+}
+
+Qt::ItemFlags NodeListModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == Consumer && m_monitor)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+bool NodeListModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (role != Qt::EditRole || !index.isValid() || index.column() != Consumer)
+        return false;
+    bool ok = false;
+    const int ms = value.toInt(&ok);
+    return ok && setConsumerTime(nodeAt(index.row()), ms);
 }
 
 void NodeListModel::noteCommand(const QString &command, NodeId node)
@@ -127,7 +168,7 @@ void NodeListModel::onFrame(const QCanBusFrame &frame)
 void NodeListModel::refreshAges()
 {
     if (!m_rows.isEmpty())
-        Q_EMIT dataChanged(index(0, Heartbeat), index(rowCount() - 1, Heartbeat));
+        Q_EMIT dataChanged(index(0, Heartbeat), index(rowCount() - 1, Consumer));
 }
 
 int NodeListModel::rowOf(NodeId node) const
@@ -191,9 +232,15 @@ QVariant NodeListModel::data(const QModelIndex &index, int role) const
             return r.heardMs < 0
                 ? tr("never")
                 : tr("%1 s ago").arg(double(m_clock.elapsed() - r.heardMs) / 1000.0, 0, 'f', 1);
+        case Consumer: {
+            const int ms = m_monitor ? m_monitor->consumerTime(r.node) : 0;
+            return ms > 0 ? tr("%1 ms").arg(ms) : tr("off");
+        }
         case Name:
             return r.name;
         }
+    } else if (role == Qt::EditRole && index.column() == Consumer) {
+        return m_monitor ? m_monitor->consumerTime(r.node) : 0;
     } else if (role == Qt::ForegroundRole && index.column() == State) {
         if (r.lost)
             return style::errorColor();
@@ -214,6 +261,11 @@ QVariant NodeListModel::data(const QModelIndex &index, int role) const
         return font;
     } else if (role == Qt::ToolTipRole && index.column() == Node && r.node == m_own) {
         return tr("The node of this connection");
+    } else if (role == Qt::ToolTipRole && index.column() == Consumer) {
+        return tr("Heartbeat consumer time: silence longer than this after a heartbeat shows the "
+                  "node as lost (double-click to change; 0 = not watched)");
+    } else if (role == Qt::ToolTipRole && !r.toolTip.isEmpty()) {
+        return r.toolTip;
     }
     return {};
 }
@@ -229,6 +281,8 @@ QVariant NodeListModel::headerData(int section, Qt::Orientation orientation, int
         return tr("NMT state");
     case Heartbeat:
         return tr("Heartbeat");
+    case Consumer:
+        return tr("Consumer");
     case Name:
         return tr("Name");
     }

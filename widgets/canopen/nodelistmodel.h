@@ -1,8 +1,10 @@
 #pragma once
 
 // The CANopen nodes of one bus for the node list: node id, NMT state from
-// heartbeat/boot-up (NodeMonitor), age of the last heartbeat, name. The connection's own node
-// is always listed, heard or not. No widgets here; NodeList is the view.
+// heartbeat/boot-up (NodeMonitor), age of the last heartbeat, the heartbeat consumer time the
+// monitor watches it with (editable: milliseconds, 0 = not watched), name (1008h after a scan).
+// The connection's own node is always listed, heard or not. No widgets here; NodeList is the
+// view.
 
 #include "canopen/canopenids.h"
 
@@ -26,7 +28,7 @@ class NodeListModel : public QAbstractTableModel
 {
     Q_OBJECT
 public:
-    enum Column { Node, State, Heartbeat, Name, ColumnCount };
+    enum Column { Node, State, Heartbeat, Consumer, Name, ColumnCount };
     // Heartbeat ages are repainted at this period (one dataChanged for the column).
     static constexpr int kAgeRefreshMs = 500;
 
@@ -40,6 +42,11 @@ public:
     // The connection's node, listed even before it is heard (0 = none).
     void setOwnNode(canopen::NodeId node, const QString &name = {});
     void setNodeName(canopen::NodeId node, const QString &name);
+    // A node found by a scan (listed even when it never sent a heartbeat); tip: its identity.
+    void addNode(canopen::NodeId node, const QString &name, const QString &toolTip = {});
+    QString nodeName(canopen::NodeId node) const;
+    // The monitor's consumer time for a node (ms, 0 = not watched); false without a monitor.
+    bool setConsumerTime(canopen::NodeId node, int ms);
     // Remembers the last NMT command sent to a node (0 = every listed node), shown while its
     // state is unknown (nodes without heartbeat).
     void noteCommand(const QString &command, canopen::NodeId node);
@@ -54,6 +61,8 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
     QVariant headerData(int section, Qt::Orientation orientation,
                         int role = Qt::DisplayRole) const override;
 
@@ -65,6 +74,7 @@ private:
         qint64 heardMs = -1; // m_clock time of the last heartbeat
         bool lost = false;
         QString name;
+        QString toolTip; // identity read by a scan
         QString lastCommand;
     };
     Row &ensure(canopen::NodeId node);

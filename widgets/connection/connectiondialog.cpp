@@ -22,6 +22,7 @@ ConnectionDialog::ConnectionDialog(const ProtocolRegistry &registry, const QStri
     , m_recent(recent)
     , m_protocol(new QComboBox(this))
     , m_patternHint(new QLabel(this))
+    , m_hostBox(new QComboBox(this))
     , m_host(new QLineEdit(this))
     , m_port(new QSpinBox(this))
     , m_options(new QLineEdit(this))
@@ -45,6 +46,10 @@ ConnectionDialog::ConnectionDialog(const ProtocolRegistry &registry, const QStri
     m_patternHint->setFont(style::monospaceFont());
     style::setTextColor(m_patternHint, style::inactiveColor());
     m_host->setPlaceholderText(tr("IP address, host name or CAN interface"));
+    m_hostBox->setObjectName(QStringLiteral("hostBox"));
+    m_hostBox->setEditable(true);
+    m_hostBox->setLineEdit(m_host); // typed freely; the list offers the CAN interfaces
+    m_hostBox->setInsertPolicy(QComboBox::NoInsert);
     m_port->setRange(0, 65535);
     m_options->setPlaceholderText(tr("e.g. node=50&bitrate=500000"));
     m_uri->setFont(style::monospaceFont());
@@ -56,14 +61,15 @@ ConnectionDialog::ConnectionDialog(const ProtocolRegistry &registry, const QStri
     m_recentList->addItems(m_recent);
 
     auto *fields = new QGroupBox(tr("Device"), this);
-    auto *form = new QFormLayout(fields);
-    form->addRow(tr("&Protocol:"), m_protocol);
-    form->addRow(QString(), m_patternHint);
-    form->addRow(tr("&Address:"), m_host);
-    form->addRow(tr("P&ort:"), m_port);
-    form->addRow(tr("O&ptions:"), m_options);
-    form->addRow(tr("&URI:"), m_uri);
-    form->addRow(QString(), m_error);
+    m_form = new QFormLayout(fields);
+    m_form->addRow(tr("&Protocol:"), m_protocol);
+    m_form->addRow(QString(), m_patternHint);
+    m_form->addRow(tr("&Address:"), m_hostBox);
+    m_form->addRow(tr("P&ort:"), m_port);
+    createCanopenFields();
+    m_form->addRow(tr("O&ptions:"), m_options);
+    m_form->addRow(tr("&URI:"), m_uri);
+    m_form->addRow(QString(), m_error);
 
     auto *recentBox = new QGroupBox(tr("Recent connections"), this);
     auto *recentLayout = new QVBoxLayout(recentBox);
@@ -80,6 +86,7 @@ ConnectionDialog::ConnectionDialog(const ProtocolRegistry &registry, const QStri
         buildUriFromFields();
     });
     connect(m_host, &QLineEdit::textEdited, this, &ConnectionDialog::buildUriFromFields);
+    connect(m_hostBox, &QComboBox::textActivated, this, &ConnectionDialog::buildUriFromFields);
     connect(m_port, &QSpinBox::valueChanged, this, &ConnectionDialog::buildUriFromFields);
     connect(m_options, &QLineEdit::textEdited, this, &ConnectionDialog::buildUriFromFields);
     connect(m_uri, &QLineEdit::textChanged, this, [this] {
@@ -158,6 +165,8 @@ void ConnectionDialog::onProtocolChanged()
     m_port->setEnabled(hasPort);
     m_port->setValue(hasPort ? info->defaultPort : 0);
     m_port->setSpecialValueText(hasPort ? QString() : tr("none"));
+    m_form->setRowVisible(m_port, hasPort); // a CAN interface has no port
+    updateCanopenFields(info);
 }
 
 void ConnectionDialog::buildUriFromFields()
@@ -194,6 +203,7 @@ void ConnectionDialog::fillFieldsFromUri()
     m_host->setText(parsed->host());
     if (parsed->port() >= 0 && m_port->isEnabled())
         m_port->setValue(parsed->port());
+    fillCanopenFields(*parsed);
     QStringList options;
     const auto query = parsed->query();
     for (auto it = query.cbegin(); it != query.cend(); ++it)

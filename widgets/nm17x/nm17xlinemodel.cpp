@@ -1,5 +1,6 @@
 #include "nm17xlinemodel.h"
 
+#include "core/reply.h"
 #include "devices/nm17x/nm17xcodes.h"
 
 namespace db::widgets {
@@ -14,6 +15,8 @@ void Nm17xLineModel::setLine(Nm17xLine *line)
 {
     disconnect(m_pdo1);
     disconnect(m_pdo2);
+    m_line = line;
+    m_readingErrors.clear();
     if (!line)
         return;
     m_pdo1 = connect(line, &Nm17xLine::tpdo1, this, [this](canopen::NodeId node, const Tpdo1 &p) {
@@ -25,11 +28,37 @@ void Nm17xLineModel::setLine(Nm17xLine *line)
     });
     m_pdo2 = connect(line, &Nm17xLine::tpdo2, this, [this](canopen::NodeId node, const Tpdo2 &p) {
         const int row = rowOf(node);
-        if (row >= 0)
-            m_corrections[row] = p.correction;
-        update(node, [&p](DisplayState &s) {
+        if (row < 0)
+            return;
+        m_corrections[row] = p.correction;
+        const bool error = p.status & status::Error;
+        const bool errorKnown = m_rows.at(row).errors != 0;
+        update(node, [&p, error](DisplayState &s) {
             s.position = p.position;
             s.status = p.status;
+            if (!error)
+                s.errors = 0;
+        });
+        if (error && !errorKnown)
+            readErrors(node);
+    });
+}
+
+void Nm17xLineModel::readErrors(canopen::NodeId node)
+{
+    if (!m_line || m_readingErrors.contains(node))
+        return;
+    m_readingErrors.insert(node);
+    Reply *reply = m_line->read(node, { 0x204E, 2 });
+    connect(reply, &Reply::finished, this, [this, reply, node] {
+        reply->deleteLater();
+        m_readingErrors.remove(node);
+        if (!reply->ok())
+            return;
+        const auto errors = quint16(reply->value().toUInt());
+        update(node, [errors](DisplayState &s) {
+            if (s.status & status::Error)
+                s.errors = errors;
         });
     });
 }

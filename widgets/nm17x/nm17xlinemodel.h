@@ -2,12 +2,15 @@
 
 // The table of the NM17x line panel: one row per display (node, variant, serial, setpoint,
 // position, correction, status, errors), filled by Nm17xLine::findDisplays() and kept live from the
-// displays' TxPDO1/TxPDO2. Values from the bus only update the rows; nothing is written back.
+// displays' TxPDO1/TxPDO2. TxPDO2 carries only the error bit of the status; when it comes on,
+// the model reads the display's error word (204Eh:02) by SDO. Nothing is written back.
 
 #include "devices/nm17x/nm17xline.h"
 
 #include <QAbstractTableModel>
 #include <QHash>
+#include <QPointer>
+#include <QSet>
 
 namespace db::widgets {
 
@@ -46,12 +49,15 @@ public:
 
 private:
     void update(canopen::NodeId node, const std::function<void(nm17x::DisplayState &)> &change);
+    void readErrors(canopen::NodeId node);
 
     QList<nm17x::DisplayState> m_rows;
     QList<qint16> m_corrections; // from TxPDO2, per row
     QHash<canopen::NodeId, qint32> m_setpoints; // sent from the panel
     QMetaObject::Connection m_pdo1;
     QMetaObject::Connection m_pdo2;
+    QPointer<nm17x::Nm17xLine> m_line;
+    QSet<canopen::NodeId> m_readingErrors;
 };
 
 } // namespace db::widgets

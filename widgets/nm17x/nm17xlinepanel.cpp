@@ -3,13 +3,17 @@
 #include "nm17xaddressingdialog.h"
 
 #include "nm17xlinemodel.h"
+#include "nm17xsettingsbox.h"
 
 #include "canopen/cannetwork.h"
 #include "canopen/nmtmaster.h"
 #include "devices/nm17x/nm17xline.h"
+#include "devices/nm17x/nm17xscan.h"
+#include "widgets/common/flowlayout.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -48,10 +52,14 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     , m_preset(millimetreBox(this))
     , m_group(new QSpinBox(this))
     , m_unit(new QComboBox(this))
+    , m_settings(new Nm17xSettingsBox(this))
 {
     m_view->setModel(m_model);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
+    // As tall as its rows (in a low dock the commands below stay in sight), more when there is
+    // room.
+    m_view->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     m_view->verticalHeader()->hide();
     m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -73,6 +81,10 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
         return b;
     };
     auto *find = button(tr("Find displays"), QStringLiteral("find"), &Nm17xLinePanel::findDisplays);
+    m_scanButton = button(tr("Scan 125/250 kbit/s"), QStringLiteral("scanBitrates"),
+                          &Nm17xLinePanel::scanBitrates);
+    m_scanButton->setToolTip(tr("Look for displays at 125 and 250 kbit/s: they are delivered "
+                                "at 125 kbit/s, but their bit-rate setting defaults to 250"));
     auto *send = button(tr("Send setpoint"), QStringLiteral("send"), &Nm17xLinePanel::sendSetpoint);
     auto *left = button(tr("Jog left"), QStringLiteral("jogLeft"), [this] { jog(-1); });
     auto *right = button(tr("Jog right"), QStringLiteral("jogRight"), [this] { jog(1); });
@@ -95,28 +107,43 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     m_unit->setObjectName(QStringLiteral("unit"));
     connect(m_unit, &QComboBox::activated, this, [this](int i) { setInch(i == 1); });
 
-    auto *lineRow = new QHBoxLayout;
+    // Groups that keep together; the rows wrap in a narrow dock.
+    const auto group = [this](std::initializer_list<QWidget *> widgets) {
+        auto *box = new QWidget(this);
+        auto *row = new QHBoxLayout(box);
+        row->setContentsMargins(0, 0, 0, 0);
+        for (QWidget *w : widgets)
+            row->addWidget(w);
+        return box;
+    };
+    auto *lineRow = new FlowLayout;
     for (QWidget *w : std::initializer_list<QWidget *> {
-             find, addressLine, new QLabel(tr("Unit:"), this), m_unit, ids, m_preset, preset,
-             m_group, start, stopLine })
+             find, m_scanButton, addressLine, group({ new QLabel(tr("Unit:"), this), m_unit }), ids,
+             group({ m_preset, preset }), group({ m_group, start }), stopLine })
         lineRow->addWidget(w);
-    lineRow->addStretch();
-    auto *nodeRow = new QHBoxLayout;
-    for (QWidget *w : std::initializer_list<QWidget *> { m_setpoint, m_kind, send,
-                                                         new QLabel(tr("Speed:"), this), m_speed,
-                                                         left, right, stopOne })
+    auto *nodeRow = new FlowLayout;
+    for (QWidget *w : std::initializer_list<QWidget *> {
+             group({ m_setpoint, m_kind, send }),
+             group({ new QLabel(tr("Speed:"), this), m_speed, left, right }), stopOne })
         nodeRow->addWidget(w);
-    nodeRow->addStretch();
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(lineRow);
     layout->addWidget(m_view);
     layout->addLayout(nodeRow);
+    auto *settingsGroup = new QGroupBox(tr("Selected display: modes and settings"), this);
+    auto *settingsLayout = new QVBoxLayout(settingsGroup);
+    settingsLayout->addWidget(m_settings);
+    layout->addWidget(settingsGroup);
     layout->addWidget(m_message);
+    connect(m_settings, &Nm17xSettingsBox::message, this, &Nm17xLinePanel::report);
     m_nodeButtons = { send, left, right, stopOne };
     m_lineControls = { find, addressLine, m_unit, ids, preset, start, stopLine };
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &Nm17xLinePanel::updateActions);
     connect(m_model, &QAbstractItemModel::modelReset, this, &Nm17xLinePanel::updateActions);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &Nm17xLinePanel::updateSettingsBox);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &Nm17xLinePanel::updateSettingsBox);
     updateActions();
 }
 
@@ -134,6 +161,53 @@ Nm17xAddressingDialog *Nm17xLinePanel::openAddressing()
     });
     dialog->show();
     return dialog;
+}
+
+void Nm17xLinePanel::setBusUri(const ConnectionUri &uri)
+{
+    m_busUri = uri;
+    updateActions();
+}
+
+bool Nm17xLinePanel::isScanning() const
+{
+    return m_scan && m_scan->isRunning();
+}
+
+void Nm17xLinePanel::scanBitrates()
+{
+    if (m_busUri.scheme().isEmpty() || isScanning())
+        return;
+    m_scan = new BitrateScan(m_busUri, BitrateScan::defaultBitrates(), this);
+    report(tr("looking for displays at 125 and 250 kbit/s ..."));
+    updateActions();
+    connect(m_scan, &BitrateScan::finished, this, [this, scan = m_scan.data()] {
+        QStringList parts;
+        for (const BitrateResult &r : scan->results()) {
+            QStringList nodes;
+            for (const DisplayState &d : r.displays)
+                nodes.append(QString::number(d.node));
+            QString part = nodes.isEmpty() ? tr("%1 kbit/s: no display").arg(r.bitrate / 1000)
+                                           : tr("%1 kbit/s: node %2")
+                                                 .arg(r.bitrate / 1000)
+                                                 .arg(nodes.join(QLatin1String(", ")));
+            if (nodes.isEmpty() && !r.problem.isEmpty())
+                part += QStringLiteral(" (%1)").arg(r.problem);
+            parts.append(part);
+        }
+        report(parts.join(QLatin1String("; ")));
+        scan->deleteLater();
+        updateActions();
+    });
+    m_scan->start();
+}
+
+void Nm17xLinePanel::updateSettingsBox()
+{
+    const canopen::NodeId node = selectedNode();
+    const int row = m_model->rowOf(node);
+    const Variant variant = row >= 0 ? m_model->displays().at(row).variant : Variant::Nm172;
+    m_settings->setDisplay(m_line, node, variant);
 }
 
 void Nm17xLinePanel::setNetwork(canopen::CanNetwork *network)
@@ -184,6 +258,7 @@ void Nm17xLinePanel::updateActions()
         w->setEnabled(line);
     for (QPushButton *b : std::as_const(m_nodeButtons))
         b->setEnabled(line && selectedNode() != 0);
+    m_scanButton->setEnabled(!m_busUri.scheme().isEmpty() && !isScanning());
 }
 
 void Nm17xLinePanel::startNode(canopen::NodeId node)
@@ -196,6 +271,10 @@ void Nm17xLinePanel::findDisplays()
 {
     if (!m_line)
         return;
+    if (!m_network->isOpen()) {
+        report(tr("The CAN bus %1 is not open (yet).").arg(m_network->name()));
+        return;
+    }
     report(tr("looking for displays ..."));
     Reply *reply = m_line->findDisplays();
     connect(reply, &Reply::finished, this, [this, reply] {

@@ -4,12 +4,14 @@
 // their TxPDOs, with commands for the selected display (setpoint standard / with release /
 // direct / plunge cut, jog left/right at a speed, stop) and for the whole line by broadcast
 // (mm/inch, show node ids, preset all, start group, stop all), and the guided addressing of
-// the line (Nm17xAddressingDialog). Commands are built only from the
-// control words the displays accept; the panel starts a node (NMT) before its first PDO, since
-// the displays execute PDOs in Operational only. It receives the network and never creates a
-// transport.
+// the line (Nm17xAddressingDialog), and the modes and settings of the selected display
+// (Nm17xSettingsBox). Commands are built only from the control words the displays accept; the
+// panel starts a node (NMT) before its first PDO, since the displays execute PDOs in Operational
+// only. It works on the network it receives; only the bit-rate scan opens short-lived buses of
+// its own, from the URI of the line's bus.
 
 #include "canopen/canopenids.h"
+#include "core/connectionuri.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -26,12 +28,14 @@ class CanNetwork;
 }
 namespace db::nm17x {
 class Nm17xLine;
-}
+class BitrateScan;
+} // namespace db::nm17x
 
 namespace db::widgets {
 
 class Nm17xAddressingDialog;
 class Nm17xLineModel;
+class Nm17xSettingsBox;
 
 class Nm17xLinePanel : public QWidget
 {
@@ -42,6 +46,8 @@ public:
 
     // Not owned; nullptr detaches.
     void setNetwork(canopen::CanNetwork *network);
+    // The URI of the line's bus, for the scan at other bit rates (empty: no scan).
+    void setBusUri(const ConnectionUri &uri);
 
     Nm17xLineModel *model() const { return m_model; }
     QTableView *view() const { return m_view; }
@@ -50,9 +56,13 @@ public:
     void selectNode(canopen::NodeId node);
     // The last command's outcome ("node 3: setpoint sent", or the reason it was refused).
     QString message() const;
+    Nm17xSettingsBox *settingsBox() const { return m_settings; }
+    bool isScanning() const;
 
 public Q_SLOTS:
     void findDisplays();
+    // Looks for displays at 125 and 250 kbit/s, each on a bus of its own.
+    void scanBitrates();
     void sendSetpoint();
     void jog(int direction);
     void stop();
@@ -68,6 +78,7 @@ private:
     void report(const QString &text);
     void startNode(canopen::NodeId node);
     void updateActions();
+    void updateSettingsBox();
 
     QPointer<canopen::CanNetwork> m_network;
     nm17x::Nm17xLine *m_line = nullptr;
@@ -80,6 +91,10 @@ private:
     QDoubleSpinBox *m_preset;
     QSpinBox *m_group;
     QComboBox *m_unit;
+    Nm17xSettingsBox *m_settings;
+    QPushButton *m_scanButton = nullptr;
+    ConnectionUri m_busUri;
+    QPointer<nm17x::BitrateScan> m_scan;
     QList<QPushButton *> m_nodeButtons; // need a selected display
     QList<QWidget *> m_lineControls; // need a network
 };

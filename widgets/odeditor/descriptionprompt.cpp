@@ -3,9 +3,13 @@
 #include "description/descriptionlibrary.h"
 #include "widgets/common/widgetstyle.h"
 
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMimeData>
 #include <QPushButton>
 
 namespace db::widgets {
@@ -26,6 +30,7 @@ DescriptionPrompt::DescriptionPrompt(QWidget *parent)
     m_text->setObjectName(QStringLiteral("descriptionPromptText"));
     m_browse->setObjectName(QStringLiteral("descriptionBrowse"));
     setFrameShape(QFrame::StyledPanel);
+    setAcceptDrops(true);
     m_text->setWordWrap(true);
     m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_browse->setToolTip(tr("Choose the device's description file (EDS, DCF, XDD, XDC or "
@@ -45,6 +50,37 @@ DescriptionPrompt::DescriptionPrompt(QWidget *parent)
 QString DescriptionPrompt::fileFilter()
 {
     return tr("Device descriptions (*.eds *.dcf *.xdd *.xdc *.json);;All files (*)");
+}
+
+QString DescriptionPrompt::droppedDescription(const QMimeData *data)
+{
+    if (!data || !data->hasUrls() || data->urls().size() != 1)
+        return {};
+    const QUrl url = data->urls().constFirst();
+    if (!url.isLocalFile())
+        return {};
+    const QString path = url.toLocalFile();
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    for (const QString &pattern : DescriptionLibrary::filePatterns()) {
+        if (pattern.toLower() == QStringLiteral("*.") + suffix)
+            return path;
+    }
+    return {};
+}
+
+void DescriptionPrompt::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (!droppedDescription(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void DescriptionPrompt::dropEvent(QDropEvent *event)
+{
+    const QString path = droppedDescription(event->mimeData());
+    if (path.isEmpty())
+        return;
+    event->acceptProposedAction();
+    Q_EMIT fileChosen(path); // loaded and checked by whoever listens, like Browse…
 }
 
 void DescriptionPrompt::showFor(const DeviceConnection *connection)
@@ -68,7 +104,8 @@ void DescriptionPrompt::showFor(const DeviceConnection *connection)
     }
     m_text->setText(tr("<b>No description for this device.</b> %1 No description in the library "
                        "matches it, so its objects are not listed; read and write them with "
-                       "<i>By index…</i>, or choose its description file.")
+                       "<i>By index…</i>, or choose its description file (Browse… or drop it "
+                       "here).")
                         .arg(device.toHtmlEscaped()));
     style::setTextColor(m_text, QColor());
     show();

@@ -202,16 +202,36 @@ QString Nm17xSim::execute(const QString &line)
     }
     if (command == QLatin1String("fault") && words.size() == 3) {
         const QString what = words.at(2);
-        if (what == QLatin1String("motor") || what == QLatin1String("none"))
-            device->spindle().setMotorFault(what == QLatin1String("motor"));
+        static const QStringList kFaults = { QStringLiteral("motor"), QStringLiteral("sensor"),
+                                             QStringLiteral("blocked"), QStringLiteral("wiring"),
+                                             QStringLiteral("none") };
+        if (!kFaults.contains(what))
+            return QStringLiteral("error: ") + tr("fault INDEX motor|sensor|blocked|wiring|none");
         if (what == QLatin1String("sensor") && device->variant() != Variant::Nm174)
             return QStringLiteral("error: ") + tr("only an NM174 has an external sensor");
+        Spindle &spindle = device->spindle();
+        spindle.setMotorFault(what == QLatin1String("motor"));
+        spindle.setShaftBlocked(what == QLatin1String("blocked"));
+        spindle.setWiringReversed(what == QLatin1String("wiring"));
         if (what == QLatin1String("sensor") || what == QLatin1String("none"))
-            device->spindle().setSensorFault(what == QLatin1String("sensor"));
-        if (what == QLatin1String("motor") || what == QLatin1String("sensor")
-            || what == QLatin1String("none"))
-            return QStringLiteral("ok");
-        return QStringLiteral("error: ") + tr("fault INDEX motor|sensor|none");
+            spindle.setSensorFault(what == QLatin1String("sensor"));
+        return QStringLiteral("ok");
+    }
+    if (command == QLatin1String("glitch") && (words.size() == 3 || words.size() == 4)) {
+        bool stepsOk = false;
+        const double steps = words.at(2).toDouble(&stepsOk);
+        const int readings = words.size() == 4 ? words.at(3).toInt(&ok) : 1;
+        if (!stepsOk || !ok || readings < 0)
+            return QStringLiteral("error: ") + tr("glitch INDEX STEPS [READINGS]");
+        device->disturbSensor(steps, readings);
+        return QStringLiteral("ok");
+    }
+    if (command == QLatin1String("coast") && words.size() == 3) {
+        const int ms = words.at(2).toInt(&ok);
+        if (!ok || ms < 0 || ms > 10000)
+            return QStringLiteral("error: ") + tr("coast INDEX MS (0..10000)");
+        device->spindle().motor().coastMs = ms;
+        return QStringLiteral("ok");
     }
     if (command == QLatin1String("input") && words.size() == 4) {
         const auto level = [](const QString &w) -> std::optional<bool> {
@@ -227,7 +247,7 @@ QString Nm17xSim::execute(const QString &line)
         return QStringLiteral("ok");
     }
     return QStringLiteral("error: ")
-        + tr("unknown command '%1' (list, turn, key, fault, input)").arg(line);
+        + tr("unknown command '%1' (list, turn, key, fault, input, glitch, coast)").arg(line);
 }
 
 QString Nm17xSim::describe() const

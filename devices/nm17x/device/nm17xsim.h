@@ -7,8 +7,13 @@
 //                             status, errors, addressing state; then "ok"
 //   turn INDEX DELTA          turn the shaft of display INDEX (1-based) by DELTA 1/100 mm
 //   key INDEX left|right [MS] press a key for MS ms (default 100)
-//   fault INDEX motor|sensor|none   motor fault (Er 4 on the next drive command), sensor fault
-//                             (NM174: Er C, motor off), or none
+//   fault INDEX motor|sensor|blocked|wiring|none   motor fault (Er 4 on the next drive
+//                             command), sensor fault (NM174: Er C, motor off), shaft blocked
+//                             (Er 3 after 2047h:02), motor wired the wrong way round (Er 6), or
+//                             none of them
+//   glitch INDEX STEPS [READINGS]   the sensor reads STEPS off for READINGS readings (10 ms
+//                             each; default 1; 0 = for good); the jump filter 2005h decides
+//   coast INDEX MS            the spindle runs on MS ms after the motor stops (default 0)
 //   input INDEX F G           the levels (0/1) of the external inputs F and G (2041h:03 modes)
 // Every command is answered with "ok" or "error: <cause>" on its own line.
 

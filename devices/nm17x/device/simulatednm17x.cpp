@@ -362,6 +362,9 @@ void SimulatedNm17x::cycle()
         applyWrite(address, raw);
     }
     m_spindle.tick(kCycleMs, settings());
+    if (const auto switchOff = m_spindle.takeSwitchOff())
+        m_store->set({ 0x2042, 3 }, *switchOff); // dynamic pre-shutdown
+    readSensor();
     oscillate();
     followExternPosi();
     const quint16 errors = errorWord();

@@ -54,7 +54,14 @@ public:
     // their function follows 2041h:03 (spec 6.10): 0 standard (one input: travel, both:
     // oscillation), 1 Takten (F: D1, G: D2), 2 ExternPosi (F: D3 while held), 3 off.
     void setInputs(bool f, bool g);
-    qint32 position() const; // 6004h
+    qint32 position() const; // 6004h, as the jump filter passed it
+    // A disturbed sensor (NM170/NM172 multiturn, NM174 SSI): its readings are off by `steps`
+    // (unscaled) for `readings` readings of the 10 ms cycle, or for good when readings is 0 (the
+    // sensor slipped). The jump filter (2005h:01/02) decides what the display takes.
+    void disturbSensor(double steps, int readings);
+    bool sensorDisturbed() const { return m_glitchSteps != 0; }
+    // Jumps the filter discarded since power-on.
+    int filteredJumps() const { return m_filteredJumps; }
     quint16 statusWord() const; // 204Eh:01
     quint16 errorWord() const; // 204Eh:02
 
@@ -109,6 +116,9 @@ private:
     void followExternPosi(); // in the cycle: the release ends at the target
     void oscillate(); // the next leg, when the last one has ended
     SpindleSettings settings() const;
+    void readSensor(); // one reading through the jump filter, every cycle
+    double stepsToPosition(double steps) const; // by the scaling 2004h
+    void applyScaling(quint32 scaling);
 
     Variant m_variant;
     quint32 m_serial;
@@ -126,7 +136,15 @@ private:
     QTimer m_cycle;
     QTimer m_heartbeat;
     Spindle m_spindle;
-    double m_presetOffset = 0; // 6004h = spindle position + preset offset
+    double m_presetOffset = 0; // part of the spindle position set by presets (6003h)
+    quint32 m_scaling = 1736111; // 2004h as the application uses it
+    // The jump filter: the sensor's disturbance (steps), the part of it the filter accepted,
+    // and how many jumps in a row it discarded.
+    double m_glitchSteps = 0;
+    int m_glitchReadings = 0; // readings left, 0 = for good
+    double m_acceptedGlitch = 0;
+    int m_discarded = 0;
+    int m_filteredJumps = 0;
     QQueue<std::pair<ObjectAddress, QVariant>> m_writes; // effects waiting for the cycle
     // TxPDO state per PDO (0 = TxPDO1, 1 = TxPDO2)
     QByteArray m_lastTpdo[2];

@@ -10,6 +10,8 @@
 
 #include <QCoreApplication>
 
+#include <cmath>
+
 namespace db::nm17x {
 
 using namespace db::canopen;
@@ -33,7 +35,59 @@ bool isJogCode(quint32 v)
 
 qint32 SimulatedNm17x::position() const
 {
-    return qint32(qRound(m_spindle.position()));
+    return qint32(qRound(m_spindle.position() + stepsToPosition(m_acceptedGlitch)));
+}
+
+double SimulatedNm17x::stepsToPosition(double steps) const
+{
+    return steps * m_scaling / 1e7;
+}
+
+void SimulatedNm17x::disturbSensor(double steps, int readings)
+{
+    m_glitchSteps = steps;
+    m_glitchReadings = qMax(0, readings);
+}
+
+// The device's filter against position jumps (2005h:01 width in sensor steps, 2005h:02 count): a
+// reading that differs from the last accepted one by more than the width is discarded, up to
+// `count` times in a row; the next is taken (a real jump), and a reading within the width resets
+// the count. The spindle moves continuously (hand and motor travel stay far below the width per
+// reading), so only the sensor's disturbance can jump; our reading of width 0: no filter.
+void SimulatedNm17x::readSensor()
+{
+    const double width = u32({ 0x2005, 1 });
+    const int count = int(u32({ 0x2005, 2 }));
+    const double jump = m_glitchSteps - m_acceptedGlitch;
+    if (width > 0 && std::abs(jump) > width && m_discarded < count) {
+        ++m_discarded;
+        ++m_filteredJumps;
+    } else {
+        m_acceptedGlitch = m_glitchSteps;
+        m_discarded = 0;
+    }
+    if (m_glitchReadings > 0 && --m_glitchReadings == 0)
+        m_glitchSteps = 0; // the disturbance is over
+    else if (m_glitchReadings == 0 && m_glitchSteps != 0 && m_acceptedGlitch == m_glitchSteps) {
+        // A lasting jump, once taken, is where the display believes the spindle is.
+        m_spindle.setPosition(m_spindle.position() + stepsToPosition(m_glitchSteps));
+        m_glitchSteps = 0;
+        m_acceptedGlitch = 0;
+    }
+}
+
+// Scaling 2004h: the position is sensor steps x scaling, plus the preset offset. A new scaling
+// keeps the steps (the shaft did not move) and so changes the position; 0 leaves it where it is.
+void SimulatedNm17x::applyScaling(quint32 scaling)
+{
+    if (scaling == m_scaling)
+        return;
+    if (scaling != 0 && m_scaling != 0) {
+        const double raw = m_spindle.position() - m_presetOffset;
+        m_spindle.setPosition(m_presetOffset + raw * double(scaling) / double(m_scaling));
+        m_spindle.turnByHand(0, settings()); // In Position only if still inside the window
+    }
+    m_scaling = scaling;
 }
 
 quint16 SimulatedNm17x::statusWord() const
@@ -69,6 +123,8 @@ SpindleSettings SimulatedNm17x::settings() const
     s.collisionMin = i32({ 0x2044, 1 }, kMinPosition);
     s.collisionMax = i32({ 0x2044, 2 }, kMaxPosition);
     s.dwellMs = i32({ 0x2047, 1 }, 10) * 100;
+    s.followingErrorMs = i32({ 0x2047, 2 }, 30) * 100;
+    s.preShutdown = m_dictionary.contains({ 0x2041, 2 }) && u32({ 0x2041, 2 }) == 1;
     // 2047h:03: 1..799 clamp delay; 801..899 and 901..999 with holding torque, delay = the last
     // two digits; 0, 800 and 900 no clamp handling.
     const int clamp = i32({ 0x2047, 3 }, 0);
@@ -293,6 +349,8 @@ void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
     case 0x201000:
         m_store->set(address, v);
         return;
+    case 0x200400:
+        return applyScaling(quint32(v));
     case 0x600300: {
         // The actual value (with correction) becomes the preset.
         const qint32 correction = u32({ 0x2000, 6 }) ? m_store->value({ 0x2010, 0 }).toInt() : 0;
@@ -325,6 +383,8 @@ void SimulatedNm17x::applyWrite(ObjectAddress address, const QVariant &raw)
                 m_spindle.setPosition(m_spindle.position() - m_presetOffset);
                 m_presetOffset = 0;
             }
+            if (v != 5)
+                applyScaling(u32({ 0x2004, 0 }));
             m_spindle.stop();
             return;
         }

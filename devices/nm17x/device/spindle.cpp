@@ -10,8 +10,13 @@ namespace {
 // 204Eh:02 bits
 constexpr quint16 kEr1 = 1u << 0;
 constexpr quint16 kEr2 = 1u << 1;
+constexpr quint16 kEr3 = 1u << 2;
 constexpr quint16 kEr4 = 1u << 3;
 constexpr quint16 kEr5 = 1u << 4;
+constexpr quint16 kEr6 = 1u << 5;
+// Er 3 and Er 6 stay shown until the next command that drives the motor.
+constexpr quint16 kDriveErrors = kEr3 | kEr6;
+constexpr qint32 kMaxSwitchOff = 9999; // 2042h:03
 constexpr quint16 kEr8 = 1u << 8;
 constexpr quint16 kEr9 = 1u << 9;
 constexpr quint16 kErA = 1u << 10;
@@ -30,7 +35,7 @@ double limitTowards(int direction, const SpindleSettings &s)
 quint16 Spindle::setTarget(qint32 target, bool withLoop, std::optional<Speed> speed,
                            const SpindleSettings &s)
 {
-    m_errors &= ~(kEr5 | kEr8 | kEr9 | kErB);
+    m_errors &= ~(kEr5 | kEr8 | kEr9 | kErB | kDriveErrors);
     const bool needLoop = withLoop && s.loop > 0 && !s.arrowsWithoutLoop
         && (s.approachDown ? target > m_position : target < m_position);
     const double loopPoint = s.approachDown ? double(target) + s.loop : double(target) - s.loop;
@@ -110,6 +115,7 @@ void Spindle::jog(int direction, Speed speed, const SpindleSettings &s)
 {
     if (!m_motor || direction == 0 || driveRefused())
         return;
+    m_errors &= ~kDriveErrors;
     const double limit = limitTowards(direction, s);
     if ((limit - m_position) * direction <= 0)
         return; // already at the limit: the motor may only move back inside
@@ -121,14 +127,31 @@ void Spindle::jog(int direction, Speed speed, const SpindleSettings &s)
         m_phase = Phase::ClampOpening;
         m_phaseMs = 0;
     } else {
-        m_phase = Phase::Running;
+        enterRunning();
     }
+}
+
+void Spindle::failWith(quint16 error)
+{
+    m_errors |= error;
+    m_direction = 0;
+    stop();
+}
+
+double Spindle::speedOfStage() const
+{
+    return m_speedStage == Speed::Fast  ? m_model.fast
+        : m_speedStage == Speed::Medium ? m_model.medium
+                                        : m_model.slow;
 }
 
 void Spindle::stop()
 {
     m_jog = 0;
     m_loopPoint.reset();
+    if (m_phase == Phase::Running && m_direction != 0 && !m_blocked)
+        m_position +=
+            (m_reversed ? -m_direction : m_direction) * speedOfStage() * m_model.coastMs / 1000.0;
     m_direction = 0;
     if (m_phase == Phase::Idle || m_phase == Phase::ClampClosing)
         return;
@@ -213,12 +236,12 @@ void Spindle::tick(int ms, const SpindleSettings &s)
     case Phase::ClampOpening:
         m_phaseMs += ms;
         if (m_phaseMs >= s.clampMs)
-            m_phase = Phase::Running;
+            enterRunning();
         return;
     case Phase::Dwell:
         m_phaseMs += ms;
         if (m_phaseMs >= s.dwellMs)
-            m_phase = Phase::Running;
+            enterRunning();
         return;
     case Phase::ClampClosing:
         m_direction = 0;
@@ -237,20 +260,51 @@ void Spindle::tick(int ms, const SpindleSettings &s)
     const double stopAt = (m_jog == 0 && !m_loopPoint) ? s.switchOff : 0.0;
     const double remaining = (goal - m_position) * direction;
     const double step = speedFor(remaining, s) * ms / 1000.0;
+    if (m_blocked) {
+        // Driven, but the shaft stands: the following error time runs out (Er 3).
+        if ((m_stuckMs += ms) >= s.followingErrorMs)
+            failWith(kEr3);
+        return;
+    }
+    if (m_reversed) {
+        // The shaft turns against the direction signal; the device notices it after a short
+        // travel (Er 6).
+        m_position -= direction * step;
+        if ((m_wrongWay += step) >= m_model.directionErrorTravel)
+            failWith(kEr6);
+        return;
+    }
     if (remaining - step > stopAt) {
         m_position += direction * step;
         return;
     }
-    m_position = goal - direction * stopAt;
+    // Motor off at the switch-off point; the spindle runs on by its coasting.
+    m_position = goal - direction * stopAt + direction * speedOfStage() * m_model.coastMs / 1000.0;
     if (m_jog != 0) {
+        m_direction = 0;
         stop(); // Tippen ends at the limit
     } else if (m_loopPoint) {
         m_loopPoint.reset();
         m_phase = Phase::Dwell;
         m_phaseMs = 0;
     } else {
+        if (s.preShutdown) {
+            // Dynamic pre-shutdown: half the miss moves the switch-off point (an overshoot
+            // switches off earlier next time). Our reading: the device keeps the adapted value
+            // in 2042h:03, so the master reads what is used.
+            const double miss = (m_position - m_target) * direction;
+            m_newSwitchOff =
+                qBound(-kMaxSwitchOff, s.switchOff + qint32(qRound(miss / 2)), kMaxSwitchOff);
+        }
         arrive(s);
     }
+}
+
+void Spindle::enterRunning()
+{
+    m_phase = Phase::Running;
+    m_stuckMs = 0;
+    m_wrongWay = 0;
 }
 
 quint16 Spindle::status(const SpindleSettings &s) const

@@ -17,6 +17,7 @@
 #include "devices/nm17x/nm17xpdo.h"
 
 #include <optional>
+#include <utility>
 
 namespace db::nm17x {
 
@@ -35,6 +36,8 @@ struct SpindleSettings
     qint32 collisionMin = kMinPosition; // 2044h
     qint32 collisionMax = kMaxPosition;
     int dwellMs = 1000; // 2047h:01 x 100 ms
+    int followingErrorMs = 3000; // 2047h:02 x 100 ms: no shaft movement this long -> Er 3
+    bool preShutdown = false; // 2041h:02: adapt the switch-off point after each positioning
     int clampMs = 0; // delay of the clamp handling, 0 = none
 };
 
@@ -44,6 +47,11 @@ struct MotorModel
     double fast = 4000; // 1/100 mm per second (Eilgang)
     double medium = 1500; // Schleichgang
     double slow = 400; // Kriechgang
+    // How long the spindle runs on after the motor is switched off, at the speed it had (0: it
+    // stops dead). The switch-off point 2042h:03 is there to compensate this.
+    int coastMs = 0;
+    // Travel in the wrong direction after which the device reports Er 6 (1/100 mm).
+    double directionErrorTravel = 50;
 };
 
 class Spindle
@@ -93,6 +101,13 @@ public:
     static constexpr int kMotorFaultShownMs = 5000;
     void setMotorFault(bool on) { m_motorFault = on; }
     void setSensorFault(bool on);
+    // The shaft does not turn although the motor is driven (Er 3 after 2047h:02).
+    void setShaftBlocked(bool on) { m_blocked = on; }
+    // The motor is wired the wrong way round: it turns against the direction signal (Er 6).
+    void setWiringReversed(bool on) { m_reversed = on; }
+    // After a positioning with dynamic pre-shutdown: the switch-off point (2042h:03) the device
+    // now uses, once; nullopt when there is no new one.
+    std::optional<qint32> takeSwitchOff() { return std::exchange(m_newSwitchOff, std::nullopt); }
 
     qint32 target() const { return m_target; }
     // Status bits (204Eh:01) owned by the motion: Moving, manual abort, speed and direction
@@ -104,6 +119,7 @@ public:
 private:
     double speedFor(double remaining, const SpindleSettings &s); // also sets the stage
     void arrive(const SpindleSettings &s);
+    void enterRunning();
     void checkLimits(const SpindleSettings &s);
 
     bool m_motor;
@@ -127,6 +143,13 @@ private:
     bool m_sensorFault = false;
     int m_er4Ms = 0; // how long Er 4 is still shown
     bool driveRefused(); // a fault keeps the motor off (and shows its error)
+    void failWith(quint16 error); // motor off at once, the error shown
+    double speedOfStage() const;
+    bool m_blocked = false;
+    bool m_reversed = false;
+    int m_stuckMs = 0; // driven without the shaft turning
+    double m_wrongWay = 0; // travelled against the direction signal
+    std::optional<qint32> m_newSwitchOff;
 };
 
 } // namespace db::nm17x

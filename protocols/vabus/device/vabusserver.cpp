@@ -171,8 +171,10 @@ void Server::Private::respond(const QByteArray &frame)
     request.parameter = quint16(quint8(frame.at(4)) | (quint8(frame.at(5)) << 8));
     request.data = frame.mid(kMinTelegramBytes);
     std::optional<Telegram> answer;
+    // A select without data is an empty string (NoB = 4 + length): the handler judges it, as
+    // it judges any data length.
     if ((header & ~(kRwBit | kErrorBit)) || (header & kErrorBit)
-        || (!request.write && !request.data.isEmpty()) || (request.write && request.data.isEmpty()))
+        || (!request.write && !request.data.isEmpty()))
         answer = Telegram::errorAnswer(request, SyntaxError);
     else
         answer = handler->handle(request);

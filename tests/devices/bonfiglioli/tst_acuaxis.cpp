@@ -11,6 +11,7 @@
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 #include "vabus/vabusconnection.h"
+#include "wait.h"
 
 #include <QtTest>
 
@@ -25,10 +26,7 @@ namespace {
 
 Result<QVariant> await(Reply *reply, int timeoutMs = 10000)
 {
-    std::unique_ptr<Reply> owner(reply);
-    if (!QTest::qWaitFor([reply] { return reply->isFinished(); }, timeoutMs))
-        return Error(Error::Kind::Timeout, QStringLiteral("test: reply did not finish"));
-    return reply->result();
+    return db::test::await(reply, timeoutMs);
 }
 
 MoveParams params(double position, double velocity = 20000, double acceleration = 100000)
@@ -64,7 +62,7 @@ private Q_SLOTS:
         m_model = std::make_unique<MotionAxis>(m_axis.get());
         m_model->setConfig(m_axis->limits());
         m_eepromBefore = m_acu->eepromWrites();
-        QTRY_VERIFY(m_axis->status().valid);
+        DB_TRY_VERIFY(m_axis->status().valid);
     }
     void cleanup()
     {
@@ -119,14 +117,15 @@ private Q_SLOTS:
 
     void moveAbsoluteHandshake()
     {
+        m_acu->motion().setTimeScale(5);
         QVERIFY(power(true));
         MotionCommand move(m_model.get(), CommandKind::MoveAbsolute);
         move.setParams(params(30000));
         move.setExecute(true);
         // The drive acknowledges the set-point (bit 12) and moves before Done.
-        QTRY_VERIFY_WITH_TIMEOUT(m_axis->status().moving, 3000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_axis->status().moving, 3000);
         QCOMPARE(m_acu->motion().mode(), qint16(1));
-        QTRY_COMPARE_WITH_TIMEOUT(move.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(move.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().position(), 30000.0);
         QVERIFY(m_acu->statusWord() & 0x0400); // target reached
         QVERIFY(!(m_acu->statusWord() & 0x1000)); // bit 4 fell, so did bit 12
@@ -134,12 +133,12 @@ private Q_SLOTS:
         MotionCommand add(m_model.get(), CommandKind::MoveAdditive);
         add.setParams(params(5000));
         add.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(add.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(add.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().position(), 35000.0);
         MotionCommand rel(m_model.get(), CommandKind::MoveRelative);
         rel.setParams(params(-2000));
         rel.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(rel.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(rel.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().position(), 33000.0);
     }
 
@@ -149,12 +148,12 @@ private Q_SLOTS:
         MotionCommand first(m_model.get(), CommandKind::MoveAbsolute);
         first.setParams(params(100000, 10000));
         first.setExecute(true);
-        QTRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 1000, 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 1000, 5000);
         MotionCommand second(m_model.get(), CommandKind::MoveAbsolute);
         second.setParams(params(3000, 10000));
         second.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(first.status(), MotionCommand::Status::CommandAborted, 3000);
-        QTRY_COMPARE_WITH_TIMEOUT(second.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(first.status(), MotionCommand::Status::CommandAborted, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(second.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().position(), 3000.0);
     }
 
@@ -164,35 +163,67 @@ private Q_SLOTS:
         MotionCommand velocity(m_model.get(), CommandKind::MoveVelocity);
         velocity.setParams(params(0, -5000));
         velocity.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
         QCOMPARE(m_acu->motion().mode(), qint16(3)); // profile velocity [u/s]
         QCOMPARE(m_acu->motion().velocity(), -5000.0);
         QVERIFY(m_acu->statusWord() & 0x0400); // at the target velocity (1276 window)
         MotionCommand halt(m_model.get(), CommandKind::Halt);
         halt.setParams(params(0, 0, 50000));
         halt.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(halt.status(), MotionCommand::Status::Done, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(halt.status(), MotionCommand::Status::Done, 5000);
         QCOMPARE(m_acu->motion().velocity(), 0.0);
         QVERIFY(m_axis->controlWord() & 0x0100); // halt bit
         QVERIFY(m_acu->isRunning()); // halt stays in "operation enabled"
     }
 
+    // The command model refuses a command that needs another MCO mode while the axis moves,
+    // before anything is written: the command ends in Error with the rule, the running
+    // velocity move goes on, and the axis is neither stopped nor in ErrorStop.
     void modeChangeWhileMovingIsRefused()
     {
         QVERIFY(power(true));
         MotionCommand velocity(m_model.get(), CommandKind::MoveVelocity);
         velocity.setParams(params(0, 5000));
         velocity.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
-        QTRY_VERIFY(m_axis->status().moving);
+        DB_TRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
+        DB_TRY_VERIFY(m_axis->status().moving);
+        QVERIFY(m_axis->needsModeChange(CommandKind::MoveAbsolute));
+        QVERIFY(!m_axis->needsModeChange(CommandKind::MoveVelocity));
+        QVERIFY(!m_axis->needsModeChange(CommandKind::Halt));
+        QCOMPARE(m_model->preview(CommandKind::MoveAbsolute, params(0)).refusal,
+                 Refusal::ModeChangeWhileMoving);
+        const quint64 controlWrites = m_acu->controlWritesRam();
+        const quint16 controlWord = m_axis->controlWord();
         MotionCommand move(m_model.get(), CommandKind::MoveAbsolute);
         move.setParams(params(0));
         move.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(move.status(), MotionCommand::Status::Error, 3000);
+        QCOMPARE(move.status(), MotionCommand::Status::Busy); // a fresh edge first
+        DB_TRY_COMPARE_WITH_TIMEOUT(move.status(), MotionCommand::Status::Error, 3000);
+        QCOMPARE(move.refusal(), Refusal::ModeChangeWhileMoving);
         QVERIFY2(
             move.error().message().contains(QLatin1String("refused: mode change while moving")),
             qPrintable(move.error().message()));
+        // Nothing was sent and nothing stopped.
+        QCOMPARE(m_acu->controlWritesRam(), controlWrites);
+        QCOMPARE(m_axis->controlWord(), controlWord);
         QCOMPARE(m_acu->motion().mode(), qint16(3)); // 1454 untouched
+        QCOMPARE(m_model->state(), AxisState::ContinuousMotion);
+        QCOMPARE(velocity.status(), MotionCommand::Status::Done);
+        QCOMPARE(m_model->activeCommand(), &velocity);
+        QCOMPARE(m_acu->motion().state(), bonfiglioli::AcuMotion::State::OperationEnabled);
+        QCOMPARE(m_acu->motion().velocity(), 5000.0);
+        // Halted to rest, the same move is taken: the mode changes at standstill.
+        MotionCommand halt(m_model.get(), CommandKind::Halt);
+        halt.setParams(params(0, 0, 100000));
+        halt.setExecute(true);
+        DB_TRY_COMPARE_WITH_TIMEOUT(halt.status(), MotionCommand::Status::Done, 5000);
+        halt.setExecute(false);
+        DB_TRY_VERIFY(!m_axis->status().moving);
+        move.setExecute(false);
+        move.setExecute(true);
+        DB_TRY_COMPARE_WITH_TIMEOUT(move.status(), MotionCommand::Status::Done, 10000);
+        QCOMPARE(m_acu->motion().mode(), qint16(1));
+        QCOMPARE(m_acu->motion().position(), 0.0);
     }
 
     void overrideOffValueIsNeverSent()
@@ -214,7 +245,7 @@ private Q_SLOTS:
         h.method = 17;
         home.setHoming(h);
         home.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(home.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(home.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().mode(), qint16(6));
         QCOMPARE(m_acu->store().value(1130, 0).toInt(), 17);
         QVERIFY(m_acu->statusWord() & 0x1000); // homing attained
@@ -234,6 +265,7 @@ private Q_SLOTS:
 
     void tableTravelSingleAndSequence()
     {
+        m_acu->motion().setTimeScale(10); // block 4 travels 123000 u
         QVERIFY(power(true));
         QVERIFY(await(m_axis->startMotionBlock(2, false, false)).ok());
         QCOMPARE(m_acu->motion().mode(), qint16(-1));
@@ -242,9 +274,9 @@ private Q_SLOTS:
         QVERIFY(!(m_acu->statusWord() & 0x0100));
         // Block 4 (123000 u) hands over to block 2 (5000 u) in a sequence; 1246 shows each.
         Reply *sequence = m_axis->startMotionBlock(4, true, false);
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(1246, 0).toInt(), 4, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(1246, 0).toInt(), 4, 3000);
         QVERIFY(m_acu->statusWord() & 0x0100); // motion block in progress
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(1246, 0).toInt(), 2, 15000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(1246, 0).toInt(), 2, 15000);
         QVERIFY(await(sequence, 15000).ok());
         QCOMPARE(m_acu->motion().position(), 5000.0);
     }
@@ -260,16 +292,16 @@ private Q_SLOTS:
         block.setParams(p);
         block.setExecute(true);
         QVERIFY(block.isBusy());
-        QTRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Done, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Done, 10000);
         QCOMPARE(m_acu->motion().position(), 2000.0);
         QCOMPARE(m_model->state(), AxisState::Standstill);
         MotionCommand velocity(m_model.get(), CommandKind::MoveVelocity);
         velocity.setParams(params(0, 3000));
         velocity.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
         block.setExecute(false);
         block.setExecute(true);
-        QTRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Error, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(block.status(), MotionCommand::Status::Error, 3000);
         QCOMPARE(block.refusal(), Refusal::NotAtStandstill);
     }
 
@@ -285,6 +317,39 @@ private Q_SLOTS:
         QCOMPARE(m_acu->fault(), quint16(0x1449));
     }
 
+    // Electronic gear slave (1454 = -3): bit 4 starts the gear, status bit 10 rises once the
+    // slave runs at master speed x 1123 / 1124 for 1169 ms; halt brakes to 0 with bit 10 at
+    // speed 0; a positioning command afterwards changes the mode at rest.
+    void electronicGear()
+    {
+        QVERIFY(power(true));
+        m_acu->motion().setMasterSpeed(3000);
+        QVERIFY(await(m_connection->write(ObjectAddress(1123, 5), qlonglong(3))).ok()); // RAM
+        QVERIFY(await(m_connection->write(ObjectAddress(1124, 5), qulonglong(2))).ok());
+        QVERIFY(await(m_connection->write(ObjectAddress(1169, 5), qulonglong(50))).ok());
+        const Result<QVariant> geared = await(m_axis->gearIn(100000, 100000));
+        QVERIFY2(geared.ok(), qPrintable(geared.error().message()));
+        QCOMPARE(m_acu->motion().mode(), qint16(-3));
+        QCOMPARE(m_axis->mode(), AcuAxis::Mode::ElectronicGear);
+        QCOMPARE(m_acu->motion().velocity(), 4500.0); // 3000 x 3 / 2
+        QVERIFY(m_acu->statusWord() & 0x0400); // in gear
+        m_acu->motion().setMasterSpeed(1000); // the master slows: out of gear until coupled
+        DB_TRY_VERIFY(!(m_acu->statusWord() & 0x0400));
+        DB_TRY_COMPARE(m_acu->motion().velocity(), 1500.0);
+        DB_TRY_VERIFY(m_acu->statusWord() & 0x0400);
+        // Other modes are refused while the slave turns, then taken at rest.
+        QVERIFY(m_axis->needsModeChange(CommandKind::MoveAbsolute));
+        DB_TRY_VERIFY(m_axis->status().moving);
+        QCOMPARE(m_model->preview(CommandKind::MoveAbsolute, params(0)).refusal,
+                 Refusal::ModeChangeWhileMoving);
+        QVERIFY(await(m_axis->halt(100000)).ok());
+        DB_TRY_COMPARE(m_acu->motion().velocity(), 0.0);
+        QVERIFY(m_acu->statusWord() & 0x0400); // halt: bit 10 at speed 0
+        DB_TRY_VERIFY(!m_axis->status().moving);
+        QVERIFY(await(m_axis->moveTo(0, { 20000, 100000, 100000, 0 })).ok());
+        QCOMPARE(m_acu->motion().mode(), qint16(1));
+    }
+
     // The jog moves in leases: when the renewals stop (the program died), the drive ends the
     // motion by itself at the last leased target.
     void leasedJogStopsWhenRenewalsStop()
@@ -292,14 +357,14 @@ private Q_SLOTS:
         QVERIFY(power(true));
         auto lease = std::make_unique<LeasedMove>(m_model.get());
         lease->jog(+1, params(0, 5000, 50000));
-        QTRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 2000, 5000); // renewed
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 2000, 5000); // renewed
         QVERIFY(m_acu->motion().velocity() > 0);
         const double leaseMs = lease->leaseTimeMs();
         m_model->setWatchdogTimeout(0); // only the drive's side acts now
         lease.reset();
         QElapsedTimer clock;
         clock.start();
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
         QVERIFY2(clock.elapsed() <= leaseMs + 200, qPrintable(QString::number(clock.elapsed())));
     }
 
@@ -310,8 +375,8 @@ private Q_SLOTS:
         vabus::Server::FailureMode silent;
         silent.failure = vabus::Server::Failure::Silent;
         m_acu->server().setFailure(silent);
-        QTRY_VERIFY_WITH_TIMEOUT(m_axis->linkSupervision().contains(QLatin1String("No answer")),
-                                 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_axis->linkSupervision().contains(QLatin1String("No answer")),
+                                   5000);
         QVERIFY2(m_axis->linkSupervision().contains(QLatin1String("reacts in")),
                  qPrintable(m_axis->linkSupervision()));
         m_acu->server().setFailure({});
@@ -321,20 +386,20 @@ private Q_SLOTS:
     {
         QVERIFY(power(true));
         QVERIFY(await(m_axis->moveVelocity(8000, { 0, 100000, 100000, 0 })).ok());
-        QTRY_VERIFY(m_acu->motion().velocity() > 1000);
+        DB_TRY_VERIFY(m_acu->motion().velocity() > 1000);
         QVERIFY(await(m_axis->stopNow()).ok());
         QCOMPARE(m_acu->motion().state(), bonfiglioli::AcuMotion::State::QuickStopActive);
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 2000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 2000);
     }
 
     void faultResetAfterF2714()
     {
         QVERIFY(power(true));
         m_acu->raiseFault(0x2714);
-        QTRY_VERIFY(m_axis->status().fault);
+        DB_TRY_VERIFY(m_axis->status().fault);
         MotionCommand reset(m_model.get(), CommandKind::Reset);
         reset.setExecute(true);
-        QTRY_VERIFY_WITH_TIMEOUT(reset.isFinished(), 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(reset.isFinished(), 5000);
         QVERIFY2(reset.status() == MotionCommand::Status::Done,
                  qPrintable(reset.error().message()));
         QCOMPARE(m_acu->fault(), quint16(0));
@@ -355,7 +420,7 @@ private Q_SLOTS:
         QVERIFY(!await(m_connection->write(ObjectAddress(1454, 5), qlonglong(1))).ok());
         QVERIFY(power(true));
         QVERIFY(await(m_axis->moveVelocity(300, {})).ok());
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(240, 0).toInt(), 300, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(240, 0).toInt(), 300, 3000);
     }
 
     void modesMcoDoesNotHaveAreRejected()
@@ -371,7 +436,7 @@ private:
         MotionCommand p(m_model.get(), CommandKind::Power);
         p.setEnable(on);
         p.setExecute(true);
-        if (!QTest::qWaitFor([&p] { return p.isFinished(); }, 5000))
+        if (!test::waitFor([&p] { return p.isFinished(); }, 5000))
             return false;
         if (p.status() != MotionCommand::Status::Done)
             qWarning() << p.error().message();

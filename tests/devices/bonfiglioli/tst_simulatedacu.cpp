@@ -82,6 +82,7 @@ private Q_SLOTS:
         QCOMPARE(codeOf(await(m_client->read(481, 0))), 9u); // data sets differ
         QCOMPARE(codeOf(await(m_client->read(1599, 0))), 11u);
         QCOMPARE(codeOf(await(m_client->writeData(482, 9, QByteArray::fromHex("6211")))), 14u);
+        QCOMPARE(codeOf(await(m_client->writeData(372, 2, {}))), 14u); // a word without data
         QCOMPARE(codeOf(await(m_client->write(411, 0, DataType::Unsigned16, qulonglong(1)))), 4u);
         // Not writable while running.
         QVERIFY(enableOperation());

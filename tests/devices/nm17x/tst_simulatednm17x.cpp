@@ -3,67 +3,15 @@
 #include "devices/nm17x/device/nm17xsim.h"
 #include "devices/nm17x/device/simulatednm17x.h"
 #include "devices/nm17x/nm17xcodes.h"
+#include "nm17xtestline.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
 using namespace db;
 using namespace db::nm17x;
-
-namespace {
-
-struct Frame
-{
-    quint32 id;
-    QByteArray data;
-};
-
-// Several displays on one simulated bus: what the master sends reaches all of them; what they
-// send is collected.
-class Line
-{
-public:
-    explicit Line(const QList<Variant> &variants, canopen::NodeId node = 127)
-    {
-        quint32 serial = Nm17xSim::kFirstSerial;
-        for (const Variant v : variants) {
-            auto *device = new SimulatedNm17x(v, serial++, node);
-            QObject::connect(device, &SimulatedNm17x::transmit, device,
-                             [this](const QCanBusFrame &f) {
-                                 frames.append({ f.frameId(), f.payload() });
-                             });
-            devices.append(device);
-        }
-        for (SimulatedNm17x *device : devices)
-            device->start();
-    }
-    ~Line() { qDeleteAll(devices); }
-    void send(quint32 id, const char *hex)
-    {
-        const QCanBusFrame frame(id, QByteArray::fromHex(hex));
-        for (SimulatedNm17x *device : devices)
-            device->receive(frame);
-    }
-    QList<Frame> take()
-    {
-        QList<Frame> out = frames;
-        frames.clear();
-        return out;
-    }
-    QList<Frame> takeId(quint32 id)
-    {
-        QList<Frame> out;
-        for (const Frame &f : take()) {
-            if (f.id == id)
-                out.append(f);
-        }
-        return out;
-    }
-    QList<SimulatedNm17x *> devices;
-    QList<Frame> frames;
-};
-
-} // namespace
+using db::test::Frame;
+using db::test::Line;
 
 class TstSimulatedNm17x : public QObject
 {
