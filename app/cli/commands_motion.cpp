@@ -166,6 +166,11 @@ Result<std::unique_ptr<Axis>> openAxis(Context &c)
 int runToEnd(Context &c, Axis &axis, MotionCommand &command)
 {
     command.setExecute(true);
+    if (command.limits().notReferenced)
+        c.err << Tr::tr("drivebench-cli: warning: the axis is not known to be referenced (no "
+                        "homing seen, and the drive does not tell): positions count from the "
+                        "drive's present zero")
+              << Qt::endl;
     if (!waitUntil(
             axis, [&] { return command.isFinished(); }, axis.waitMs)) {
         axis.model->stopNow();
@@ -347,54 +352,51 @@ int move(Context &c)
     return runAndReport(c, axis, command);
 }
 
-int jog(Context &c)
+namespace {
+// --vel V (signed) and --time MS, checked.
+Result<std::pair<double, double>> velocityAndTime(Context &c, const QString &command)
 {
     if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("jog needs --vel V (signed) and --time MS")));
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("%1 needs --vel V (signed) and --time MS").arg(command));
     const auto v = number(c, kVel);
     const auto t = number(c, kTime);
     if (!v || !t)
-        return fail(c, !v ? v.error() : t.error());
+        return !v ? v.error() : t.error();
     if (*t <= 0 || *t > kDefaultWaitMs)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
-    auto opened = openAxis(c);
-    if (!opened)
-        return fail(c, opened.error());
-    Axis &axis = *opened.value();
-    MoveParams p;
-    p.velocity = *v;
-    p.acceleration = p.deceleration = axis.cia->driveProfile().acceleration;
-    if (auto given = profileOptions(c, p, false); !given)
-        return fail(c, given.error());
-    p.jerk = axis.model->config().maxJerk;
-    // Where the drive offers it (CANopen), the drive also watches this process while it jogs.
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs));
+    return std::pair { *v, *t };
+}
+
+// Moves at velocity v for t ms in leases renewed while this process runs (jog, and velocity on
+// a drive with profile position): killed, frozen or cut off, it leaves a drive that brakes by
+// itself at most LeasedMove::leaseTimeMs() after the last renewal. Then MC_Halt.
+int runLeased(Context &c, Axis &axis, MoveParams p, double t)
+{
+    // Where the drive offers it (CANopen), the drive also watches this process while it moves.
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
-    // In leases renewed while this process runs: killed, frozen or cut off, it leaves a drive
-    // that brakes by itself at most LeasedMove::leaseTimeMs() after the last renewal.
     LeasedMove lease(axis.model.get());
     std::optional<MotionCommand::Status> ended;
     QObject::connect(&lease, &LeasedMove::ended, [&ended](MotionCommand::Status s) { ended = s; });
-    lease.jog(*v >= 0 ? 1 : -1, p);
+    lease.jog(p.velocity >= 0 ? 1 : -1, p);
     if (c.options.verbose)
         c.out << "lease: " << LeasedMove::kLeaseMs << " ms, " << lease.leaseTravel()
               << " units; the drive stops within " << qRound(lease.leaseTimeMs())
               << " ms if drivebench-cli stops" << Qt::endl;
-    // Jog for the time unless the move ends early (software limit, refused, fault, link lost).
-    const QDeadlineTimer until { qint64(*t) };
+    // For the time unless the move ends early (software limit, refused, fault, link lost, a
+    // halt or stop from another process).
+    const QDeadlineTimer until { qint64(t) };
     waitUntil(
-        axis, [&] { return until.hasExpired() || ended.has_value(); }, int(*t) + kStopFlushMs);
-    const MotionCommand &jogging = *lease.command();
-    if (jogging.status() == MotionCommand::Status::Error) {
-        if (jogging.refusal() != Refusal::None) {
-            c.err << "drivebench-cli: " << jogging.error().message() << Qt::endl;
+        axis, [&] { return until.hasExpired() || ended.has_value(); }, int(t) + kStopFlushMs);
+    const MotionCommand &moving = *lease.command();
+    if (moving.status() == MotionCommand::Status::Error) {
+        if (moving.refusal() != Refusal::None) {
+            c.err << "drivebench-cli: " << moving.error().message() << Qt::endl;
             return ExitDeviceError;
         }
-        return fail(c, jogging.error());
+        return fail(c, moving.error());
     }
     if (!ended) {
         lease.halt();
@@ -414,54 +416,69 @@ int jog(Context &c)
     printPosition(c, axis);
     return ExitOk;
 }
+} // namespace
 
-// MC_MoveVelocity for --time ms, then MC_Halt. Not leased: the drive's velocity mode runs until
-// told otherwise, so only drive-side supervision (CANopen) stops it if this process dies.
-int velocity(Context &c)
+int jog(Context &c)
 {
-    if (!c.parser->isSet(kVel) || !c.parser->isSet(kTime))
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("velocity needs --vel V (signed) and --time MS")));
-    const auto v = number(c, kVel);
-    const auto t = number(c, kTime);
-    if (!v || !t)
-        return fail(c, !v ? v.error() : t.error());
-    if (*t <= 0 || *t > kDefaultWaitMs)
-        return fail(c,
-                    Error(Error::Kind::InvalidArgument,
-                          Tr::tr("--time takes 1..%1 ms").arg(kDefaultWaitMs)));
+    const auto vt = velocityAndTime(c, QStringLiteral("jog"));
+    if (!vt)
+        return fail(c, vt.error());
     auto opened = openAxis(c);
     if (!opened)
         return fail(c, opened.error());
     Axis &axis = *opened.value();
     MoveParams p;
-    p.velocity = *v;
+    p.velocity = vt->first;
+    p.acceleration = p.deceleration = axis.cia->driveProfile().acceleration;
+    if (auto given = profileOptions(c, p, false); !given)
+        return fail(c, given.error());
+    p.jerk = axis.model->config().maxJerk;
+    return runLeased(c, axis, p, vt->second);
+}
+
+// Velocity V for --time ms, then MC_Halt: in leases like jog where the drive has profile
+// position; otherwise MC_MoveVelocity, which the drive's velocity mode runs until told otherwise,
+// so that only drive-side supervision stops it if this process dies.
+int velocity(Context &c)
+{
+    const auto vt = velocityAndTime(c, QStringLiteral("velocity"));
+    if (!vt)
+        return fail(c, vt.error());
+    auto opened = openAxis(c);
+    if (!opened)
+        return fail(c, opened.error());
+    Axis &axis = *opened.value();
+    MoveParams p;
+    p.velocity = vt->first;
     p.acceleration = axis.cia->driveProfile().acceleration;
     p.deceleration = axis.cia->driveProfile().deceleration;
     if (auto given = profileOptions(c, p, false); !given)
         return fail(c, given.error());
     p.jerk = axis.model->config().maxJerk;
+    if (axis.cia->features() & AxisInterface::Feature::ProfilePosition)
+        return runLeased(c, axis, p, vt->second);
+    // Velocity mode only (an ACTIVE Cube configured without positioning control): the drive's
+    // velocity mode has no end point to lease, so only the drive's own supervision stops it.
     const auto supervision = superviseDrive(c, axis);
     const RestoreSupervision restore { supervision.get(), c };
     if (!supervision && axis.cia->linkSupervision().isEmpty())
-        c.err << Tr::tr("drivebench-cli: warning: nothing on the drive's side stops "
-                        "MC_MoveVelocity if drivebench-cli dies on this connection (jog moves in "
-                        "leases)")
+        c.err << Tr::tr("drivebench-cli: warning: the drive has no profile position mode, so "
+                        "MC_MoveVelocity cannot move in leases, and nothing on the drive's side "
+                        "stops it if drivebench-cli dies on this connection")
               << Qt::endl;
     else if (!supervision && c.options.verbose)
         c.out << "supervision: " << axis.cia->linkSupervision() << Qt::endl;
     MotionCommand command(axis.model.get(), CommandKind::MoveVelocity);
     command.setParams(p);
     command.setExecute(true);
-    const QDeadlineTimer until { qint64(*t) };
+    const QDeadlineTimer until { qint64(vt->second) };
     waitUntil(
         axis,
         [&] {
             return until.hasExpired() || command.status() == MotionCommand::Status::Error
                 || command.status() == MotionCommand::Status::CommandAborted;
         },
-        int(*t) + kStopFlushMs);
+        int(vt->second) + kStopFlushMs);
     if (command.status() == MotionCommand::Status::Error) {
         if (command.refusal() != Refusal::None) {
             c.err << "drivebench-cli: " << command.error().message() << Qt::endl;

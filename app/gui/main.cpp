@@ -5,6 +5,7 @@
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "devices/nm17x/device/nm17xsim.h"
+#include "jogtesthook.h"
 #include "mainwindow.h"
 #include "translations/language.h"
 #include "widgets/common/logconsole.h"
@@ -164,5 +165,6 @@ int main(int argc, char *argv[])
     }
 
     window.show();
+    db::gui::holdJogFromEnvironment(window); // only with DRIVEBENCH_TEST_HOLD_JOG set
     return app.exec();
 }

@@ -10,8 +10,12 @@ bool isMovingCap(const ObjectDictionary &dictionary)
 
 void applyAxisQuirks(motion::Cia402Axis &axis, const ObjectDictionary &dictionary)
 {
-    if (isMovingCap(dictionary))
-        axis.setAccelerationUnit(motion::Cia402Axis::AccelerationUnit::RotaryMotor);
+    if (!isMovingCap(dictionary))
+        return;
+    axis.setAccelerationUnit(motion::Cia402Axis::AccelerationUnit::RotaryMotor);
+    // MovingCap drives keep their absolute position and need no homing: RefGo's TPSR reports
+    // REFERENCE always set, and REF35/REF37 only move the zero.
+    axis.setReferencedWithoutHoming(true);
 }
 
 } // namespace db::movingcap

@@ -11,8 +11,8 @@ namespace db::movingcap {
 bool isMovingCap(const ObjectDictionary &dictionary);
 
 // Rotary MovingCap drives give accelerations (6083h, 6084h, 609Ah, 60C5h) in [100 rpm/min] of
-// the motor, not in user units/s^2; the axis converts with the factor group. Call before
-// Cia402Axis::initialize().
+// the motor, not in user units/s^2; the axis converts with the factor group. MovingCap drives
+// need no homing: the axis is referenced from the start. Call before Cia402Axis::initialize().
 void applyAxisQuirks(motion::Cia402Axis &axis, const ObjectDictionary &dictionary);
 
 } // namespace db::movingcap

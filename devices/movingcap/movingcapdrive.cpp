@@ -187,7 +187,7 @@ void MovingCapDrive::handle(const Effects &e)
         const int mode = int(m_store.integer({ 0x6060, 0 }));
         if (mode == 1) {
             const double value = double(m_store.integer({ 0x607A, 0 }));
-            const double target = e.relative ? m_lastTarget + value : value;
+            const double target = e.relative ? m_lastTarget + value : absoluteTarget(value);
             const bool accepted = m_axis.moveTo(target, double(m_store.integer({ 0x6081, 0 })),
                                                 accelerationToUser(m_store.integer({ 0x6083, 0 })),
                                                 accelerationToUser(m_store.integer({ 0x6084, 0 })),
@@ -250,8 +250,12 @@ void MovingCapDrive::setMode(int mode)
 
 void MovingCapDrive::applyParameters()
 {
-    m_axis.setSoftLimits(double(m_store.integer({ 0x607D, 1 })),
-                         double(m_store.integer({ 0x607D, 2 })));
+    // On a rotary axis 607Dh gives the cycle, not limits.
+    if (rotaryPositions())
+        m_axis.setSoftLimits(0, 0);
+    else
+        m_axis.setSoftLimits(double(m_store.integer({ 0x607D, 1 })),
+                             double(m_store.integer({ 0x607D, 2 })));
     m_axis.setTargetWindow(double(m_store.integer({ 0x6067, 0 })),
                            double(m_store.integer({ 0x6068, 0 })) / 1000.0);
     m_axis.setCurrentLimit(double(m_store.integer({ 0x6073, 0 })));

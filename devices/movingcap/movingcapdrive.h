@@ -125,6 +125,12 @@ private:
     void startVelocity(double velocity);
     void startHoming(int method, double offset);
     double relativeBase() const;
+    // Rotary (60F2h bits 6-7 with 607Dh.1 < 607Dh.2): positions wrap into [607Dh.1, 607Dh.2).
+    // The axis runs unwrapped; 6064h shows the wrapped position, and an absolute target is
+    // reached from the present one the way bits 6-7 say (shortest, positive or negative only).
+    bool rotaryPositions() const;
+    double shownPosition(double unwrapped) const;
+    double absoluteTarget(double target) const;
     void stepRepeat();
     void noteInterruption();
     // movingcapdrive_io.cpp: inputs, input functions, outputs

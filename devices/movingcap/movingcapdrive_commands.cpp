@@ -69,6 +69,48 @@ void MovingCapDrive::startHoming(int method, double offset)
     m_axis.startHardStopHoming(method == -18 ? 1 : -1, speed, acc, offset);
 }
 
+bool MovingCapDrive::rotaryPositions() const
+{
+    return (m_store.integer({ 0x60F2, 0 }) & 0xC0) != 0
+        && m_store.integer({ 0x607D, 2 }) > m_store.integer({ 0x607D, 1 });
+}
+
+double MovingCapDrive::shownPosition(double unwrapped) const
+{
+    if (!rotaryPositions())
+        return unwrapped;
+    const double min = double(m_store.integer({ 0x607D, 1 }));
+    const double cycle = double(m_store.integer({ 0x607D, 2 })) - min;
+    return min + (unwrapped - min) - cycle * std::floor((unwrapped - min) / cycle);
+}
+
+double MovingCapDrive::absoluteTarget(double target) const
+{
+    if (!rotaryPositions())
+        return target;
+    const double cycle =
+        double(m_store.integer({ 0x607D, 2 })) - double(m_store.integer({ 0x607D, 1 }));
+    const double from = m_axis.demandPosition();
+    double delta = shownPosition(target) - shownPosition(from); // (-cycle, cycle)
+    switch (m_store.integer({ 0x60F2, 0 }) & 0xC0) {
+    case 0x40: // negative direction only
+        if (delta > 0)
+            delta -= cycle;
+        break;
+    case 0x80: // positive direction only
+        if (delta < 0)
+            delta += cycle;
+        break;
+    default: // shortest way
+        if (delta > cycle / 2)
+            delta -= cycle;
+        else if (delta < -cycle / 2)
+            delta += cycle;
+        break;
+    }
+    return from + delta;
+}
+
 double MovingCapDrive::relativeBase() const
 {
     // 60F2h bits 0-1 (spec 6.2): last target, demand position or actual position.
@@ -102,7 +144,7 @@ Result<void> MovingCapDrive::go(std::optional<qint64> target)
         return ok;
     if (target)
         m_store.set({ 0x607A, 0 }, *target);
-    startPositionMove(double(m_store.integer({ 0x607A, 0 })), true);
+    startPositionMove(absoluteTarget(double(m_store.integer({ 0x607A, 0 }))), true);
     m_repeat.active = false;
     return {};
 }

@@ -56,7 +56,7 @@ void MovingCapDrive::refreshComputed()
 {
     m_store.set({ 0x6041, 0 }, statusword());
     m_store.set({ 0x6061, 0 }, m_store.value({ 0x6060, 0 }));
-    m_store.set({ 0x6064, 0 }, qRound64(m_axis.position()));
+    m_store.set({ 0x6064, 0 }, qRound64(shownPosition(m_axis.position())));
     m_store.set({ 0x606C, 0 }, qRound64(m_axis.measuredVelocity()));
     m_store.set({ 0x6078, 0 }, qRound64(m_axis.current()));
     m_store.set({ 0x60FC, 0 }, qRound64(m_axis.demandPosition() * userToIncrements()));

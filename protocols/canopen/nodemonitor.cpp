@@ -5,7 +5,10 @@
 #include "transport/canbus.h"
 
 #include <QCanBusFrame>
+#include <QElapsedTimer>
 #include <QTimer>
+
+#include <algorithm>
 
 namespace db::canopen {
 
@@ -14,6 +17,9 @@ struct NodeMonitor::Entry
     NmtState state = NmtState::Unknown;
     bool alive = false;
     QTimer timer; // consumer time, restarted by every heartbeat
+    QElapsedTimer sinceLast; // since the last heartbeat
+    qint64 longestMs = 0; // longest interval between heartbeats while alive
+    int intervals = 0;
 };
 
 NodeMonitor::NodeMonitor(CanBus *bus, QObject *parent)
@@ -34,8 +40,14 @@ void NodeMonitor::setConsumerTime(NodeId node, int ms)
 
 int NodeMonitor::consumerTime(NodeId node) const
 {
-    const auto it = m_consumerMs.find(node);
-    return it != m_consumerMs.end() ? it->second : m_defaultConsumerMs;
+    if (const auto it = m_consumerMs.find(node); it != m_consumerMs.end())
+        return it->second;
+    if (m_defaultConsumerMs > 0)
+        return m_defaultConsumerMs;
+    const auto e = m_nodes.find(node);
+    if (e == m_nodes.end() || e->second->intervals < kLearnIntervals)
+        return 0;
+    return int(std::max<qint64>(kLearnedMinMs, e->second->longestMs * kLearnedFactor));
 }
 
 NmtState NodeMonitor::state(NodeId node) const
@@ -86,6 +98,11 @@ void NodeMonitor::onFrame(const QCanBusFrame &frame)
     const bool first = !m_nodes.contains(node);
     Entry &e = entry(node);
     const bool wasLost = !first && !e.alive;
+    if (!first && !wasLost) {
+        e.longestMs = std::max(e.longestMs, e.sinceLast.elapsed());
+        ++e.intervals;
+    }
+    e.sinceLast.start();
     e.alive = true;
     if (const int ms = consumerTime(node); ms > 0)
         e.timer.start(ms);

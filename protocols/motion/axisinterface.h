@@ -28,6 +28,9 @@ public:
         bool quickStopActive = false;
         bool moving = false; // the drive reports motion
         bool targetReached = false;
+        // The drive reports its position as referenced: homing attained (bit 12 with target
+        // reached, no homing error) read while the drive is in homing mode, or a drive that
+        // needs no homing. False where the drive does not tell.
         bool homingAttained = false;
         double position = 0.0;
         double velocity = 0.0;

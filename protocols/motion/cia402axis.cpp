@@ -29,6 +29,7 @@ constexpr double kMaxRawJerk = 0xFFFFFFFFu; // UNSIGNED32
 // Digital inputs 60FDh (CiA 402-2): bit 0 negative, bit 1 positive limit switch.
 constexpr quint32 kNegativeLimitBit = 0x1;
 constexpr quint32 kPositiveLimitBit = 0x2;
+constexpr quint16 kHomingError = 0x2000; // statusword bit 13 in homing mode
 
 const QList<ObjectAddress> &statusObjects()
 {
@@ -63,8 +64,10 @@ bool Cia402Axis::takeStatus(const StatusSource &source, Status &status)
     status.quickStopActive = state == State::QuickStopActive;
     status.moving = word & sw::Moving;
     status.targetReached = word & sw::TargetReached;
-    status.homingAttained = (word & (sw::SetPointAcknowledge | sw::TargetReached))
-        == (sw::SetPointAcknowledge | sw::TargetReached);
+    // Bit 12 means "homing attained" only in homing mode (set-point acknowledge in PP).
+    constexpr quint16 kAttained = sw::SetPointAcknowledge | sw::TargetReached;
+    status.homingAttained = m_referencedWithoutHoming
+        || (m_homingMode && (word & kAttained) == kAttained && !(word & kHomingError));
     status.position = source.value(obj::PositionActual).toDouble();
     status.velocity = source.value(obj::VelocityActual).toDouble();
     const quint32 inputs = quint32(source.value(obj::DigitalInputs).toULongLong());
@@ -84,6 +87,7 @@ Reply *Cia402Axis::initialize()
     auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
     QList<ObjectAddress> objects = Scaling::objects();
     objects.append(obj::SupportedModes);
+    objects.append(obj::ModesDisplay); // a drive still in homing mode tells its reference
     const ObjectDictionary &dict = connection()->dictionary();
     for (ObjectAddress a : axislimits::objects(dict))
         if (!objects.contains(a))
@@ -141,6 +145,7 @@ QList<ObjectAddress> Cia402Axis::profileObjects()
 
 void Cia402Axis::applyInitialValues(const QHash<ObjectAddress, QVariant> &values)
 {
+    m_homingMode = values.value(obj::ModesDisplay).toInt() == int(Mode::Homing);
     if (auto s = Scaling::fromValues(values))
         m_scaling = s.value();
     if (values.contains(obj::SupportedModes)) {
@@ -195,8 +200,9 @@ quint32 Cia402Axis::accelerationRaw(double user) const
     return std::max(kRawAccelerationMin, quint32(std::llround(std::abs(raw))));
 }
 
-Reply *Cia402Axis::runMotion(Sequence *sequence)
+Reply *Cia402Axis::runMotion(Sequence *sequence, bool homing)
 {
+    m_homingMode = homing;
     if (m_motion)
         m_motion->cancel(
             Error(Error::Kind::Cancelled,
@@ -245,7 +251,7 @@ Reply *Cia402Axis::halt(double deceleration)
     std::optional<quint32> dec;
     if (deceleration > 0)
         dec = accelerationRaw(deceleration);
-    return runMotion(cia402::halt(connection(), dec, this));
+    return runMotion(cia402::halt(connection(), dec, this), m_homingMode); // mode unchanged
 }
 
 Reply *Cia402Axis::home(const HomingParams &params)
@@ -262,7 +268,7 @@ Reply *Cia402Axis::home(const HomingParams &params)
     sp.acceleration = accelerationRaw(params.acceleration);
     sp.offset = std::llround(params.offset);
     sp.timeoutMs = kHomingTimeoutMs;
-    return runMotion(homing(connection(), sp, this));
+    return runMotion(homing(connection(), sp, this), true);
 }
 
 Reply *Cia402Axis::torque(double torquePerMille, double slope)

@@ -42,6 +42,9 @@ public:
     HomingParams driveHoming() const override { return m_homing; }
     QString positionUnit() const override;
     QString velocityUnit() const override;
+    // A drive that needs no homing (absolute position kept by the drive) reports its reference
+    // from the start; others only in homing mode (6061h = 6, statusword bits 12 and 10).
+    void setReferencedWithoutHoming(bool yes) { m_referencedWithoutHoming = yes; }
     // Before initialize(): how the drive's accelerations are given.
     void setAccelerationUnit(AccelerationUnit unit) { m_accelerationUnit = unit; }
     AccelerationUnit accelerationUnit() const { return m_accelerationUnit; }
@@ -63,7 +66,7 @@ protected:
     bool commandRunning() const override;
 
 private:
-    Reply *runMotion(cia402::Sequence *sequence);
+    Reply *runMotion(cia402::Sequence *sequence, bool homing = false);
     quint32 accelerationRaw(double user) const;
     static QList<ObjectAddress> profileObjects();
     void applyInitialValues(const QHash<ObjectAddress, QVariant> &values);
@@ -73,6 +76,8 @@ private:
     AccelerationUnit m_accelerationUnit = AccelerationUnit::UserUnits;
     Features m_features = Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing;
     std::optional<ObjectAddress> m_jerkObject; // 60A4h.1 or .0, whichever is described
+    bool m_referencedWithoutHoming = false;
+    bool m_homingMode = false; // the drive is in homing mode (6061h at start, or our homing)
     AxisConfig m_limits;
     Profile m_profile;
     HomingParams m_homing;

@@ -10,6 +10,17 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(db::motion)
 };
+
+// How far the position is from the target. On an endless axis modulo the cycle: the drive may
+// report its position wrapped into the cycle (a rotary MovingCap) while targets are unwrapped.
+double offTarget(const db::motion::AxisConfig &c, double position, double target)
+{
+    const double d = position - target;
+    if (!c.endless || c.cycleLength <= 0)
+        return std::abs(d);
+    const double m = d - c.cycleLength * std::floor(d / c.cycleLength); // [0, cycle)
+    return std::min(m, c.cycleLength - m);
+}
 } // namespace
 
 namespace db::motion {
@@ -172,6 +183,8 @@ void MotionAxis::startMotion(MotionCommand *command)
         m_tracker.setTarget(plan.target);
     }
     setState(plan.nextState);
+    if (command->kind() == CommandKind::Home)
+        m_referenced = false; // until this homing completes
     if (!renewal)
         keepAlive(); // a new motion gets a full watchdog period; a renewed set-point does not
     QPointer<MotionCommand> guard(command);
@@ -291,6 +304,8 @@ void MotionAxis::onStatus()
         return;
     ++m_rounds;
     m_tracker.observe(s.position, m_config.positionWindow);
+    if (s.homingAttained && !(m_active && m_active->kind() == CommandKind::Home))
+        m_referenced = true; // the drive says so (not a stale bit of the homing just started)
     // The drive was enabled before this model saw it (e.g. by an earlier CLI call), or by
     // someone else (web UI, another tool): PLCopen's state follows the drive. Two rounds in a
     // row, so that a status read still in flight while MC_Power switched off does not count.
@@ -336,9 +351,29 @@ void MotionAxis::evaluateActive(const AxisInterface::Status &s)
     case CommandKind::MoveAbsolute:
     case CommandKind::MoveRelative:
     case CommandKind::MoveAdditive:
+        // The drive stands with its profile finished (target reached) away from our target:
+        // halted or stopped by someone else (another program, the web page, an input). The
+        // command ends now instead of waiting for a target that no longer comes. A round more
+        // than above: a new set-point clears target reached only once the drive has taken it.
+        if (!m_overrideHeld && s.targetReached && !s.moving
+            && std::abs(s.velocity) <= m_config.velocityWindow
+            && offTarget(m_config, s.position, c->m_target) > m_config.positionWindow
+            && m_rounds > m_acceptedRound + 2) {
+            m_active = nullptr;
+            setState(AxisState::Standstill);
+            c->setStatus(MotionCommand::Status::CommandAborted,
+                         Error(Error::Kind::DeviceError,
+                               Tr::tr("%1: the drive stopped at %2, short of the target %3 "
+                                      "(halted by another program or the drive itself)")
+                                   .arg(c->name())
+                                   .arg(s.position, 0, 'f', 1)
+                                   .arg(c->m_target, 0, 'f', 1)));
+            return;
+        }
         // I180 (in window) may rise while still moving; Done = profile finished (not moving)
         // and in the window for I87 since I180 rose (S-03, S-04).
-        if (m_overrideHeld || std::abs(s.position - c->m_target) > m_config.positionWindow) {
+        if (m_overrideHeld
+            || offTarget(m_config, s.position, c->m_target) > m_config.positionWindow) {
             m_inWindow.invalidate();
             return;
         }

@@ -41,8 +41,11 @@ public:
     void setConfig(const AxisConfig &config) { m_config = config; }
     const AxisConfig &config() const { return m_config; }
     AxisState state() const { return m_state; }
+    // Referenced: a homing completed on this axis, or the drive reports its reference
+    // (AxisInterface::Status::homingAttained, e.g. a drive that needs no homing). False until
+    // then, and from the start of a homing until it completes. Absolute moves and software
+    // limits on an axis that is not referenced are warned about (LimitFlags::notReferenced).
     bool isReferenced() const { return m_referenced; }
-    // Drives with an absolute encoder are referenced from the start (movingcap.md 9.4).
     void setReferenced(bool referenced) { m_referenced = referenced; }
     const TargetTracker &targets() const { return m_tracker; }
     MotionCommand *activeCommand() const { return m_active; }
@@ -102,7 +105,7 @@ private:
     AxisInterface *m_axis;
     AxisConfig m_config;
     AxisState m_state = AxisState::Disabled;
-    bool m_referenced = true;
+    bool m_referenced = false;
     bool m_powerWanted = false;
     TargetTracker m_tracker;
     QPointer<MotionCommand> m_active;

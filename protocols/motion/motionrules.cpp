@@ -69,10 +69,9 @@ Refusal positioningRefusal(CommandKind kind, const MoveParams &p, const AxisConf
         return Refusal::ZeroProfileValue; // R5
     if (c.maxAcceleration == 0 || c.maxJerk == 0)
         return Refusal::ZeroAxisLimit; // R6
-    if (kind == CommandKind::MoveAbsolute && !a.referenced)
-        return Refusal::NotReferenced; // precondition I86 = 1 [I: signalled as refusal]
-    if (kind != CommandKind::MoveAbsolute && c.softLimitsUsed && !a.referenced)
-        return Refusal::NotReferenced; // R7
+    // Precondition I86 = 1 of MC_MoveAbsolute and R7: warned, not refused (LimitFlags).
+    if (!a.referenced && (kind == CommandKind::MoveAbsolute || c.softLimitsUsed))
+        plan.flags.notReferenced = true;
     if (kind == CommandKind::MoveAbsolute && c.endless) {
         if (p.position < 0 || p.position >= c.cycleLength)
             return Refusal::TargetOutsideCycle; // R3
@@ -239,8 +238,11 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
     case CommandKind::Reset:
         return plan;
     }
-    if (!plan.refused())
+    if (!plan.refused()) {
+        const bool notReferenced = plan.flags.notReferenced;
         plan.profile = clampProfile(p, config, &plan.flags);
+        plan.flags.notReferenced = notReferenced;
+    }
     return plan;
 }
 

@@ -86,8 +86,6 @@ QString refusalText(Refusal refusal)
         return Tr::tr("velocity, acceleration, deceleration or jerk is zero");
     case Refusal::ZeroAxisLimit:
         return Tr::tr("maximum acceleration or maximum jerk of the axis is zero");
-    case Refusal::NotReferenced:
-        return Tr::tr("axis not referenced");
     case Refusal::NotAtStandstill:
         return Tr::tr("axis not at standstill");
     case Refusal::HomingInactive:

@@ -51,7 +51,6 @@ enum class Refusal {
     HardwareLimitSwitch, // R4
     ZeroProfileValue, // R5, R5v, R5s
     ZeroAxisLimit, // R6 (I11 or I16 zero)
-    NotReferenced, // R7, and MC_MoveAbsolute unreferenced [I]
     NotAtStandstill, // R8
     HomingInactive, // R9
     StopActive, // R10
@@ -118,6 +117,11 @@ struct LimitFlags
     bool velocityLimited = false; // I190
     bool accelerationOrJerkLimited = false; // I191
     bool overrideLimited = false; // I193 (override > 100 % clamped at I10)
+    // [I] An absolute target, or software limits, on an axis not known to be referenced: the
+    // drive's present zero is taken as it is. A warning, not a refusal (the seed refuses with
+    // I86 = 0), because most drives cannot tell the tool whether they are referenced (CiA 402
+    // only in homing mode) and a drive homed before this connection would be refused for good.
+    bool notReferenced = false;
     friend bool operator==(const LimitFlags &, const LimitFlags &) = default;
 };
 
@@ -127,7 +131,7 @@ struct AxisSnapshot
     AxisState state = AxisState::Standstill;
     double position = 0.0;
     double velocity = 0.0;
-    bool referenced = true;
+    bool referenced = false; // homed, or the drive says so
     bool hardwareLimitPositive = false;
     bool hardwareLimitNegative = false;
     double brakingDistance = 0.0; // from the present velocity, for starts from motion

@@ -5,10 +5,10 @@
 // velocity) plus the braking distance. Times and positions come from the simulator's own clock
 // and axis through its control console, so test and pipe latencies are not part of the figures.
 #include "clirun.h"
+#include "simcontrol.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
-#include <QRegularExpression>
 #include <QTest>
 
 #include <csignal>
@@ -23,20 +23,14 @@ private Q_SLOTS:
     void jogEndsByItself_data();
     void jogEndsByItself();
     void moveEndsWithHeartbeatLost();
+    void moveHaltedElsewhereEnds_data();
+    void moveHaltedElsewhereEnds();
     void faultsInjectedAtStartAndWhileRunning();
     void consoleRefusesBadCommands();
 
 private:
     using Run = db::test::CliRun;
-    struct Sample
-    {
-        bool ok = false;
-        qint64 ms = 0; // the drive's clock
-        double position = 0;
-        double velocity = 0;
-        int statusword = 0;
-        QString line;
-    };
+    using Sample = db::test::SimControl::Sample;
 
     Run cli(const QStringList &args, int timeoutMs = 30000)
     {
@@ -48,57 +42,20 @@ private:
             ? QStringLiteral("refgo://127.0.0.1:%1").arg(m_refgoPort)
             : QStringLiteral("canopen+slcan://127.0.0.1:%1?node=50").arg(m_slcanPort);
     }
-    // Sends one console command and returns the first answer line starting with `answer`.
-    QString ask(const QString &command, const QString &answer, int timeoutMs = 3000);
-    Sample sample(const QString &command, const QString &answer, int timeoutMs = 3000);
+    QString ask(const QString &command, const QString &answer, int timeoutMs = 3000)
+    {
+        return m_control.ask(command, answer, timeoutMs);
+    }
+    Sample sample(const QString &command, const QString &answer, int timeoutMs = 3000)
+    {
+        return m_control.sample(command, answer, timeoutMs);
+    }
 
     QProcess m_sim;
-    QByteArray m_pending; // simulator output not consumed yet
+    db::test::SimControl m_control { m_sim };
     quint16 m_refgoPort = 0;
     quint16 m_slcanPort = 0;
 };
-
-QString TestCliFailsafe::ask(const QString &command, const QString &answer, int timeoutMs)
-{
-    m_sim.write(command.toUtf8() + '\n');
-    QElapsedTimer clock;
-    clock.start();
-    for (;;) {
-        qsizetype nl;
-        while ((nl = m_pending.indexOf('\n')) >= 0) {
-            const QString line = QString::fromUtf8(m_pending.left(nl)).trimmed();
-            m_pending.remove(0, nl + 1);
-            if (line.startsWith(answer) || line.startsWith(QLatin1String("error:")))
-                return line;
-        }
-        const qint64 left = timeoutMs - clock.elapsed();
-        if (left <= 0 || m_sim.state() != QProcess::Running)
-            return {};
-        m_sim.waitForReadyRead(int(left));
-        m_pending += m_sim.readAllStandardOutput();
-    }
-}
-
-// "state T position P velocity V statusword 0xSSSS", "standstill T position P",
-// "dropped N T position P velocity V".
-TestCliFailsafe::Sample TestCliFailsafe::sample(const QString &command, const QString &answer,
-                                                int timeoutMs)
-{
-    Sample s;
-    s.line = ask(command, answer, timeoutMs);
-    static const QRegularExpression re(
-        QStringLiteral("^\\w+ (?:\\d+ )?(\\d+) position (-?[\\d.]+)(?: velocity (-?[\\d.]+))?"
-                       "(?: statusword 0x([0-9A-F]{4}))?$"));
-    const auto m = re.match(s.line);
-    if (!m.hasMatch())
-        return s;
-    s.ok = true;
-    s.ms = m.captured(1).toLongLong();
-    s.position = m.captured(2).toDouble();
-    s.velocity = m.captured(3).toDouble();
-    s.statusword = m.captured(4).toInt(nullptr, 16);
-    return s;
-}
 
 void TestCliFailsafe::initTestCase()
 {
@@ -124,10 +81,14 @@ void TestCliFailsafe::jogEndsByItself_data()
 {
     QTest::addColumn<QString>("transport");
     QTest::addColumn<QString>("event");
+    QTest::addColumn<QString>("command");
     for (const char *transport : { "refgo", "canopen" }) {
         for (const char *event : { "SIGKILL", "SIGSTOP", "cable cut" })
             QTest::addRow("%s %s", transport, event)
-                << QString::fromLatin1(transport) << QString::fromLatin1(event);
+                << QString::fromLatin1(transport) << QString::fromLatin1(event) << "jog";
+        // `velocity` moves in leases too on a drive with profile position.
+        QTest::addRow("%s SIGKILL velocity", transport)
+            << QString::fromLatin1(transport) << QStringLiteral("SIGKILL") << "velocity";
     }
 }
 
@@ -135,6 +96,7 @@ void TestCliFailsafe::jogEndsByItself()
 {
     QFETCH(QString, transport);
     QFETCH(QString, event);
+    QFETCH(QString, command);
     const QString u = uri(transport);
     constexpr double kVelocity = 2000;
     constexpr double kRamp = 20000; // braking: 100 units in 100 ms
@@ -146,7 +108,7 @@ void TestCliFailsafe::jogEndsByItself()
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QProcess jog;
     jog.start(QStringLiteral(DRIVEBENCH_CLI),
-              { QStringLiteral("jog"), u, QStringLiteral("--vel"), QString::number(kVelocity),
+              { command, u, QStringLiteral("--vel"), QString::number(kVelocity),
                 QStringLiteral("--acc"), QString::number(kRamp), QStringLiteral("--dec"),
                 QString::number(kRamp), QStringLiteral("--time"), QStringLiteral("60000") });
     QVERIFY(jog.waitForStarted());
@@ -175,9 +137,10 @@ void TestCliFailsafe::jogEndsByItself()
     QVERIFY2(stood.ok, qPrintable(stood.line));
     const qint64 ms = stood.ms - at.ms;
     const double travel = stood.position - at.position;
-    qInfo("%s, %s: standstill %lld ms after the event, %.1f units travelled (at %.0f units/s; "
-          "lease + braking = %.0f units)",
-          qPrintable(transport), qPrintable(event), ms, travel, at.velocity, kLeaseTravel);
+    qInfo("%s, %s, %s: standstill %lld ms after the event, %.1f units travelled (at %.0f "
+          "units/s; lease + braking = %.0f units)",
+          qPrintable(command), qPrintable(transport), qPrintable(event), ms, travel, at.velocity,
+          kLeaseTravel);
     QVERIFY2(ms <= kStandstillWithinMs, qPrintable(QStringLiteral("%1 ms").arg(ms)));
     QVERIFY2(travel >= 0 && travel <= kLeaseTravel + 1,
              qPrintable(QStringLiteral("%1 -> %2").arg(at.position).arg(stood.position)));
@@ -243,6 +206,45 @@ void TestCliFailsafe::moveEndsWithHeartbeatLost()
     QCOMPARE(
         cli({ QStringLiteral("write"), u, QStringLiteral("1017:0"), QStringLiteral("0") }).exitCode,
         0);
+    cli({ QStringLiteral("reset"), u });
+    QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
+}
+
+// Another drivebench-cli halts the drive mid-move: the move ends at once with the cause, not
+// only when its --wait runs out.
+void TestCliFailsafe::moveHaltedElsewhereEnds_data()
+{
+    QTest::addColumn<QString>("transport");
+    QTest::newRow("refgo") << QStringLiteral("refgo");
+    QTest::newRow("canopen") << QStringLiteral("canopen");
+}
+
+void TestCliFailsafe::moveHaltedElsewhereEnds()
+{
+    QFETCH(QString, transport);
+    const QString u = uri(transport);
+    cli({ QStringLiteral("reset"), u });
+    QCOMPARE(cli({ QStringLiteral("enable"), u }).exitCode, 0);
+    const double from = m_control.state().position;
+    QProcess move;
+    move.start(QStringLiteral(DRIVEBENCH_CLI),
+               { QStringLiteral("move"), u, QStringLiteral("--abs"), QString::number(from + 500000),
+                 QStringLiteral("--vel"), QStringLiteral("2000"), QStringLiteral("--acc"),
+                 QStringLiteral("20000"), QStringLiteral("--dec"), QStringLiteral("20000"),
+                 QStringLiteral("--wait"), QStringLiteral("60000") });
+    QVERIFY(move.waitForStarted());
+    QTRY_VERIFY_WITH_TIMEOUT(qAbs(m_control.state().velocity - 2000) < 20, 10000);
+    const Run halted = cli({ QStringLiteral("halt"), u });
+    QVERIFY2(halted.exitCode == 0, qPrintable(halted.err));
+    QElapsedTimer since;
+    since.start();
+    QVERIFY(move.waitForFinished(5000));
+    const QString err = QString::fromUtf8(move.readAllStandardError());
+    qInfo("move ended %lld ms after the other halt finished: %s", since.elapsed(),
+          qPrintable(err.trimmed()));
+    QVERIFY2(move.exitCode() != 0, qPrintable(err));
+    QVERIFY2(err.contains(QLatin1String("short of the target")), qPrintable(err));
+    QVERIFY(m_control.standstill().ok);
     cli({ QStringLiteral("reset"), u });
     QCOMPARE(cli({ QStringLiteral("disable"), u }).exitCode, 0);
 }

@@ -36,6 +36,7 @@ private Q_SLOTS:
     void bootUpAndStateTracking();
     void heartbeatLostAfterConsumerTimeAndResumed();
     void noLossReportedWithoutConsumerTime();
+    void unconfiguredNodeWatchedWithLearnedTime();
     void nodeGuardToggleBitIsIgnored();
     void emcyMovingCapCodes_data();
     void emcyMovingCapCodes();
@@ -150,6 +151,40 @@ void TstCanopenServices::noLossReportedWithoutConsumerTime()
     m_bus->feed(0x732, "05"); // node 50 has no consumer time
     QVERIFY(!lost.wait(3 * kConsumerMs));
     QVERIFY(monitor.isAlive(50));
+}
+
+// A node nobody configured (found by a scan, or only heard) beating every 200 ms is watched with
+// three times that once two intervals were seen; its silence while lost is not learned. A node
+// beating fast is watched with at least kLearnedMinMs.
+void TstCanopenServices::unconfiguredNodeWatchedWithLearnedTime()
+{
+    NodeMonitor monitor(m_bus);
+    QSignalSpy lost(&monitor, &NodeMonitor::heartbeatLost);
+    QSignalSpy resumed(&monitor, &NodeMonitor::heartbeatResumed);
+    QTimer beat;
+    beat.setInterval(200);
+    connect(&beat, &QTimer::timeout, this, [this] { m_bus->feed(0x70A, "05"); });
+    m_bus->feed(0x70A, "05");
+    beat.start();
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.consumerTime(10) > 0, kWaitMs);
+    // (coarse timers may fire up to 5 % early)
+    QVERIFY2(monitor.consumerTime(10) >= 3 * 190 && monitor.consumerTime(10) < 3 * 200 * 3,
+             qPrintable(QString::number(monitor.consumerTime(10))));
+    QVERIFY(!lost.wait(3 * 200)); // beating: not lost
+    beat.stop();
+    const int learned = monitor.consumerTime(10);
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(lost.wait(kWaitMs));
+    QVERIFY(clock.elapsed() >= learned - 205);
+    QCOMPARE(lost.at(0).at(0).value<NodeId>(), NodeId(10));
+    m_bus->feed(0x70A, "05");
+    QCOMPARE(resumed.size(), 1);
+    QCOMPARE(monitor.consumerTime(10), learned); // the silence was not learned
+
+    for (int i = 0; i < 3; ++i) // a burst: three frames at once
+        m_bus->feed(0x70B, "05");
+    QCOMPARE(monitor.consumerTime(11), NodeMonitor::kLearnedMinMs);
 }
 
 void TstCanopenServices::nodeGuardToggleBitIsIgnored()

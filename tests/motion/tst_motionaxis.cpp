@@ -253,6 +253,58 @@ private Q_SLOTS:
         QCOMPARE(a->axis->state(), AxisState::Standstill);
         QCOMPARE(a->rig->drive().state(), cia402::State::OperationEnabled);
     }
+    // A CiA 402 drive that says nothing about its reference is not referenced: an absolute
+    // move runs with the warning. A homing references it, and a new axis on the drive, still in
+    // homing mode with bit 12, is referenced from the drive's word. Once the drive has left
+    // homing mode (bit 12 is the set-point acknowledge then) a new axis knows nothing again.
+    void referencedOnlyWhenHomedOrTold_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+    void referencedOnlyWhenHomedOrTold()
+    {
+        QFETCH(QString, kind);
+        auto a = makeAxis(kind);
+        QVERIFY(a && powerOn(a->axis.get()));
+        QTRY_VERIFY(a->cia->status().valid);
+        QVERIFY(!a->axis->isReferenced());
+        MotionCommand abs(a->axis.get(), CommandKind::MoveAbsolute);
+        abs.setParams(params(500));
+        abs.setExecute(true);
+        QVERIFY(abs.limits().notReferenced);
+        QTRY_COMPARE_WITH_TIMEOUT(abs.status(), Status::Done, 5000);
+        MotionCommand home(a->axis.get(), CommandKind::Home);
+        HomingParams h;
+        h.method = 35;
+        home.setHoming(h);
+        home.setExecute(true);
+        QVERIFY(!a->axis->isReferenced()); // not while the homing runs
+        QTRY_COMPARE_WITH_TIMEOUT(home.status(), Status::Done, 3000);
+        QVERIFY(a->axis->isReferenced());
+
+        Cia402Axis again(a->rig->connection.get());
+        again.setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor); // as the rig's
+        QVERIFY(await(again.initialize()).ok());
+        MotionAxis model(&again);
+        QTRY_VERIFY(again.status().valid);
+        QTRY_VERIFY(model.isReferenced()); // the drive, still in homing mode, says so
+        MotionCommand abs2(&model, CommandKind::MoveAbsolute);
+        abs2.setParams(params(-200));
+        abs2.setExecute(true);
+        QVERIFY(!abs2.limits().notReferenced);
+        QTRY_VERIFY2_WITH_TIMEOUT(abs2.status() == Status::Done, qPrintable(abs2.error().message()),
+                                  5000);
+
+        Cia402Axis third(a->rig->connection.get());
+        third.setAccelerationUnit(Cia402Axis::AccelerationUnit::RotaryMotor); // as the rig's
+        QVERIFY(await(third.initialize()).ok());
+        MotionAxis model3(&third);
+        QTRY_VERIFY(third.status().valid);
+        QTRY_VERIFY(model3.state() != AxisState::Disabled); // a few rounds seen
+        QVERIFY(!model3.isReferenced()); // in profile position mode: bit 12 says nothing
+    }
     void homeSetsReference()
     {
         auto a = makeAxis(QStringLiteral("sim"));

@@ -95,8 +95,9 @@ private Q_SLOTS:
         QTest::addColumn<bool>("success");
         QTest::addColumn<bool>("quickStop");
         const AxisConfig base;
-        const AxisSnapshot still;
-        AxisSnapshot moving;
+        AxisSnapshot still;
+        still.referenced = true;
+        AxisSnapshot moving = still;
         moving.state = AxisState::DiscreteMotion;
         moving.velocity = 50;
         AxisConfig endless = base;
@@ -150,13 +151,11 @@ private Q_SLOTS:
             << vel << zeroVelocity << base << still << none << false << false;
         QTest::newRow("R6 I16 = 0")
             << abs << move(10) << noJerk << still << int(Refusal::ZeroAxisLimit) << false << false;
+        // R7 and the I86 precondition are warnings here (notReferencedIsWarned).
         QTest::newRow("D-13 R7 unreferenced, soft limits")
-            << rel << move(10) << limited << unreferenced << int(Refusal::NotReferenced) << false
-            << false;
-        QTest::newRow("D-13 no soft limits")
-            << rel << move(10) << base << unreferenced << none << false << false;
-        QTest::newRow("abs unreferenced [I]") << abs << move(10) << base << unreferenced
-                                              << int(Refusal::NotReferenced) << false << false;
+            << rel << move(10) << limited << unreferenced << none << false << false;
+        QTest::newRow("abs unreferenced [I]")
+            << abs << move(10) << base << unreferenced << none << false << false;
         QTest::newRow("R2 direction") << rel << move(-10) << positiveOnly << still
                                       << int(Refusal::DirectionNotPermitted) << false << false;
         MoveParams backwards = move(0);
@@ -274,6 +273,40 @@ private Q_SLOTS:
         QCOMPARE(out.deceleration, 50.0);
         QCOMPARE(out.jerk, 1000.0);
         QVERIFY(f.accelerationOrJerkLimited); // I191
+    }
+    // An axis not known to be referenced: absolute targets, and any positioning with software
+    // limits, run with the warning flag; relative moves without software limits and a
+    // referenced axis have none.
+    void notReferencedIsWarned_data()
+    {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<bool>("softLimits");
+        QTest::addColumn<bool>("referenced");
+        QTest::addColumn<bool>("warned");
+        const auto abs = int(CommandKind::MoveAbsolute);
+        const auto rel = int(CommandKind::MoveRelative);
+        QTest::newRow("abs") << abs << false << false << true;
+        QTest::newRow("abs referenced") << abs << false << true << false;
+        QTest::newRow("rel, soft limits (R7)") << rel << true << false << true;
+        QTest::newRow("rel, no soft limits") << rel << false << false << false;
+        QTest::newRow("rel, soft limits, referenced") << rel << true << true << false;
+    }
+    void notReferencedIsWarned()
+    {
+        QFETCH(int, kind);
+        QFETCH(bool, softLimits);
+        QFETCH(bool, referenced);
+        QFETCH(bool, warned);
+        AxisConfig c;
+        c.softLimitsUsed = softLimits;
+        c.softLimitNegative = -1000;
+        c.softLimitPositive = 1000;
+        AxisSnapshot a;
+        a.referenced = referenced;
+        const Plan plan = planCommand(CommandKind(kind), move(10), c, a, 0);
+        QCOMPARE(int(plan.refusal), int(Refusal::None));
+        QCOMPARE(plan.flags.notReferenced, warned);
+        QCOMPARE(plan.flags.velocityLimited, false); // the profile clamp keeps the warning apart
     }
     void homingClampedWithoutFlags() // D-16
     {

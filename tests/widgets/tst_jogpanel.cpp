@@ -122,6 +122,8 @@ private Q_SLOTS:
         QVERIFY(!powered->isOn());
         QVERIFY(enable(*b));
         QTRY_VERIFY(powered->isOn());
+        // A MovingCap needs no homing: referenced from the start.
+        QVERIFY(b->panel->findChild<Lamp *>(QStringLiteral("referenced"))->isOn());
         QTest::mouseClick(b->button("disable"), Qt::LeftButton);
         QTRY_COMPARE(b->panel->motionAxis()->state(), AxisState::Disabled);
         QTRY_VERIFY(!powered->isOn());
@@ -243,6 +245,40 @@ private Q_SLOTS:
         // Its own profile ended the move: no quick stop, still enabled.
         QCOMPARE(b->demo->drive().state(), cia402::State::OperationEnabled);
         QTest::mouseRelease(b->button("jogPlus"), Qt::LeftButton);
+    }
+
+    // MC_MoveVelocity from the form moves in leases, like a jog: the GUI freezes, and the drive
+    // stops by itself at the last lease's end; Halt from the form ends a running one.
+    void formVelocityIsLeased()
+    {
+        auto b = makeBench();
+        QVERIFY(b && enable(*b));
+        b->panel->motionAxis()->setWatchdogTimeout(0);
+        MotionForm *form = b->panel->motionForm();
+        form->selectCommand(CommandKind::MoveVelocity);
+        form->findChild<QDoubleSpinBox *>(QStringLiteral("velocity"))->setValue(-3000);
+        form->execute();
+        motion::LeasedMove *lease = b->panel->leasedMove();
+        QVERIFY(lease->isRenewing());
+        QCOMPARE(lease->direction(), -1);
+        QTRY_VERIFY_WITH_TIMEOUT(b->axis().position() < -3 * 3000 * 0.3, kMoveMs);
+        QVERIFY2(form->statusText().contains(QLatin1String("MC_MoveVelocity in leases")),
+                 qPrintable(form->statusText()));
+        b->panel->findChild<QTimer *>(QStringLiteral("keepAliveTimer"))->stop();
+        lease->renewTimer()->stop();
+        const double target = lease->lastTarget();
+        QTRY_VERIFY_WITH_TIMEOUT(!b->axis().isMoving(), int(lease->leaseTimeMs()) + 250);
+        QVERIFY2(qAbs(b->axis().position() - target) < 2,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(b->axis().position()).arg(target)));
+
+        b->panel->findChild<QTimer *>(QStringLiteral("keepAliveTimer"))->start();
+        form->execute();
+        QVERIFY(lease->isRenewing());
+        QTRY_VERIFY_WITH_TIMEOUT(b->axis().isMoving(), kMoveMs);
+        form->halt();
+        QVERIFY(!lease->isRenewing());
+        QTRY_VERIFY_WITH_TIMEOUT(!b->axis().isMoving(), kMoveMs);
+        QCOMPARE(b->demo->drive().state(), cia402::State::OperationEnabled);
     }
 
     void canopenEnableArmsSupervision()

@@ -74,6 +74,7 @@ void JogPanel::teardown()
     m_connectionSignals.clear();
     m_keepAlive->stop();
     releaseSupervision();
+    m_form->setLease(nullptr);
     m_form->setAxis(nullptr);
     m_blocks->setAxis(nullptr);
     m_power.reset();
@@ -125,6 +126,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
     if (canopen::DriveSupervision::modeFor(connection) != canopen::DriveSupervision::Mode::None)
         m_driveSupervision = std::make_unique<canopen::DriveSupervision>(connection);
     m_form->setAxis(m_motion.get());
+    m_form->setLease(m_lease.get());
     m_form->setFeatures(m_cia->features());
     if (const ObjectDef *method = dict.find(cia402::obj::HomingMethod))
         m_form->setHomingMethods(method->enumeration);

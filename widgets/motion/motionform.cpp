@@ -335,6 +335,24 @@ MotionCommand *MotionForm::command(CommandKind kind)
     return c;
 }
 
+void MotionForm::setLease(LeasedMove *lease)
+{
+    if (m_lease)
+        disconnect(m_lease->command(), nullptr, this, nullptr);
+    m_lease = lease;
+    if (!lease)
+        return;
+    connect(lease->command(), &MotionCommand::statusChanged, this, [this] {
+        if (m_lease && m_last == m_lease->command())
+            showStatus();
+    });
+}
+
+bool MotionForm::velocityIsLeased() const
+{
+    return m_lease && (m_features & AxisInterface::Feature::ProfilePosition);
+}
+
 void MotionForm::start(CommandKind kind)
 {
     MotionCommand *c = command(kind);
@@ -345,6 +363,13 @@ void MotionForm::start(CommandKind kind)
         p.deceleration = std::max(p.deceleration, m_deceleration->minimum());
     if (refusesInput(kind, p))
         return;
+    if (kind == CommandKind::MoveVelocity && velocityIsLeased()) {
+        m_lease->jog(p.velocity >= 0 ? 1 : -1, p);
+        m_last = m_lease->command();
+        showStatus();
+        Q_EMIT started(m_last);
+        return;
+    }
     c->setParams(p);
     c->setHoming(homing());
     m_last = c;
@@ -408,11 +433,13 @@ void MotionForm::showStatus()
     if (!m_last)
         return;
     const MotionCommand *c = m_last;
-    QString text = QStringLiteral("%1: %2").arg(c->name(), statusName(c->status()));
+    const bool leased = m_lease && c == m_lease->command();
+    QString text = QStringLiteral("%1: %2").arg(
+        leased ? tr("MC_MoveVelocity in leases") : c->name(), statusName(c->status()));
     if (c->status() == MotionCommand::Status::Error
         || c->status() == MotionCommand::Status::CommandAborted)
         text += QStringLiteral(" — ") + c->error().message();
-    else if (isPositioning(c->kind()) && c->status() != MotionCommand::Status::Idle)
+    else if (isPositioning(c->kind()) && !leased && c->status() != MotionCommand::Status::Idle)
         text += tr(" (target %1)").arg(c->target(), 0, 'f', 1);
     m_status->setText(text);
     const QColor color = c->status() == MotionCommand::Status::Error ? style::errorColor()
@@ -427,6 +454,8 @@ void MotionForm::showStatus()
         flags << tr("override clamped at the maximum velocity");
     if (c->limits().accelerationOrJerkLimited)
         flags << tr("acceleration or jerk limited");
+    if (c->limits().notReferenced)
+        flags << tr("axis not referenced: positions count from the drive's present zero");
     m_flags->setText(flags.join(QStringLiteral("; ")));
     m_flags->setVisible(!flags.isEmpty());
 }

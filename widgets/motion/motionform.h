@@ -1,5 +1,6 @@
 #pragma once
 
+#include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
 
 #include <QHash>
@@ -34,6 +35,11 @@ public:
 
     // May be null. The axis is not owned.
     void setAxis(motion::MotionAxis *axis);
+    // The lease that MC_MoveVelocity runs in (may be null, not owned): on a drive with profile
+    // position, a velocity command from the form moves in leases renewed while it runs, like a
+    // jog, so that the drive stops by itself when the renewals stop; Stop and Halt end it.
+    // Without profile position it is the drive's MC_MoveVelocity, which nothing bounds.
+    void setLease(motion::LeasedMove *lease);
     // Field ranges from the axis configuration; units for the suffixes.
     void setLimits(const motion::AxisConfig &config, const QString &positionUnit,
                    const QString &velocityUnit);
@@ -76,11 +82,13 @@ private:
     void updateFields();
     void start(motion::CommandKind kind);
     bool refusesInput(motion::CommandKind kind, const motion::MoveParams &params);
+    bool velocityIsLeased() const;
     void showStatus();
 
     QPointer<motion::MotionAxis> m_axis;
     QHash<int, motion::MotionCommand *> m_commands;
     QPointer<motion::MotionCommand> m_last;
+    QPointer<motion::LeasedMove> m_lease;
     motion::AxisInterface::Features m_features;
 
     QComboBox *m_command = nullptr;
