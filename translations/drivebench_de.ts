@@ -1040,10 +1040,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>move erwartet genau eines von --abs, --rel, --add</translation>
     </message>
     <message>
-        <source>jog needs --vel V (signed) and --time MS</source>
-        <translation>jog braucht --vel V (mit Vorzeichen) und --time MS</translation>
-    </message>
-    <message>
         <source>--time takes 1..%1 ms</source>
         <translation>--time erwartet 1..%1 ms</translation>
     </message>
@@ -1599,20 +1595,12 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Schreiben von %1</translation>
     </message>
     <message>
-        <source>velocity needs --vel V (signed) and --time MS</source>
-        <translation>velocity braucht --vel V (mit Vorzeichen) und --time MS</translation>
-    </message>
-    <message>
         <source>  node %1: %2</source>
         <translation>  Knoten %1: %2</translation>
     </message>
     <message>
         <source>scanned nodes 1..127 on %1 in %2 ms</source>
         <translation>Knoten 1..127 an %1 in %2 ms abgefragt</translation>
-    </message>
-    <message>
-        <source>drivebench-cli: warning: nothing on the drive&apos;s side stops MC_MoveVelocity if drivebench-cli dies on this connection (jog moves in leases)</source>
-        <translation>drivebench-cli: Warnung: auf dieser Verbindung hält nichts auf der Seite des Antriebs MC_MoveVelocity an, wenn drivebench-cli abstürzt (jog fährt mit Freigaben auf Zeit)</translation>
     </message>
     <message>
         <source>nm17x settings: inputs F/G: standard, takten, externposi or off.</source>
@@ -1673,6 +1661,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>%1 = %2 mm/rev at %3 steps/rev</source>
         <translation>%1 = %2 mm/U bei %3 Schritten/U</translation>
+    </message>
+    <message>
+        <source>drivebench-cli: warning: the axis is not known to be referenced (no homing seen, and the drive does not tell): positions count from the drive&apos;s present zero</source>
+        <translation>drivebench-cli: Warnung: Es ist nicht bekannt, ob die Achse referenziert ist (keine Referenzfahrt gesehen, und der Antrieb sagt es nicht): Positionen zählen vom jetzigen Nullpunkt des Antriebs</translation>
+    </message>
+    <message>
+        <source>%1 needs --vel V (signed) and --time MS</source>
+        <translation>%1 braucht --vel V (mit Vorzeichen) und --time MS</translation>
+    </message>
+    <message>
+        <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
+        <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
     </message>
 </context>
 <context>
@@ -4474,10 +4474,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>maximale Beschleunigung oder maximaler Ruck der Achse ist null</translation>
     </message>
     <message>
-        <source>axis not referenced</source>
-        <translation>Achse nicht referenziert</translation>
-    </message>
-    <message>
         <source>axis not at standstill</source>
         <translation>Achse nicht im Stillstand</translation>
     </message>
@@ -4508,6 +4504,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>mode change while moving</source>
         <translation>Betriebsartwechsel während der Bewegung</translation>
+    </message>
+    <message>
+        <source>%1: the drive stopped at %2, short of the target %3 (halted by another program or the drive itself)</source>
+        <translation>%1: Der Antrieb hat bei %2 angehalten, vor dem Ziel %3 (angehalten von einem anderen Programm oder vom Antrieb selbst)</translation>
     </message>
 </context>
 <context>
@@ -5329,9 +5329,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>connecting to %1 again (the inverter may be starting up)</source>
         <translation>erneutes Verbinden mit %1 (der Umrichter startet eventuell gerade)</translation>
     </message>
-</context>
-<context>
-    <name>db::vabus</name>
     <message>
         <source>VABus server</source>
         <translation>VABus-Server</translation>
@@ -6923,6 +6920,14 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Lowered to this drive&apos;s limits: %1</source>
         <translation>Auf die Grenzen dieses Antriebs gesenkt: %1</translation>
+    </message>
+    <message>
+        <source>MC_MoveVelocity in leases</source>
+        <translation>MC_MoveVelocity in befristeten Abschnitten</translation>
+    </message>
+    <message>
+        <source>axis not referenced: positions count from the drive&apos;s present zero</source>
+        <translation>Achse nicht referenziert: Positionen zählen vom jetzigen Nullpunkt des Antriebs</translation>
     </message>
 </context>
 <context>
