@@ -53,6 +53,27 @@ ENUMS = {
            6: 'homing', 253: 'electronic gear: slave', 254: 'move away from limit switch',
            255: 'table travel record'},
 }
+# The selections in German, with the terms of the German parameter descriptions.
+ENUMS_DE = {
+    388: {0: 'keine Reaktion', 1: 'Störung', 2: 'Abschalten', 3: 'Schnellhalt',
+          4: 'Stillsetzen + Störung', 5: 'Schnellhalt + Störung'},
+    392: {0: 'freier Auslauf', 1: 'Gleichstrombremse', 2: 'Rampe'},
+    412: {0: 'Steuerung über Kontakte', 1: 'Steuerung über Statemachine',
+          2: 'Steuerung über Remote-Kontakte'},
+    414: {0: 'Datensatzumschaltung über Kontakte', 1: 'Datensatz 1', 2: 'Datensatz 2',
+          3: 'Datensatz 3', 4: 'Datensatz 4',
+          5: 'Umschaltung über Kontakte, wenn nicht freigegeben'},
+    434: {1: 'interner Frequenzsollwert', 2: 'Liniensollwert',
+          3: 'interner Frequenzsollwert + Liniensollwert'},
+    1122: {0: 'aus', 1: 'Drehgeber 1', 2: 'Drehgeber 2/Resolver',
+           11: 'RxPDO1.Long1 extrapoliert'},
+    1180: {0: 'aus'},
+    1436: {0: 'deaktiviert', 1: 'aktiviert'},
+    1437: {0: 'übernehmen', 1: 'IP-Einstellungen neu laden'},
+    1454: {0: 'kein Override', 1: 'Profilpositionierung', 2: 'Geschwindigkeit',
+           3: 'Profilgeschwindigkeit', 6: 'Referenzfahrt', 253: 'elektronisches Getriebe: Slave',
+           254: 'Endschalter freifahren', 255: 'Tabellenfahrsatz'},
+}
 # Bits of the status and control words.
 BITS = {
     411: ['ready to switch on', 'switched on', 'operation enabled', 'fault', 'voltage enabled',
@@ -61,6 +82,15 @@ BITS = {
           None, 'warning 2'],
     410: ['switch on', 'enable voltage', 'quick stop', 'enable operation', 'mode specific 4',
           'mode specific 5', 'mode specific 6', 'fault reset', 'halt', 'mode specific 9'],
+}
+BITS_DE = {
+    411: ['Einschaltbereit', 'Eingeschaltet', 'Betrieb freigegeben', 'Fehler',
+          'Spannung freigegeben', 'Schnellhalt', 'Einschalten gesperrt', 'Warnung',
+          'herstellerabhängig', 'Remote', 'Ziel erreicht', 'interner Grenzwert aktiv',
+          'betriebsartabhängig 12', 'betriebsartabhängig 13', None, 'Warnung 2'],
+    410: ['Einschalten', 'Spannung freigeben', 'Schnellhalt', 'Betrieb freigeben',
+          'betriebsartabhängig 4', 'betriebsartabhängig 5', 'betriebsartabhängig 6',
+          'Fehler rücksetzen', 'Halt', 'betriebsartabhängig 9'],
 }
 # Groups for the editor, by parameter number.
 GROUPS = [
@@ -164,8 +194,10 @@ def group(n):
 
 
 def warning_bits():
-    """Bit names of the warning words 270 and 274 from the fault table (P270:0x0001, ...)."""
+    """Bit names of the warning words 270 and 274 from the fault table (P270:0x0001, ...), in
+    English and in German."""
     bits = {270: [None] * 16, 274: [None] * 16}
+    bits_de = {270: [None] * 16, 274: [None] * 16}
     with open(os.path.join(SPECS, 'vabus_faults.csv'), newline='') as f:
         for row in csv.DictReader(f):
             m = re.fullmatch(r'P(270|274):0x([0-9A-Fa-f]{4})', row['code'])
@@ -175,11 +207,24 @@ def warning_bits():
             name = row['name'].split(' / ')[-1].strip()
             if mask and not mask & (mask - 1) and name.lower() != 'reserved':
                 bits[int(m.group(1))][mask.bit_length() - 1] = name
-    return bits
+                bits_de[int(m.group(1))][mask.bit_length() - 1] = german_warning(
+                    row['name'].split(' / ')[0].strip(), int(m.group(1)), mask)
+    return bits, bits_de
+
+
+def german_warning(text, word, mask):
+    """A warning bit's German name: the table's text without the keypad code ("BELT - ")."""
+    if word == 270 and mask == 0x8000:
+        return 'Warnstatus Applikation (274 lesen)'
+    text = text.split(' - ', 1)[-1] if word == 274 else text
+    return text.replace('Rechts', 'rechts').replace('Links', 'links').replace(
+        'SW Endschalter', 'SW-Endschalter').replace('HW Endschalter', 'HW-Endschalter').replace('Benutzer Warnung', 'Benutzerwarnung')
 
 
 def main():
-    BITS.update(warning_bits())
+    english, german_bits = warning_bits()
+    BITS.update(english)
+    BITS_DE.update(german_bits)
     objects = []
     with open(os.path.join(SPECS, 'vabus_parameters.csv'), newline='') as f:
         for row in csv.DictReader(f):
@@ -221,8 +266,12 @@ def main():
                 base['max'] = hi
             if n in ENUMS:
                 base['enum'] = {str(k): v for k, v in ENUMS[n].items()}
+            if n in ENUMS_DE:
+                base['enum_de'] = {str(k): v for k, v in ENUMS_DE[n].items()}
             if n in BITS:
-                base['bits'] = [dict(bit=i, name=b) for i, b in enumerate(BITS[n]) if b]
+                base['bits'] = [dict(bit=i, name=b, **({'name_de': BITS_DE[n][i]}
+                                                       if BITS_DE.get(n) and BITS_DE[n][i] else {}))
+                                for i, b in enumerate(BITS[n]) if b]
             base['storable'] = access == 'rw' and n not in VOLATILE and 'index' not in row['datasets']
             if n in TRACE:
                 base['trace'] = True

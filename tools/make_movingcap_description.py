@@ -5,7 +5,8 @@ and 7), with the spec's readings of the manual's gaps and errata applied (see FI
 
 Run from the repository root:  python3 tools/make_movingcap_description.py
 (--clean: only drop the notes about the sources from the descriptions of the existing file, which
-has objects added by hand since it was generated.)
+has objects added by hand since it was generated; --german: only add the German value and bit
+names to the existing file.)
 """
 import csv
 import re
@@ -160,6 +161,90 @@ def drop_notes(text):
     return text
 
 
+# Value and bit names in German: the terms of the drive's German manual where it gives German
+# ones, the German CiA 402 terms otherwise. Names that stay the same (IN1, Rabbit) are left out.
+ENUM_DE = {
+    'No mode': 'kein Modus', 'Profile position': 'Positionierbetrieb',
+    'Velocity': 'Drehzahlbetrieb', 'Homing': 'Referenzierbetrieb',
+    'Disable drive function': 'Antrieb direkt abschalten',
+    'Slow down ramp, then switch on disabled': 'Bremsrampe, dann Einschalten gesperrt',
+    'Quick stop ramp, then switch on disabled': 'Schnellhaltrampe, dann Einschalten gesperrt',
+    'Slow down ramp, stay in quick stop': 'Bremsrampe, dann im Schnellhalt bleiben',
+    'Quick stop ramp, stay in quick stop': 'Schnellhaltrampe, dann im Schnellhalt bleiben',
+    'Set zero (35)': 'Nullposition setzen (35)', 'Set zero (37)': 'Nullposition setzen (37)',
+    'Hard stop positive': 'Anschlagsreferenzierung positiv',
+    'Hard stop negative': 'Anschlagsreferenzierung negativ',
+    'None': 'keine', 'Statusword 6041h monitor': 'Statusword-6041h-Monitor',
+    'Error register 1002h monitor': 'Error-Register-1002h-Monitor',
+    'Limit monitoring right/left': 'Limitüberwachung rechts / links',
+    'Position feedback': 'Rückmeldung zur Positionierung',
+    'Drive without fault or warning': 'Antrieb ohne Fehler / Warnung',
+    'Position and status feedback': 'Rückmeldung Position und Status',
+    'No action': 'keine Aktion', 'Fault': 'Störung', 'Disable voltage': 'Spannung sperren',
+    'Quick stop': 'Schnellhalt', 'Pre-operational': 'nach Pre-Operational',
+    'No change': 'keine Änderung', 'Stopped': 'nach Stopped',
+}
+BIT_DE = {
+    'ready to switch on': 'Einschaltbereit', 'switched on': 'Eingeschaltet',
+    'operation enabled': 'Betrieb freigegeben', 'fault': 'Fehler',
+    'voltage enabled': 'Spannung freigegeben', 'quick stop': 'Schnellhalt',
+    'switch on disabled': 'Einschalten gesperrt', 'warning': 'Warnung',
+    'drive moving': 'Antrieb in Bewegung', 'remote': 'Remote', 'target reached': 'Ziel erreicht',
+    'internal limit active': 'interner Grenzwert aktiv',
+    'set-point acknowledge / homing attained': 'Sollwert quittiert / Referenz erreicht',
+    'following error / homing error': 'Schleppfehler / Referenzierfehler',
+    'switch on': 'Einschalten', 'enable voltage': 'Spannung freigeben',
+    'quick stop (active low)': 'Schnellhalt (nullaktiv)', 'enable operation': 'Betrieb freigeben',
+    'new set-point / start homing': 'neuer Sollwert / Referenzfahrt starten',
+    'change set immediately': 'Sollwert sofort übernehmen', 'relative': 'relativ',
+    'fault reset': 'Fehler rücksetzen', 'halt': 'Halt',
+    'generic': 'allgemein', 'current': 'Strom', 'voltage': 'Spannung',
+    'temperature': 'Temperatur', 'communication': 'Kommunikation',
+    'device profile specific': 'geräteprofilspezifisch', 'manufacturer': 'herstellerspezifisch',
+    'Error over volt (Uzk)': 'Fehler Überspannung (Uzk)',
+    'Error under volt (Uzk)': 'Fehler Unterspannung (Uzk)', 'Error Ack': 'Quittierungsfehler',
+    'Error over temp': 'Fehler Übertemperatur', 'Error I2T / Derating': 'Fehler I2T / Derating',
+    'Abort connection': 'Verbindungsabbruch', 'Error stroke': 'Fehler Blockade / Schleppfehler',
+    'Error communication': 'Fehler Motorkommunikation', 'Error Sensor': 'Fehler Sensor',
+    'Error Hardware / Software Enable': 'Fehler HW-/SW-Enable',
+    'Error Over Current': 'Fehler Überstrom',
+    'Error External Force / Torque': 'Fehler externe Kraft / externes Moment',
+    'Error Needs Voltage Reset': 'Fehler: Spannungsreset nötig', 'Warning Sensor': 'Warnung Sensor',
+    'off during acceleration': 'aus beim Beschleunigen',
+    'off during deceleration': 'aus beim Bremsen',
+    'off at constant velocity': 'aus bei konstanter Geschwindigkeit',
+    'following error off': 'Schleppfehler aus',
+}
+
+
+# Units that are words.
+UNIT_DE = {'units': 'Einheiten', 'units/s': 'Einheiten/s'}
+
+
+def add_german(obj):
+    """Adds the German names of obj's enumeration ("enum_de"), bits ("name_de") and unit
+    ("unit_de")."""
+    if obj.get('unit') in UNIT_DE:
+        obj['unit_de'] = UNIT_DE[obj['unit']]
+    german = {k: ENUM_DE[v] for k, v in obj.get('enum', {}).items() if v in ENUM_DE}
+    if german:
+        obj['enum_de'] = german
+    for bit in obj.get('bits', []):
+        if bit['name'] in BIT_DE:
+            bit['name_de'] = BIT_DE[bit['name']]
+
+
+def german_json(path):
+    """Applies add_german() to every object of an existing description file in place."""
+    with open(path, encoding='utf-8') as f:
+        doc = json.load(f)
+    for obj in doc['objects']:
+        add_german(obj)
+    with open(path, 'w', encoding='utf-8') as f:
+        json.dump(doc, f, indent=1, ensure_ascii=False)
+        f.write('\n')
+
+
 def clean_json(path):
     """Applies drop_notes() to every description of an existing description file in place."""
     with open(path, encoding='utf-8') as f:
@@ -234,6 +319,8 @@ def main():
         obj.setdefault('pdo', False)
         obj.setdefault('trace', False)
         objects.append(obj)
+    for obj in objects:
+        add_german(obj)
     objects.sort(key=lambda o: (int(o['index'], 16), o['sub']))
 
     errors = []
@@ -266,5 +353,7 @@ def main():
 if __name__ == '__main__':
     if sys.argv[1:2] == ['--clean']:
         clean_json(OUT)
+    elif sys.argv[1:2] == ['--german']:
+        german_json(OUT)
     else:
         main()

@@ -3787,6 +3787,22 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1: error #%2: %3</source>
         <translation>%1: Fehler #%2: %3</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; must map values to texts</source>
+        <translation>„%1“ muss Werten Texte zuordnen</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: %2 is not a value of &quot;enum&quot;</source>
+        <translation>„%1“: %2 ist kein Wert von „enum“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the text of %2 must be a non-empty text</source>
+        <translation>„%1“: der Text von %2 muss ein nicht leerer Text sein</translation>
+    </message>
+    <message>
+        <source>bit #%1: %2</source>
+        <translation>Bit #%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::description</name>
@@ -6331,6 +6347,41 @@ send 605 40 08 10 00</translation>
         <source>Lowered to this drive&apos;s limits: %1</source>
         <translation>Auf die Grenzen dieses Antriebs gesenkt: %1</translation>
     </message>
+    <message>
+        <source>Disabled</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Disabled (gesperrt)</translation>
+    </message>
+    <message>
+        <source>Standstill</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Standstill (Stillstand)</translation>
+    </message>
+    <message>
+        <source>Discrete Motion</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Discrete Motion (Positionierung)</translation>
+    </message>
+    <message>
+        <source>Continuous Motion</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Continuous Motion (Endlosbewegung)</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Stopping (Stoppen)</translation>
+    </message>
+    <message>
+        <source>ErrorStop</source>
+        <comment>PLCopen axis state</comment>
+        <translation>ErrorStop (Fehlerstopp)</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Homing (Referenzfahrt)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::LogConsole</name>
@@ -6774,10 +6825,6 @@ send 605 40 08 10 00</translation>
         <translation>Richtung beibehalten</translation>
     </message>
     <message>
-        <source>Bewegungsrichtung: used by MC_MoveAbsolute on an endless axis</source>
-        <translation>Bewegungsrichtung: von MC_MoveAbsolute bei einer Endlosachse verwendet</translation>
-    </message>
-    <message>
         <source> ‰ rated</source>
         <translation> ‰ Nennwert</translation>
     </message>
@@ -6928,6 +6975,10 @@ send 605 40 08 10 00</translation>
     <message>
         <source>axis not referenced: positions count from the drive&apos;s present zero</source>
         <translation>Achse nicht referenziert: Positionen zählen vom jetzigen Nullpunkt des Antriebs</translation>
+    </message>
+    <message>
+        <source>Direction of travel: used by MC_MoveAbsolute on an endless axis</source>
+        <translation>Bewegungsrichtung: wirkt bei MC_MoveAbsolute auf einer Endlosachse</translation>
     </message>
 </context>
 <context>

@@ -104,8 +104,8 @@ int nm17xSettings(Context &c, Nm17xLine &line)
                   .arg(v)
                   .arg(pitchOf(quint32(v), *steps) / 100.0, 0, 'f', 2)
                   .arg(*steps)
-            : def->displayText(def->type == DataType::Integer32 ? QVariant(qlonglong(v))
-                                                                : QVariant(qulonglong(v)));
+            : def->localDisplayText(def->type == DataType::Integer32 ? QVariant(qlonglong(v))
+                                                                     : QVariant(qulonglong(v)));
         c.out << QStringLiteral("  %1 %2: %3").arg(address.toString(), def->name, text) << Qt::endl;
     }
     return ExitOk;

@@ -92,7 +92,7 @@ QList<StatusValue> AcuStatusSource::actualValues() const
     };
     for (ObjectAddress address : m_actualValues) {
         const ObjectDef *def = connection() ? connection()->dictionary().find(address) : nullptr;
-        const QString name = def ? def->name : QString();
+        const QString name = def ? def->displayName() : QString();
         values.append(makeValue(keys.value(address.index),
                                 QStringLiteral("%1 (%2):").arg(name).arg(address.index), address));
     }
@@ -150,7 +150,7 @@ QStringList AcuStatusSource::warnings() const
             if (def) {
                 for (const BitField &field : def->bitFields) {
                     if (field.bit == bit)
-                        name = field.name;
+                        name = field.displayName();
                 }
             }
             names.append(name);

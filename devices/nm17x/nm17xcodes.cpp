@@ -12,6 +12,17 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Nm17x)
 };
+BitText bitText(int bit, const char *english)
+{
+    return { bit, Tr::tr(english), QString::fromLatin1(english) };
+}
+
+DisplayError displayError(int bit, const char *code, const char *text, const char *remedy)
+{
+    return { bit, QString::fromLatin1(code), Tr::tr(text), Tr::tr(remedy),
+             QString::fromLatin1(text) };
+}
+
 // Display priority, highest first, by 204Eh:02 bit.
 constexpr int kPriority[] = { 12, 13, 3, 0, 1, 2, 4, 5, 8, 9, 10, 11 };
 } // namespace
@@ -19,50 +30,62 @@ constexpr int kPriority[] = { 12, 13, 3, 0, 1, 2, 4, 5, 8, 9, 10, 11 };
 QList<BitText> statusBits()
 {
     return {
-        { 0, Tr::tr("Moving") },
-        { 1, Tr::tr("Manual positioning abort") },
-        { 2, Tr::tr("Oscillation active") },
-        { 3, Tr::tr("Takten active") },
-        { 4, Tr::tr("ExternPosi active") },
-        { 5, Tr::tr("Left key pressed") },
-        { 6, Tr::tr("Right key pressed") },
-        { 8, Tr::tr("Speed output IN4") },
-        { 9, Tr::tr("Speed output IN3") },
-        { 10, Tr::tr("Direction output IN2 (right)") },
-        { 11, Tr::tr("Direction output IN1 (left)") },
-        { 12, Tr::tr("Arrows active") },
-        { 14, Tr::tr("Error") },
-        { 15, Tr::tr("In Position") },
+        bitText(0, QT_TRANSLATE_NOOP("Nm17x", "Moving")),
+        bitText(1, QT_TRANSLATE_NOOP("Nm17x", "Manual positioning abort")),
+        bitText(2, QT_TRANSLATE_NOOP("Nm17x", "Oscillation active")),
+        bitText(3, QT_TRANSLATE_NOOP("Nm17x", "Takten active")),
+        bitText(4, QT_TRANSLATE_NOOP("Nm17x", "ExternPosi active")),
+        bitText(5, QT_TRANSLATE_NOOP("Nm17x", "Left key pressed")),
+        bitText(6, QT_TRANSLATE_NOOP("Nm17x", "Right key pressed")),
+        bitText(8, QT_TRANSLATE_NOOP("Nm17x", "Speed output IN4")),
+        bitText(9, QT_TRANSLATE_NOOP("Nm17x", "Speed output IN3")),
+        bitText(10, QT_TRANSLATE_NOOP("Nm17x", "Direction output IN2 (right)")),
+        bitText(11, QT_TRANSLATE_NOOP("Nm17x", "Direction output IN1 (left)")),
+        bitText(12, QT_TRANSLATE_NOOP("Nm17x", "Arrows active")),
+        bitText(14, QT_TRANSLATE_NOOP("Nm17x", "Error")),
+        bitText(15, QT_TRANSLATE_NOOP("Nm17x", "In Position")),
     };
 }
 
 QList<DisplayError> displayErrors()
 {
     return {
-        { 0, QStringLiteral("Er 1"), Tr::tr("end limit MAX violated"),
-          Tr::tr("Move into the allowed range") },
-        { 1, QStringLiteral("Er 2"), Tr::tr("end limit MIN violated"),
-          Tr::tr("Move into the allowed range") },
-        { 2, QStringLiteral("Er 3"), Tr::tr("shaft does not turn despite the drive signal"),
-          Tr::tr("Check motor, cable and mechanics") },
-        { 3, QStringLiteral("Er 4"), Tr::tr("motor fault (overcurrent)"),
-          Tr::tr("Fix the motor fault") },
-        { 4, QStringLiteral("Er 5"), Tr::tr("target window not reached"),
-          Tr::tr("Enlarge the tolerance window or switch to creep speed earlier") },
-        { 5, QStringLiteral("Er 6"), Tr::tr("direction error: the spindle turns the wrong way"),
-          Tr::tr("Check the motor direction setting and the motor wiring") },
-        { 8, QStringLiteral("Er 8"), Tr::tr("setpoint above end limit MAX (motor does not start)"),
-          Tr::tr("Send a valid setpoint (mind the loop travel)") },
-        { 9, QStringLiteral("Er 9"), Tr::tr("setpoint below end limit MIN (motor does not start)"),
-          Tr::tr("Send a valid setpoint (mind the loop travel)") },
-        { 10, QStringLiteral("Er A"), Tr::tr("collision limit violated"),
-          Tr::tr("Move into the allowed range") },
-        { 11, QStringLiteral("Er b"), Tr::tr("setpoint between end limit and collision limit"),
-          Tr::tr("Send a valid setpoint (mind the loop travel)") },
-        { 12, QStringLiteral("Er C"), Tr::tr("no encoder signal: the position cannot be read"),
-          Tr::tr("Check the sensor and its cable") },
-        { 13, QStringLiteral("Er d"), Tr::tr("the encoder reports an error: the position is wrong"),
-          Tr::tr("Fix the sensor") },
+        displayError(0, "Er 1", QT_TRANSLATE_NOOP("Nm17x", "end limit MAX violated"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Move into the allowed range")),
+        displayError(1, "Er 2", QT_TRANSLATE_NOOP("Nm17x", "end limit MIN violated"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Move into the allowed range")),
+        displayError(2, "Er 3",
+                     QT_TRANSLATE_NOOP("Nm17x", "shaft does not turn despite the drive signal"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Check motor, cable and mechanics")),
+        displayError(3, "Er 4", QT_TRANSLATE_NOOP("Nm17x", "motor fault (overcurrent)"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Fix the motor fault")),
+        displayError(4, "Er 5", QT_TRANSLATE_NOOP("Nm17x", "target window not reached"),
+                     QT_TRANSLATE_NOOP(
+                         "Nm17x", "Enlarge the tolerance window or switch to creep speed earlier")),
+        displayError(
+            5, "Er 6",
+            QT_TRANSLATE_NOOP("Nm17x", "direction error: the spindle turns the wrong way"),
+            QT_TRANSLATE_NOOP("Nm17x", "Check the motor direction setting and the motor wiring")),
+        displayError(
+            8, "Er 8",
+            QT_TRANSLATE_NOOP("Nm17x", "setpoint above end limit MAX (motor does not start)"),
+            QT_TRANSLATE_NOOP("Nm17x", "Send a valid setpoint (mind the loop travel)")),
+        displayError(
+            9, "Er 9",
+            QT_TRANSLATE_NOOP("Nm17x", "setpoint below end limit MIN (motor does not start)"),
+            QT_TRANSLATE_NOOP("Nm17x", "Send a valid setpoint (mind the loop travel)")),
+        displayError(10, "Er A", QT_TRANSLATE_NOOP("Nm17x", "collision limit violated"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Move into the allowed range")),
+        displayError(11, "Er b",
+                     QT_TRANSLATE_NOOP("Nm17x", "setpoint between end limit and collision limit"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Send a valid setpoint (mind the loop travel)")),
+        displayError(12, "Er C",
+                     QT_TRANSLATE_NOOP("Nm17x", "no encoder signal: the position cannot be read"),
+                     QT_TRANSLATE_NOOP("Nm17x", "Check the sensor and its cable")),
+        displayError(
+            13, "Er d",
+            QT_TRANSLATE_NOOP("Nm17x", "the encoder reports an error: the position is wrong"),
+            QT_TRANSLATE_NOOP("Nm17x", "Fix the sensor")),
     };
 }
 

@@ -32,7 +32,8 @@ constexpr quint16 InPosition = 1u << 15;
 struct BitText
 {
     int bit;
-    QString name;
+    QString name; // in the language the program speaks
+    QString english = {}; // the name in English (files, descriptions)
 };
 
 // One display error of 204Eh:02.
@@ -42,6 +43,7 @@ struct DisplayError
     QString code; // "Er 1" ... "Er d"
     QString text; // what happened
     QString remedy; // what the operator does about it
+    QString englishText = {}; // text in English (files, descriptions)
 };
 
 // The named bits of 204Eh:01 (reserved bits left out).

@@ -220,10 +220,42 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(Nm17x)
 };
 
-QMap<qlonglong, QString> upDown()
+// `local` (a translated text) as the name in the language the program speaks, unless it is the
+// English one.
+LocalTexts localName(const QString &english, const QString &local)
 {
-    return { { 0, Tr::tr("Up") }, { 1, Tr::tr("Down") } };
+    const QString language = textLanguage();
+    if (language == QLatin1String("en") || local.endsWith(english))
+        return {};
+    return { { language, local } };
 }
+
+using Names = std::initializer_list<std::pair<qlonglong, const char *>>;
+
+// An enumeration in English (what files and the command line's fixed output write) with its
+// text in the language the program speaks while the dictionary is built (one per connection).
+void setNames(ObjectDef &def, Names names)
+{
+    const QString language = textLanguage();
+    for (const auto &[value, english] : names) {
+        def.enumeration.insert(value, QString::fromLatin1(english));
+        const QString local = Tr::tr(english);
+        if (language != QLatin1String("en") && local != QLatin1String(english))
+            def.localEnumeration[value].insert(language, local);
+    }
+}
+
+// An enumeration value with a number ("group %1").
+void setName(ObjectDef &def, qlonglong value, const char *english, int number)
+{
+    def.enumeration.insert(value, QString::fromLatin1(english).arg(number));
+    const QString language = textLanguage();
+    if (language != QLatin1String("en"))
+        def.localEnumeration[value].insert(language, Tr::tr(english).arg(number));
+}
+
+constexpr std::pair<qlonglong, const char *> kUp = { 0, QT_TRANSLATE_NOOP("Nm17x", "Up") };
+constexpr std::pair<qlonglong, const char *> kDown = { 1, QT_TRANSLATE_NOOP("Nm17x", "Down") };
 
 // Enumerations, bit fields and texts of the objects an operator sets up.
 void describe(ObjectDef &def)
@@ -231,93 +263,122 @@ void describe(ObjectDef &def)
     const quint32 key = (quint32(def.address.index) << 8) | def.address.sub;
     switch (key) {
     case 0x200001:
-        def.enumeration = upDown();
+        setNames(def, { kUp, kDown });
         def.description = Tr::tr("Side from which the target is approached (loop for backlash "
                                  "compensation)");
         break;
     case 0x200002:
-        def.enumeration = upDown();
+        setNames(def, { kUp, kDown });
         def.description = Tr::tr("Up: turning the shaft right increases the actual value");
         break;
     case 0x200003:
-        def.enumeration = { { 0, Tr::tr("Up") },       { 1, Tr::tr("Down") },
-                            { 2, Tr::tr("Uni") },      { 3, Tr::tr("Off") },
-                            { 4, Tr::tr("Uni-Loop") }, { 5, Tr::tr("Off-Loop") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "Up") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Down") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "Uni") },
+                   { 3, QT_TRANSLATE_NOOP("Nm17x", "Off") },
+                   { 4, QT_TRANSLATE_NOOP("Nm17x", "Uni-Loop") },
+                   { 5, QT_TRANSLATE_NOOP("Nm17x", "Off-Loop") } });
         def.description = Tr::tr("Direction arrows; Uni and Off position without loop");
         break;
     case 0x200004:
     case 0x200005:
-        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
+        setNames(
+            def,
+            { { 0, QT_TRANSLATE_NOOP("Nm17x", "Off") }, { 1, QT_TRANSLATE_NOOP("Nm17x", "On") } });
         break;
     case 0x200006:
-        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
+        setNames(
+            def,
+            { { 0, QT_TRANSLATE_NOOP("Nm17x", "Off") }, { 1, QT_TRANSLATE_NOOP("Nm17x", "On") } });
         def.description = Tr::tr("On: the correction 2010h is added to actual value and setpoint");
         break;
     case 0x200007:
-        def.enumeration = { { 0, Tr::tr("On") }, { 1, Tr::tr("Off") }, { 2, Tr::tr("Ever") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "On") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Off") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "Ever") } });
         break;
     case 0x200008:
-        def.enumeration = { { 0, Tr::tr("Key") },
-                            { 1, Tr::tr("Slow") },
-                            { 2, Tr::tr("Middle") },
-                            { 3, Tr::tr("Fast") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "Key") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Slow") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "Middle") },
+                   { 3, QT_TRANSLATE_NOOP("Nm17x", "Fast") } });
         break;
     case 0x200100:
         def.enumeration = { { 0, QStringLiteral("mm") }, { 1, QStringLiteral("inch") } };
         def.description = Tr::tr("Display only: values on the bus stay in 1/100 mm");
         break;
     case 0x202008:
-        def.enumeration = { { 0, Tr::tr("slow") }, { 1, Tr::tr("medium") }, { 2, Tr::tr("fast") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "slow") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "medium") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "fast") } });
         break;
     case 0x204001:
     case 0x204002:
-        def.enumeration = upDown();
+        setNames(def, { kUp, kDown });
         break;
     case 0x204003:
-        def.enumeration = {
-            { 0, Tr::tr("Up") }, { 1, Tr::tr("Down") }, { 2, Tr::tr("Ever") }, { 3, Tr::tr("Off") }
-        };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "Up") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Down") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "Ever") },
+                   { 3, QT_TRANSLATE_NOOP("Nm17x", "Off") } });
         break;
     case 0x204004:
         for (int g = 0; g < 8; ++g)
-            def.enumeration.insert(g, Tr::tr("group %1").arg(g + 1));
+            setName(def, g, QT_TRANSLATE_NOOP("Nm17x", "group %1"), g + 1);
         break;
     case 0x204101:
-        def.enumeration = { { 0, Tr::tr("On") }, { 1, Tr::tr("Off") } };
+        setNames(
+            def,
+            { { 0, QT_TRANSLATE_NOOP("Nm17x", "On") }, { 1, QT_TRANSLATE_NOOP("Nm17x", "Off") } });
         break;
     case 0x204102:
-        def.enumeration = { { 0, Tr::tr("Off") }, { 1, Tr::tr("On") } };
+        setNames(
+            def,
+            { { 0, QT_TRANSLATE_NOOP("Nm17x", "Off") }, { 1, QT_TRANSLATE_NOOP("Nm17x", "On") } });
         break;
     case 0x204103:
-        def.enumeration = { { 0, Tr::tr("Standard / Oscillating") },
-                            { 1, Tr::tr("Takten") },
-                            { 2, Tr::tr("ExternPosi") },
-                            { 3, Tr::tr("Off") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "Standard / Oscillating") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Takten") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "ExternPosi") },
+                   { 3, QT_TRANSLATE_NOOP("Nm17x", "Off") } });
         break;
     case 0x204104:
-        def.enumeration = { { 0, Tr::tr("Standard") },
-                            { 1, Tr::tr("Slow") },
-                            { 2, Tr::tr("Middle") },
-                            { 3, Tr::tr("Fast") } };
+        setNames(def,
+                 { { 0, QT_TRANSLATE_NOOP("Nm17x", "Standard") },
+                   { 1, QT_TRANSLATE_NOOP("Nm17x", "Slow") },
+                   { 2, QT_TRANSLATE_NOOP("Nm17x", "Middle") },
+                   { 3, QT_TRANSLATE_NOOP("Nm17x", "Fast") } });
         break;
     case 0x204D01:
-        def.enumeration.insert(0, Tr::tr("stop"));
+        setNames(def, { { 0, QT_TRANSLATE_NOOP("Nm17x", "stop") } });
         for (int g = 1; g <= 8; ++g)
-            def.enumeration.insert(g, Tr::tr("start group %1").arg(g));
+            setName(def, g, QT_TRANSLATE_NOOP("Nm17x", "start group %1"), g);
         break;
     case 0x204D03:
-        def.enumeration = { { 11, Tr::tr("right slow") },  { 12, Tr::tr("right medium") },
-                            { 13, Tr::tr("right fast") },  { 21, Tr::tr("left slow") },
-                            { 22, Tr::tr("left medium") }, { 23, Tr::tr("left fast") } };
+        setNames(def,
+                 { { 11, QT_TRANSLATE_NOOP("Nm17x", "right slow") },
+                   { 12, QT_TRANSLATE_NOOP("Nm17x", "right medium") },
+                   { 13, QT_TRANSLATE_NOOP("Nm17x", "right fast") },
+                   { 21, QT_TRANSLATE_NOOP("Nm17x", "left slow") },
+                   { 22, QT_TRANSLATE_NOOP("Nm17x", "left medium") },
+                   { 23, QT_TRANSLATE_NOOP("Nm17x", "left fast") } });
         break;
     case 0x204E01:
         for (const BitText &b : statusBits())
-            def.bitFields.append({ b.bit, 1, b.name });
+            def.bitFields.append({ b.bit, 1, b.english, localName(b.english, b.name) });
         def.traceable = true;
         break;
     case 0x204E02:
         for (const DisplayError &e : displayErrors())
-            def.bitFields.append({ e.bit, 1, QStringLiteral("%1 %2").arg(e.code, e.text) });
+            def.bitFields.append(
+                { e.bit, 1, QStringLiteral("%1 %2").arg(e.code, e.englishText),
+                  localName(e.englishText, QStringLiteral("%1 %2").arg(e.code, e.text)) });
         def.traceable = true;
         break;
     case 0x210000:

@@ -347,9 +347,9 @@ QString FrameDecoder::valueText(NodeId node, ObjectAddress address, const QByteA
             const bool plain = datatype::isInteger(def->type) && def->unit.isEmpty()
                 && def->enumeration.isEmpty() && def->factor == 1.0 && def->offset == 0.0;
             const bool isUnsigned = raw.value().typeId() == QMetaType::ULongLong;
-            return def->displayText(raw.value(),
-                                    plain && isUnsigned ? codec::TextFormat::Hex
-                                                        : codec::TextFormat::Decimal);
+            return def->localDisplayText(raw.value(),
+                                         plain && isUnsigned ? codec::TextFormat::Hex
+                                                             : codec::TextFormat::Decimal);
         }
     }
     if (bytes.isEmpty() || bytes.size() > 8)

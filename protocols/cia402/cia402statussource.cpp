@@ -148,7 +148,7 @@ QStringList Cia402StatusSource::registerBits(bool warnings) const
         if (def) {
             for (const BitField &field : def->bitFields) {
                 if (field.bit == bit)
-                    name = field.name;
+                    name = field.displayName();
             }
         }
         names.append(name);

@@ -64,12 +64,36 @@ Result<QVariant> ObjectDef::validate(const QVariant &value, const AddressFormat 
     return raw;
 }
 
+QString ObjectDef::enumText(qlonglong value) const
+{
+    const auto it = enumeration.constFind(value);
+    if (it == enumeration.cend())
+        return {};
+    return localText(*it, localEnumeration.value(value));
+}
+
+QMap<qlonglong, QString> ObjectDef::displayEnumeration() const
+{
+    if (localEnumeration.isEmpty())
+        return enumeration;
+    QMap<qlonglong, QString> shown;
+    for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it)
+        shown.insert(it.key(), localText(it.value(), localEnumeration.value(it.key())));
+    return shown;
+}
+
 Result<QVariant> ObjectDef::parseText(const QString &text, const AddressFormat &format) const
 {
     const QString t = text.trimmed();
     for (auto it = enumeration.cbegin(); it != enumeration.cend(); ++it) {
         if (it.value().compare(t, Qt::CaseInsensitive) == 0)
             return validate(QVariant::fromValue<qlonglong>(it.key()), format);
+    }
+    for (auto it = localEnumeration.cbegin(); it != localEnumeration.cend(); ++it) {
+        for (const QString &local : it.value()) {
+            if (local.compare(t, Qt::CaseInsensitive) == 0)
+                return validate(QVariant::fromValue<qlonglong>(it.key()), format);
+        }
     }
     if (decimals > 0 && datatype::isInteger(type)) {
         bool ok = false;
@@ -94,23 +118,37 @@ Result<QVariant> ObjectDef::parseText(const QString &text, const AddressFormat &
     return validate(raw.value(), format);
 }
 
-QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const
+namespace {
+QString valueText(const ObjectDef &def, const QVariant &raw, codec::TextFormat format, bool local)
 {
     if (!raw.isValid())
         return {};
-    QString text = codec::toText(type, raw, format);
-    if (datatype::isInteger(type) && !enumeration.isEmpty()) {
-        const auto it = enumeration.constFind(raw.toLongLong());
-        if (it != enumeration.cend())
-            text += QStringLiteral(" (%1)").arg(*it);
-    } else if (decimals > 0 && datatype::isInteger(type) && format == codec::TextFormat::Decimal) {
-        text = QString::number(codec::toPhysical(raw, factor, offset), 'f', decimals);
-    } else if (datatype::isNumeric(type) && (factor != 1.0 || offset != 0.0)) {
-        text = QString::number(codec::toPhysical(raw, factor, offset), 'g', 10);
+    QString text = codec::toText(def.type, raw, format);
+    if (datatype::isInteger(def.type) && !def.enumeration.isEmpty()) {
+        const auto it = def.enumeration.constFind(raw.toLongLong());
+        if (it != def.enumeration.cend())
+            text += QStringLiteral(" (%1)").arg(local ? def.enumText(it.key()) : *it);
+    } else if (def.decimals > 0 && datatype::isInteger(def.type)
+               && format == codec::TextFormat::Decimal) {
+        text = QString::number(codec::toPhysical(raw, def.factor, def.offset), 'f', def.decimals);
+    } else if (datatype::isNumeric(def.type) && (def.factor != 1.0 || def.offset != 0.0)) {
+        text = QString::number(codec::toPhysical(raw, def.factor, def.offset), 'g', 10);
     }
-    if (!unit.isEmpty() && datatype::isNumeric(type) && format == codec::TextFormat::Decimal)
-        text += QLatin1Char(' ') + unit;
+    if (!def.unit.isEmpty() && datatype::isNumeric(def.type)
+        && format == codec::TextFormat::Decimal)
+        text += QLatin1Char(' ') + (local ? def.displayUnit() : def.unit);
     return text;
+}
+} // namespace
+
+QString ObjectDef::displayText(const QVariant &raw, codec::TextFormat format) const
+{
+    return valueText(*this, raw, format, false);
+}
+
+QString ObjectDef::localDisplayText(const QVariant &raw, codec::TextFormat format) const
+{
+    return valueText(*this, raw, format, true);
 }
 
 } // namespace db

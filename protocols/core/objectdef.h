@@ -35,6 +35,9 @@ struct BitField
     int bit = 0;
     int width = 1;
     QString name;
+    LocalTexts localNames = {}; // name in further languages
+
+    QString displayName() const { return localText(name, localNames); }
 };
 
 // Static metadata of one object (sub-index): what it is, never its current value
@@ -65,10 +68,18 @@ struct ObjectDef
     QString description;
     LocalTexts localNames = {}; // name in further languages
     LocalTexts localObjectNames = {}; // objectName in further languages
+    QMap<qlonglong, LocalTexts> localEnumeration = {}; // enumeration texts in further languages
+    LocalTexts localUnits = {}; // unit in further languages, for units that are words ("units")
 
     // name and objectName in the language the program speaks (see textLanguage()).
     QString displayName() const { return localText(name, localNames); }
     QString displayObjectName() const { return localText(objectName, localObjectNames); }
+    QString displayUnit() const { return localText(unit, localUnits); }
+    // The enumeration's text for `value` in the language the program speaks; empty when the
+    // value has none.
+    QString enumText(qlonglong value) const;
+    // The enumeration with the texts in the language the program speaks.
+    QMap<qlonglong, QString> displayEnumeration() const;
 
     bool readable() const { return access != Access::WriteOnly; }
     bool writable() const { return access == Access::ReadWrite || access == Access::WriteOnly; }
@@ -77,13 +88,17 @@ struct ObjectDef
     // object's address as `format` writes it.
     Result<QVariant> validate(const QVariant &value,
                               const AddressFormat &format = AddressFormat::canopen()) const;
-    // User text -> raw, accepting enumeration names as well as numbers (physical values for
-    // fixed-point parameters, see decimals).
+    // User text -> raw, accepting enumeration names (English and the program's language) as
+    // well as numbers (physical values for fixed-point parameters, see decimals).
     Result<QVariant> parseText(const QString &text,
                                const AddressFormat &format = AddressFormat::canopen()) const;
-    // "1 (Profile Position)", "0x0427", "1200 mm"
+    // "1 (Profile Position)", "0x0427", "1200 mm": enumeration texts in English, as files,
+    // exports and the command line's fixed output write them.
     QString displayText(const QVariant &raw,
                         codec::TextFormat format = codec::TextFormat::Decimal) const;
+    // The same for people: enumeration texts and unit in the language the program speaks.
+    QString localDisplayText(const QVariant &raw,
+                             codec::TextFormat format = codec::TextFormat::Decimal) const;
 };
 
 } // namespace db

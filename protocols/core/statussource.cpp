@@ -289,7 +289,7 @@ StatusValue StatusSource::makeValue(const QString &key, const QString &label,
         v.text = QStringLiteral("—");
     } else {
         const ObjectDef *def = m_connection ? m_connection->dictionary().find(address) : nullptr;
-        v.text = def ? def->displayText(v.raw) : v.raw.toString();
+        v.text = def ? def->localDisplayText(v.raw) : v.raw.toString();
     }
     return v;
 }

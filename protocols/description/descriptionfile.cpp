@@ -3,9 +3,11 @@
 //   { "format": "drivebench-device-description", "version": 1,
 //     "device": { "vendor", "vendorId", "product", "productCode", "revision", "version" },
 //     "objects": [ { "index": "0x6041", "sub": 0, "name", "object", "type": "UNSIGNED16",
-//                    "access": "ro|wo|rw|const", "unit", "factor", "offset", "decimals",
+//                    "access": "ro|wo|rw|const", "unit", "unit_de", "factor", "offset", "decimals",
 //                    "default", "min", "max", "enum": { "1": "Profile Position" },
-//                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on" } ],
+//                    "enum_de": { "1": "Profilpositionierung" },
+//                    "bits": [ { "bit": 0, "width": 1, "name": "ready to switch on",
+//                                "name_de": "Einschaltbereit" } ],
 //                    "storable", "pdo", "trace", "description",
 //                    "name_de": "Statuswort", "object_de": ... } ],
 //     "errors": [ { "code": "0x2220", "name": "ERROR_OVER_CURRENT", "text": "Over-current",
@@ -14,8 +16,10 @@
 // "addresses" says how people write the objects' addresses: "canopen" (hex INDEX:SUB, the
 // default) or "parameter" (decimal NUMBER:DATASET, index = parameter number, sub = data set).
 // Numbers may be JSON numbers or strings ("0x..", decimal); values are given in raw units.
-// "name", "object" and an error's "text" are English; "name_LANG", "object_LANG" and "text_LANG"
-// give them in further languages (LANG: a language code such as "de").
+// "name", "object", "enum", a bit's "name", "unit" and an error's "text" are English; "name_LANG",
+// "object_LANG", "enum_LANG" (value -> text, for values of "enum"), a bit's "name_LANG",
+// "unit_LANG" (for units that are words) and "text_LANG" give them in further languages (LANG: a
+// language code such as "de").
 #include "descriptionfile.h"
 #include "core/filereader.h"
 
@@ -58,6 +62,13 @@ bool toUInt(const QJsonValue &v, quint32 *out)
     return ok;
 }
 
+bool isLanguageCode(const QString &language)
+{
+    return language.size() >= 2 && language.size() <= 3
+        && std::all_of(language.begin(), language.end(),
+                       [](QChar c) { return c >= u'a' && c <= u'z'; });
+}
+
 // The "KEY_LANG" members of o: LANG -> text. Errors name the member when its value is not a
 // non-empty string or LANG is not a language code.
 Result<LocalTexts> localTexts(const QJsonObject &o, QLatin1String key)
@@ -68,10 +79,7 @@ Result<LocalTexts> localTexts(const QJsonObject &o, QLatin1String key)
         if (!it.key().startsWith(prefix))
             continue;
         const QString language = it.key().mid(prefix.size());
-        const bool code = language.size() >= 2 && language.size() <= 3
-            && std::all_of(language.begin(), language.end(),
-                           [](QChar c) { return c >= u'a' && c <= u'z'; });
-        if (!code)
+        if (!isLanguageCode(language))
             return Error(Error::Kind::Malformed,
                          Tr::tr("\"%1\": \"%2\" is not a language code such as \"de\"")
                              .arg(it.key(), language));
@@ -81,6 +89,40 @@ Result<LocalTexts> localTexts(const QJsonObject &o, QLatin1String key)
         texts.insert(language, it.value().toString());
     }
     return texts;
+}
+
+// The "enum_LANG" members of o: value -> (LANG -> text). Each names values of `english`.
+Result<QMap<qlonglong, LocalTexts>> localEnumeration(const QJsonObject &o,
+                                                     const QMap<qlonglong, QString> &english)
+{
+    QMap<qlonglong, LocalTexts> local;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        if (!it.key().startsWith(QLatin1String("enum_")))
+            continue;
+        const QString language = it.key().mid(5);
+        if (!isLanguageCode(language))
+            return Error(Error::Kind::Malformed,
+                         Tr::tr("\"%1\": \"%2\" is not a language code such as \"de\"")
+                             .arg(it.key(), language));
+        if (!it.value().isObject())
+            return Error(Error::Kind::Malformed,
+                         Tr::tr("\"%1\" must map values to texts").arg(it.key()));
+        const QJsonObject texts = it.value().toObject();
+        for (auto t = texts.begin(); t != texts.end(); ++t) {
+            bool ok = false;
+            const qlonglong value = t.key().toLongLong(&ok);
+            if (!ok || !english.contains(value))
+                return Error(
+                    Error::Kind::Malformed,
+                    Tr::tr("\"%1\": %2 is not a value of \"enum\"").arg(it.key(), t.key()));
+            if (!t.value().isString() || t.value().toString().trimmed().isEmpty())
+                return Error(Error::Kind::Malformed,
+                             Tr::tr("\"%1\": the text of %2 must be a non-empty text")
+                                 .arg(it.key(), t.key()));
+            local[value].insert(language, t.value().toString());
+        }
+    }
+    return local;
 }
 
 Result<QVariant> rawValue(DataType type, const QJsonValue &v)
@@ -180,6 +222,10 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
                 Tr::tr("unknown access '%1'").arg(o.value(QLatin1String("access")).toString()));
         def.access = *acc;
         def.unit = o.value(QLatin1String("unit")).toString();
+        const auto units = localTexts(o, QLatin1String("unit"));
+        if (!units)
+            return fail(units.error().message());
+        def.localUnits = *units;
         def.factor = o.value(QLatin1String("factor")).toDouble(1.0);
         def.offset = o.value(QLatin1String("offset")).toDouble(0.0);
         // Fixed-point parameters give their decimals; the factor follows from them.
@@ -200,11 +246,19 @@ Result<ObjectDictionary> parseJsonDescription(const QByteArray &json, const QStr
         const QJsonObject enums = o.value(QLatin1String("enum")).toObject();
         for (auto it = enums.begin(); it != enums.end(); ++it)
             def.enumeration.insert(it.key().toLongLong(), it.value().toString());
-        for (const QJsonValue &b : o.value(QLatin1String("bits")).toArray()) {
-            const QJsonObject bo = b.toObject();
+        if (auto local = localEnumeration(o, def.enumeration); !local)
+            return fail(local.error().message());
+        else
+            def.localEnumeration = *local;
+        const QJsonArray bits = o.value(QLatin1String("bits")).toArray();
+        for (qsizetype b = 0; b < bits.size(); ++b) {
+            const QJsonObject bo = bits.at(b).toObject();
+            const auto bitNames = localTexts(bo, QLatin1String("name"));
+            if (!bitNames)
+                return fail(Tr::tr("bit #%1: %2").arg(b + 1).arg(bitNames.error().message()));
             def.bitFields.append({ bo.value(QLatin1String("bit")).toInt(),
                                    bo.value(QLatin1String("width")).toInt(1),
-                                   bo.value(QLatin1String("name")).toString() });
+                                   bo.value(QLatin1String("name")).toString(), *bitNames });
         }
         def.storable = o.value(QLatin1String("storable")).toBool(false);
         def.pdoMappable = o.value(QLatin1String("pdo")).toBool(false);

@@ -314,8 +314,14 @@ ObjectDef XddReader::makeDef(ObjectAddress address, const QXmlStreamAttributes &
     if (datatype::isInteger(def.type)) {
         for (auto it = param.allowed.cbegin(); it != param.allowed.cend(); ++it) {
             const auto v = description::parseInteger(it.key(), false);
-            if (v && !it.value().isEmpty())
-                def.enumeration.insert(*v, it.value());
+            if (!v || it.value().isEmpty())
+                continue;
+            def.enumeration.insert(*v, it.value());
+            // Labels in further languages; the English one is the enumeration's own.
+            LocalTexts local = param.allowedLocal.value(it.key());
+            local.remove(QStringLiteral("en"));
+            if (!local.isEmpty())
+                def.localEnumeration.insert(*v, local);
         }
     }
     return def;

@@ -75,10 +75,15 @@ Parameter readParameter(QXmlStreamReader &xml)
             parent = text(a, "value");
             p.allowed.insert(parent, QString());
         } else if (name == QLatin1String("label") && depth == 3 && !parent.isEmpty()) {
+            const QString lang = text(a, "lang").toLower();
             const QString label = xml.readElementText().trimmed();
             --depth;
-            if (p.allowed.value(parent).isEmpty())
+            if (label.isEmpty())
+                continue;
+            if (p.allowed.value(parent).isEmpty() || lang == QLatin1String("en"))
                 p.allowed.insert(parent, label);
+            if (!lang.isEmpty())
+                p.allowedLocal[parent].insert(lang, label);
         }
     }
     return p;

@@ -23,7 +23,8 @@ struct Parameter
     QString actualValue;
     QString minValue;
     QString maxValue;
-    QMap<QString, QString> allowed; // value -> label
+    QMap<QString, QString> allowed; // value -> label (the English one when there is one)
+    QMap<QString, QMap<QString, QString>> allowedLocal = {}; // value -> (language -> label)
 };
 
 // The basic type of an IEC 61131 type element (UDINT -> UNSIGNED32, ...), CiA 311 table 5.

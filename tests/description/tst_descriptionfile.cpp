@@ -18,6 +18,8 @@ private Q_SLOTS:
     void movingCapErrorTexts();
     void namesInFurtherLanguages();
     void movingCapErrorTextsInGerman();
+    void valuesAndBitsInFurtherLanguages();
+    void movingCapValuesAndBitsInGerman();
     void builtinTextsAreForUsers();
     void brokenFilesGiveClearErrors_data();
     void brokenFilesGiveClearErrors();
@@ -111,6 +113,70 @@ void TestDescriptionFile::namesInFurtherLanguages()
     QCOMPARE(sw->displayName(), QStringLiteral("Statusword"));
 }
 
+// "enum_LANG" and a bit's "name_LANG" are what people read; files, the command line's fixed
+// output and typed English names keep working.
+void TestDescriptionFile::valuesAndBitsInFurtherLanguages()
+{
+    const QByteArray json = R"({"format":"drivebench-device-description","version":1,
+        "objects":[{"index":"0x6060","sub":0,"type":"INTEGER8","name":"Modes of operation",
+                    "enum":{"1":"Profile position","3":"Velocity","6":"Homing"},
+                    "enum_de":{"1":"Positionierbetrieb","6":"Referenzierbetrieb"}},
+                   {"index":"0x6041","sub":0,"type":"U16","name":"Statusword",
+                    "bits":[{"bit":0,"name":"ready to switch on","name_de":"Einschaltbereit"},
+                            {"bit":9,"name":"remote"}]}]})";
+    const auto dict = parseJsonDescription(json, QStringLiteral("test.json"));
+    QVERIFY2(dict.ok(), qPrintable(dict.error().toString()));
+    const ObjectDef *mode = dict->find(ObjectAddress(0x6060, 0));
+    const ObjectDef *sw = dict->find(ObjectAddress(0x6041, 0));
+    QCOMPARE(mode->localDisplayText(1), QStringLiteral("1 (Profile position)"));
+    QCOMPARE(sw->bitFields.at(0).displayName(), QStringLiteral("ready to switch on"));
+    {
+        const test::TextLanguage german(QStringLiteral("de"));
+        QCOMPARE(mode->localDisplayText(1), QStringLiteral("1 (Positionierbetrieb)"));
+        QCOMPARE(mode->localDisplayText(3), QStringLiteral("3 (Velocity)")); // none: English
+        QCOMPARE(mode->enumText(6), QStringLiteral("Referenzierbetrieb"));
+        QCOMPARE(mode->displayEnumeration().value(6), QStringLiteral("Referenzierbetrieb"));
+        QCOMPARE(mode->displayText(1), QStringLiteral("1 (Profile position)")); // files, CLI
+        QCOMPARE(mode->enumeration.value(6), QStringLiteral("Homing"));
+        QCOMPARE(sw->bitFields.at(0).displayName(), QStringLiteral("Einschaltbereit"));
+        QCOMPARE(sw->bitFields.at(1).displayName(), QStringLiteral("remote"));
+        QCOMPARE(sw->bitFields.at(0).name, QStringLiteral("ready to switch on"));
+        // Either language's name is accepted where a value is typed.
+        QCOMPARE(mode->parseText(QStringLiteral("referenzierbetrieb")).value().toInt(), 6);
+        QCOMPARE(mode->parseText(QStringLiteral("Homing")).value().toInt(), 6);
+    }
+    QCOMPARE(mode->enumText(6), QStringLiteral("Homing"));
+}
+
+// The drive's German manual and the German CiA 402 terms for its values and bits.
+void TestDescriptionFile::movingCapValuesAndBitsInGerman()
+{
+    const ObjectDictionary &dict = resources::movingCapDictionary();
+    const test::TextLanguage german(QStringLiteral("de"));
+    const ObjectDef *modes = dict.find(ObjectAddress(0x6061, 0));
+    QCOMPARE(modes->enumText(1), QStringLiteral("Positionierbetrieb"));
+    QCOMPARE(modes->enumText(6), QStringLiteral("Referenzierbetrieb"));
+    QCOMPARE(dict.find(ObjectAddress(0x6098, 0))->enumText(-18),
+             QStringLiteral("Anschlagsreferenzierung positiv"));
+    const ObjectDef *position = dict.find(ObjectAddress(0x6064, 0));
+    QCOMPARE(position->localDisplayText(1200), QStringLiteral("1200 Einheiten"));
+    QCOMPARE(position->displayText(1200), QStringLiteral("1200 units"));
+    const ObjectDef *sw = dict.find(ObjectAddress(0x6041, 0));
+    QCOMPARE(sw->bitFields.at(10).displayName(), QStringLiteral("Ziel erreicht"));
+    // Every value and bit has a German text, except names that are the same in German
+    // (IN1, OUT1) and the controller names (Rabbit, Hedgehog, Float).
+    static const QRegularExpression same(
+        QStringLiteral("^(IN|OUT)\\d+$|^(Rabbit|Hedgehog|Float)$"));
+    for (const ObjectDef &def : dict.objects()) {
+        for (auto it = def.enumeration.cbegin(); it != def.enumeration.cend(); ++it)
+            QVERIFY2(same.match(*it).hasMatch() || def.enumText(it.key()) != *it,
+                     qPrintable(QStringLiteral("%1: %2").arg(def.address.toString(), *it)));
+        for (const BitField &bit : def.bitFields)
+            QVERIFY2(same.match(bit.name).hasMatch() || bit.displayName() != bit.name,
+                     qPrintable(QStringLiteral("%1: %2").arg(def.address.toString(), bit.name)));
+    }
+}
+
 void TestDescriptionFile::movingCapErrorTextsInGerman()
 {
     const ObjectDictionary &dict = resources::movingCapDictionary();
@@ -162,6 +228,20 @@ void TestDescriptionFile::brokenFilesGiveClearErrors_data()
     QTest::newRow("empty local name")
         << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","object_de":""}]})"
         << "\"object_de\" must be a non-empty text";
+    QTest::newRow("local value of no enum value")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","enum":{"0":"off"},
+                                 "enum_de":{"1":"an"}}]})"
+        << "\"enum_de\": 1 is not a value of \"enum\"";
+    QTest::newRow("local values not an object")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","enum_de":"aus"}]})"
+        << "\"enum_de\" must map values to texts";
+    QTest::newRow("empty local unit")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8","unit_de":""}]})"
+        << "\"unit_de\" must be a non-empty text";
+    QTest::newRow("empty local bit name")
+        << head + R"("objects":[{"index":"0x2000","sub":0,"type":"U8",
+                                 "bits":[{"bit":0,"name":"x","name_de":""}]}]})"
+        << "bit #1: \"name_de\" must be a non-empty text";
     QTest::newRow("local text not a string")
         << head + R"("errors":[{"code":"0x2220","text":"x","text_de":5}]})"
         << "error #1: \"text_de\" must be a non-empty text";

@@ -2,12 +2,15 @@
 #include "devices/bonfiglioli/acustatussource.h"
 #include "fakeconnection.h"
 #include "resources/builtindescriptions.h"
+#include "textlanguage.h"
 #include "widgets/common/lamp.h"
 #include "widgets/connection/drivestatuspanel.h"
 
 #include <QLabel>
+
 #include <QSignalSpy>
 #include <QTest>
+#include <algorithm>
 
 using namespace db;
 using db::test::FakeConnection;
@@ -270,6 +273,42 @@ private Q_SLOTS:
         QTRY_COMPARE(labelText(panel, "stateName"), QStringLiteral("Operation enabled"));
         QTRY_COMPARE(labelText(panel, "lastErrorText"), QStringLiteral("No fault"));
         QVERIFY(lamp(panel, QStringLiteral("bit_0400"))->isOn());
+    }
+
+    // In German the panel names the actual values, the warning bits and the fault register's bits
+    // as the devices' German manuals do.
+    void deviceTextsInTheProgramsLanguage()
+    {
+        const test::TextLanguage german(QStringLiteral("de"));
+        FakeConnection acu;
+        acu.setDictionary(bonfiglioli::acuDictionary());
+        acu.setAddressFormat(AddressFormat::parameter());
+        acu.setValue({ 411, 0 }, QVariant::fromValue<qulonglong>(0x0080));
+        acu.setValue({ 270, 0 }, QVariant::fromValue<qulonglong>(0x8004));
+        acu.setValue({ 274, 0 }, QVariant::fromValue<qulonglong>(0x0020));
+        acu.setValue({ 210, 0 }, QVariant::fromValue<qlonglong>(5000));
+        acu.setStatusSource(new bonfiglioli::AcuStatusSource(&acu));
+        DriveStatusPanel panel;
+        panel.setConnection(&acu);
+        panel.show();
+        acu.open();
+        QTRY_COMPARE(labelText(panel, "statusRegisterWarnings"),
+                     QStringLiteral("Warnung Langzeit-Ixt\nSchleppfehler"));
+        const auto labels = panel.findChildren<QLabel *>();
+        QVERIFY(std::any_of(labels.cbegin(), labels.cend(), [](const QLabel *l) {
+            return l->text() == QStringLiteral("Ständerfrequenz (210):");
+        }));
+
+        FakeConnection movingCap;
+        fillHealthyDrive(movingCap);
+        movingCap.setValue({ 0x1002, 0 }, QVariant::fromValue<qulonglong>(0x0801));
+        DriveStatusPanel capPanel;
+        capPanel.setConnection(&movingCap);
+        capPanel.show();
+        movingCap.open();
+        QTRY_COMPARE(labelText(capPanel, "statusRegisterBits"),
+                     QStringLiteral("Fehler Überspannung (Uzk)\nFehler Überstrom"));
+        QCOMPARE(labelText(capPanel, "position"), QStringLiteral("12345 Einheiten"));
     }
 
     // Two views of one connection share its source: one poller, one read per object per cycle.

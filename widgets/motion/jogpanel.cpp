@@ -18,6 +18,19 @@
 
 namespace db::widgets {
 
+namespace {
+// A unit for people: the drive's user-defined units ("units", "units/s") in the program's
+// language, any other unit as the drive states it.
+QString shownUnit(const QString &unit)
+{
+    if (unit.isEmpty())
+        return JogPanel::tr("units");
+    if (unit.startsWith(QLatin1String("units")))
+        return JogPanel::tr("units") + unit.mid(5);
+    return unit;
+}
+} // namespace
+
 using namespace motion;
 
 JogPanel::JogPanel(QWidget *parent)
@@ -113,9 +126,9 @@ void JogPanel::setConnection(DeviceConnection *connection)
         return;
     }
     m_cia = std::move(made.value());
-    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_positionUnit = shownUnit(m_cia->positionUnit());
     m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
-                                                     : m_cia->velocityUnit();
+                                                     : shownUnit(m_cia->velocityUnit());
     m_motion = std::make_unique<MotionAxis>(m_cia.get());
     m_motion->setWatchdogTimeout(kWatchdogMs);
     motion::recordCommands(m_motion.get(), m_changeLog, connection->uri().toString());
@@ -129,7 +142,7 @@ void JogPanel::setConnection(DeviceConnection *connection)
     m_form->setLease(m_lease.get());
     m_form->setFeatures(m_cia->features());
     if (const ObjectDef *method = dict.find(cia402::obj::HomingMethod))
-        m_form->setHomingMethods(method->enumeration);
+        m_form->setHomingMethods(method->displayEnumeration());
 
     connect(m_cia.get(), &AxisInterface::statusChanged, this, &JogPanel::render);
     connect(m_cia.get(), &AxisInterface::connectionLost, this, &JogPanel::onConnectionLost);
@@ -190,9 +203,9 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
         return;
     }
     // What the drive said about itself: its units, modes and limits.
-    m_positionUnit = m_cia->positionUnit().isEmpty() ? tr("units") : m_cia->positionUnit();
+    m_positionUnit = shownUnit(m_cia->positionUnit());
     m_velocityUnit = m_cia->velocityUnit().isEmpty() ? m_positionUnit + QStringLiteral("/s")
-                                                     : m_cia->velocityUnit();
+                                                     : shownUnit(m_cia->velocityUnit());
     m_form->setFeatures(m_cia->features());
     m_blocks->setAxis(m_motion.get());
     if (!m_cia->featureNote().isEmpty())

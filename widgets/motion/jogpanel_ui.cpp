@@ -23,6 +23,29 @@ namespace db::widgets {
 using namespace motion;
 
 namespace {
+// The axis state by its PLCopen name, which engineers know from the standard and from the
+// drives' manuals; a translation adds its own term ("Standstill (Stillstand)").
+QString stateText(AxisState state)
+{
+    switch (state) {
+    case AxisState::Disabled:
+        return JogPanel::tr("Disabled", "PLCopen axis state");
+    case AxisState::Standstill:
+        return JogPanel::tr("Standstill", "PLCopen axis state");
+    case AxisState::DiscreteMotion:
+        return JogPanel::tr("Discrete Motion", "PLCopen axis state");
+    case AxisState::ContinuousMotion:
+        return JogPanel::tr("Continuous Motion", "PLCopen axis state");
+    case AxisState::Stopping:
+        return JogPanel::tr("Stopping", "PLCopen axis state");
+    case AxisState::ErrorStop:
+        return JogPanel::tr("ErrorStop", "PLCopen axis state");
+    case AxisState::Homing:
+        return JogPanel::tr("Homing", "PLCopen axis state");
+    }
+    return axisStateName(state);
+}
+
 constexpr double kUnbounded = 1e9;
 constexpr int kFieldMinimumWidth = 76;
 constexpr double kInt32Max = 2147483647.0;
@@ -224,7 +247,7 @@ void JogPanel::render()
     style::setStale(m_velocity, !valid);
     QString state = tr("No drive");
     if (m_motion && have)
-        state = axisStateName(m_motion->state());
+        state = stateText(m_motion->state());
     else if (linked)
         state = m_silentWhy.isEmpty() ? tr("Not responding") : m_silentWhy;
     else if (m_connection)

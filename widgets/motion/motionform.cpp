@@ -87,7 +87,7 @@ void MotionForm::buildUi()
     m_direction->addItem(tr("Positive only"), int(Direction::PositiveOnly));
     m_direction->addItem(tr("Negative only"), int(Direction::NegativeOnly));
     m_direction->addItem(tr("Keep direction"), int(Direction::KeepDirection));
-    m_direction->setToolTip(tr("Bewegungsrichtung: used by MC_MoveAbsolute on an endless axis"));
+    m_direction->setToolTip(tr("Direction of travel: used by MC_MoveAbsolute on an endless axis"));
     m_homingMethod = new QComboBox(this);
     m_homingMethod->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_homingMethod->setMinimumContentsLength(8);

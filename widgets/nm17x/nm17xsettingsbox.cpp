@@ -31,7 +31,8 @@ void fillFrom(QComboBox *box, ObjectAddress address)
 {
     const ObjectDictionary all = dictionary(Variant::Nm174);
     if (const ObjectDef *def = all.find(address)) {
-        for (auto it = def->enumeration.cbegin(); it != def->enumeration.cend(); ++it)
+        const auto names = def->displayEnumeration();
+        for (auto it = names.cbegin(); it != names.cend(); ++it)
             box->addItem(it.value(), int(it.key()));
     }
 }

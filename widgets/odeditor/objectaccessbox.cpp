@@ -197,7 +197,7 @@ void ObjectAccessBox::updateInfo()
                                     .toHtmlEscaped());
         info += tr("<br>%1, %2").arg(datatype::name(known->type), access::name(known->access));
         if (!known->unit.isEmpty())
-            info += tr(", unit %1").arg(known->unit.toHtmlEscaped());
+            info += tr(", unit %1").arg(known->displayUnit().toHtmlEscaped());
         m_info->setText(info);
         m_info->setToolTip(style::toolTip(known->description));
         style::setTextColor(m_info, QColor());
@@ -311,7 +311,7 @@ void ObjectAccessBox::onReplyFinished(Reply *reply, bool isRead, quint64 generat
         m_lastRaw = reply->value();
     if (isRead)
         showValue();
-    const QString shown = def ? def->displayText(m_lastRaw) : m_lastRaw.toString();
+    const QString shown = def ? def->localDisplayText(m_lastRaw) : m_lastRaw.toString();
     showResult(true, isRead ? tr("read %1").arg(shown) : tr("written %1").arg(shown));
     Q_EMIT finished(true);
 }

@@ -422,7 +422,9 @@ void OdEditor::onWriteRequested(ObjectAddress address, const QVariant &raw)
     reply->setParent(this);
     if (m_changeLog) {
         const auto text = [def](const QVariant &v) {
-            return !v.isValid() ? QString() : def ? odtext::display(*def, v, false) : v.toString();
+            return !v.isValid() ? QString()
+                : def           ? odtext::display(*def, v, false, true, true)
+                                : v.toString();
         };
         m_changeLog->track(ChangeLog::writeEntry(*m_connection, ram.value_or(address), text(before),
                                                  text(raw), ram.has_value()),

@@ -127,7 +127,8 @@ void OdBitFieldView::setObject(const ObjectDef *def)
     title +=
         QStringLiteral(" &nbsp;<span style='color:gray'>%1, %2%3%4</span>")
             .arg(datatype::name(def->type), access::name(def->access),
-                 def->unit.isEmpty() ? QString() : QStringLiteral(", ") + def->unit.toHtmlEscaped(),
+                 def->unit.isEmpty() ? QString()
+                                     : QStringLiteral(", ") + def->displayUnit().toHtmlEscaped(),
                  def->storable ? tr(", storable") : QString());
     m_title->setText(title);
     m_description->setText(def->description);
@@ -138,12 +139,15 @@ void OdBitFieldView::setObject(const ObjectDef *def)
         const BitField &f = m_fields[i];
         QWidget *w = nullptr;
         if (f.width == 1) {
-            w = new Lamp(QStringLiteral("%1  %2").arg(f.bit, 2).arg(f.name), style::okColor(),
-                         m_bitsBox);
+            w = new Lamp(QStringLiteral("%1  %2").arg(f.bit, 2).arg(f.displayName()),
+                         style::okColor(), m_bitsBox);
         } else {
             w = new QLabel(m_bitsBox);
         }
-        w->setToolTip(f.name);
+        // The English name beside the shown one: the term of the English manuals and files.
+        w->setToolTip(f.displayName() == f.name
+                          ? f.name
+                          : QStringLiteral("%1 (%2)").arg(f.displayName(), f.name));
         m_bitsGrid->addWidget(w, i % ((m_fields.size() + kBitColumns - 1) / kBitColumns),
                               i / ((m_fields.size() + kBitColumns - 1) / kBitColumns));
         m_bitWidgets.append(w);
@@ -166,10 +170,11 @@ void OdBitFieldView::setValue(const QVariant &raw)
             else
                 lamp->setStale(true);
         } else if (auto *label = qobject_cast<QLabel *>(m_bitWidgets[i])) {
-            label->setText(QStringLiteral("%1-%2  %3 = %4")
-                               .arg(f.bit)
-                               .arg(f.bit + f.width - 1)
-                               .arg(f.name, known ? QString::number(v) : QStringLiteral("?")));
+            label->setText(
+                QStringLiteral("%1-%2  %3 = %4")
+                    .arg(f.bit)
+                    .arg(f.bit + f.width - 1)
+                    .arg(f.displayName(), known ? QString::number(v) : QStringLiteral("?")));
         }
     }
 }

@@ -83,7 +83,8 @@ QWidget *OdEditorDelegate::createEditor(QWidget *parent, const QStyleOptionViewI
             combo->addItem(tr("0 (false)"), QStringLiteral("0"));
             combo->addItem(tr("1 (true)"), QStringLiteral("1"));
         }
-        for (auto it = def->enumeration.cbegin(); it != def->enumeration.cend(); ++it)
+        const auto names = def->displayEnumeration();
+        for (auto it = names.cbegin(); it != names.cend(); ++it)
             combo->addItem(QStringLiteral("%1 (%2)").arg(it.key()).arg(*it),
                            QString::number(it.key()));
         return combo;

@@ -18,8 +18,10 @@ namespace db::widgets {
 namespace odtext {
 // The text shown in a cell: "1200 mm", "1 (Profile position)", "0x0427". Words with named bits
 // and identifiers (device type, identity, COB-IDs, PDO mapping entries) are always shown in hex.
-// withUnit false: without the unit (the editor shows it in a column of its own).
-QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit = true);
+// withUnit false: without the unit (the editor shows it in a column of its own). Enumeration
+// names in the language the program speaks; English with `english` (for what is written to files).
+QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit = true,
+                bool english = false);
 // True for objects always shown in hex (see display()).
 bool isShownInHex(const ObjectDef &def);
 // The text an editor starts with: like display() but without unit and enumeration name.

@@ -213,7 +213,7 @@ QVariant OdEditorModel::leafData(const ObjectDef &def, int column, int role) con
             return tr("(write-only)");
         return odtext::display(def, cell.raw, m_hex, false);
     case Unit:
-        return datatype::isNumeric(def.type) ? def.unit : QString();
+        return datatype::isNumeric(def.type) ? def.displayUnit() : QString();
     case Default:
         return odtext::display(def, def.defaultValue, m_hex, false);
     case Limits:

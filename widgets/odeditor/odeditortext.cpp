@@ -63,7 +63,7 @@ QString number(const ObjectDef &def, const QVariant &raw, bool hex)
 }
 } // namespace
 
-QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit)
+QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUnit, bool english)
 {
     if (!raw.isValid())
         return {};
@@ -73,11 +73,11 @@ QString display(const ObjectDef &def, const QVariant &raw, bool hex, bool withUn
     if (datatype::isInteger(def.type) && !def.enumeration.isEmpty()) {
         const auto it = def.enumeration.constFind(raw.toLongLong());
         if (it != def.enumeration.cend())
-            text += QStringLiteral(" (%1)").arg(*it);
+            text += QStringLiteral(" (%1)").arg(english ? *it : def.enumText(it.key()));
     }
     const bool shownHex = (hex || isBitWord(def)) && !isScaled(def);
     if (withUnit && !def.unit.isEmpty() && datatype::isNumeric(def.type) && !shownHex)
-        text += QLatin1Char(' ') + def.unit;
+        text += QLatin1Char(' ') + (english ? def.unit : def.displayUnit());
     return text;
 }
 

@@ -129,7 +129,7 @@ QString ParamCompareModel::valueText(const CompareRow &row, int side) const
         return QStringLiteral("—");
     const auto format = m_hex ? codec::TextFormat::Hex : codec::TextFormat::Decimal;
     if (const ObjectDef *def = m_dictionary.find(row.address))
-        return def->displayText(raw, format);
+        return def->localDisplayText(raw, format);
     return codec::toText(row.type, raw, format);
 }
 

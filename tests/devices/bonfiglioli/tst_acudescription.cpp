@@ -114,6 +114,43 @@ private Q_SLOTS:
         QCOMPARE(rated->name, QStringLiteral("Rated speed (data set 2)"));
     }
 
+    // Selections and the bits of the status, control and warning words in German: the terms of
+    // the German parameter descriptions; files keep the English ones.
+    void germanValuesAndBits()
+    {
+        const ObjectDictionary &d = bonfiglioli::acuDictionary();
+        const ObjectDef *busFault = d.find(ObjectAddress(388, 0));
+        const ObjectDef *status = d.find(ObjectAddress(411, 0));
+        QCOMPARE(busFault->localDisplayText(3), QStringLiteral("3 (quick stop)"));
+        const test::TextLanguage german(QStringLiteral("de"));
+        QCOMPARE(busFault->localDisplayText(3), QStringLiteral("3 (Schnellhalt)"));
+        QCOMPARE(busFault->displayText(3), QStringLiteral("3 (quick stop)"));
+        QCOMPARE(d.find(ObjectAddress(412, 2))->enumText(1),
+                 QStringLiteral("Steuerung über Statemachine"));
+        QCOMPARE(d.find(ObjectAddress(1454, 0))->enumText(6), QStringLiteral("Referenzfahrt"));
+        QCOMPARE(status->bitFields.at(0).displayName(), QStringLiteral("Einschaltbereit"));
+        QCOMPARE(status->bitFields.at(10).displayName(), QStringLiteral("Ziel erreicht"));
+        QCOMPARE(d.find(ObjectAddress(410, 0))->bitFields.at(7).displayName(),
+                 QStringLiteral("Fehler rücksetzen"));
+        QCOMPARE(d.find(ObjectAddress(274, 0))->bitFields.at(5).displayName(),
+                 QStringLiteral("Schleppfehler"));
+        // Every value and bit has a German text, except names that are the same in German.
+        static const QRegularExpression same(QStringLiteral("^(RxPDO\\d|SYNC)$"));
+        int values = 0;
+        int bits = 0;
+        for (const ObjectDef &def : d.objects()) {
+            for (auto it = def.enumeration.cbegin(); it != def.enumeration.cend(); ++it, ++values)
+                QVERIFY2(same.match(*it).hasMatch() || def.enumText(it.key()) != *it,
+                         qPrintable(QStringLiteral("%1: %2").arg(def.address.index).arg(*it)));
+            for (const BitField &bit : def.bitFields) {
+                ++bits;
+                QVERIFY2(bit.displayName() != bit.name,
+                         qPrintable(QStringLiteral("%1: %2").arg(def.address.index).arg(bit.name)));
+            }
+        }
+        QVERIFY(values > 40 && bits > 40);
+    }
+
     void faultTextsInGerman()
     {
         const ObjectDictionary &d = bonfiglioli::acuDictionary();

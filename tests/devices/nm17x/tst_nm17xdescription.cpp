@@ -2,6 +2,7 @@
 #include "devices/nm17x/nm17xcodes.h"
 #include "devices/nm17x/nm17xdescription.h"
 #include "textlanguage.h"
+#include "translations/language.h"
 
 #include <QSet>
 #include <QTest>
@@ -20,6 +21,7 @@ private Q_SLOTS:
     void errorPriorityAndTexts();
     void emcyTexts();
     void germanNames();
+    void germanValuesAndBits();
 };
 
 void TstNm17xDescription::variantFromIdentity()
@@ -132,6 +134,27 @@ void TstNm17xDescription::germanNames()
     QCOMPARE(d.find({ 0x2020, 0 })->displayName(), QStringLiteral("Größter Subindex"));
     QCOMPARE(d.find({ 0x6004, 0 })->displayName(), QStringLiteral("Position (Istwert)"));
     QCOMPARE(endMin->name, QStringLiteral("End limit MIN"));
+}
+
+// With the German translation installed, a dictionary built then shows the values and bits in
+// German, and keeps the English ones for files and the command line.
+void TstNm17xDescription::germanValuesAndBits()
+{
+    QVERIFY(i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("de")));
+    const ObjectDictionary d = dictionary(Variant::Nm174);
+    const ObjectDef *function = d.find({ 0x2041, 3 });
+    QCOMPARE(function->enumText(0), QStringLiteral("Standard / Oszillieren"));
+    QCOMPARE(function->displayText(0), QStringLiteral("0 (Standard / Oscillating)"));
+    QCOMPARE(d.find({ 0x204D, 3 })->localDisplayText(21), QStringLiteral("21 (links langsam)"));
+    QCOMPARE(d.find({ 0x2040, 4 })->enumText(2), QStringLiteral("Gruppe 3"));
+    const ObjectDef *status = d.find({ 0x204E, 1 });
+    QCOMPARE(status->bitFields.at(0).displayName(), QStringLiteral("In Bewegung"));
+    QCOMPARE(status->bitFields.at(0).name, QStringLiteral("Moving"));
+    const ObjectDef *errors = d.find({ 0x204E, 2 });
+    QCOMPARE(errors->bitFields.at(0).displayName(), QStringLiteral("Er 1 Endlage MAX verletzt"));
+    QCOMPARE(errors->bitFields.at(0).name, QStringLiteral("Er 1 end limit MAX violated"));
+    QVERIFY(i18n::installTranslations(*QCoreApplication::instance(), QStringLiteral("en")));
+    QCOMPARE(function->enumText(0), QStringLiteral("Standard / Oscillating"));
 }
 
 QTEST_GUILESS_MAIN(TstNm17xDescription)
