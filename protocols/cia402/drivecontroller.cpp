@@ -100,12 +100,11 @@ Reply *DriveController::goTo(State target, const QString &name)
             return;
         const QList<Step> steps = plan(from, target);
         if (steps.isEmpty()) {
-            s->waitFor(
-                QStringLiteral("a state from which %1 can be reached").arg(stateName(target)),
-                [](quint16, QString &why) {
-                    why = Tr::tr("no transition from this state");
-                    return WaitVerdict::Failed;
-                });
+            s->waitFor(Tr::tr("a state from which %1 can be reached").arg(stateName(target)),
+                       [](quint16, QString &why) {
+                           why = Tr::tr("no transition from this state");
+                           return WaitVerdict::Failed;
+                       });
             return;
         }
         for (const Step &step : steps) {

@@ -25,8 +25,8 @@ public:
     }
     QString format(ObjectAddress address) const override { return address.toString(); }
     QString example() const override { return QStringLiteral("6041:0"); }
-    QString indexName() const override { return QStringLiteral("index"); }
-    QString subName() const override { return QStringLiteral("sub-index"); }
+    QString indexName() const override { return Tr::tr("index"); }
+    QString subName() const override { return Tr::tr("sub-index"); }
 };
 
 class ParameterFormat final : public AddressFormat
@@ -35,7 +35,7 @@ public:
     // Parameter numbers fit the 16-bit index; data sets 0-9 (0 = all, 1-4 EEPROM, 5-9 the RAM
     // copies of 0-4) fit the sub-index with room to spare, so 0-255 is accepted here and the
     // protocol refuses what it cannot send.
-    QString key() const override { return QStringLiteral("parameter"); }
+    QString key() const override { return Tr::tr("parameter"); }
     Result<ObjectAddress> parse(const QString &text) const override
     {
         static const QRegularExpression re(
@@ -67,8 +67,8 @@ public:
         return QStringLiteral("%1:%2").arg(address.index).arg(address.sub);
     }
     QString example() const override { return QStringLiteral("372:2"); }
-    QString indexName() const override { return QStringLiteral("parameter"); }
-    QString subName() const override { return QStringLiteral("data set"); }
+    QString indexName() const override { return Tr::tr("parameter"); }
+    QString subName() const override { return Tr::tr("data set"); }
 };
 
 } // namespace

@@ -12,6 +12,15 @@ namespace db::widgets {
 using canopen::NmtState;
 using canopen::NodeId;
 
+namespace {
+// The NMT state by its CANopen name (Operational, Pre-Operational, ...: the terms of the
+// standard, in every language); a state not heard yet in the program's language.
+QString stateText(NmtState state)
+{
+    return state == NmtState::Unknown ? NodeListModel::tr("unknown") : canopen::nmtStateName(state);
+}
+} // namespace
+
 NodeListModel::NodeListModel(QObject *parent)
     : QAbstractTableModel(parent)
 {
@@ -227,10 +236,10 @@ QVariant NodeListModel::data(const QModelIndex &index, int role) const
             return QStringLiteral("%1 (0x%2)").arg(r.node).arg(r.node, 2, 16, QLatin1Char('0'));
         case State:
             if (r.lost)
-                return tr("lost (was %1)").arg(canopen::nmtStateName(r.state));
+                return tr("lost (was %1)").arg(stateText(r.state));
             if (r.state == NmtState::Unknown && !r.lastCommand.isEmpty())
                 return tr("unknown (sent %1)").arg(r.lastCommand);
-            return canopen::nmtStateName(r.state);
+            return stateText(r.state);
         case Heartbeat:
             return r.heardMs < 0
                 ? tr("never")

@@ -141,8 +141,9 @@ void JogPanel::setConnection(DeviceConnection *connection)
     m_form->setAxis(m_motion.get());
     m_form->setLease(m_lease.get());
     m_form->setFeatures(m_cia->features());
-    if (const ObjectDef *method = dict.find(cia402::obj::HomingMethod))
-        m_form->setHomingMethods(method->displayEnumeration());
+    // This drive's homing methods; none described: the default list, not the previous drive's.
+    const ObjectDef *method = dict.find(cia402::obj::HomingMethod);
+    m_form->setHomingMethods(method ? method->displayEnumeration() : QMap<qlonglong, QString>());
 
     connect(m_cia.get(), &AxisInterface::statusChanged, this, &JogPanel::render);
     connect(m_cia.get(), &AxisInterface::connectionLost, this, &JogPanel::onConnectionLost);

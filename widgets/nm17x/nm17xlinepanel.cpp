@@ -12,6 +12,7 @@
 #include "widgets/common/flowlayout.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -68,8 +69,11 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     m_kind->addItem(tr("direct (no loop)"), int(SetpointKind::Direct));
     m_kind->addItem(tr("plunge cut"), int(SetpointKind::Plunge));
     m_kind->addItem(tr("plunge cut with release"), int(SetpointKind::PlungeRelease));
-    for (const Speed s : { Speed::Slow, Speed::Medium, Speed::Fast })
-        m_speed->addItem(speedName(s), int(s));
+    // The display's speed steps, named as the device's own texts are (the command line keeps
+    // the English words it parses).
+    m_speed->addItem(QCoreApplication::translate("Nm17x", "slow"), int(Speed::Slow));
+    m_speed->addItem(QCoreApplication::translate("Nm17x", "medium"), int(Speed::Medium));
+    m_speed->addItem(QCoreApplication::translate("Nm17x", "fast"), int(Speed::Fast));
     m_group->setRange(1, 8);
     m_unit->addItem(QStringLiteral("mm"));
     m_unit->addItem(QStringLiteral("inch"));
