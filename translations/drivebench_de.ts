@@ -3194,6 +3194,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>profile torque</source>
         <translation>Profildrehmoment</translation>
     </message>
+    <message>
+        <source>a state from which %1 can be reached</source>
+        <translation>ein Zustand, von dem aus %1 erreichbar ist</translation>
+    </message>
 </context>
 <context>
     <name>db::cia402::Cia402StatusSource</name>
@@ -3802,6 +3806,22 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>bit #%1: %2</source>
         <translation>Bit #%1: %2</translation>
+    </message>
+    <message>
+        <source>index</source>
+        <translation>Index</translation>
+    </message>
+    <message>
+        <source>sub-index</source>
+        <translation>Subindex</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>data set</source>
+        <translation>Datensatz</translation>
     </message>
 </context>
 <context>
@@ -7550,6 +7570,10 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Consumer</source>
         <translation>Überwachung</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
     </message>
 </context>
 <context>
