@@ -9470,10 +9470,6 @@ Change it?</source>
         <translation>movingcap: Schreibzugriffe auf dieses Objekt scheitern mit einem Gerätefehler (Fehlermodus für Tests; wiederholbar).</translation>
     </message>
     <message>
-        <source>Which device: movingcap.</source>
-        <translation>Welches Gerät: movingcap.</translation>
-    </message>
-    <message>
         <source>Simulated drives on 127.0.0.1.
 
 Devices:
@@ -9544,6 +9540,74 @@ Geräte:
     <message>
         <source>movingcap, acu: read commands from standard input while serving, one a line: state, standstill, drop (abort every client: a cut cable), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (the electronic gear&apos;s master, u/s), watchdog MS.</source>
         <translation>movingcap, acu: liest während des Betriebs Befehle von der Standardeingabe, einen pro Zeile: state, standstill, drop (alle Clients abbrechen: ein durchtrenntes Kabel), fault CODE; movingcap: heartbeat off|on; acu: mains on|off, sto on|off, master SPEED (der Master des elektronischen Getriebes, u/s), watchdog MS.</translation>
+    </message>
+    <message>
+        <source>Which device: movingcap, canopen, nm17x or acu.</source>
+        <translation>Welches Gerät: movingcap, canopen, nm17x oder acu.</translation>
+    </message>
+    <message>
+        <source>give --slcan-port PORT (0..65535) and/or --virtualcan IFACE</source>
+        <translation>--slcan-port PORT (0..65535) und/oder --virtualcan SCHNITTSTELLE angeben</translation>
+    </message>
+    <message>
+        <source>give the device to simulate (movingcap, canopen, nm17x or acu), e.g. drivebench-sim movingcap --refgo-port PORT [--slcan-port PORT]</source>
+        <translation>das zu simulierende Gerät angeben (movingcap, canopen, nm17x oder acu), z. B. drivebench-sim movingcap --refgo-port PORT [--slcan-port PORT]</translation>
+    </message>
+    <message>
+        <source>no door to serve; give --refgo-port PORT and/or --slcan-port PORT (0 = any free port)</source>
+        <translation>kein Zugang zu bedienen; --refgo-port PORT und/oder --slcan-port PORT angeben (0 = ein freier Port)</translation>
+    </message>
+    <message>
+        <source>%1 takes a port number 0..65535</source>
+        <translation>%1 erwartet eine Portnummer 0..65535</translation>
+    </message>
+    <message>
+        <source>--set takes INDEX:SUB=VALUE, not &apos;%1&apos;</source>
+        <translation>--set erwartet INDEX:SUB=WERT, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--reject-write takes INDEX:SUB, not &apos;%1&apos;</source>
+        <translation>--reject-write erwartet INDEX:SUB, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>nm17x needs --slcan-port PORT (0..65535) and/or --virtualcan IFACE; --control-port takes a port 0..65535</source>
+        <translation>nm17x braucht --slcan-port PORT (0..65535) und/oder --virtualcan SCHNITTSTELLE; --control-port erwartet einen Port 0..65535</translation>
+    </message>
+    <message>
+        <source>--bitrate takes bit/s, e.g. 125000 or 250000</source>
+        <translation>--bitrate erwartet bit/s, z. B. 125000 oder 250000</translation>
+    </message>
+    <message>
+        <source>acu needs --vabus-port PORT (0 = any free port)</source>
+        <translation>acu braucht --vabus-port PORT (0 = ein freier Port)</translation>
+    </message>
+    <message>
+        <source>--vabus-port takes a port number 0..65535</source>
+        <translation>--vabus-port erwartet eine Portnummer 0..65535</translation>
+    </message>
+    <message>
+        <source>--watchdog-ms takes a time in ms (1 or more)</source>
+        <translation>--watchdog-ms erwartet eine Zeit in ms (1 oder mehr)</translation>
+    </message>
+    <message>
+        <source>--slow-ms, --drop-after and --startup-delay-ms take a number</source>
+        <translation>--slow-ms, --drop-after und --startup-delay-ms erwarten eine Zahl</translation>
+    </message>
+    <message>
+        <source>--fail takes silent, garbage, slow, drop-after or split, not &apos;%1&apos;</source>
+        <translation>--fail erwartet silent, garbage, slow, drop-after oder split, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--slave takes a node id 1..63, not &apos;%1&apos;</source>
+        <translation>--slave erwartet eine Knotennummer 1..63, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--acu-fault takes a fault code in hex, e.g. 2714, not &apos;%1&apos;</source>
+        <translation>--acu-fault erwartet einen Störungscode hexadezimal, z. B. 2714, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>--acu-inputs takes mains, sto, limit-pos, limit-neg, not &apos;%1&apos;</source>
+        <translation>--acu-inputs erwartet mains, sto, limit-pos, limit-neg, nicht „%1“</translation>
     </message>
 </context>
 </TS>

@@ -191,8 +191,9 @@ int main(int argc, char *argv[])
     parser.addOptions({ refgoPort, slcanPort, set, virtualCan, nodes, eds, noReply, rejectWrite,
                         devices, controlPort, fault, control, bitrate });
     app::addAcuOptions(parser);
-    parser.addPositionalArgument(QStringLiteral("device"),
-                                 QCoreApplication::translate("sim", "Which device: movingcap."));
+    parser.addPositionalArgument(
+        QStringLiteral("device"),
+        QCoreApplication::translate("sim", "Which device: movingcap, canopen, nm17x or acu."));
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -229,9 +230,9 @@ int main(int argc, char *argv[])
                 << (!ids ? ids.error().message()
                         : parser.isSet(noReply) && !silent
                         ? silent.error().message()
-                        : QStringLiteral("give --slcan-port PORT "
-                                         "(0..65535) and/or "
-                                         "--virtualcan IFACE"))
+                        : QCoreApplication::translate("sim",
+                                                      "give --slcan-port PORT (0..65535) and/or "
+                                                      "--virtualcan IFACE"))
                 << Qt::endl;
             return 2;
         }
@@ -265,15 +266,20 @@ int main(int argc, char *argv[])
         return app.exec();
     }
     if (args.size() != 1 || args.first() != QLatin1String("movingcap")) {
-        err << "drivebench-sim: give the device to simulate: drivebench-sim movingcap "
-               "--refgo-port PORT [--slcan-port PORT], or drivebench-sim canopen --slcan-port "
-               "PORT --nodes 1,2,5"
+        err << "drivebench-sim: "
+            << QCoreApplication::translate(
+                   "sim",
+                   "give the device to simulate (movingcap, canopen, nm17x or acu), "
+                   "e.g. drivebench-sim movingcap --refgo-port PORT "
+                   "[--slcan-port PORT]")
             << Qt::endl;
         return 2;
     }
     if (!parser.isSet(refgoPort) && !parser.isSet(slcanPort)) {
-        err << "drivebench-sim: no door to serve; give --refgo-port PORT and/or --slcan-port "
-               "PORT (0 = any free port)"
+        err << "drivebench-sim: "
+            << QCoreApplication::translate("sim",
+                                           "no door to serve; give --refgo-port PORT and/or "
+                                           "--slcan-port PORT (0 = any free port)")
             << Qt::endl;
         return 2;
     }
@@ -288,8 +294,11 @@ int main(int argc, char *argv[])
     const int refgo = portOf(refgoPort);
     const int slcan = portOf(slcanPort);
     if (refgo == -2 || slcan == -2) {
-        err << "drivebench-sim: --" << (refgo == -2 ? "refgo" : "slcan")
-            << "-port takes a port number 0..65535" << Qt::endl;
+        err << "drivebench-sim: "
+            << QCoreApplication::translate("sim", "%1 takes a port number 0..65535")
+                   .arg(refgo == -2 ? QStringLiteral("--refgo-port")
+                                    : QStringLiteral("--slcan-port"))
+            << Qt::endl;
         return 2;
     }
 
@@ -298,7 +307,9 @@ int main(int argc, char *argv[])
         const qsizetype eq = assignment.indexOf(QLatin1Char('='));
         const auto address = ObjectAddress::parse(assignment.left(eq));
         if (eq < 0 || !address) {
-            err << "drivebench-sim: --set takes INDEX:SUB=VALUE, not '" << assignment << "'"
+            err << "drivebench-sim: "
+                << QCoreApplication::translate("sim", "--set takes INDEX:SUB=VALUE, not '%1'")
+                       .arg(assignment)
                 << Qt::endl;
             return 2;
         }
@@ -319,7 +330,9 @@ int main(int argc, char *argv[])
     for (const QString &text : parser.values(rejectWrite)) {
         const auto address = ObjectAddress::parse(text);
         if (!address) {
-            err << "drivebench-sim: --reject-write takes INDEX:SUB, not '" << text << "'"
+            err << "drivebench-sim: "
+                << QCoreApplication::translate("sim", "--reject-write takes INDEX:SUB, not '%1'")
+                       .arg(text)
                 << Qt::endl;
             return 2;
         }

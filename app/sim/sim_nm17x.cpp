@@ -29,8 +29,11 @@ int runNm17x(const Nm17xOptions &options, void (*quitOnSignals)())
     const auto control = options.controlPort ? portOf(*options.controlPort) : std::nullopt;
     if ((options.slcanPort && !slcan) || (options.controlPort && !control)
         || (!options.slcanPort && !options.virtualCan)) {
-        err << "drivebench-sim: nm17x needs --slcan-port PORT (0..65535) and/or --virtualcan "
-               "IFACE; --control-port takes a port 0..65535"
+        err << "drivebench-sim: "
+            << QCoreApplication::translate("sim",
+                                           "nm17x needs --slcan-port PORT (0..65535) and/or "
+                                           "--virtualcan IFACE; --control-port takes a port "
+                                           "0..65535")
             << Qt::endl;
         return 2;
     }
@@ -38,7 +41,9 @@ int runNm17x(const Nm17xOptions &options, void (*quitOnSignals)())
     const int bitrate =
         options.bitrate ? options.bitrate->toInt(&bitrateOk) : nm17x::kDeliveryBitrate;
     if (!bitrateOk || bitrate <= 0) {
-        err << "drivebench-sim: --bitrate takes bit/s, e.g. 125000 or 250000" << Qt::endl;
+        err << "drivebench-sim: "
+            << QCoreApplication::translate("sim", "--bitrate takes bit/s, e.g. 125000 or 250000")
+            << Qt::endl;
         return 2;
     }
     nm17x::Nm17xSim sim;

@@ -114,7 +114,8 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
            const std::function<void(AcuConsole *)> &readLines)
 {
     if (!parser.isSet(vabusPort())) {
-        err << "drivebench-sim: acu needs --vabus-port PORT (0 = any free port)" << Qt::endl;
+        err << "drivebench-sim: " << Tr::tr("acu needs --vabus-port PORT (0 = any free port)")
+            << Qt::endl;
         return 2;
     }
     const int port = number(parser, vabusPort(), 65535);
@@ -125,9 +126,10 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
     const int startup = number(parser, startupDelay(), 600000);
     if (port < 0 || watchdog < 1 || slow < 0 || drop < 0 || startup < 0) {
         err << "drivebench-sim: "
-            << (port < 0           ? "--vabus-port takes a port number 0..65535"
-                    : watchdog < 1 ? "--watchdog-ms takes a time in ms (1 or more)"
-                                   : "--slow-ms, --drop-after and --startup-delay-ms take a number")
+            << (port < 0           ? Tr::tr("--vabus-port takes a port number 0..65535")
+                    : watchdog < 1 ? Tr::tr("--watchdog-ms takes a time in ms (1 or more)")
+                                   : Tr::tr("--slow-ms, --drop-after and --startup-delay-ms take "
+                                            "a number"))
             << Qt::endl;
         return 2;
     }
@@ -135,8 +137,10 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
     if (parser.isSet(fail())) {
         const auto failure = vabus::Server::failureFromName(parser.value(fail()));
         if (!failure) {
-            err << "drivebench-sim: --fail takes silent, garbage, slow, drop-after or split, not '"
-                << parser.value(fail()) << "'" << Qt::endl;
+            err << "drivebench-sim: "
+                << Tr::tr("--fail takes silent, garbage, slow, drop-after or split, not '%1'")
+                       .arg(parser.value(fail()))
+                << Qt::endl;
             return 2;
         }
         mode.failure = *failure;
@@ -149,7 +153,8 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
         bool ok = false;
         const int node = id.toInt(&ok);
         if (!ok || node < 1 || node > 63) {
-            err << "drivebench-sim: --slave takes a node id 1..63, not '" << id << "'" << Qt::endl;
+            err << "drivebench-sim: " << Tr::tr("--slave takes a node id 1..63, not '%1'").arg(id)
+                << Qt::endl;
             return 2;
         }
         acu->addSystemBusSlave(quint8(node));
@@ -158,8 +163,10 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
         bool ok = false;
         const uint code = parser.value(acuFault()).toUInt(&ok, 16);
         if (!ok || code == 0 || code > 0xFFFF) {
-            err << "drivebench-sim: --acu-fault takes a fault code in hex, e.g. 2714, not '"
-                << parser.value(acuFault()) << "'" << Qt::endl;
+            err << "drivebench-sim: "
+                << Tr::tr("--acu-fault takes a fault code in hex, e.g. 2714, not '%1'")
+                       .arg(parser.value(acuFault()))
+                << Qt::endl;
             return 2;
         }
         acu->raiseFault(quint16(code));
@@ -171,8 +178,9 @@ int runAcu(const QCommandLineParser &parser, QTextStream &out, QTextStream &err,
         else if (name == QLatin1String("sto"))
             acu->motion().setSto(false);
         else if (name != QLatin1String("limit-pos") && name != QLatin1String("limit-neg")) {
-            err << "drivebench-sim: --acu-inputs takes mains, sto, limit-pos, limit-neg, not '"
-                << name << "'" << Qt::endl;
+            err << "drivebench-sim: "
+                << Tr::tr("--acu-inputs takes mains, sto, limit-pos, limit-neg, not '%1'").arg(name)
+                << Qt::endl;
             return 2;
         }
     }

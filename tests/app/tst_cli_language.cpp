@@ -2,6 +2,7 @@
 // not that locale is generated on the machine), English for LANG=C, and --lang / DRIVEBENCH_LANG
 // choose explicitly. Checked on the error of a read from a port nobody listens on.
 #include "clirun.h"
+#include "englishtext.h"
 #include "peers.h"
 
 #include <QProcessEnvironment>
@@ -9,7 +10,8 @@
 
 namespace {
 
-db::test::CliRun runWith(const QStringList &args, const QList<QPair<QString, QString>> &vars)
+db::test::CliRun runWith(const QStringList &args, const QList<QPair<QString, QString>> &vars,
+                         const QString &program = QStringLiteral(DRIVEBENCH_CLI))
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     for (const char *name : { "LC_ALL", "LC_MESSAGES", "LANG", "LANGUAGE", "DRIVEBENCH_LANG" })
@@ -20,7 +22,7 @@ db::test::CliRun runWith(const QStringList &args, const QList<QPair<QString, QSt
     p.setProcessEnvironment(env);
     QElapsedTimer clock;
     clock.start();
-    p.start(QStringLiteral(DRIVEBENCH_CLI), args);
+    p.start(program, args);
     p.waitForFinished(30000);
     return db::test::finishedRun(p, clock, 30000);
 }
@@ -77,6 +79,54 @@ private slots:
                              "(nothing listens on that port)\n")
                   .arg(address);
         QCOMPARE(run.err, expected);
+    }
+
+    // Every usage error of the command line tool and the simulator is German for LANG=de: none
+    // reads as an English sentence.
+    void usageErrorsInGerman_data()
+    {
+        QTest::addColumn<QString>("program");
+        QTest::addColumn<QStringList>("args");
+        const QString cli = QStringLiteral(DRIVEBENCH_CLI);
+        const QString sim = QStringLiteral(DRIVEBENCH_SIM);
+        for (const char *command :
+             { "read",     "write",  "refgo",     "scan",   "nmt",     "lss",  "pdo",
+               "nm17x",    "dcf",    "eds-check", "backup", "restore", "diff", "dump",
+               "morse",    "enable", "disable",   "reset",  "home",    "move", "jog",
+               "velocity", "halt",   "stop",      "travel", "record",  "bogus" })
+            QTest::newRow(command) << cli << QStringList { QString::fromLatin1(command) };
+        QTest::newRow("nmt bad") << cli
+                                 << QStringList { "nmt", "canopen+slcan://127.0.0.1:1?node=5",
+                                                  "jump" };
+        QTest::newRow("move bad") << cli
+                                  << QStringList { "move", "refgo://127.0.0.1:1", "--abs", "x" };
+        QTest::newRow("record no obj")
+            << cli << QStringList { "record", "refgo://127.0.0.1:1", "--duration", "1" };
+        QTest::newRow("sim no device") << sim << QStringList();
+        QTest::newRow("sim bogus") << sim << QStringList { "bogus" };
+        QTest::newRow("sim movingcap") << sim << QStringList { "movingcap" };
+        QTest::newRow("sim movingcap port")
+            << sim << QStringList { "movingcap", "--refgo-port", "x" };
+        QTest::newRow("sim movingcap set")
+            << sim << QStringList { "movingcap", "--refgo-port", "0", "--set", "zz" };
+        QTest::newRow("sim canopen") << sim << QStringList { "canopen" };
+        QTest::newRow("sim nm17x") << sim << QStringList { "nm17x" };
+        QTest::newRow("sim acu") << sim << QStringList { "acu" };
+        QTest::newRow("sim acu fail")
+            << sim << QStringList { "acu", "--vabus-port", "0", "--fail", "x" };
+        QTest::newRow("sim acu slave")
+            << sim << QStringList { "acu", "--vabus-port", "0", "--slave", "99" };
+    }
+    void usageErrorsInGerman()
+    {
+        QFETCH(QString, program);
+        QFETCH(QStringList, args);
+        const auto run =
+            runWith(args, { { QStringLiteral("LANG"), QStringLiteral("de_DE.UTF-8") } }, program);
+        QVERIFY2(run.exitCode == 2, qPrintable(run.err));
+        QVERIFY(!run.err.trimmed().isEmpty());
+        for (const QString &line : run.err.split(u'\n', Qt::SkipEmptyParts))
+            QVERIFY2(!db::test::readsAsEnglish(line), qPrintable(line));
     }
 
     // The help is translated too, and an unknown --lang is a usage error.

@@ -10,6 +10,7 @@
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "devices/movingcap/movingcapdrive.h"
+#include "englishtext.h"
 #include "mainwindow.h"
 #include "translations/language.h"
 #include "widgets/connection/drivestatuspanel.h"
@@ -68,44 +69,6 @@ QSet<QString> translatedSources()
         }
     }
     return sources;
-}
-
-// A text that reads as an English sentence: two or more English function words and no German
-// one ("Connect to the drive" but not "Antrieb an der Achse", not "RefGo TPSR").
-bool readsAsEnglish(const QString &text)
-{
-    static const QSet<QString> english = {
-        QStringLiteral("the"),  QStringLiteral("and"),  QStringLiteral("of"),
-        QStringLiteral("to"),   QStringLiteral("is"),   QStringLiteral("are"),
-        QStringLiteral("not"),  QStringLiteral("with"), QStringLiteral("from"),
-        QStringLiteral("for"),  QStringLiteral("this"), QStringLiteral("that"),
-        QStringLiteral("no"),   QStringLiteral("on"),   QStringLiteral("at"),
-        QStringLiteral("by"),   QStringLiteral("be"),   QStringLiteral("it"),
-        QStringLiteral("or"),   QStringLiteral("its"),  QStringLiteral("yet"),
-        QStringLiteral("when"), QStringLiteral("has"),  QStringLiteral("have"),
-        QStringLiteral("was"),  QStringLiteral("were"), QStringLiteral("will"),
-    };
-    static const QSet<QString> german = {
-        QStringLiteral("der"),   QStringLiteral("die"),    QStringLiteral("das"),
-        QStringLiteral("und"),   QStringLiteral("ist"),    QStringLiteral("nicht"),
-        QStringLiteral("mit"),   QStringLiteral("von"),    QStringLiteral("für"),
-        QStringLiteral("ein"),   QStringLiteral("eine"),   QStringLiteral("zu"),
-        QStringLiteral("im"),    QStringLiteral("den"),    QStringLiteral("dem"),
-        QStringLiteral("des"),   QStringLiteral("auf"),    QStringLiteral("oder"),
-        QStringLiteral("bei"),   QStringLiteral("kein"),   QStringLiteral("keine"),
-        QStringLiteral("wird"),  QStringLiteral("werden"), QStringLiteral("sind"),
-        QStringLiteral("noch"),  QStringLiteral("aus"),    QStringLiteral("über"),
-        QStringLiteral("einer"), QStringLiteral("eines"),  QStringLiteral("nach"),
-    };
-    static const QRegularExpression word(QStringLiteral("[A-Za-zÄÖÜäöüß]+"));
-    int en = 0;
-    for (auto it = word.globalMatch(text); it.hasNext();) {
-        const QString w = it.next().captured().toLower();
-        if (german.contains(w))
-            return false;
-        en += english.contains(w) ? 1 : 0;
-    }
-    return en >= 2;
 }
 
 QString plain(const QString &text)
@@ -281,7 +244,7 @@ private Q_SLOTS:
                 const QString t = line.trimmed();
                 if (sources.contains(t))
                     leftovers << QStringLiteral("not translated: '%1' (%2)").arg(t, it.value());
-                else if (readsAsEnglish(t))
+                else if (test::readsAsEnglish(t))
                     leftovers << QStringLiteral("English: '%1' (%2)").arg(t, it.value());
             }
         }
