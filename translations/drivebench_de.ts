@@ -4545,6 +4545,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1: the drive stopped at %2, short of the target %3 (halted by another program or the drive itself)</source>
         <translation>%1: Der Antrieb hat bei %2 angehalten, vor dem Ziel %3 (angehalten von einem anderen Programm oder vom Antrieb selbst)</translation>
     </message>
+    <message>
+        <source>Motion block</source>
+        <translation>Fahrsatz</translation>
+    </message>
 </context>
 <context>
     <name>db::nm17x::BroadcastAddressing</name>

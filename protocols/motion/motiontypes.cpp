@@ -37,7 +37,7 @@ QString commandName(CommandKind kind)
     case CommandKind::Reset:
         return QStringLiteral("MC_Reset");
     case CommandKind::MotionBlock:
-        return QStringLiteral("Motion block");
+        return Tr::tr("Motion block");
     }
     return QStringLiteral("MC_?");
 }
