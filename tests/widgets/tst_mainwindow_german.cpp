@@ -13,6 +13,7 @@
 #include "englishtext.h"
 #include "mainwindow.h"
 #include "translations/language.h"
+#include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
 
