@@ -38,7 +38,6 @@
 #include <QTest>
 #include <QTextDocumentFragment>
 #include <QTimer>
-#include <QXmlStreamReader>
 
 #include <functional>
 
@@ -54,22 +53,29 @@ QSet<QString> translatedSources()
     QFile file(QStringLiteral(DRIVEBENCH_SOURCE_DIR "/translations/drivebench_de.ts"));
     if (!file.open(QIODevice::ReadOnly))
         return {};
+    const QString ts = QString::fromUtf8(file.readAll());
+    static const QRegularExpression message(
+        QStringLiteral("<source>([^<]*)</source>\\s*(?:<comment>[^<]*</"
+                       "comment>\\s*)?<translation>([^<]*)</translation>"));
+    const auto unescape = [](QString t) {
+        return t.replace(QLatin1String("&lt;"), QLatin1String("<"))
+            .replace(QLatin1String("&gt;"), QLatin1String(">"))
+            .replace(QLatin1String("&quot;"), QLatin1String("\""))
+            .replace(QLatin1String("&apos;"), QLatin1String("'"))
+            .replace(QLatin1String("&amp;"), QLatin1String("&"));
+    };
     QSet<QString> sources;
-    QXmlStreamReader xml(&file);
-    QString source;
-    while (!xml.atEnd()) {
-        if (xml.readNext() != QXmlStreamReader::StartElement)
-            continue;
-        if (xml.name() == QLatin1String("source")) {
-            source = xml.readElementText();
-        } else if (xml.name() == QLatin1String("translation")) {
-            const QString german = xml.readElementText();
-            if (!german.isEmpty() && german != source && !source.contains(QLatin1Char('%'))
-                && source.size() > 2)
-                sources.insert(source);
-        }
+    QSet<QString> same;
+    for (auto it = message.globalMatch(ts); it.hasNext();) {
+        const auto m = it.next();
+        const QString source = unescape(m.captured(1));
+        const QString german = unescape(m.captured(2));
+        if (german == source)
+            same.insert(source); // kept as it is somewhere ("Reset" of NMT)
+        else if (!german.isEmpty() && !source.contains(QLatin1Char('%')) && source.size() > 2)
+            sources.insert(source);
     }
-    return sources;
+    return sources - same;
 }
 
 QString plain(const QString &text)

@@ -76,7 +76,7 @@ Nm17xLinePanel::Nm17xLinePanel(QWidget *parent)
     m_speed->addItem(QCoreApplication::translate("Nm17x", "fast"), int(Speed::Fast));
     m_group->setRange(1, 8);
     m_unit->addItem(QStringLiteral("mm"));
-    m_unit->addItem(QStringLiteral("inch"));
+    m_unit->addItem(tr("inch"));
 
     const auto button = [this](const QString &text, const QString &name, auto slot) {
         auto *b = new QPushButton(text, this);
