@@ -6121,7 +6121,7 @@ send 605 40 08 10 00</translation>
     </message>
     <message>
         <source>units</source>
-        <translation>Einheiten</translation>
+        <translation>Einh.</translation>
     </message>
     <message>
         <source>deadman watchdog: the GUI stopped refreshing for %1 ms</source>
