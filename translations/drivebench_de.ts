@@ -2399,6 +2399,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>the inverter did not report &apos;in gear&apos; (status bit 10) within %1 s</source>
         <translation>der Umrichter hat nicht innerhalb von %1 s „eingekuppelt“ (Statusbit 10) gemeldet</translation>
     </message>
+    <message>
+        <source>the connection has no status source</source>
+        <translation>die Verbindung hat keine Statusquelle</translation>
+    </message>
+    <message>
+        <source>411 was not read</source>
+        <translation>411 wurde nicht gelesen</translation>
+    </message>
 </context>
 <context>
     <name>db::bonfiglioli::AcuStatusSource</name>
@@ -3193,6 +3201,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>profile torque</source>
         <translation>Profildrehmoment</translation>
+    </message>
+    <message>
+        <source>connection to %1 closed</source>
+        <translation>Verbindung zu %1 geschlossen</translation>
+    </message>
+    <message>
+        <source>the statusword was not read</source>
+        <translation>das Statuswort wurde nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -5183,10 +5199,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>kein Qt-CAN-Plugin „%1“ für Schnittstelle %2 (vorhandene Plugins: %3)</translation>
     </message>
     <message>
-        <source>%1 has no interface &apos;%2&apos; (available: %3)</source>
-        <translation>%1 hat keine Schnittstelle „%2“ (vorhanden: %3)</translation>
-    </message>
-    <message>
         <source>cannot create %1 interface &apos;%2&apos;: %3 (available: %4)</source>
         <translation>%1-Schnittstelle „%2“ kann nicht angelegt werden: %3 (vorhanden: %4)</translation>
     </message>
@@ -5309,6 +5321,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>disconnected from %1</source>
         <translation>Verbindung zu %1 getrennt</translation>
+    </message>
+    <message>
+        <source>CAN interface &apos;%1&apos; does not exist for plugin %2 (available: %3)</source>
+        <translation>CAN-Schnittstelle „%1“ gibt es für das Plugin %2 nicht (vorhanden: %3)</translation>
+    </message>
+    <message>
+        <source>cannot use %1 interface &apos;%2&apos;: %3 (available: %4)</source>
+        <translation>%1-Schnittstelle „%2“ ist nicht verwendbar: %3 (vorhanden: %4)</translation>
     </message>
 </context>
 <context>
