@@ -69,6 +69,9 @@ Result<void> checkCanopen(const ConnectionUri &uri)
 
 Result<void> prepareCanopen(ConnectionPlan &plan)
 {
+    // A missing interface is named now: some plugins would open another one instead.
+    if (auto present = canopen::CanBusFactory::checkInterface(plan.uri); !present)
+        return present.error();
     auto dictionary = canopenDictionary(plan.uri);
     if (!dictionary)
         return dictionary.error();

@@ -208,11 +208,13 @@ void AcuStatusSource::connectionMade()
 
 void AcuStatusSource::poll()
 {
-    const QList<ObjectAddress> objects = cycleObjects();
     if (!m_blockUsable) {
-        readEach(objects);
+        readEach(dueObjects());
         return;
     }
+    // One telegram costs the same whatever it holds: the block always holds every object some
+    // consumer wants, so its definition stays as long as the consumers do.
+    const QList<ObjectAddress> objects = cycleObjects();
     // A holder's objects changed what the block must hold: define it again.
     if (!m_blockDefined
         || addressesOf(blockItems(connection()->dictionary(), objects)) != m_blockAddresses)
@@ -228,7 +230,7 @@ void AcuStatusSource::defineBlock(const QList<ObjectAddress> &objects)
     const auto text = vabus::blockDefinition(items);
     if (!text) {
         m_blockUsable = false;
-        readEach(objects);
+        readEach(dueObjects());
         return;
     }
     ++m_definitions;
@@ -251,7 +253,7 @@ void AcuStatusSource::defineBlock(const QList<ObjectAddress> &objects)
         }
         if (++m_blockFailures >= kMaxBlockFailures)
             m_blockUsable = false;
-        readEach(objects); // this cycle one by one; the next tries the block again
+        readEach(dueObjects()); // this cycle one by one; the next tries the block again
     });
 }
 
@@ -272,7 +274,7 @@ void AcuStatusSource::readBlock(const QList<ObjectAddress> &objects)
             : Result<QList<QVariant>>(reply->error());
         if (!values) {
             for (const auto &item : items)
-                storeError(item.address, values.error().toString());
+                storeError(item.address, values.error());
             // A device error (e.g. an inverter reset lost the definition) or an answer that
             // does not fit: define the block again next cycle.
             m_blockDefined = false;
@@ -280,8 +282,9 @@ void AcuStatusSource::readBlock(const QList<ObjectAddress> &objects)
             for (qsizetype i = 0; i < items.size(); ++i)
                 store(items.at(i).address, values.value().at(i));
         }
-        // What a block cannot hold (parameters from 1000 on) one by one; ends the cycle.
-        QList<ObjectAddress> rest = objects;
+        // What a block cannot hold (parameters from 1000 on) one by one, when due; ends the
+        // cycle.
+        QList<ObjectAddress> rest = dueObjects();
         for (const auto &item : items)
             rest.removeAll(item.address);
         readEach(rest);

@@ -157,34 +157,59 @@ void AcuSteps::readStatus()
 {
     if (m_done)
         return;
-    Reply *r = m_axis->connection()->read(ObjectAddress(kStatusWord, 0));
-    connect(r, &Reply::finished, this, [this, r] {
-        r->deleteLater();
-        if (m_done)
-            return;
-        if (!r->ok()) {
-            fail(r->error());
+    if (!m_source) {
+        m_source = m_axis->statusSource();
+        if (!m_source) {
+            fail(Error(Error::Kind::NotSupported, Tr::tr("the connection has no status source")));
             return;
         }
-        const quint16 word = quint16(r->value().toUInt());
-        m_lastStatus = word;
-        const Step &s = m_steps.at(m_index);
-        if (s.pred(word)) {
-            next();
-            return;
-        }
-        if (s.timeoutMs == kOnce) {
-            fail(Error(Error::Kind::DeviceError, s.failText));
-            return;
-        }
-        if ((word & kFaultBit) && !s.faultOk) {
-            fail(Error(Error::Kind::DeviceError,
-                       Tr::tr("the inverter went to fault (status word 0x%1)")
-                           .arg(word, 4, 16, QLatin1Char('0'))));
-            return;
-        }
-        m_retry.start();
-    });
+        connect(m_source, &StatusSource::updated, this, &AcuSteps::onStatusUpdated);
+    }
+    m_waitSerial = m_source->refresh(this);
+    if (!m_axis->connection()->isConnected())
+        onStatusUpdated(); // no cycle will come
+}
+
+void AcuSteps::onStatusUpdated()
+{
+    if (m_done || m_waitSerial == 0)
+        return;
+    if (!m_axis->connection()->isConnected()) {
+        m_waitSerial = 0;
+        fail(motion::ConnectionAxis::lossCause(*m_axis->connection()));
+        return;
+    }
+    if (m_source->serial() < m_waitSerial)
+        return; // a cycle that may have read before the ask
+    m_waitSerial = 0;
+    const ObjectAddress address(kStatusWord, 0);
+    if (!m_source->isFresh(address)) {
+        const Error error = m_source->readError(address);
+        fail(error.isError() ? error : Error(Error::Kind::Malformed, Tr::tr("411 was not read")));
+        return;
+    }
+    onStatus(quint16(m_source->value(address).toUInt()));
+}
+
+void AcuSteps::onStatus(quint16 word)
+{
+    m_lastStatus = word;
+    const Step &s = m_steps.at(m_index);
+    if (s.pred(word)) {
+        next();
+        return;
+    }
+    if (s.timeoutMs == kOnce) {
+        fail(Error(Error::Kind::DeviceError, s.failText));
+        return;
+    }
+    if ((word & kFaultBit) && !s.faultOk) {
+        fail(Error(Error::Kind::DeviceError,
+                   Tr::tr("the inverter went to fault (status word 0x%1)")
+                       .arg(word, 4, 16, QLatin1Char('0'))));
+        return;
+    }
+    m_retry.start();
 }
 
 void AcuSteps::readValue()

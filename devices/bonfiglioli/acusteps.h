@@ -8,11 +8,14 @@
 //        |                              |--fault bit or timeout--> fail
 //        +--error--> fail          call(fn) --ok--> next, --error--> fail
 //
-// Writes go to the RAM data set (P:5). The result reply finishes when the last step is done,
-// or fails with the first error; cancel() fails it at once and stops.
+// Writes go to the RAM data set (P:5). 411 comes from the axis's status source, read after the
+// step asked for it (StatusSource::refresh): the source stays the connection's one reader of
+// the status word. The result reply finishes when the last step is done, or fails with the
+// first error; cancel() fails it at once and stops.
 
 #include "core/reply.h"
 #include "core/result.h"
+#include "core/statussource.h"
 
 #include <QObject>
 #include <QPointer>
@@ -28,7 +31,7 @@ class AcuSteps : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr int kStatusReadMs = 10; // between two 411 reads while waiting
+    static constexpr int kStatusReadMs = 10; // between two asks for 411 while waiting
     static constexpr quint8 kRamDataSet = 5; // data set 0 in RAM
 
     AcuSteps(AcuAxis *axis, const QString &name);
@@ -70,6 +73,8 @@ private:
     };
     void next();
     void readStatus();
+    void onStatusUpdated();
+    void onStatus(quint16 word);
     void readValue();
     void fail(const Error &error);
 
@@ -83,6 +88,8 @@ private:
     std::function<QVariant()> m_result;
     bool m_done = false;
     quint16 m_lastStatus = 0;
+    QPointer<StatusSource> m_source;
+    quint64 m_waitSerial = 0; // the source's cycle that brings 411 read after the ask
 };
 
 } // namespace db::bonfiglioli

@@ -31,6 +31,14 @@ Result<int> CanBusFactory::bitrateOf(const ConnectionUri &uri)
     return uri.queryInt(QStringLiteral("bitrate"), 1000, 8000000);
 }
 
+Result<void> CanBusFactory::checkInterface(const ConnectionUri &uri)
+{
+    const QString transport = transportOf(uri);
+    if (transport.isEmpty() || transport == u"slcan")
+        return {};
+    return QtCanBus::checkInterface(transport, uri.host());
+}
+
 Result<CanBus *> CanBusFactory::makeBus(const ConnectionUri &uri, QObject *parent)
 {
     const QString transport = transportOf(uri);

@@ -25,6 +25,9 @@ public:
     // that is not canopen+..., a missing host/interface or a bad bitrate; NotSupported when the
     // build has no SLCAN transport.
     static Result<CanBus *> makeBus(const ConnectionUri &uri, QObject *parent = nullptr);
+    // Whether the interface a Qt CAN plugin URI names is there (QtCanBus::checkInterface);
+    // nothing to check for SLCAN, whose host answers or not only when the bus opens.
+    static Result<void> checkInterface(const ConnectionUri &uri);
     // "socketcan" for "canopen+socketcan"; empty when the scheme is not a CANopen one.
     static QString transportOf(const ConnectionUri &uri);
     // The ?bitrate= of a URI (1000..8000000), 0 when not given; InvalidArgument names a bad one.

@@ -55,7 +55,7 @@ QList<ObjectAddress> Cia402StatusSource::polledObjects() const
 
 void Cia402StatusSource::poll()
 {
-    readEach(cycleObjects());
+    readEach(dueObjects());
 }
 
 QString Cia402StatusSource::statusWordLabel() const

@@ -7,7 +7,7 @@ namespace db::cia402 {
 // The status of a CiA 402 drive (movingcap.md 5, 7, 8.1): statusword 6041h and its state,
 // mode 6061h, position, velocity and current, the fault register 1002h (bits 0-15 errors, 16-31
 // warnings), the last error 603Fh with the description's text, and the digital I/O 60FDh and
-// 60FEh.1. One cycle reads every object at once.
+// 60FEh.1. One cycle reads its due objects at once (StatusSource).
 class Cia402StatusSource : public StatusSource
 {
     Q_OBJECT

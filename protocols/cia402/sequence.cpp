@@ -1,6 +1,8 @@
 #include "sequence.h"
 
+#include "cia402statussource.h"
 #include "statusword.h"
+
 #include <QCoreApplication>
 
 namespace {
@@ -117,22 +119,45 @@ void Sequence::poll()
 {
     if (!isRunning())
         return;
-    Reply *r = m_connection->read(kStatusword);
-    m_request = r;
-    connect(r, &Reply::finished, this, [this, r] {
-        r->deleteLater();
-        if (isRunning() && r == m_request)
-            onStatus(r);
-    });
+    if (!m_source) {
+        m_source = Cia402StatusSource::sourceOf(m_connection);
+        connect(m_source, &StatusSource::updated, this, &Sequence::onStatusUpdated);
+    }
+    m_waitSerial = m_source->refresh(this);
+    if (!m_connection->isConnected())
+        onStatusUpdated(); // no cycle will come
 }
 
-void Sequence::onStatus(Reply *reply)
+void Sequence::onStatusUpdated()
 {
-    if (!reply->ok()) {
-        fail(reply->error().prefixed(m_name));
+    if (!isRunning() || m_waitSerial == 0)
+        return;
+    if (!m_connection->isConnected()) {
+        m_waitSerial = 0;
+        const Error lost = m_connection->lastError();
+        fail((lost.isError()
+                  ? lost
+                  : Error(Error::Kind::Disconnected,
+                          Tr::tr("connection to %1 closed").arg(m_connection->uri().toString())))
+                 .prefixed(m_name));
         return;
     }
-    m_statusword = quint16(reply->value().toULongLong());
+    if (m_source->serial() < m_waitSerial)
+        return; // a cycle that may have read before the ask
+    m_waitSerial = 0;
+    if (!m_source->isFresh(kStatusword)) {
+        Error error = m_source->readError(kStatusword);
+        if (!error.isError())
+            error = Error(Error::Kind::Malformed, Tr::tr("the statusword was not read"));
+        fail(error.prefixed(m_name));
+        return;
+    }
+    onStatus(quint16(m_source->value(kStatusword).toULongLong()));
+}
+
+void Sequence::onStatus(quint16 statusword)
+{
+    m_statusword = statusword;
     QString why;
     switch (m_steps[m_index].check(m_statusword, why)) {
     case WaitVerdict::Reached:

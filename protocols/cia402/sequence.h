@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/deviceconnection.h"
+#include "core/statussource.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -19,8 +20,13 @@ enum class WaitVerdict { Pending, Reached, Failed };
 // A CiA 402 procedure as a list of steps run one after the other over any DeviceConnection
 // (RefGo OR/OW or CANopen SDO): writes, and waits on the statusword with a time limit.
 //
+// A wait takes the statusword from the connection's status source (a CiA 402 one is made when
+// the connection has none), asking it for a value read after now (StatusSource::refresh): the
+// source stays the one reader of 6041h on the connection, and every view sees what the
+// procedure sees.
+//
 //   Idle --start()--> Running(step i) --write ok / wait Reached--> Running(step i+1) ...
-//                        |   wait Pending: poll 6041h again after kPollIntervalMs
+//                        |   wait Pending: ask for 6041h again after kPollIntervalMs
 //                        |   wait deadline passed       --> Failed (Timeout, names the step)
 //                        |   write/read error, Failed   --> Failed (the cause)
 //                        |   cancel()                   --> Failed (the given error)
@@ -67,7 +73,8 @@ private:
 
     void runStep();
     void poll();
-    void onStatus(Reply *reply);
+    void onStatusUpdated();
+    void onStatus(quint16 statusword);
     void next();
     void fail(const Error &error);
     void finishOk();
@@ -77,7 +84,9 @@ private:
     QList<Step> m_steps;
     int m_index = 0;
     QPointer<Reply> m_reply;
-    QPointer<Reply> m_request; // the read/write in flight
+    QPointer<Reply> m_request; // the write in flight
+    QPointer<StatusSource> m_source;
+    quint64 m_waitSerial = 0; // the source's cycle that brings a statusword read after the ask
     QTimer m_pollTimer;
     QTimer m_deadline;
     quint16 m_statusword = 0;

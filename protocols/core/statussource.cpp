@@ -89,26 +89,82 @@ quint64 StatusSource::refresh()
 {
     if (!m_connection || !m_connection->isConnected())
         return m_serial + 1;
+    m_refreshAll = true;
+    return refresh(nullptr);
+}
+
+quint64 StatusSource::refresh(const QObject *requester)
+{
+    if (!m_connection || !m_connection->isConnected())
+        return m_serial + 1;
+    if (const auto it = m_holders.find(requester); it != m_holders.end())
+        it->refresh = true;
     m_refresh = true;
+    m_refreshStatusWord = true;
     if (m_busy)
         return m_serial + 2; // the running cycle, then the fresh one
     m_timer.start(0);
     return m_serial + 1;
 }
 
+QList<ObjectAddress> StatusSource::statusWordObjects() const
+{
+    const QList<ObjectAddress> polled = polledObjects();
+    if (polled.contains(m_statusWordAddress))
+        return { m_statusWordAddress };
+    return {};
+}
+
+void StatusSource::addKnown(QList<ObjectAddress> &to, const QList<ObjectAddress> &objects) const
+{
+    if (!m_connection)
+        return;
+    const ObjectDictionary &dictionary = m_connection->dictionary();
+    for (ObjectAddress address : objects) {
+        if (!to.contains(address) && dictionary.contains(address))
+            to.append(address);
+    }
+}
+
 QList<ObjectAddress> StatusSource::cycleObjects() const
 {
-    QList<ObjectAddress> objects = polledObjects();
-    if (m_holders.isEmpty() || !m_connection)
-        return objects;
-    const ObjectDictionary &dictionary = m_connection->dictionary();
-    for (const Demand &demand : m_holders) {
-        for (ObjectAddress address : demand.extra) {
-            if (!objects.contains(address) && dictionary.contains(address))
-                objects.append(address);
-        }
-    }
+    QList<ObjectAddress> objects = m_users > 0 ? polledObjects() : statusWordObjects();
+    for (const Demand &demand : m_holders)
+        addKnown(objects, demand.extra);
     return objects;
+}
+
+bool StatusSource::isDue(const QElapsedTimer &served, int intervalMs)
+{
+    // Timers may fire a little early: a consumer whose interval has nearly passed is served
+    // now rather than one cycle later.
+    const int slackMs = qMax(2, intervalMs / 8);
+    return !served.isValid() || served.elapsed() + slackMs >= intervalMs;
+}
+
+void StatusSource::planCycle()
+{
+    m_due = statusWordObjects();
+    // Asked for by name: read even where the description does not list it.
+    if (m_refreshStatusWord && m_due.isEmpty() && m_statusWordAddress != ObjectAddress())
+        m_due.append(m_statusWordAddress);
+    m_refreshStatusWord = false;
+    if (m_refreshAll || (m_users > 0 && isDue(m_usersServed, m_intervalMs))) {
+        for (ObjectAddress address : polledObjects()) {
+            if (!m_due.contains(address))
+                m_due.append(address);
+        }
+        if (m_users > 0)
+            m_usersServed.start();
+    }
+    for (Demand &demand : m_holders) {
+        if (!m_refreshAll && !demand.refresh && !isDue(demand.served, demand.intervalMs))
+            continue;
+        addKnown(m_due, demand.extra);
+        demand.served.start();
+        demand.refresh = false;
+    }
+    m_refreshAll = false;
 }
 
 void StatusSource::onStateChanged()
@@ -116,11 +172,20 @@ void StatusSource::onStateChanged()
     ++m_generation; // replies still in flight belong to the old link
     m_busy = false;
     m_refresh = false;
+    m_refreshAll = false;
+    m_refreshStatusWord = false;
     m_pending = 0;
     m_timer.stop();
     m_fresh.clear();
+    m_lastCycle.clear();
+    m_usersServed.invalidate();
+    for (Demand &demand : m_holders) {
+        demand.served.invalidate();
+        demand.refresh = false;
+    }
     if (m_connection && m_connection->isConnected()) {
         m_errors.clear();
+        m_readErrors.clear();
         m_cycles = 0;
         connectionMade();
         schedule(0);
@@ -142,8 +207,8 @@ void StatusSource::start()
         return;
     m_busy = true;
     m_refresh = false; // this cycle's reads start now: it is the fresh one
-    m_fresh.clear();
-    m_errors.clear();
+    m_readThisCycle.clear();
+    planCycle();
     poll();
 }
 
@@ -165,7 +230,7 @@ void StatusSource::readEach(const QList<ObjectAddress> &addresses)
             if (reply->ok())
                 store(reply->address(), reply->value());
             else
-                storeError(reply->address(), reply->error().toString());
+                storeError(reply->address(), reply->error());
             if (--m_pending == 0)
                 finishCycle();
         });
@@ -177,12 +242,16 @@ void StatusSource::store(ObjectAddress address, const QVariant &raw)
     m_values.insert(address, raw);
     m_fresh.insert(address);
     m_errors.remove(address);
+    m_readErrors.remove(address);
+    m_readThisCycle.insert(address);
 }
 
-void StatusSource::storeError(ObjectAddress address, const QString &error)
+void StatusSource::storeError(ObjectAddress address, const Error &error)
 {
     m_fresh.remove(address);
-    m_errors.insert(address, error);
+    m_errors.insert(address, error.toString());
+    m_readErrors.insert(address, error);
+    m_readThisCycle.insert(address);
 }
 
 void StatusSource::finishCycle()
@@ -192,6 +261,7 @@ void StatusSource::finishCycle()
     m_busy = false;
     if (!m_connection || !m_connection->isConnected())
         m_fresh.clear(); // the link went away during the cycle
+    m_lastCycle = m_readThisCycle;
     ++m_cycles;
     ++m_serial;
     Q_EMIT updated();

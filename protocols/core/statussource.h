@@ -1,7 +1,9 @@
 #pragma once
 
+#include "error.h"
 #include "objectaddress.h"
 
+#include <QElapsedTimer>
 #include <QHash>
 #include <QList>
 #include <QObject>
@@ -24,7 +26,7 @@ struct StatusValue
     ObjectAddress address;
     QVariant raw; // the last good raw value; kept (stale) when a later read fails
     QString text; // raw as the description shows it ("12345 units", "10.2 A"), "—" before
-    bool fresh = false; // read successfully in the last cycle
+    bool fresh = false; // its last read succeeded
     QString error; // why the last read failed
 };
 
@@ -53,12 +55,16 @@ struct StatusIoRow
 // device is polled once however many views are open.
 //
 // Polling contract: polling runs while the connection is Connected and at least one user holds
-// it (acquire()/release()). One cycle reads what the family needs and what the holders asked
-// for (every object at once, or one block telegram); the next cycle starts intervalMs() after
-// the previous one finished (the shortest interval a holder asked for), so a slow device is
-// never flooded. A failed read keeps the old value, marked stale, with the error. updated()
-// follows every finished cycle and every disconnect. Whoever needs values read after its own
-// command (an axis after a control word) asks refresh() for them instead of reading itself.
+// it (acquire()/release()). Every cycle reads the status word; every other object only when a
+// consumer that wants it is due, that is when its interval has passed since the cycle that last
+// served it (anonymous users want polledObjects() at intervalMs(), holders their own objects at
+// their own interval), so a fast consumer of four objects does not make the source read nine
+// at its rate. A cycle reads its objects at once (or as one block telegram); the next starts
+// effectiveIntervalMs() after the previous one finished, so a slow device is never flooded. A
+// failed read keeps the old value, marked stale, with the error. updated() follows every
+// finished cycle and every disconnect. Whoever needs values read after its own command (an
+// axis after a control word, a procedure waiting for a state) asks refresh() for them instead
+// of reading itself: the source is the connection's one reader of its status.
 class StatusSource : public QObject
 {
     Q_OBJECT
@@ -91,9 +97,9 @@ public:
     void acquire();
     void release();
     // A holder with needs of its own (an axis following its motion): cycles at least every
-    // intervalMs (the shortest interval of all holders wins), and `extra` objects read in every
-    // cycle besides polledObjects(). Acquiring again replaces the holder's needs; release(holder)
-    // or the holder's destruction ends them.
+    // intervalMs (the shortest interval of all holders wins), and the status word and `extra`
+    // objects read at that interval. Acquiring again replaces the holder's needs;
+    // release(holder) or the holder's destruction ends them.
     void acquire(const QObject *holder, int intervalMs, const QList<ObjectAddress> &extra = {});
     void release(const QObject *holder);
     int users() const { return m_users + int(m_holders.size()); }
@@ -108,7 +114,10 @@ public:
     // right after the running one (whose reads may predate the caller's last write). Returns
     // the serial() that cycle will have: once serial() reaches it, updated() has brought
     // values read after the call. Nothing happens while disconnected.
+    // refresh() reads everything cycleObjects() holds; refresh(requester) the status word and
+    // the objects `requester` holds the source for (only the status word for anyone else).
     quint64 refresh();
+    quint64 refresh(const QObject *requester);
     // Cycles finished since the source was made (never reset, unlike cycles()).
     quint64 serial() const { return m_serial; }
 
@@ -116,11 +125,14 @@ public:
     virtual QString statusWordLabel() const = 0; // "Statusword (6041h)"
     virtual QList<StatusLamp> lamps() const = 0;
     virtual QList<StatusIoRow> ioRows() const { return {}; }
-    // Every object the family reads in one cycle.
+    // Every object the family shows (what an anonymous user wants).
     virtual QList<ObjectAddress> polledObjects() const = 0;
-    // What the next cycle reads: polledObjects() and the holders' extra objects that the
-    // connection's description has (a device would answer the others with errors only).
+    // Every object the cycles read, each at its consumers' rate: the status word,
+    // polledObjects() while an anonymous user holds the source, and the holders' objects that
+    // the connection's description has (a device would answer the others with errors only).
     QList<ObjectAddress> cycleObjects() const;
+    // The objects the last finished cycle read (successfully or not).
+    bool readInLastCycle(ObjectAddress address) const { return m_lastCycle.contains(address); }
 
     // ---- the data ----
     State state() const;
@@ -145,9 +157,11 @@ public:
 
     // The last raw value read at an address (invalid before the first good read).
     QVariant value(ObjectAddress address) const { return m_values.value(address); }
+    // The last read of `address` succeeded (on this connection).
     bool isFresh(ObjectAddress address) const { return m_fresh.contains(address); }
-    // Failed reads of the last cycle, address -> error text.
+    // Objects whose last read failed, address -> error text; readError() the error itself.
     const QHash<ObjectAddress, QString> &errors() const { return m_errors; }
+    Error readError(ObjectAddress address) const { return m_readErrors.value(address); }
     // Cycles finished since the connection was made (for tests and statistics).
     int cycles() const { return m_cycles; }
 
@@ -157,16 +171,20 @@ Q_SIGNALS:
     void updated();
 
 protected:
-    // Starts one cycle; the subclass reports every value with store()/storeError() and ends
-    // with finishCycle(). Called only while connected and held, never while a cycle runs.
+    // Starts one cycle that reads dueObjects(); the subclass reports every value with
+    // store()/storeError() and ends with finishCycle(). Called only while connected and held,
+    // never while a cycle runs.
     virtual void poll() = 0;
+    // What the running cycle reads (fixed when it starts): the status word and the objects of
+    // the consumers that are due or asked for a refresh.
+    const QList<ObjectAddress> &dueObjects() const { return m_due; }
     // The connection was (re)made: anything defined on the device for polling is gone.
     virtual void connectionMade() { }
 
     // Reads every address at once and finishes the cycle when all have answered.
     void readEach(const QList<ObjectAddress> &addresses);
     void store(ObjectAddress address, const QVariant &raw);
-    void storeError(ObjectAddress address, const QString &error);
+    void storeError(ObjectAddress address, const Error &error);
     void finishCycle();
     // Guards replies of an earlier connection or cycle: compare with generation().
     quint64 generation() const { return m_generation; }
@@ -188,7 +206,16 @@ private:
         int intervalMs = kDefaultIntervalMs;
         QList<ObjectAddress> extra;
         QMetaObject::Connection destroyed;
+        QElapsedTimer served; // since the start of the last cycle that read `extra`
+        bool refresh = false; // asked for values read after a refresh(holder)
     };
+    // Whether a consumer with this interval, last served `served` ago, is due now.
+    static bool isDue(const QElapsedTimer &served, int intervalMs);
+    // Decides what the cycle that starts now reads (m_due) and marks the consumers served.
+    void planCycle();
+    // The status word when the family polls it.
+    QList<ObjectAddress> statusWordObjects() const;
+    void addKnown(QList<ObjectAddress> &to, const QList<ObjectAddress> &objects) const;
 
     QPointer<DeviceConnection> m_connection;
     QTimer m_timer;
@@ -197,6 +224,12 @@ private:
     int m_intervalMs = kDefaultIntervalMs;
     bool m_busy = false;
     bool m_refresh = false; // a cycle was asked for that starts after the running one
+    bool m_refreshAll = false; // ... and it reads every object (refresh())
+    bool m_refreshStatusWord = false; // ... and it reads the status word
+    QElapsedTimer m_usersServed; // since the last cycle that read polledObjects() for users
+    QList<ObjectAddress> m_due;
+    QSet<ObjectAddress> m_lastCycle; // read in the last finished cycle
+    QSet<ObjectAddress> m_readThisCycle;
     int m_pending = 0;
     int m_cycles = 0;
     quint64 m_serial = 0;
@@ -204,6 +237,7 @@ private:
     ObjectAddress m_statusWordAddress;
     QHash<ObjectAddress, QVariant> m_values;
     QHash<ObjectAddress, QString> m_errors;
+    QHash<ObjectAddress, Error> m_readErrors;
     QSet<ObjectAddress> m_fresh;
 };
 

@@ -74,7 +74,7 @@ void ConnectionAxis::refreshStatus()
 {
     setPollInterval(kStatusPollMs);
     if (m_source)
-        m_source->refresh();
+        m_source->refresh(this); // the status word and the axis's objects
 }
 
 Reply *ConnectionAxis::refreshedAfter(Reply *reply)

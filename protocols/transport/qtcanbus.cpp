@@ -75,30 +75,48 @@ void QtCanBus::failLater(const Error &error)
         Qt::QueuedConnection);
 }
 
+Result<void> QtCanBus::checkInterface(const QString &plugin, const QString &interfaceName)
+{
+    if (!QCanBus::instance()->plugins().contains(plugin))
+        return Error(Error::Kind::NotSupported,
+                     Tr::tr("no Qt CAN plugin '%1' for interface %2 (available plugins: %3)")
+                         .arg(plugin, interfaceName, joined(availablePlugins())));
+    QString listError;
+    const QStringList interfaces = availableInterfaces(plugin, &listError);
+    // A plugin that lists nothing may still take any name (socketcan before the interface is
+    // up): then its open call says what is wrong.
+    if (!interfaces.isEmpty() && !interfaces.contains(interfaceName))
+        return Error(Error::Kind::HostNotFound,
+                     Tr::tr("CAN interface '%1' does not exist for plugin %2 (available: %3)")
+                         .arg(interfaceName, plugin, joined(interfaces)));
+    return {};
+}
+
 void QtCanBus::doOpen()
 {
-    if (!QCanBus::instance()->plugins().contains(m_plugin)) {
-        failLater(Error(Error::Kind::NotSupported,
-                        Tr::tr("no Qt CAN plugin '%1' for interface %2 (available "
-                               "plugins: %3)")
-                            .arg(m_plugin, m_interface, joined(availablePlugins()))));
-        return;
-    }
-    QString listError;
-    const QStringList interfaces = availableInterfaces(m_plugin, &listError);
-    // Only refuse when the plugin does list interfaces: virtualcan accepts names it never lists.
-    if (!interfaces.isEmpty() && !interfaces.contains(m_interface) && m_plugin != u"virtualcan") {
-        failLater(Error(Error::Kind::HostNotFound,
-                        Tr::tr("%1 has no interface '%2' (available: %3)")
-                            .arg(m_plugin, m_interface, joined(interfaces))));
+    if (auto checked = checkInterface(m_plugin, m_interface); !checked) {
+        failLater(checked.error());
         return;
     }
     QString createError;
     m_device = QCanBus::instance()->createDevice(m_plugin, m_interface, &createError);
     if (!m_device) {
-        failLater(Error(Error::Kind::HostNotFound,
-                        Tr::tr("cannot create %1 interface '%2': %3 (available: %4)")
-                            .arg(m_plugin, m_interface, createError, joined(interfaces))));
+        failLater(Error(
+            Error::Kind::HostNotFound,
+            Tr::tr("cannot create %1 interface '%2': %3 (available: %4)")
+                .arg(m_plugin, m_interface, createError, joined(availableInterfaces(m_plugin)))));
+        return;
+    }
+    // Some plugins refuse an interface already while creating the device and only note it in
+    // the device's error state (virtualcan: "Invalid interface"); connecting would then open
+    // another interface than the one asked for.
+    if (m_device->error() != QCanBusDevice::NoError) {
+        const QString why = m_device->errorString();
+        releaseDevice();
+        failLater(
+            Error(Error::Kind::HostNotFound,
+                  Tr::tr("cannot use %1 interface '%2': %3 (available: %4)")
+                      .arg(m_plugin, m_interface, why, joined(availableInterfaces(m_plugin)))));
         return;
     }
     m_device->setParent(this);

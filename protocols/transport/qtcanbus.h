@@ -35,8 +35,12 @@ public:
 
     // Installed Qt CAN plugins, sorted.
     static QStringList availablePlugins();
-    // Interfaces the plugin reports (may be empty even where any name works, e.g. virtualcan).
+    // Interfaces the plugin reports (empty where the plugin cannot list them).
     static QStringList availableInterfaces(const QString &plugin, QString *errorMessage = nullptr);
+    // Whether `plugin` is installed and, where the plugin lists its interfaces, has
+    // `interfaceName`: the error names both and what is available (NotSupported for a missing
+    // plugin, HostNotFound for a missing interface). Cheap: nothing is opened.
+    static Result<void> checkInterface(const QString &plugin, const QString &interfaceName);
 
 protected:
     void doOpen() override;

@@ -54,6 +54,7 @@ private Q_SLOTS:
     void connectTimeoutReachesTheTransport();
     void unknownCanPluginIsNamed();
     void missingInterfaceIsNamed();
+    void missingVirtualInterfaceIsNamed();
     void badBitrateIsNamed();
     void unreadableDescriptionIsNamed();
 };
@@ -111,6 +112,22 @@ void TestCliConnect::missingInterfaceIsNamed()
     QVERIFY2(r.exitCode > 0 && r.exitCode < 128, qPrintable(QString::number(r.exitCode)));
     QVERIFY2(r.err.contains(QStringLiteral("nosuchif7")), qPrintable(r.err));
     QVERIFY2(!r.err.contains(QStringLiteral("closed unexpectedly")), qPrintable(r.err));
+}
+
+void TestCliConnect::missingVirtualInterfaceIsNamed()
+{
+    // Qt's virtualcan takes an unknown name with a log line only and opens can0: the request
+    // would end in an SDO timeout. The cause is named before anything is opened.
+    const CliRun r =
+        runProgram(kCli,
+                   { QStringLiteral("read"), QStringLiteral("canopen+virtualcan://nosuchif?node=5"),
+                     QStringLiteral("1000:0") },
+                   10000);
+    QCOMPARE(r.exitCode, 3); // as for a refused connection
+    QVERIFY2(r.err.contains(QStringLiteral("CAN interface 'nosuchif' does not exist for plugin "
+                                           "virtualcan (available: can0")),
+             qPrintable(r.err));
+    QVERIFY2(!r.err.contains(QStringLiteral("did not answer")), qPrintable(r.err));
 }
 
 void TestCliConnect::badBitrateIsNamed()

@@ -17,6 +17,7 @@ class TstQtCanBus : public QObject
 private Q_SLOTS:
     void twoDevicesOnOneVirtualInterfaceSeeEachOther();
     void unknownPluginGivesClearError();
+    void missingVirtualInterfaceIsNamed();
     void closeEmitsClosedWithoutError();
     void socketcanOnVcan0();
 };
@@ -61,6 +62,32 @@ void TstQtCanBus::unknownPluginGivesClearError()
     QVERIFY2(error.message().contains(QLatin1String("virtualcan")), qPrintable(error.message()));
     QVERIFY(!bus.isOpen());
     QVERIFY(QtCanBus::availablePlugins().contains(QStringLiteral("virtualcan")));
+}
+
+void TstQtCanBus::missingVirtualInterfaceIsNamed()
+{
+    // virtualcan only logs a name it does not know and would open its first channel instead.
+    const QStringList available = QtCanBus::availableInterfaces(QStringLiteral("virtualcan"));
+    QVERIFY(!available.isEmpty());
+    const auto checked =
+        QtCanBus::checkInterface(QStringLiteral("virtualcan"), QStringLiteral("nosuchif"));
+    QVERIFY(!checked);
+    QCOMPARE(checked.error().kind(), Error::Kind::HostNotFound);
+    QVERIFY(QtCanBus::checkInterface(QStringLiteral("virtualcan"), available.first()));
+
+    QtCanBus bus(QStringLiteral("virtualcan"), QStringLiteral("nosuchif"));
+    QSignalSpy closed(&bus, &CanBus::closed);
+    QSignalSpy opened(&bus, &CanBus::opened);
+    bus.open();
+    QVERIFY(closed.wait(kWaitMs));
+    QCOMPARE(opened.size(), 0);
+    const auto error = closed.at(0).at(0).value<Error>();
+    QCOMPARE(error.kind(), Error::Kind::HostNotFound);
+    const QString text = error.message();
+    QVERIFY2(text.contains(QLatin1String("'nosuchif'")), qPrintable(text));
+    QVERIFY2(text.contains(QLatin1String("virtualcan")), qPrintable(text));
+    for (const QString &name : available)
+        QVERIFY2(text.contains(name), qPrintable(text)); // what the user can take instead
 }
 
 void TstQtCanBus::closeEmitsClosedWithoutError()

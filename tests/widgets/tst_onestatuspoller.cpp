@@ -103,6 +103,30 @@ private:
                 QStringLiteral("%1 status word reads in %2 cycles").arg(statusReads).arg(cycles)));
     }
 
+    // Status word reads while `command` waits for the drive, over `cycles` cycles of the
+    // source: the command's procedure takes the status word from the source as well, so the
+    // reads stay one per cycle (a procedure reading it itself every 10 ms would add dozens).
+    void countReadsDuringCommand(FakeConnection &fake, Reply *command, ObjectAddress statusWord,
+                                 int cycles)
+    {
+        auto reads = std::make_shared<int>(0);
+        connect(&fake, &DeviceConnection::requestFinished, command,
+                [reads, statusWord](ObjectAddress address, const Error &) {
+                    if (address == statusWord)
+                        ++*reads;
+                });
+        StatusSource *source = fake.statusSource();
+        const quint64 cyclesBefore = source->serial();
+        QTRY_VERIFY(source->serial() >= cyclesBefore + quint64(cycles));
+        QVERIFY2(!command->isFinished(), qPrintable(command->error().toString()));
+        const int counted = int(source->serial() - cyclesBefore);
+        qInfo("%d status word reads in %d cycles while a command waits", *reads, counted);
+        QVERIFY2(*reads <= counted + 1,
+                 qPrintable(QStringLiteral("%1 status word reads in %2 cycles during a command")
+                                .arg(*reads)
+                                .arg(counted)));
+    }
+
 private Q_SLOTS:
     void cia402PanelAxisAndEditorReadTheStatusWordOnce()
     {
@@ -123,6 +147,23 @@ private Q_SLOTS:
         QTRY_COMPARE(views.editor->model()->value(kStatusword).toULongLong(), 0x0008ull);
         QCOMPARE(fake.statusSource()->state(), StatusSource::State::Fault);
         QVERIFY(fake.writes.isEmpty()); // nobody writes back what it read
+
+        // A move waits for the set-point acknowledge (bit 12) while all three views are open.
+        fake.setValue(kStatusword, QVariant::fromValue<qulonglong>(0x0427));
+        QTRY_VERIFY(!views.axis->status().fault);
+        motion::AxisInterface::Profile profile;
+        profile.velocity = 1000;
+        profile.acceleration = profile.deceleration = 10000;
+        std::unique_ptr<Reply> move(views.axis->moveTo(5000, profile));
+        QTRY_VERIFY(!fake.writes.isEmpty()); // the set-point is being written
+        countReadsDuringCommand(fake, move.get(), kStatusword, 15);
+        if (QTest::currentTestFailed())
+            return;
+        fake.setValue(kStatusword, QVariant::fromValue<qulonglong>(0x1427)); // acknowledged
+        QTRY_COMPARE(fake.writes.last().second.toULongLong(), 0x000Full); // new set-point off
+        fake.setValue(kStatusword, QVariant::fromValue<qulonglong>(0x0427));
+        QTRY_VERIFY(move->isFinished());
+        QVERIFY2(move->ok(), qPrintable(move->error().toString()));
 
         // The editor's refresh off: it lets go; the axis still holds the source.
         views.editor->setRefreshPeriodMs(0);
@@ -151,6 +192,16 @@ private Q_SLOTS:
         fake.setValue({ 1108, 0 }, QVariant::fromValue<qlonglong>(4321));
         QTRY_COMPARE(views.axis->status().position, 4321.0);
         QVERIFY(fake.statusSource()->cycleObjects().contains(ObjectAddress(1108, 0)));
+
+        // Disabling waits for 'switch on disabled': 411 still only from the source.
+        std::unique_ptr<Reply> off(views.axis->power(false));
+        countReadsDuringCommand(fake, off.get(), k411, 15);
+        if (QTest::currentTestFailed())
+            return;
+        fake.setValue(k411, QVariant::fromValue<qulonglong>(0x0040));
+        QTRY_VERIFY(off->isFinished());
+        QVERIFY2(off->ok(), qPrintable(off->error().toString()));
+
         views.axis.reset();
         QVERIFY(!fake.statusSource()->cycleObjects().contains(ObjectAddress(1108, 0)));
     }

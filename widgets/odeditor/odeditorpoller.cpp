@@ -73,7 +73,7 @@ void OdEditorPoller::onStatusUpdated()
     if (!m_source || m_periodMs == 0 || !m_connection || !m_connection->isConnected())
         return;
     for (ObjectAddress a : m_source->cycleObjects()) {
-        if (!m_model->definition(a))
+        if (!m_model->definition(a) || !m_source->readInLastCycle(a))
             continue;
         if (m_source->isFresh(a))
             m_model->setValue(a, m_source->value(a));
