@@ -208,7 +208,8 @@ bool JogPanel::isMotionInProgress() const
         return true;
     const AxisState st = m_motion->state();
     if (st == AxisState::DiscreteMotion || st == AxisState::ContinuousMotion
-        || st == AxisState::Homing || st == AxisState::Stopping)
+        || st == AxisState::SynchronizedMotion || st == AxisState::Homing
+        || st == AxisState::Stopping)
         return true;
     const AxisInterface::Status s = m_cia->status();
     return s.valid && (s.moving || std::abs(s.velocity) > m_config.velocityWindow);
