@@ -6,6 +6,7 @@
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "mainwindow.h"
+#include "wait.h"
 #include "widgets/motion/jogpanel.h"
 #include "widgets/motion/motionblockbox.h"
 #include "widgets/motion/motionform.h"
@@ -39,7 +40,7 @@ private Q_SLOTS:
         QVERIFY(m_window->openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(m_acu->port()))
                     .ok());
         m_panel = m_window->jogPanel();
-        QTRY_VERIFY_WITH_TIMEOUT(m_panel->limitsKnown(), 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_panel->limitsKnown(), 5000);
         m_eeprom = m_acu->eepromWrites();
     }
     void cleanup()
@@ -54,44 +55,45 @@ private Q_SLOTS:
     {
         QVERIFY(m_panel->axis());
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         QVERIFY(m_acu->isRunning());
         MotionForm *form = m_panel->motionForm();
         form->selectCommand(CommandKind::MoveAbsolute);
         form->findChild<QDoubleSpinBox *>(QStringLiteral("target"))->setValue(30000);
         form->findChild<QDoubleSpinBox *>(QStringLiteral("velocity"))->setValue(10000);
         form->execute();
-        QTRY_VERIFY2_WITH_TIMEOUT(m_acu->motion().position() > 100, qPrintable(allLabels()), 5000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().position(), 30000.0, 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_VERIFY2_WITH_TIMEOUT(m_acu->motion().position() > 100, qPrintable(allLabels()),
+                                    5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().position(), 30000.0, 10000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         // The drive's own units and link supervision are shown.
         const QString texts = allLabels();
         QVERIFY2(texts.contains(QLatin1String("30000.0 u")), qPrintable(texts));
         QVERIFY2(texts.contains(QLatin1String("388 = 1")), qPrintable(texts));
         m_panel->disableDrive();
-        QTRY_VERIFY_WITH_TIMEOUT(!m_acu->isRunning(), 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(!m_acu->isRunning(), 5000);
         QCOMPARE(m_acu->controlWritesEeprom(), quint64(0));
     }
 
     void jogRunsInLeasesAndHaltsOnRelease()
     {
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         m_panel->startJog(-1);
-        QTRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() < -1000, 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() < -1000, 5000);
         m_panel->stopJog(QStringLiteral("released"));
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
         QVERIFY(m_acu->isRunning()); // halted, still enabled
     }
 
     void disconnectWhileMovingStopsFirst()
     {
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         m_panel->startJog(+1);
-        QTRY_VERIFY_WITH_TIMEOUT(m_acu->motion().velocity() > 0, 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_acu->motion().velocity() > 0, 5000);
         m_window->disconnectCurrent();
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().velocity(), 0.0, 3000);
         QVERIFY(m_acu->motion().state() != bonfiglioli::AcuMotion::State::OperationEnabled
                 || m_acu->motion().velocity() == 0.0);
         QVERIFY(m_panel->lastStopReason().contains(QLatin1String("closed by the user")));
@@ -103,11 +105,11 @@ private Q_SLOTS:
         QVERIFY(box);
         QVERIFY(box->isVisibleTo(m_panel)); // the ACU has a motion block table
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         box->findChild<QSpinBox *>(QStringLiteral("motionBlock"))->setValue(2);
         box->findChild<QPushButton *>(QStringLiteral("runMotionBlock"))->click();
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->motion().position(), 5000.0, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(!box->isRunning(), 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().position(), 5000.0, 10000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(!box->isRunning(), 5000);
         QCOMPARE(box->findChild<QLabel *>(QStringLiteral("motionBlockResult"))->text(),
                  QStringLiteral("Block 2 done"));
     }
@@ -115,12 +117,12 @@ private Q_SLOTS:
     void faultResetFromThePanel()
     {
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         m_acu->raiseFault(0x2714);
-        QTRY_VERIFY_WITH_TIMEOUT(m_panel->axis()->status().fault, 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_panel->axis()->status().fault, 5000);
         m_panel->resetFault();
-        QTRY_COMPARE_WITH_TIMEOUT(m_acu->fault(), quint16(0), 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(!m_panel->axis()->status().fault, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->fault(), quint16(0), 5000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(!m_panel->axis()->status().fault, 5000);
     }
 
     // Not a check: with DRIVEBENCH_SCREENSHOT=FILE.png (under xvfb-run) it saves the main window
@@ -131,13 +133,13 @@ private Q_SLOTS:
         if (file.isEmpty())
             QSKIP("set DRIVEBENCH_SCREENSHOT=FILE.png to save the screenshot");
         m_panel->enableDrive();
-        QTRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
         MotionForm *form = m_panel->motionForm();
         form->selectCommand(CommandKind::MoveAbsolute);
         form->findChild<QDoubleSpinBox *>(QStringLiteral("target"))->setValue(30000);
         form->findChild<QDoubleSpinBox *>(QStringLiteral("velocity"))->setValue(8000);
         form->execute();
-        QTRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 12000, 10000);
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_acu->motion().position() > 12000, 10000);
         QVERIFY(m_window->grab().save(file));
         m_panel->stopAll(QStringLiteral("screenshot taken"));
     }

@@ -1,5 +1,6 @@
 #include "jogpanel.h"
 
+#include "gearbox.h"
 #include "motionblockbox.h"
 #include "motionform.h"
 
@@ -77,6 +78,7 @@ void JogPanel::teardown()
     m_form->setLease(nullptr);
     m_form->setAxis(nullptr);
     m_blocks->setAxis(nullptr);
+    m_gear->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
     m_lease.reset();
@@ -195,6 +197,7 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
                                                      : m_cia->velocityUnit();
     m_form->setFeatures(m_cia->features());
     m_blocks->setAxis(m_motion.get());
+    m_gear->setAxis(m_motion.get());
     if (!m_cia->featureNote().isEmpty())
         setMessage(m_cia->featureNote());
     applyLimits();
