@@ -7,6 +7,7 @@
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "mainwindow.h"
 #include "wait.h"
+#include "widgets/motion/gearbox.h"
 #include "widgets/motion/jogpanel.h"
 #include "widgets/motion/motionblockbox.h"
 #include "widgets/motion/motionform.h"
@@ -15,6 +16,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QTest>
 
@@ -112,6 +114,66 @@ private Q_SLOTS:
         DB_TRY_VERIFY_WITH_TIMEOUT(!box->isRunning(), 5000);
         QCOMPARE(box->findChild<QLabel *>(QStringLiteral("motionBlockResult"))->text(),
                  QStringLiteral("Block 2 done"));
+    }
+
+    // The electronic gear box: shown for an ACU with positioning control, couples at the ratio
+    // typed (MC_GearIn, "in gear" from status bit 10) and uncouples (MC_GearOut, to a stop).
+    // With DRIVEBENCH_SCREENSHOT_GEAR=FILE.png (under xvfb-run) it also saves the main window at
+    // 1366x768 while the axis is in gear.
+    void electronicGearFromThePanel()
+    {
+        auto *box = m_panel->findChild<GearBox *>(QStringLiteral("gearBox"));
+        QVERIFY(box);
+        QVERIFY(box->isVisibleTo(m_panel));
+        m_acu->motion().setMasterSpeed(2000);
+        m_panel->enableDrive();
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_panel->motionAxis()->state(), AxisState::Standstill, 5000);
+        box->findChild<QSpinBox *>(QStringLiteral("gearNumerator"))->setValue(3);
+        box->findChild<QSpinBox *>(QStringLiteral("gearDenominator"))->setValue(2);
+        box->findChild<QDoubleSpinBox *>(QStringLiteral("gearAcceleration"))->setValue(100000);
+        box->findChild<QPushButton *>(QStringLiteral("gearIn"))->click();
+        auto *result = box->findChild<QLabel *>(QStringLiteral("gearResult"));
+        DB_TRY_VERIFY2_WITH_TIMEOUT(box->isCoupled(), qPrintable(result->text()), 10000);
+        QCOMPARE(result->text(), QStringLiteral("In gear at 3:2"));
+        QCOMPARE(m_acu->motion().velocity(), 3000.0);
+        QCOMPARE(m_panel->motionAxis()->state(), AxisState::SynchronizedMotion);
+        const QString file = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_GEAR");
+        if (!file.isEmpty()) {
+            for (QWidget *w = box->parentWidget(); w; w = w->parentWidget()) {
+                if (auto *scroll = qobject_cast<QScrollArea *>(w))
+                    scroll->ensureWidgetVisible(box);
+            }
+            QTest::qWait(300); // a few status rounds: the actual values of the coupled axis
+            QVERIFY(m_window->grab().save(file));
+        }
+        box->findChild<QPushButton *>(QStringLiteral("gearOut"))->click();
+        DB_TRY_COMPARE_WITH_TIMEOUT(result->text(), QStringLiteral("Uncoupled, at standstill"),
+                                    10000);
+        QCOMPARE(m_acu->motion().velocity(), 0.0);
+        QCOMPARE(m_panel->motionAxis()->state(), AxisState::Standstill);
+    }
+
+    // On a drive without the gear (no positioning control) the box is not offered.
+    void noGearBoxWithoutPositioning()
+    {
+        std::unique_ptr<Reply> r(
+            m_window->currentConnection()->write(ObjectAddress(30, 5), qulonglong(210)));
+        DB_TRY_VERIFY(r->isFinished());
+        QVERIFY(r->ok());
+        r.reset();
+        m_window.reset(); // a new window on the reconfigured inverter
+        DB_TRY_VERIFY(!m_acu->server().hasClient()); // the module takes one PLC connection
+        m_window = std::make_unique<gui::MainWindow>(app::protocolRegistry());
+        m_window->setConfirmation([](const QString &) { return true; });
+        m_window->show();
+        const auto reopened =
+            m_window->openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(m_acu->port()));
+        QVERIFY2(reopened.ok(), qPrintable(reopened.error().toString()));
+        m_panel = m_window->jogPanel();
+        DB_TRY_VERIFY_WITH_TIMEOUT(m_panel->limitsKnown(), 5000);
+        auto *box = m_panel->findChild<GearBox *>(QStringLiteral("gearBox"));
+        QVERIFY(box);
+        QVERIFY(!box->isVisibleTo(m_panel));
     }
 
     void faultResetFromThePanel()

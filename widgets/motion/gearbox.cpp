@@ -4,6 +4,7 @@
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
@@ -14,7 +15,7 @@ namespace {
 // The ACTIVE Cube's gear factor: numerator -32767..32767, denominator 1..65535.
 constexpr int kMaxNumerator = 32767;
 constexpr int kMaxDenominator = 65535;
-constexpr double kMaxRamp = 2147483647.0;
+constexpr double kMaxRamp = 999999999.0; // u/s², within 1457/1458
 } // namespace
 
 GearBox::GearBox(QWidget *parent)
@@ -51,6 +52,7 @@ GearBox::GearBox(QWidget *parent)
     m_result->setObjectName(QStringLiteral("gearResult"));
     m_result->setWordWrap(true);
 
+    // Three short rows: the Motion dock must fit a 1366 px wide screen beside the pages.
     auto *layout = new QGridLayout(this);
     auto *ratio = new QLabel(tr("Ratio:"), this);
     ratio->setBuddy(m_numerator);
@@ -60,17 +62,19 @@ GearBox::GearBox(QWidget *parent)
     layout->addWidget(m_denominator, 0, 3);
     auto *acc = new QLabel(tr("Acc.:"), this);
     acc->setBuddy(m_acceleration);
-    layout->addWidget(acc, 0, 4);
-    layout->addWidget(m_acceleration, 0, 5);
+    layout->addWidget(acc, 1, 0);
+    layout->addWidget(m_acceleration, 1, 1);
     auto *dec = new QLabel(tr("Dec.:"), this);
     dec->setBuddy(m_deceleration);
-    layout->addWidget(dec, 0, 6);
-    layout->addWidget(m_deceleration, 0, 7);
-    layout->addWidget(m_couple, 1, 0, 1, 2);
-    layout->addWidget(m_uncouple, 1, 2, 1, 2);
-    layout->addWidget(m_result, 1, 4, 1, 4);
-    layout->setColumnStretch(5, 1);
-    layout->setColumnStretch(7, 1);
+    layout->addWidget(dec, 1, 2);
+    layout->addWidget(m_deceleration, 1, 3);
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_couple);
+    buttons->addWidget(m_uncouple);
+    buttons->addWidget(m_result, 1);
+    layout->addLayout(buttons, 2, 0, 1, 4);
+    layout->setColumnStretch(1, 1);
+    layout->setColumnStretch(3, 1);
     connect(m_couple, &QPushButton::clicked, this, &GearBox::gearIn);
     connect(m_uncouple, &QPushButton::clicked, this, &GearBox::gearOut);
     setVisible(false);
