@@ -39,6 +39,10 @@
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
+    <message>
+        <source>ratio %1:%2</source>
+        <translation>Übersetzung %1:%2</translation>
+    </message>
 </context>
 <context>
     <name>Nm17x</name>
@@ -1028,10 +1032,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>move: Weg ab dem letzten Ziel (MC_MoveAdditive).</translation>
     </message>
     <message>
-        <source>move, jog, home: acceleration (units/s²).</source>
-        <translation>move, jog, home: Beschleunigung (Einheiten/s²).</translation>
-    </message>
-    <message>
         <source>motion commands: longest wait for the end (ms, default 60000).</source>
         <translation>Bewegungsbefehle: längste Wartezeit auf das Ende (ms, Standard 60000).</translation>
     </message>
@@ -1523,14 +1523,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>move, jog, velocity, home: velocity (units/s).</source>
         <translation>move, jog, velocity, home: Geschwindigkeit (Einheiten/s).</translation>
     </message>
-    <message>
-        <source>move, jog, velocity, halt, stop: deceleration (units/s²).</source>
-        <translation>move, jog, velocity, halt, stop: Verzögerung (Einheiten/s²).</translation>
-    </message>
-    <message>
-        <source>jog, velocity: how long to move (ms).</source>
-        <translation>jog, velocity: Fahrdauer (ms).</translation>
-    </message>
     <message numerus="yes">
         <source>%1 kbit/s: %n display(s)</source>
         <translation>
@@ -1673,6 +1665,62 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
         <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
+    </message>
+    <message>
+        <source>couple the axis to its master at N:D (electronic gear) for MS ms, then uncouple; --out uncouples a running gear</source>
+        <translation>die Achse für MS ms mit N:D an ihren Master kuppeln (elektronisches Getriebe), dann auskuppeln; --out kuppelt ein laufendes Getriebe aus</translation>
+    </message>
+    <message>
+        <source>--ratio takes NUMERATOR:DENOMINATOR (e.g. 3:2), not &apos;%1&apos;</source>
+        <translation>--ratio erwartet ZÄHLER:NENNER (z. B. 3:2), nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--ratio %1: the numerator must not be 0 and the denominator must be at least 1</source>
+        <translation>--ratio %1: der Zähler darf nicht 0 sein, und der Nenner muss mindestens 1 sein</translation>
+    </message>
+    <message>
+        <source>--%1 takes a ramp &gt;= 0 (units/s²)</source>
+        <translation>--%1 erwartet eine Rampe &gt;= 0 (Einheiten/s²)</translation>
+    </message>
+    <message>
+        <source>gear: slave turns per master turn, NUMERATOR:DENOMINATOR.</source>
+        <translation>gear: Umdrehungen des Slaves je Umdrehung des Masters, ZÄHLER:NENNER.</translation>
+    </message>
+    <message>
+        <source>gear: uncouple a gear started elsewhere.</source>
+        <translation>gear: ein anderswo gestartetes Getriebe auskuppeln.</translation>
+    </message>
+    <message>
+        <source>gear takes --ratio N:D --time MS, or --out</source>
+        <translation>gear erwartet --ratio N:D --time MS oder --out</translation>
+    </message>
+    <message>
+        <source>gear --ratio needs --time MS: how long the axis follows its master</source>
+        <translation>gear --ratio braucht --time MS: wie lange die Achse ihrem Master folgt</translation>
+    </message>
+    <message>
+        <source>--time takes ms &gt;= 0</source>
+        <translation>--time erwartet ms &gt;= 0</translation>
+    </message>
+    <message>
+        <source>in gear %1:%2 after %3 ms</source>
+        <translation>eingekuppelt mit %1:%2 nach %3 ms</translation>
+    </message>
+    <message>
+        <source>MC_GearOut: the axis did not stop within %1 ms (--wait); quick stop</source>
+        <translation>MC_GearOut: die Achse hat nicht innerhalb von %1 ms angehalten (--wait); Schnellhalt</translation>
+    </message>
+    <message>
+        <source>move, jog, home, gear: acceleration (units/s²).</source>
+        <translation>move, jog, home, gear: Beschleunigung (Einheiten/s²).</translation>
+    </message>
+    <message>
+        <source>move, jog, velocity, halt, stop, gear: deceleration (units/s²).</source>
+        <translation>move, jog, velocity, halt, stop, gear: Verzögerung (Einheiten/s²).</translation>
+    </message>
+    <message>
+        <source>jog, velocity, gear: how long to move (ms).</source>
+        <translation>jog, velocity, gear: Fahrdauer (ms).</translation>
     </message>
 </context>
 <context>
@@ -2398,6 +2446,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>the inverter did not report &apos;in gear&apos; (status bit 10) within %1 s</source>
         <translation>der Umrichter hat nicht innerhalb von %1 s „eingekuppelt“ (Statusbit 10) gemeldet</translation>
+    </message>
+    <message>
+        <source>gear ratio %1:%2: the numerator must not be 0 and the denominator must be at least 1</source>
+        <translation>Getriebeübersetzung %1:%2: der Zähler darf nicht 0 sein, und der Nenner muss mindestens 1 sein</translation>
+    </message>
+    <message>
+        <source>not coupled: the inverter is not in electronic gear mode (1454 = -3)</source>
+        <translation>nicht eingekuppelt: der Umrichter ist nicht in der Betriebsart elektronisches Getriebe (1454 = -3)</translation>
+    </message>
+    <message>
+        <source>leaving the electronic gear</source>
+        <translation>Verlassen des elektronischen Getriebes</translation>
     </message>
 </context>
 <context>
@@ -4509,6 +4569,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>%1: the drive stopped at %2, short of the target %3 (halted by another program or the drive itself)</source>
         <translation>%1: Der Antrieb hat bei %2 angehalten, vor dem Ziel %3 (angehalten von einem anderen Programm oder vom Antrieb selbst)</translation>
     </message>
+    <message>
+        <source>this drive has no electronic gear</source>
+        <translation>dieser Antrieb hat kein elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>the drive has no electronic gear</source>
+        <translation>der Antrieb hat kein elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>gear ratio needs a numerator other than 0 and a denominator of at least 1</source>
+        <translation>die Getriebeübersetzung braucht einen Zähler ungleich 0 und einen Nenner von mindestens 1</translation>
+    </message>
 </context>
 <context>
     <name>db::nm17x::BroadcastAddressing</name>
@@ -6067,6 +6139,65 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Stop</source>
         <translation>Stopp</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::GearBox</name>
+    <message>
+        <source>Electronic gear</source>
+        <translation>Elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>Slave turns per master turn: numerator (negative: the other way)</source>
+        <translation>Umdrehungen des Slaves je Umdrehung des Masters: Zähler (negativ: in die andere Richtung)</translation>
+    </message>
+    <message>
+        <source>drive&apos;s own</source>
+        <translation>die des Antriebs</translation>
+    </message>
+    <message>
+        <source>Couple</source>
+        <translation>Einkuppeln</translation>
+    </message>
+    <message>
+        <source>MC_GearIn: follow the drive&apos;s master at this ratio</source>
+        <translation>MC_GearIn: dem Master des Antriebs mit dieser Übersetzung folgen</translation>
+    </message>
+    <message>
+        <source>Uncouple</source>
+        <translation>Auskuppeln</translation>
+    </message>
+    <message>
+        <source>MC_GearOut: the drive brakes the axis to a stop</source>
+        <translation>MC_GearOut: der Antrieb bremst die Achse bis zum Stillstand</translation>
+    </message>
+    <message>
+        <source>Ratio:</source>
+        <translation>Übersetzung:</translation>
+    </message>
+    <message>
+        <source>Acc.:</source>
+        <translation>Beschl.:</translation>
+    </message>
+    <message>
+        <source>Dec.:</source>
+        <translation>Verz.:</translation>
+    </message>
+    <message>
+        <source>Coupling at %1:%2 …</source>
+        <translation>Kuppelt ein mit %1:%2 …</translation>
+    </message>
+    <message>
+        <source>Uncoupling …</source>
+        <translation>Kuppelt aus …</translation>
+    </message>
+    <message>
+        <source>In gear at %1:%2</source>
+        <translation>Eingekuppelt mit %1:%2</translation>
+    </message>
+    <message>
+        <source>Uncoupled, at standstill</source>
+        <translation>Ausgekuppelt, im Stillstand</translation>
     </message>
 </context>
 <context>
