@@ -126,7 +126,7 @@ void PollingSource::start(const QElapsedTimer &timeBase)
     }
     m_group = GroupReader::of(m_connection);
     m_groupHeld.clear();
-    if (m_group && m_entries.size() >= 2) {
+    if (m_group && m_readTogether && m_entries.size() >= 2) {
         QList<ObjectAddress> objects;
         for (const Entry &e : std::as_const(m_entries))
             objects.append(e.info.address);
@@ -179,7 +179,7 @@ void PollingSource::countLost(int channel, qint64 count)
 
 void PollingSource::pump()
 {
-    if (!m_running || m_entries.isEmpty())
+    if (!m_running || m_entries.isEmpty() || m_holdPump)
         return;
     if (!m_connection) {
         fail(Error(Error::Kind::Disconnected, tr("the connection was closed")));
@@ -205,12 +205,20 @@ void PollingSource::pump()
                 readAlone(channel);
         } else {
             ++m_reads;
+            QList<int> places;
             for (int channel : std::as_const(together)) {
                 m_entries[channel].inFlight = reply;
-                const int slot = int(held.indexOf(m_entries[channel].info.address));
-                connect(reply, &Reply::finished, this,
-                        [this, channel, reply, slot] { onReply(channel, reply, slot); });
+                places.append(int(held.indexOf(m_entries[channel].info.address)));
             }
+            // Every channel of the read takes its sample before the next reads start, so that
+            // channels read together stay together.
+            connect(reply, &Reply::finished, this, [this, reply, together, places] {
+                m_holdPump = true;
+                for (qsizetype i = 0; i < together.size(); ++i)
+                    onReply(together.at(i), reply, places.at(i));
+                m_holdPump = false;
+                pump();
+            });
         }
     }
     if (const auto next = m_schedule.nextDueNs())

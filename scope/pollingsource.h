@@ -58,6 +58,14 @@ public:
     void start(const QElapsedTimer &timeBase) override;
     void stop() override;
 
+    // Whether channels join the connection's group reader (default on; off reads each channel
+    // on its own, for comparisons). Only while stopped.
+    void setReadTogether(bool on)
+    {
+        if (!m_running)
+            m_readTogether = on;
+    }
+    bool readsTogether() const { return m_readTogether; }
     // Reads that went out since start(): exchanges with the device, one per group read.
     qint64 readCount() const { return m_reads; }
     // Totals since start() (for benchmarks and the CLI summary).
@@ -99,6 +107,8 @@ private:
     QElapsedTimer m_timeBase;
     WakeupTimer m_wakeup; // fires at the next deadline of a channel without a read in flight
     bool m_running = false;
+    bool m_readTogether = true;
+    bool m_holdPump = false; // a group read's channels take their samples first
     qint64 m_reads = 0;
     qint64 m_delivered = 0;
     qint64 m_lost = 0;
