@@ -106,6 +106,7 @@ void PollingSource::start(const QElapsedTimer &timeBase)
     if (m_running)
         return;
     m_timeBase = timeBase;
+    m_reads = 0;
     m_delivered = 0;
     m_lost = 0;
     m_failed = 0;
@@ -123,6 +124,14 @@ void PollingSource::start(const QElapsedTimer &timeBase)
                        .arg(m_connection ? m_connection->uri().toString() : QString())));
         return;
     }
+    m_group = GroupReader::of(m_connection);
+    m_groupHeld.clear();
+    if (m_group && m_readTogether && m_entries.size() >= 2) {
+        QList<ObjectAddress> objects;
+        for (const Entry &e : std::as_const(m_entries))
+            objects.append(e.info.address);
+        m_groupHeld = m_group->join(this, objects);
+    }
     pump();
 }
 
@@ -132,6 +141,10 @@ void PollingSource::stop()
         return;
     m_running = false;
     m_wakeup.stop();
+    if (m_group)
+        m_group->leave(this);
+    m_group = nullptr;
+    m_groupHeld.clear();
     const qint64 now = nowNs();
     m_unanswered = {};
     const QList<qint64> lost = m_schedule.lostUntil(now);
@@ -166,21 +179,47 @@ void PollingSource::countLost(int channel, qint64 count)
 
 void PollingSource::pump()
 {
-    if (!m_running || m_entries.isEmpty())
+    if (!m_running || m_entries.isEmpty() || m_holdPump)
         return;
     if (!m_connection) {
         fail(Error(Error::Kind::Disconnected, tr("the connection was closed")));
         return;
     }
     const qint64 now = nowNs();
+    // Channels the group holds and that are due now are read in one exchange.
+    const QList<ObjectAddress> held = m_group ? m_group->heldFor(this) : QList<ObjectAddress>();
+    QList<int> together;
     for (const PollSchedule::Read &read : m_schedule.due(now)) {
         countLost(read.channel, read.lostBefore);
         Entry &e = m_entries[read.channel];
         e.sinceNs = now;
-        e.inFlight = m_connection->read(e.info.address);
-        Reply *reply = e.inFlight.data();
-        const int channel = read.channel;
-        connect(reply, &Reply::finished, this, [this, channel, reply] { onReply(channel, reply); });
+        if (held.contains(e.info.address) && held == m_groupHeld)
+            together.append(read.channel);
+        else
+            readAlone(read.channel);
+    }
+    if (!together.isEmpty()) {
+        Reply *reply = together.size() > 1 ? m_group->read(this) : nullptr;
+        if (!reply) {
+            for (int channel : std::as_const(together))
+                readAlone(channel);
+        } else {
+            ++m_reads;
+            QList<int> places;
+            for (int channel : std::as_const(together)) {
+                m_entries[channel].inFlight = reply;
+                places.append(int(held.indexOf(m_entries[channel].info.address)));
+            }
+            // Every channel of the read takes its sample before the next reads start, so that
+            // channels read together stay together.
+            connect(reply, &Reply::finished, this, [this, reply, together, places] {
+                m_holdPump = true;
+                for (qsizetype i = 0; i < together.size(); ++i)
+                    onReply(together.at(i), reply, places.at(i));
+                m_holdPump = false;
+                pump();
+            });
+        }
     }
     if (const auto next = m_schedule.nextDueNs())
         m_wakeup.wakeAt(m_timeBase, *next);
@@ -188,7 +227,16 @@ void PollingSource::pump()
         m_wakeup.stop();
 }
 
-void PollingSource::onReply(int channel, Reply *reply)
+void PollingSource::readAlone(int channel)
+{
+    Entry &e = m_entries[channel];
+    ++m_reads;
+    e.inFlight = m_connection->read(e.info.address);
+    Reply *reply = e.inFlight.data();
+    connect(reply, &Reply::finished, this, [this, channel, reply] { onReply(channel, reply); });
+}
+
+void PollingSource::onReply(int channel, Reply *reply, int slot)
 {
     reply->deleteLater();
     if (!m_running || channel >= m_entries.size() || m_entries[channel].inFlight != reply)
@@ -197,7 +245,8 @@ void PollingSource::onReply(int channel, Reply *reply)
     m_schedule.finished(channel);
     const double t = double(nowNs()) * 1e-9;
     if (reply->ok()) {
-        if (const auto value = sampleValue(reply->value())) {
+        const QVariant raw = slot < 0 ? reply->value() : reply->value().toList().value(slot);
+        if (const auto value = sampleValue(raw)) {
             ++m_delivered;
             Q_EMIT samplesReady(channel, TraceSamples { { t, *value } });
             pump();

@@ -1,6 +1,7 @@
 #pragma once
 // Host polling of readable objects through DeviceConnection::read().
 #include "core/deviceconnection.h"
+#include "core/groupreader.h"
 #include "pollschedule.h"
 #include "tracesource.h"
 #include "wakeuptimer.h"
@@ -29,6 +30,10 @@ namespace db::scope {
 // periods missed because the link is slow. The connection leaving Connected stops the source with
 // errorOccurred(Disconnected). start() on a connection that is not connected fails the same way.
 // Values that are not numbers (strings, domains) are rejected by addChannel().
+// Reading together: where the connection reads several objects in one exchange (GroupReader, a
+// VABus block), a source of two or more channels joins it while running, and the channels due
+// at the same time that the group holds are read in one exchange (each still one sample of its
+// own channel); the others are read one by one.
 class PollingSource : public TraceSource
 {
     Q_OBJECT
@@ -53,6 +58,16 @@ public:
     void start(const QElapsedTimer &timeBase) override;
     void stop() override;
 
+    // Whether channels join the connection's group reader (default on; off reads each channel
+    // on its own, for comparisons). Only while stopped.
+    void setReadTogether(bool on)
+    {
+        if (!m_running)
+            m_readTogether = on;
+    }
+    bool readsTogether() const { return m_readTogether; }
+    // Reads that went out since start(): exchanges with the device, one per group read.
+    qint64 readCount() const { return m_reads; }
     // Totals since start() (for benchmarks and the CLI summary).
     qint64 deliveredCount() const { return m_delivered; }
     qint64 lostCount() const { return m_lost; }
@@ -76,7 +91,9 @@ private:
         qint64 sinceNs = 0; // when it was sent, on the time base
     };
     void pump();
-    void onReply(int channel, Reply *reply);
+    // `slot`: the channel's place in a group read's values; -1 for a read of its own.
+    void onReply(int channel, Reply *reply, int slot = -1);
+    void readAlone(int channel);
     void onConnectionState(DeviceConnection::State state);
     void fail(const Error &error);
     void countLost(int channel, qint64 count);
@@ -84,10 +101,15 @@ private:
 
     QPointer<DeviceConnection> m_connection;
     QList<Entry> m_entries;
+    QPointer<GroupReader> m_group; // joined while running
+    QList<ObjectAddress> m_groupHeld; // what the group holds for us, in the order of its values
     PollSchedule m_schedule;
     QElapsedTimer m_timeBase;
     WakeupTimer m_wakeup; // fires at the next deadline of a channel without a read in flight
     bool m_running = false;
+    bool m_readTogether = true;
+    bool m_holdPump = false; // a group read's channels take their samples first
+    qint64 m_reads = 0;
     qint64 m_delivered = 0;
     qint64 m_lost = 0;
     qint64 m_failed = 0;

@@ -304,6 +304,11 @@ const QList<Command> &commands()
                             "run a motion block of the drive's table (or the sequence it "
                             "starts) to its end; prints the position"),
           2, 2, travel, motionOptions },
+        { "gear", "URI --ratio N:D --time MS [--acc A --dec D] | URI --out [--dec D]",
+          QT_TRANSLATE_NOOP("cli",
+                            "couple the axis to its master at N:D (electronic gear) for MS ms, "
+                            "then uncouple; --out uncouples a running gear"),
+          1, 1, gear, gearOptions },
         { "record",
           "URI --obj INDEX:SUB [--obj ...] --duration S [--rate-ms R] [--trigger SPEC] "
           "[--pdo | --configure-tpdo N [--event-ms MS]] -o FILE",

@@ -1,4 +1,5 @@
 #include "commands_motion.h"
+#include "commands_motion_p.h"
 
 #include "canopen/drivesupervision.h"
 #include "devices/axisfactory.h"
@@ -24,7 +25,7 @@ namespace db::cli {
 
 using namespace motion;
 
-namespace {
+namespace motioncmd {
 
 const QString kAbs = QStringLiteral("abs");
 const QString kRel = QStringLiteral("rel");
@@ -38,19 +39,6 @@ const QString kSequence = QStringLiteral("sequence");
 const QString kResume = QStringLiteral("resume");
 constexpr int kStopFlushMs = 1000; // a quick stop after a timeout: time to reach the drive
 constexpr int kFirstStatusRounds = 2; // status rounds read before a command starts
-
-// One axis for one command: the session, the device's axis (from the axis factory) and the
-// command model on it.
-struct Axis
-{
-    explicit Axis(Context &c)
-        : session(c.registry, c.options)
-    { }
-    Session session;
-    std::unique_ptr<AxisInterface> cia;
-    std::unique_ptr<MotionAxis> model;
-    int waitMs = kDefaultWaitMs;
-};
 
 // Runs the event loop until done() or timeoutMs; keeps the deadman watchdog fed meanwhile
 // (this process is alive and watching).
@@ -77,21 +65,13 @@ bool waitRounds(Axis &axis, int rounds, int timeoutMs)
     return ok;
 }
 
-// Gives the drive its previous supervision settings back when the command ends normally (on
-// every return path); a killed process never gets here, and the drive then reacts.
-struct RestoreSupervision
+RestoreSupervision::~RestoreSupervision()
 {
-    canopen::DriveSupervision *supervision;
-    Context &c;
-    ~RestoreSupervision()
-    {
-        if (!supervision || !supervision->isArmed())
-            return;
-        if (auto restored = Reply::wait(supervision->disarm()); !restored)
-            c.err << Tr::tr("drivebench-cli: warning: %1").arg(restored.error().message())
-                  << Qt::endl;
-    }
-};
+    if (!supervision || !supervision->isArmed())
+        return;
+    if (auto restored = Reply::wait(supervision->disarm()); !restored)
+        c.err << Tr::tr("drivebench-cli: warning: %1").arg(restored.error().message()) << Qt::endl;
+}
 
 // Arms the drive's own watch of this process where the connection offers one (CANopen node
 // guarding or heartbeat with 6007h); null where none exists.
@@ -243,7 +223,9 @@ int power(Context &c, CommandKind kind, bool on)
     return ExitOk;
 }
 
-} // namespace
+} // namespace motioncmd
+
+using namespace motioncmd;
 
 QList<QCommandLineOption> motionOptions()
 {
@@ -256,12 +238,12 @@ QList<QCommandLineOption> motionOptions()
                            QStringLiteral("dist")),
         QCommandLineOption(kVel, Tr::tr("move, jog, velocity, home: velocity (units/s)."),
                            QStringLiteral("v")),
-        QCommandLineOption(kAcc, Tr::tr("move, jog, home: acceleration (units/s²)."),
+        QCommandLineOption(kAcc, Tr::tr("move, jog, home, gear: acceleration (units/s²)."),
                            QStringLiteral("a")),
-        QCommandLineOption(kDec,
-                           Tr::tr("move, jog, velocity, halt, stop: deceleration (units/s²)."),
-                           QStringLiteral("d")),
-        QCommandLineOption(kTime, Tr::tr("jog, velocity: how long to move (ms)."),
+        QCommandLineOption(
+            kDec, Tr::tr("move, jog, velocity, halt, stop, gear: deceleration (units/s²)."),
+            QStringLiteral("d")),
+        QCommandLineOption(kTime, Tr::tr("jog, velocity, gear: how long to move (ms)."),
                            QStringLiteral("ms")),
         QCommandLineOption(kSequence, Tr::tr("travel: run the sequence that starts at BLOCK.")),
         QCommandLineOption(kResume, Tr::tr("travel: resume the interrupted block.")),

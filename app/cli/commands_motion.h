@@ -26,6 +26,11 @@ namespace db::cli {
 //   travel URI BLOCK [--sequence] [--resume]
 //                              runs motion block BLOCK of the drive's table (alone, or the
 //                              sequence it starts) to its end; prints the position
+//   gear URI --ratio N:D --time MS [--acc A --dec D]
+//                              MC_GearIn (the drive's electronic gear, its own master) until
+//                              "in gear", MS ms coupled, then MC_GearOut: the drive brakes the
+//                              slave to a stop; prints the position
+//   gear URI --out [--dec D]   MC_GearOut of a gear started elsewhere
 constexpr int kDefaultWaitMs = 60000;
 
 int enable(Context &context);
@@ -38,6 +43,8 @@ int velocity(Context &context);
 int halt(Context &context);
 int stop(Context &context);
 int travel(Context &context);
+int gear(Context &context); // commands_gear.cpp
 QList<QCommandLineOption> motionOptions();
+QList<QCommandLineOption> gearOptions();
 
 } // namespace db::cli

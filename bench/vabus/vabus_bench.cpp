@@ -1,17 +1,20 @@
 // VABus/TCP against the simulated ACU (bonfiglioli::SimulatedAcu in this process, loopback):
 // parameter reads per second (one telegram in flight, as the protocol requires) and the time of
-// a full backup (every data set of every storable parameter). Median of --repeat runs.
+// a full backup (every data set of every storable parameter), and the scope's host polling of 4
+// actual values through the block (17/19) and one read per channel. Median of --repeat runs.
 //   vabus_bench [--repeat N] [--reads N] [--port P | --uri vabus://HOST[:PORT]]
 // --port P measures a simulator already running on 127.0.0.1:P (drivebench-sim acu --vabus-port
 // P), --uri any drive or simulator, instead of the in-process one.
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "parameters/parameterrunner.h"
+#include "scope/pollingsource.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QLoggingCategory>
+#include <QTimer>
 
 #include <algorithm>
 #include <cstdio>
@@ -49,6 +52,34 @@ double timeReads(DeviceConnection *connection, int count)
     const double ms = double(clock.nsecsElapsed()) / 1e6;
     qDeleteAll(replies);
     return failed ? -1 : ms;
+}
+
+struct PollFigures
+{
+    double samplesPerS = 0;
+    double exchangesPerS = 0;
+    qint64 lost = 0;
+};
+
+// The scope's host polling of `objects` as fast as the link allows (rate 0) for `ms`, through
+// the connection's block (together) or one read per channel.
+PollFigures timePolling(DeviceConnection *connection, const QList<ObjectAddress> &objects,
+                        bool together, int ms)
+{
+    scope::PollingSource source(connection);
+    for (ObjectAddress address : objects)
+        source.addChannel(address, 0);
+    source.setReadTogether(together);
+    QElapsedTimer timeBase;
+    timeBase.start();
+    source.start(timeBase);
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
+    source.stop();
+    const double s = double(timeBase.nsecsElapsed()) / 1e9;
+    return { double(source.deliveredCount()) / s, double(source.readCount()) / s,
+             source.lostCount() + source.failedCount() };
 }
 
 } // namespace
@@ -134,6 +165,26 @@ int main(int argc, char **argv)
     std::sort(backups.begin(), backups.end());
     std::printf("full backup           %5d values   median %8.1f ms       min %8.1f  max %8.1f\n",
                 objects, median(backups), backups.first(), backups.last());
+
+    // Scope polling: 4 actual values, through the block (one telegram for all) and one by one.
+    const QList<ObjectAddress> traced { { 210, 0 }, { 211, 0 }, { 213, 0 }, { 240, 0 } };
+    for (const bool together : { true, false }) {
+        QList<double> samples;
+        QList<double> exchanges;
+        qint64 lost = 0;
+        for (int i = 0; i < repeat; ++i) {
+            const PollFigures f = timePolling(connection.get(), traced, together, 1000);
+            samples.append(f.samplesPerS);
+            exchanges.append(f.exchangesPerS);
+            lost += f.lost;
+        }
+        std::sort(samples.begin(), samples.end());
+        std::sort(exchanges.begin(), exchanges.end());
+        std::printf("scope 4 channels, %-6s median %8.0f samples/s  min %8.0f  max %8.0f  "
+                    "(%6.0f telegrams/s, %lld lost)\n",
+                    together ? "block" : "single", median(samples), samples.first(), samples.last(),
+                    median(exchanges), static_cast<long long>(lost));
+    }
     connection->close();
     return 0;
 }

@@ -56,7 +56,7 @@ AxisInterface::Features AcuAxis::features() const
     if (!hasPositioning())
         return Feature::ProfileVelocity;
     return Feature::ProfilePosition | Feature::ProfileVelocity | Feature::Homing
-        | Feature::MotionBlocks;
+        | Feature::MotionBlocks | Feature::ElectronicGear;
 }
 
 QString AcuAxis::featureNote() const
@@ -84,6 +84,8 @@ AcuAxis::Mode AcuAxis::modeFor(motion::CommandKind kind) const
         return Mode::Homing;
     case CommandKind::MotionBlock:
         return Mode::TableTravel;
+    case CommandKind::GearIn:
+        return Mode::ElectronicGear;
     default:
         return Mode::None;
     }

@@ -96,11 +96,15 @@ public:
     Reply *startMotionBlock(int block, bool sequence, bool resume) override;
     // Moves off an active hardware limit switch (mode -2); finishes once it is cleared.
     Reply *moveAwayFromLimitSwitch();
-    // Electronic gear slave (mode -3): starts the gear (bit 4, without direct sync or phasing)
-    // with the override ramps 1457/1458 when given (> 0), and finishes once the inverter reports
-    // "in gear" (status bit 10). halt() or stopNow() end it. The gear factor (1123/1124) and the
-    // master source (1122) are the drive's own parameters.
-    Reply *gearIn(double acceleration = 0, double deceleration = 0);
+    // Electronic gear slave (mode -3): writes the gear factor (1123 numerator, 1124 denominator,
+    // RAM data set), starts the gear (bit 4, without direct sync or phasing) with the override
+    // ramps 1457/1458 when given (> 0), and finishes once the inverter reports "in gear" (status
+    // bit 10). gearOut() drops bit 4 (the inverter brakes with 1458); halt() or stopNow() end it
+    // too. The master source (1122) is the drive's own parameter.
+    Reply *gearIn(int numerator, int denominator, double acceleration,
+                  double deceleration) override;
+    // Fails unless the inverter is in electronic gear mode (1454 = -3).
+    Reply *gearOut(double deceleration) override;
 
 protected:
     bool takeStatus(const StatusSource &source, Status &status) override;

@@ -195,17 +195,26 @@ Reply *AcuAxis::moveAwayFromLimitSwitch()
     return run(steps);
 }
 
-Reply *AcuAxis::gearIn(double acceleration, double deceleration)
+Reply *AcuAxis::gearIn(int numerator, int denominator, double acceleration, double deceleration)
 {
     if (!hasPositioning())
         return Reply::failed(ObjectAddress(kMode, 0),
                              Error(Error::Kind::NotSupported, featureNote()));
+    if (numerator == 0 || denominator < 1)
+        return Reply::failed(ObjectAddress(kGearNumerator, 0),
+                             Error(Error::Kind::InvalidArgument,
+                                   Tr::tr("gear ratio %1:%2: the numerator must not be 0 and the "
+                                          "denominator must be at least 1")
+                                       .arg(numerator)
+                                       .arg(denominator)));
     auto *steps = new AcuSteps(this, Tr::tr("electronic gear"));
     if (auto ok = addModeChange(steps, Mode::ElectronicGear); !ok) {
         delete steps;
         return Reply::failed(ObjectAddress(kMode, 0), ok.error());
     }
     requireEnabled(steps);
+    steps->write(kGearNumerator, numerator);
+    steps->write(kGearDenominator, denominator);
     if (acceleration > 0)
         steps->write(kAcceleration, positive(acceleration));
     if (deceleration > 0)
@@ -215,6 +224,21 @@ Reply *AcuAxis::gearIn(double acceleration, double deceleration)
     steps->waitStatus([](quint16 w) { return w & kTargetReached; }, kGearTimeoutMs,
                       Tr::tr("the inverter did not report 'in gear' (status bit 10) within %1 s")
                           .arg(kGearTimeoutMs / 1000));
+    return run(steps);
+}
+
+Reply *AcuAxis::gearOut(double deceleration)
+{
+    if (m_mode != Mode::ElectronicGear)
+        return Reply::failed(ObjectAddress(kMode, 0),
+                             Error(Error::Kind::InvalidArgument,
+                                   Tr::tr("not coupled: the inverter is not in electronic gear "
+                                          "mode (1454 = -3)")));
+    auto *steps = new AcuSteps(this, Tr::tr("leaving the electronic gear"));
+    requireEnabled(steps);
+    if (deceleration > 0)
+        steps->write(kDeceleration, positive(deceleration));
+    steps->control(kEnableOperation); // bit 4 low: the inverter brakes with 1458
     return run(steps);
 }
 

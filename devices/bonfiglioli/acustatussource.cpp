@@ -1,8 +1,8 @@
 #include "acustatussource.h"
 
 #include "core/deviceconnection.h"
-#include "vabus/vabusblock.h"
-#include "vabus/vabusconnection.h"
+#include "core/groupreader.h"
+#include "core/reply.h"
 
 namespace db::bonfiglioli {
 
@@ -29,25 +29,6 @@ enum StatusBit : quint32 {
     Warning2 = 0x8000,
 };
 
-QList<vabus::BlockItem> blockItems(const ObjectDictionary &dictionary,
-                                   const QList<ObjectAddress> &objects)
-{
-    QList<vabus::BlockItem> items;
-    for (ObjectAddress address : objects) {
-        if (const ObjectDef *def = dictionary.find(address))
-            items.append({ address, def->type });
-    }
-    return vabus::packBlock(items);
-}
-
-QList<ObjectAddress> addressesOf(const QList<vabus::BlockItem> &items)
-{
-    QList<ObjectAddress> addresses;
-    for (const auto &item : items)
-        addresses.append(item.address);
-    return addresses;
-}
-
 } // namespace
 
 AcuStatusSource::AcuStatusSource(DeviceConnection *connection, QObject *parent)
@@ -61,8 +42,6 @@ AcuStatusSource::AcuStatusSource(DeviceConnection *connection, QObject *parent)
             m_objects.append(address);
         }
     }
-    // Made on a link that is up already: connectionMade() has no state change to follow.
-    m_blockUsable = qobject_cast<vabus::VabusConnection *>(connection) != nullptr;
 }
 
 QString AcuStatusSource::statusWordLabel() const
@@ -198,95 +177,48 @@ QString AcuStatusSource::linkLossText() const
         .arg(reaction);
 }
 
-void AcuStatusSource::connectionMade()
+int AcuStatusSource::blockDefinitions() const
 {
-    // A new TCP connection may be to a reset inverter: the block definition is volatile.
-    m_blockDefined = false;
-    m_blockFailures = 0;
-    m_blockUsable = qobject_cast<vabus::VabusConnection *>(connection()) != nullptr;
+    const GroupReader *reader = GroupReader::of(connection());
+    return reader ? reader->definitions() : 0;
 }
 
 void AcuStatusSource::poll()
 {
-    if (!m_blockUsable) {
-        readEach(dueObjects());
-        return;
-    }
-    // One telegram costs the same whatever it holds: the block always holds every object some
-    // consumer wants, so its definition stays as long as the consumers do.
     const QList<ObjectAddress> objects = cycleObjects();
-    // A holder's objects changed what the block must hold: define it again.
-    if (!m_blockDefined
-        || addressesOf(blockItems(connection()->dictionary(), objects)) != m_blockAddresses)
-        defineBlock(objects);
-    else
-        readBlock(objects);
-}
-
-void AcuStatusSource::defineBlock(const QList<ObjectAddress> &objects)
-{
-    auto *vabus = qobject_cast<vabus::VabusConnection *>(connection());
-    const auto items = blockItems(vabus->dictionary(), objects);
-    const auto text = vabus::blockDefinition(items);
-    if (!text) {
-        m_blockUsable = false;
+    GroupReader *reader = GroupReader::of(connection());
+    // Joined again when the objects changed or somebody made the reader forget us.
+    if (reader && (objects != m_joined || reader->heldFor(this).isEmpty())) {
+        m_joined = objects;
+        reader->join(this, objects);
+    }
+    const QList<ObjectAddress> held = reader ? reader->heldFor(this) : QList<ObjectAddress>();
+    Reply *reply = reader && !held.isEmpty() ? reader->read(this) : nullptr;
+    m_usedBlock = reply != nullptr;
+    if (!reply) {
         readEach(dueObjects());
         return;
     }
-    ++m_definitions;
-    m_blockDefined = false;
-    // Data set 0 on purpose: 17 is volatile (lost at reset), never an EEPROM write.
-    Reply *reply = vabus->client()->writeData(vabus::kBlockDefinitionParameter, 0, text.value(),
-                                              ObjectAddress(vabus::kBlockDefinitionParameter, 0));
     reply->setParent(this);
     const quint64 gen = generation();
-    connect(reply, &Reply::finished, this, [this, reply, gen, objects, items] {
+    connect(reply, &Reply::finished, this, [this, reply, gen, held] {
         reply->deleteLater();
         if (gen != generation())
             return;
-        if (reply->ok()) {
-            m_blockDefined = true;
-            m_blockFailures = 0;
-            m_blockAddresses = addressesOf(items);
-            readBlock(objects);
-            return;
-        }
-        if (++m_blockFailures >= kMaxBlockFailures)
-            m_blockUsable = false;
-        readEach(dueObjects()); // this cycle one by one; the next tries the block again
-    });
-}
-
-void AcuStatusSource::readBlock(const QList<ObjectAddress> &objects)
-{
-    auto *vabus = qobject_cast<vabus::VabusConnection *>(connection());
-    const auto items = blockItems(vabus->dictionary(), objects);
-    Reply *reply = vabus->client()->read(vabus::kBlockReadParameter, 0, DataType::VisibleString,
-                                         ObjectAddress(vabus::kBlockReadParameter, 0));
-    reply->setParent(this);
-    const quint64 gen = generation();
-    connect(reply, &Reply::finished, this, [this, reply, gen, objects, items] {
-        reply->deleteLater();
-        if (gen != generation())
-            return;
-        Result<QList<QVariant>> values = reply->ok()
-            ? vabus::decodeBlock(reply->value().toString().toLatin1(), items)
-            : Result<QList<QVariant>>(reply->error());
-        if (!values) {
-            for (const auto &item : items)
-                storeError(item.address, values.error());
-            // A device error (e.g. an inverter reset lost the definition) or an answer that
-            // does not fit: define the block again next cycle.
-            m_blockDefined = false;
+        if (!reply->ok()) {
+            // The reader writes the definition again for the next cycle.
+            for (ObjectAddress address : held)
+                storeError(address, reply->error().toString());
+            m_usedBlock = false;
         } else {
-            for (qsizetype i = 0; i < items.size(); ++i)
-                store(items.at(i).address, values.value().at(i));
+            const QVariantList values = reply->value().toList();
+            for (qsizetype i = 0; i < held.size(); ++i)
+                store(held.at(i), values.value(i));
         }
-        // What a block cannot hold (parameters from 1000 on) one by one, when due; ends the
-        // cycle.
+        // What the block does not hold one by one, when due; ends the cycle.
         QList<ObjectAddress> rest = dueObjects();
-        for (const auto &item : items)
-            rest.removeAll(item.address);
+        for (ObjectAddress address : held)
+            rest.removeAll(address);
         readEach(rest);
     });
 }

@@ -10,18 +10,16 @@ namespace db::bonfiglioli {
 // the actual values the description has (stator frequency 210, RMS current 211, active power
 // 213, actual speed 240, internal reference frequency 228, active data set 249).
 //
-// On a VABus connection a cycle is one telegram: the parameters are defined as a block (write 17,
-// RAM only: the definition is volatile) once per connection and read with 19. A device error on
-// 19 (e.g. the inverter was reset and lost the definition) defines the block again in the next
-// cycle; after kMaxBlockFailures failed definitions in a row, and on other connections, every
-// parameter is read on its own. What a block cannot hold (a holder's parameters from 1000 on) is
-// read on its own after the block. Polling never writes EEPROM.
+// On a VABus connection a cycle is one telegram: the source joins the connection's block reader
+// (GroupReader, the one owner of the block definition 17) with its parameters and reads them
+// with 19; the reader writes the definition when needed (first use, reconnect, reset inverter).
+// What the block does not hold (parameters from 1000 on, a full block) is read on its own after
+// it, and so is everything on other connections or after the inverter refused the definition
+// GroupReader::kMaxFailures times. Polling never writes EEPROM.
 class AcuStatusSource : public StatusSource
 {
     Q_OBJECT
 public:
-    static constexpr int kMaxBlockFailures = 3;
-
     explicit AcuStatusSource(DeviceConnection *connection, QObject *parent = nullptr);
 
     QString statusWordLabel() const override;
@@ -36,28 +34,20 @@ public:
 
     // "F2714" for 0x2714.
     static QString faultName(quint32 code);
-    // The polled parameters are read as one block (false before the first definition, after
-    // giving up, and on connections without block access).
-    bool usesBlock() const { return m_blockDefined && m_blockUsable; }
-    // Block definitions written (parameter 17) since the source was made.
-    int blockDefinitions() const { return m_definitions; }
+    // The last cycle read the polled parameters as one block (false before the first cycle,
+    // after the device refused the block, and on connections without block access).
+    bool usesBlock() const { return m_usedBlock; }
+    // Block definitions written (parameter 17) on the connection, by whoever joined the block.
+    int blockDefinitions() const;
 
 protected:
     void poll() override;
-    void connectionMade() override;
 
 private:
-    // `objects`: what this cycle reads; the block holds those that fit.
-    void defineBlock(const QList<ObjectAddress> &objects);
-    void readBlock(const QList<ObjectAddress> &objects);
-
     QList<ObjectAddress> m_objects;
     QList<ObjectAddress> m_actualValues;
-    bool m_blockUsable = false;
-    bool m_blockDefined = false;
-    QList<ObjectAddress> m_blockAddresses; // what the defined block holds, in order
-    int m_blockFailures = 0;
-    int m_definitions = 0;
+    QList<ObjectAddress> m_joined; // what the block reader was last asked to hold
+    bool m_usedBlock = false;
 };
 
 } // namespace db::bonfiglioli

@@ -13,6 +13,19 @@ Reply *AxisInterface::startMotionBlock(int, bool, bool)
                                                            "motion blocks")));
 }
 
+Reply *AxisInterface::gearIn(int, int, double, double)
+{
+    return Reply::failed(
+        {},
+        Error(Error::Kind::NotSupported,
+              QCoreApplication::translate("db::motion", "this drive has no electronic gear")));
+}
+
+Reply *AxisInterface::gearOut(double)
+{
+    return gearIn(0, 0, 0, 0);
+}
+
 Reply *AxisInterface::initialize()
 {
     auto *reply = new Reply;

@@ -46,6 +46,7 @@ public:
         Torque = 0x8,
         Jerk = 0x10,
         MotionBlocks = 0x20, // a table of motion blocks in the drive (startMotionBlock)
+        ElectronicGear = 0x40, // follows a master at a ratio (gearIn, gearOut)
     };
     Q_DECLARE_FLAGS(Features, Feature)
 
@@ -76,6 +77,12 @@ public:
     // or the interrupted one resumed; finishes when the block or sequence has ended in its
     // target. The default: the drive has no table (NotSupported).
     virtual Reply *startMotionBlock(int block, bool sequence, bool resume);
+    // Electronic gear: couples the axis to the drive's master at numerator / denominator with
+    // the ramps (0: the drive's own) and finishes once the drive reports it in gear; gearOut()
+    // uncouples it and finishes when the drive has taken that (the drive then brakes the axis
+    // with the deceleration to a stop). The default: the drive has none (NotSupported).
+    virtual Reply *gearIn(int numerator, int denominator, double acceleration, double deceleration);
+    virtual Reply *gearOut(double deceleration);
 
     // What the axis reads once before its first command: scaling, supported modes, the drive's
     // limits and its own profile. The caller owns the reply; the default has nothing to read.

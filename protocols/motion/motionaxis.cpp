@@ -84,7 +84,11 @@ bool MotionAxis::controlsAxis(const MotionCommand *command) const
     return command->isBusy()
         || (command->kind() == CommandKind::MoveVelocity
             && command->status() == MotionCommand::Status::Done
-            && m_state == AxisState::ContinuousMotion);
+            && m_state == AxisState::ContinuousMotion)
+        // A done MC_GearIn (in gear) keeps the axis coupled to its master.
+        || (command->kind() == CommandKind::GearIn
+            && command->status() == MotionCommand::Status::Done
+            && m_state == AxisState::SynchronizedMotion);
 }
 
 bool MotionAxis::motionInProgress() const
@@ -95,7 +99,8 @@ bool MotionAxis::motionInProgress() const
     if (s.valid && (s.moving || std::abs(s.velocity) > m_config.velocityWindow))
         return true;
     return m_state == AxisState::DiscreteMotion || m_state == AxisState::ContinuousMotion
-        || m_state == AxisState::Homing || m_state == AxisState::Stopping;
+        || m_state == AxisState::SynchronizedMotion || m_state == AxisState::Homing
+        || m_state == AxisState::Stopping;
 }
 
 // ---- starting commands -----------------------------------------------------------------------
@@ -127,6 +132,7 @@ AxisSnapshot MotionAxis::snapshot(CommandKind kind) const
     a.driveMoving = s.valid && (s.moving || std::abs(s.velocity) > m_config.velocityWindow)
         && m_rounds > m_acceptedRound + 1;
     a.modeChangeNeeded = m_axis->needsModeChange(kind);
+    a.electronicGear = m_axis->features().testFlag(AxisInterface::Feature::ElectronicGear);
     a.state = m_state;
     a.position = s.position;
     a.velocity = std::abs(s.velocity) > m_config.velocityWindow ? s.velocity : 0.0;
@@ -216,6 +222,11 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
     case CommandKind::MotionBlock:
         return m_axis->startMotionBlock(command->m_latched.block, command->m_latched.sequence,
                                         command->m_latched.resume);
+    case CommandKind::GearIn:
+        return m_axis->gearIn(command->m_latched.gearNumerator, command->m_latched.gearDenominator,
+                              plan.profile.acceleration, plan.profile.deceleration);
+    case CommandKind::GearOut:
+        return m_axis->gearOut(plan.profile.deceleration);
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:
@@ -226,8 +237,11 @@ Reply *MotionAxis::request(MotionCommand *command, const Plan &plan)
 
 void MotionAxis::refuse(MotionCommand *command, const Plan &plan)
 {
+    QString reason = refusalText(plan.refusal);
+    if (plan.refusal == Refusal::FeatureMissing && !m_axis->featureNote().isEmpty())
+        reason += QStringLiteral(" (%1)").arg(m_axis->featureNote());
     const Error error(Error::Kind::InvalidArgument,
-                      Tr::tr("%1 refused: %2").arg(command->name(), refusalText(plan.refusal)));
+                      Tr::tr("%1 refused: %2").arg(command->name(), reason));
     QPointer<MotionCommand> guard(command);
     auto later = [guard](MotionCommand::Status status, Error e, Refusal refusal) {
         // After Busy, from the event loop: every start shows a fresh edge (S-30).
@@ -246,7 +260,8 @@ void MotionAxis::refuse(MotionCommand *command, const Plan &plan)
     }
     // R10 leaves the running MC_Stop alone; a mode change the drive cannot make now leaves the
     // running motion alone.
-    if (plan.refusal != Refusal::StopActive && plan.refusal != Refusal::ModeChangeWhileMoving) {
+    if (plan.refusal != Refusal::StopActive && plan.refusal != Refusal::ModeChangeWhileMoving
+        && plan.refusal != Refusal::FeatureMissing) {
         if (motionInProgress())
             emergencyStop(error, false); // D-10: quick stop of the running motion
         m_lastError = error;
@@ -281,6 +296,11 @@ void MotionAxis::onAccepted(MotionCommand *command, quint64 generation, Reply *r
     case CommandKind::TorqueControl:
         command->setStatus(MotionCommand::Status::Active);
         command->setStatus(MotionCommand::Status::Done); // [I] at once (S-31 "2nd cycle")
+        return;
+    case CommandKind::GearIn: // its reply finishes when the drive reports "in gear"
+        m_tracker.clear(); // the master decides where the axis goes
+        command->setStatus(MotionCommand::Status::Active);
+        command->setStatus(MotionCommand::Status::Done); // PLCopen's InGear
         return;
     case CommandKind::MotionBlock: // its reply finishes when the block (or sequence) ended
         m_tracker.clear(); // the drive chose the target
@@ -388,6 +408,13 @@ void MotionAxis::evaluateActive(const AxisInterface::Status &s)
     case CommandKind::MoveVelocity:
         if (std::abs(s.velocity - m_activeVelocity) <= m_config.velocityWindow)
             c->setStatus(MotionCommand::Status::Done); // velocity reached; keeps moving
+        return;
+    case CommandKind::GearOut: // uncoupled: the drive brakes the slave to a stop
+        if (!s.moving && std::abs(s.velocity) <= m_config.velocityWindow) {
+            m_active = nullptr;
+            setState(AxisState::Standstill);
+            c->setStatus(MotionCommand::Status::Done);
+        }
         return;
     case CommandKind::Stop:
     case CommandKind::Halt:

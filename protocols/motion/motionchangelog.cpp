@@ -35,6 +35,10 @@ QString inputs(const MotionCommand &c)
         return QCoreApplication::translate("MotionChangeLog", "method %1").arg(c.homing().method);
     case CommandKind::MotionBlock:
         return QCoreApplication::translate("MotionChangeLog", "block %1").arg(p.block);
+    case CommandKind::GearIn:
+        return QCoreApplication::translate("MotionChangeLog", "ratio %1:%2")
+            .arg(p.gearNumerator)
+            .arg(p.gearDenominator);
     case CommandKind::TorqueControl:
         return QCoreApplication::translate("MotionChangeLog", "torque %1").arg(number(p.torque));
     default:

@@ -1,5 +1,6 @@
 #include "motionrules.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace db::motion {
@@ -53,7 +54,10 @@ AxisState stateOnStart(CommandKind kind, int homingMethod)
         return (homingMethod == 35 || homingMethod == 37) ? AxisState::Standstill
                                                           : AxisState::Homing;
     case CommandKind::MotionBlock:
+    case CommandKind::GearOut: // the drive brakes the slave to a stop
         return AxisState::DiscreteMotion;
+    case CommandKind::GearIn:
+        return AxisState::SynchronizedMotion;
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:
@@ -168,6 +172,10 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
     plan.nextState = stateOnStart(kind, config.homingMethod);
     if (kind == CommandKind::Power || kind == CommandKind::Reset || kind == CommandKind::DoNothing)
         return plan;
+    if ((kind == CommandKind::GearIn || kind == CommandKind::GearOut) && !axis.electronicGear) {
+        plan.refusal = Refusal::FeatureMissing; // whatever the state: the drive cannot do it
+        return plan;
+    }
     if (axis.state == AxisState::Stopping) {
         plan.refusal = Refusal::StopActive; // R10
         return plan;
@@ -181,7 +189,8 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
     // A drive that switches its operating mode only at rest: the command is refused before
     // anything is sent, and the running motion is left alone (no quick stop).
     const bool inMotionState = axis.state == AxisState::DiscreteMotion
-        || axis.state == AxisState::ContinuousMotion || axis.state == AxisState::Homing;
+        || axis.state == AxisState::ContinuousMotion || axis.state == AxisState::Homing
+        || axis.state == AxisState::SynchronizedMotion;
     const bool modeBlocked = axis.modeChangeNeeded && (axis.driveMoving || inMotionState);
     switch (kind) {
     case CommandKind::MoveAbsolute:
@@ -233,6 +242,17 @@ Plan planCommand(CommandKind kind, const MoveParams &params, const AxisConfig &c
         if (modeBlocked)
             plan.refusal = Refusal::ModeChangeWhileMoving;
         return plan; // otherwise never refused (Sec. 3.9)
+    case CommandKind::GearIn:
+    case CommandKind::GearOut:
+        if (kind == CommandKind::GearIn && (p.gearNumerator == 0 || p.gearDenominator < 1))
+            plan.refusal = Refusal::InvalidGearRatio;
+        else if (kind == CommandKind::GearIn && modeBlocked)
+            plan.refusal = Refusal::ModeChangeWhileMoving;
+        if (!plan.refused()) { // ramps: 0 = the drive's own; limited like any other
+            plan.profile.acceleration = std::min(p.acceleration, config.maxAcceleration);
+            plan.profile.deceleration = std::min(p.deceleration, config.maxAcceleration);
+        }
+        return plan;
     case CommandKind::DoNothing:
     case CommandKind::Power:
     case CommandKind::Reset:

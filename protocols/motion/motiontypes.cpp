@@ -38,6 +38,10 @@ QString commandName(CommandKind kind)
         return QStringLiteral("MC_Reset");
     case CommandKind::MotionBlock:
         return Tr::tr("Motion block");
+    case CommandKind::GearIn:
+        return QStringLiteral("MC_GearIn");
+    case CommandKind::GearOut:
+        return QStringLiteral("MC_GearOut");
     }
     return QStringLiteral("MC_?");
 }
@@ -59,6 +63,8 @@ QString axisStateName(AxisState state)
         return QStringLiteral("Discrete Motion");
     case AxisState::ContinuousMotion:
         return QStringLiteral("Continuous Motion");
+    case AxisState::SynchronizedMotion:
+        return QStringLiteral("Synchronized Motion");
     case AxisState::Stopping:
         return QStringLiteral("Stopping");
     case AxisState::ErrorStop:
@@ -96,6 +102,10 @@ QString refusalText(Refusal refusal)
         return Tr::tr("axis not enabled or in ErrorStop");
     case Refusal::ModeChangeWhileMoving:
         return Tr::tr("mode change while moving");
+    case Refusal::FeatureMissing:
+        return Tr::tr("the drive has no electronic gear");
+    case Refusal::InvalidGearRatio:
+        return Tr::tr("gear ratio needs a numerator other than 0 and a denominator of at least 1");
     }
     return {};
 }

@@ -24,6 +24,10 @@ enum class CommandKind {
     // A motion block of the drive's own table (MoveParams::block), alone or the sequence it
     // starts; tool-side, for drives that hold such a table (the ACTIVE Cube's table travel).
     MotionBlock = 102,
+    // PLCopen MC_GearIn / MC_GearOut: the axis follows its master at the ratio
+    // MoveParams::gearNumerator / gearDenominator (the drive's own master, e.g. an encoder input).
+    GearIn = 103,
+    GearOut = 104,
 };
 QString commandName(CommandKind kind); // "MC_MoveAbsolute"
 bool isPositioning(CommandKind kind); // 1, 2, 3
@@ -35,6 +39,7 @@ enum class AxisState {
     Standstill = 2,
     DiscreteMotion = 3,
     ContinuousMotion = 4,
+    SynchronizedMotion = 5, // coupled to a master (MC_GearIn)
     Stopping = 6,
     ErrorStop = 7,
     Homing = 8,
@@ -58,6 +63,11 @@ enum class Refusal {
     // The drive would have to change its operating mode for the command, which it cannot do
     // while the axis moves: the running motion goes on.
     ModeChangeWhileMoving,
+    // The drive has no such function (e.g. no electronic gear): nothing is sent and whatever
+    // runs goes on.
+    FeatureMissing,
+    // A gear ratio with a zero numerator or a denominator below 1.
+    InvalidGearRatio,
 };
 QString refusalText(Refusal refusal);
 
@@ -100,6 +110,8 @@ struct MoveParams
     int block = 1; // MotionBlock: 1-based block number
     bool sequence = false; // MotionBlock: run on through the blocks that follow
     bool resume = false; // MotionBlock: continue the interrupted block
+    int gearNumerator = 1; // GearIn: slave turns per master turn = numerator / denominator;
+    int gearDenominator = 1; // a negative numerator turns the slave the other way
 };
 
 struct HomingParams
@@ -141,6 +153,8 @@ struct AxisSnapshot
     // The command needs another operating mode of the drive than the present one
     // (AxisInterface::needsModeChange).
     bool modeChangeNeeded = false;
+    // The drive can couple to a master (AxisInterface::Feature::ElectronicGear).
+    bool electronicGear = false;
 };
 
 } // namespace db::motion

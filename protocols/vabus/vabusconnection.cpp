@@ -63,6 +63,7 @@ void VabusConnection::init()
     m_client->setSys(sys ? sys.value() : 0);
     m_ram = uri().hasQuery(QStringLiteral("ram"));
     connect(m_client, &VabusClient::logLine, this, &DeviceConnection::logLine);
+    m_blocks = new BlockReader(this);
     setRetryAfterLoss(kPowerUpWindowMs);
     followStream();
 }
@@ -114,6 +115,19 @@ void VabusConnection::doRead(Reply *reply, const ObjectDef *def)
 void VabusConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def)
 {
     const ObjectAddress address = reply->address();
+    if (address.index == kBlockDefinitionParameter || address.index == kBlockWriteParameter) {
+        // Another definition would make the block's users decode the wrong parameters, and a
+        // block write (18) would write the parameters of their definition.
+        if (m_blocks->inUse()) {
+            reply->fail(Error(Error::Kind::AccessDenied,
+                              QStringLiteral("parameter %1 cannot be written now: the block "
+                                             "definition (17) holds the parameters this program "
+                                             "is polling (status, scope)")
+                                  .arg(address.index)));
+            return;
+        }
+        m_blocks->forgetDefinition();
+    }
     QVariant value = raw;
     if (!def) {
         // A RAM data set, or a data set the description lists only as data set 0: checked

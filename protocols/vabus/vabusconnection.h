@@ -11,6 +11,7 @@
 //   ram    writes to data sets 0-4 go to their RAM copies (5-9), sparing the EEPROM
 
 #include "transport/streamconnection.h"
+#include "vabusblockreader.h"
 #include "vabusclient.h"
 
 namespace db::vabus {
@@ -56,8 +57,15 @@ public:
     // True while waiting for the next attempt.
     bool isRetryScheduled() const { return isReconnectScheduled(); }
 
-    // The engine, for block access and diagnostics. Owned by the connection.
+    // The engine, for diagnostics. Owned by the connection. Block reads go through
+    // blockReader(), the one owner of the block definition.
     VabusClient *client() const { return m_client; }
+    // Owned by the connection (a child, also found by GroupReader::of()).
+    BlockReader *blockReader() const { return m_blocks; }
+
+    // The description of a parameter at this address: the address's own, else that of the
+    // EEPROM data set a RAM data set copies, else data set 0's.
+    const ObjectDef *describe(ObjectAddress address) const;
 
 protected:
     QString connectedLine() const override;
@@ -67,11 +75,9 @@ protected:
 
 private:
     void init();
-    // The description of a parameter at this address: the address's own, else that of the
-    // EEPROM data set a RAM data set copies, else data set 0's.
-    const ObjectDef *describe(ObjectAddress address) const;
 
     VabusClient *m_client = nullptr;
+    BlockReader *m_blocks = nullptr;
     bool m_ram = false;
 };
 

@@ -145,6 +145,57 @@ private Q_SLOTS:
         stopSim(sim);
     }
 
+    // The electronic gear from the CLI: coupled to the simulated master at 3:2 until "in gear",
+    // held, then uncoupled and braked to a stop; bad ratios and a configuration without
+    // positioning control are refused by name; nothing went to the EEPROM.
+    void gear()
+    {
+        QProcess sim;
+        const QString uri = startSim(sim, { QStringLiteral("--control") });
+        QVERIFY(!uri.isEmpty());
+        QByteArray pending;
+        QCOMPARE(ask(sim, pending, QStringLiteral("master 2000"), QStringLiteral("master")),
+                 QStringLiteral("master 2000"));
+        QVERIFY(cli({ QStringLiteral("enable"), uri }).exitCode == 0);
+        CliRun r =
+            cli({ QStringLiteral("gear"), uri, QStringLiteral("--ratio"), QStringLiteral("3:2"),
+                  QStringLiteral("--time"), QStringLiteral("300"), QStringLiteral("--acc"),
+                  QStringLiteral("200000"), QStringLiteral("--dec"), QStringLiteral("200000") });
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.startsWith(QLatin1String("in gear 3:2 after ")), qPrintable(r.out));
+        QVERIFY2(lastNumber(r.out) > 900.0, qPrintable(r.out)); // 3000 u/s for 300 ms at least
+        QCOMPARE(cli({ QStringLiteral("read"), uri, QStringLiteral("1107") }).out.trimmed(),
+                 QStringLiteral("0 u/s"));
+        QCOMPARE(cli({ QStringLiteral("read"), uri, QStringLiteral("1123") }).out.trimmed(),
+                 QStringLiteral("3"));
+
+        r = cli({ QStringLiteral("gear"), uri, QStringLiteral("--ratio"), QStringLiteral("3:0"),
+                  QStringLiteral("--time"), QStringLiteral("100") });
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QLatin1String("denominator must be at least 1")),
+                 qPrintable(r.err));
+        r = cli({ QStringLiteral("gear"), uri, QStringLiteral("--ratio"), QStringLiteral("3:2") });
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QLatin1String("needs --time")), qPrintable(r.err));
+
+        // Velocity-only configuration: no electronic gear.
+        QVERIFY(cli({ QStringLiteral("disable"), uri }).exitCode == 0);
+        QVERIFY(cli({ QStringLiteral("write"), QStringLiteral("--ram"), uri, QStringLiteral("30"),
+                      QStringLiteral("210") })
+                    .exitCode
+                == 0);
+        QVERIFY(cli({ QStringLiteral("enable"), uri }).exitCode == 0);
+        r = cli({ QStringLiteral("gear"), uri, QStringLiteral("--ratio"), QStringLiteral("1:1"),
+                  QStringLiteral("--time"), QStringLiteral("100") });
+        QCOMPARE(r.exitCode, 6);
+        QVERIFY2(r.err.contains(QLatin1String("MC_GearIn refused: the drive has no electronic "
+                                              "gear (configuration 210 has no positioning")),
+                 qPrintable(r.err));
+        QVERIFY(cli({ QStringLiteral("disable"), uri }).exitCode == 0);
+        const QString out = stopSim(sim);
+        QVERIFY2(out.contains(QLatin1String("acu: 0 EEPROM writes")), qPrintable(out));
+    }
+
     void enableNamesMissingInputs_data()
     {
         QTest::addColumn<QString>("inputs");

@@ -100,6 +100,11 @@ bool runToEnd(Runner *runner, int timeoutMs = kDefaultWaitMs)
         db::test::waitFor([&] { return bool(expr); }, timeoutMs);                                  \
         QVERIFY(expr);                                                                             \
     } while (false)
+#define DB_TRY_VERIFY2_WITH_TIMEOUT(expr, message, timeoutMs)                                      \
+    do {                                                                                           \
+        db::test::waitFor([&] { return bool(expr); }, timeoutMs);                                  \
+        QVERIFY2(expr, message);                                                                   \
+    } while (false)
 #define DB_TRY_COMPARE_WITH_TIMEOUT(actual, expected, timeoutMs)                                   \
     do {                                                                                           \
         db::test::waitFor([&] { return (actual) == (expected); }, timeoutMs);                      \

@@ -2,6 +2,7 @@
 #include "common/protocols.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "mainwindow.h"
+#include "scope/recorder.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/odeditor/odeditor.h"
 #include "widgets/scope/scopepage.h"
@@ -139,6 +140,9 @@ private Q_SLOTS:
         QTest::qWait(500); // turning slowly: 210/211 follow the motor, not the preset values
         window.pages()->setCurrentWidget(window.scopePage());
         QVERIFY(window.scopePage()->addChannels({ { 210, 0 }, { 211, 0 } }, 20).ok());
+        qint64 lost = 0;
+        connect(window.scopePage()->recorder(), &scope::Recorder::samplesLost, this,
+                [&lost](int, qint64 count) { lost += count; });
         window.scopePage()->start();
         QTest::qWait(500);
         QVERIFY(write(1460, 300000));
@@ -148,6 +152,8 @@ private Q_SLOTS:
         QVERIFY(write(1460, 0));
         QTest::qWait(1000);
         window.scopePage()->stop();
+        QCOMPARE(lost, qint64(0));
+        QVERIFY(window.scopePage()->recorder()->buffer(0).size() > 100);
         QTest::qWait(300);
         QVERIFY(window.grab().save(dir + QStringLiteral("/acu-scope.png")));
         // Disabled again; the window goes without a close question (it asks about RAM writes

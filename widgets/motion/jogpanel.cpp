@@ -1,5 +1,6 @@
 #include "jogpanel.h"
 
+#include "gearbox.h"
 #include "motionblockbox.h"
 #include "motionform.h"
 
@@ -90,6 +91,7 @@ void JogPanel::teardown()
     m_form->setLease(nullptr);
     m_form->setAxis(nullptr);
     m_blocks->setAxis(nullptr);
+    m_gear->setAxis(nullptr);
     m_power.reset();
     m_reset.reset();
     m_lease.reset();
@@ -209,6 +211,7 @@ void JogPanel::onInitialized(Reply *reply, quint64 generation)
                                                      : shownUnit(m_cia->velocityUnit());
     m_form->setFeatures(m_cia->features());
     m_blocks->setAxis(m_motion.get());
+    m_gear->setAxis(m_motion.get());
     if (!m_cia->featureNote().isEmpty())
         setMessage(m_cia->featureNote());
     applyLimits();
@@ -222,7 +225,8 @@ bool JogPanel::isMotionInProgress() const
         return true;
     const AxisState st = m_motion->state();
     if (st == AxisState::DiscreteMotion || st == AxisState::ContinuousMotion
-        || st == AxisState::Homing || st == AxisState::Stopping)
+        || st == AxisState::SynchronizedMotion || st == AxisState::Homing
+        || st == AxisState::Stopping)
         return true;
     const AxisInterface::Status s = m_cia->status();
     return s.valid && (s.moving || std::abs(s.velocity) > m_config.velocityWindow);

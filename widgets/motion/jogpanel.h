@@ -22,6 +22,7 @@ class QPushButton;
 namespace db::widgets {
 
 class Lamp;
+class GearBox;
 class MotionBlockBox;
 class MotionForm;
 
@@ -178,6 +179,7 @@ private:
     QLabel *m_supervision = nullptr;
     MotionForm *m_form = nullptr;
     MotionBlockBox *m_blocks = nullptr; // drives with a motion block table
+    GearBox *m_gear = nullptr; // drives with an electronic gear
 };
 
 } // namespace db::widgets

@@ -1,6 +1,7 @@
 // JogPanel's widget tree and its rendering, apart from the motion logic (jogpanel.cpp).
 #include "jogpanel.h"
 
+#include "gearbox.h"
 #include "motionblockbox.h"
 #include "motionform.h"
 #include "widgets/common/flowlayout.h"
@@ -197,6 +198,8 @@ void JogPanel::buildUi()
 
     m_blocks = new MotionBlockBox(this);
     m_blocks->setObjectName(QStringLiteral("motionBlocks"));
+    m_gear = new GearBox(this);
+    m_gear->setObjectName(QStringLiteral("gearBox"));
 
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("message"));
@@ -208,6 +211,7 @@ void JogPanel::buildUi()
     layout->addWidget(jogBox);
     layout->addWidget(commandBox);
     layout->addWidget(m_blocks);
+    layout->addWidget(m_gear);
     layout->addWidget(limitsBox);
     // After a quick stop (Esc, Stop) the axis is in ErrorStop: the reason and the way out, here.
     m_stopReset = button(tr("Reset"), QStringLiteral("stopReset"), this);

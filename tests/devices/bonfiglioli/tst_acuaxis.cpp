@@ -324,10 +324,8 @@ private Q_SLOTS:
     {
         QVERIFY(power(true));
         m_acu->motion().setMasterSpeed(3000);
-        QVERIFY(await(m_connection->write(ObjectAddress(1123, 5), qlonglong(3))).ok()); // RAM
-        QVERIFY(await(m_connection->write(ObjectAddress(1124, 5), qulonglong(2))).ok());
         QVERIFY(await(m_connection->write(ObjectAddress(1169, 5), qulonglong(50))).ok());
-        const Result<QVariant> geared = await(m_axis->gearIn(100000, 100000));
+        const Result<QVariant> geared = await(m_axis->gearIn(3, 2, 100000, 100000)); // RAM
         QVERIFY2(geared.ok(), qPrintable(geared.error().message()));
         QCOMPARE(m_acu->motion().mode(), qint16(-3));
         QCOMPARE(m_axis->mode(), AcuAxis::Mode::ElectronicGear);
@@ -348,6 +346,84 @@ private Q_SLOTS:
         DB_TRY_VERIFY(!m_axis->status().moving);
         QVERIFY(await(m_axis->moveTo(0, { 20000, 100000, 100000, 0 })).ok());
         QCOMPARE(m_acu->motion().mode(), qint16(1));
+    }
+
+    // MC_GearIn / MC_GearOut on the command model: Busy until the inverter reports "in gear"
+    // (status bit 10), then Done (InGear) with the axis in Synchronized Motion; the ratio and
+    // the ramps go to RAM data sets; MC_GearOut drops bit 4 and the slave brakes to a stop.
+    void gearInAndOutCommands()
+    {
+        QVERIFY(power(true));
+        m_acu->motion().setMasterSpeed(2000);
+        QVERIFY(await(m_connection->write(ObjectAddress(1169, 5), qulonglong(300))).ok());
+        MotionCommand gearIn(m_model.get(), CommandKind::GearIn);
+        MoveParams p = params(0, 0, 80000);
+        p.gearNumerator = 5;
+        p.gearDenominator = 4;
+        gearIn.setParams(p);
+        gearIn.setExecute(true);
+        QVERIFY(gearIn.isBusy());
+        QCOMPARE(m_model->state(), AxisState::SynchronizedMotion);
+        // Coupling takes the ramp plus 300 ms of "gear coupled" time: Busy, not yet in gear.
+        DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->motion().mode(), qint16(-3), 3000);
+        QVERIFY(gearIn.isBusy());
+        QVERIFY(!(m_acu->statusWord() & 0x0400));
+        DB_TRY_COMPARE_WITH_TIMEOUT(gearIn.status(), MotionCommand::Status::Done, 10000);
+        QVERIFY(m_acu->statusWord() & 0x0400); // in gear
+        QCOMPARE(m_acu->motion().velocity(), 2500.0); // 2000 x 5 / 4
+        QCOMPARE(m_acu->store().value(1123, 0).toInt(), 5);
+        QCOMPARE(m_acu->store().value(1124, 0).toInt(), 4);
+        QCOMPARE(m_acu->store().value(1457, 0).toInt(), 80000);
+        QCOMPARE(m_model->state(), AxisState::SynchronizedMotion);
+
+        MotionCommand gearOut(m_model.get(), CommandKind::GearOut);
+        gearOut.setParams(params(0, 0, 50000));
+        gearOut.setExecute(true);
+        DB_TRY_COMPARE_WITH_TIMEOUT(gearOut.status(), MotionCommand::Status::Done, 10000);
+        QCOMPARE(gearIn.status(), MotionCommand::Status::CommandAborted);
+        QCOMPARE(m_acu->motion().velocity(), 0.0);
+        QCOMPARE(m_acu->store().value(1458, 0).toInt(), 50000);
+        QCOMPARE(m_model->state(), AxisState::Standstill);
+        QVERIFY(!(m_acu->store().value(410, 0).toUInt() & 0x0010)); // bit 4 low
+    }
+
+    // Refusals before anything is sent: a bad ratio, a gear started while another mode moves
+    // the axis, and MC_GearOut when the inverter is not coupled.
+    void gearRefusals()
+    {
+        QVERIFY(power(true));
+        MotionCommand gearIn(m_model.get(), CommandKind::GearIn);
+        MoveParams p = params(0, 0, 80000);
+        p.gearDenominator = 0;
+        gearIn.setParams(p);
+        gearIn.setExecute(true);
+        DB_TRY_COMPARE(gearIn.status(), MotionCommand::Status::Error);
+        QCOMPARE(gearIn.refusal(), Refusal::InvalidGearRatio);
+        QVERIFY(gearIn.error().message().contains(QLatin1String("denominator")));
+        QVERIFY(m_acu->motion().mode() != -3);
+
+        MotionCommand reset(m_model.get(), CommandKind::Reset);
+        reset.setExecute(true);
+        DB_TRY_VERIFY(reset.isFinished());
+        QVERIFY(power(true));
+        MotionCommand velocity(m_model.get(), CommandKind::MoveVelocity);
+        velocity.setParams(params(0, 3000));
+        velocity.setExecute(true);
+        DB_TRY_COMPARE_WITH_TIMEOUT(velocity.status(), MotionCommand::Status::Done, 5000);
+        p.gearDenominator = 1;
+        gearIn.setParams(p);
+        gearIn.setExecute(false);
+        gearIn.setExecute(true);
+        DB_TRY_COMPARE(gearIn.status(), MotionCommand::Status::Error);
+        QCOMPARE(gearIn.refusal(), Refusal::ModeChangeWhileMoving);
+        QCOMPARE(m_acu->motion().velocity(), 3000.0); // the running motion goes on
+        QCOMPARE(velocity.status(), MotionCommand::Status::Done);
+
+        // Not coupled: the inverter's own mode says so.
+        const Result<QVariant> out = await(m_axis->gearOut(0));
+        QVERIFY(!out.ok());
+        QVERIFY2(out.error().message().contains(QLatin1String("1454 = -3")),
+                 qPrintable(out.error().message()));
     }
 
     // The jog moves in leases: when the renewals stop (the program died), the drive ends the
@@ -421,6 +497,30 @@ private Q_SLOTS:
         QVERIFY(power(true));
         QVERIFY(await(m_axis->moveVelocity(300, {})).ok());
         DB_TRY_COMPARE_WITH_TIMEOUT(m_acu->store().value(240, 0).toInt(), 300, 3000);
+    }
+
+    // A configuration without positioning control has no electronic gear: MC_GearIn is refused
+    // by name, with the reason, and nothing is written.
+    void gearRefusedWithoutPositioning()
+    {
+        QVERIFY(await(m_connection->write(ObjectAddress(30, 5), qulonglong(210))).ok());
+        QVERIFY(await(m_axis->initialize()).ok());
+        QVERIFY(!(m_axis->features() & AxisInterface::Feature::ElectronicGear));
+        QVERIFY(power(true));
+        int writes = 0;
+        connect(&m_acu->server(), &vabus::Server::requestHandled, this,
+                [&writes](const vabus::Telegram &request) { writes += request.write ? 1 : 0; });
+        MotionCommand gearIn(m_model.get(), CommandKind::GearIn);
+        gearIn.setParams(params(0, 0, 80000));
+        gearIn.setExecute(true);
+        DB_TRY_COMPARE(gearIn.status(), MotionCommand::Status::Error);
+        QCOMPARE(gearIn.refusal(), Refusal::FeatureMissing);
+        QVERIFY2(gearIn.error().message().startsWith(
+                     QLatin1String("MC_GearIn refused: the drive has no electronic gear "
+                                   "(configuration 210 has no positioning control")),
+                 qPrintable(gearIn.error().message()));
+        QCOMPARE(m_model->state(), AxisState::Standstill); // no ErrorStop
+        QCOMPARE(writes, 0);
     }
 
     void modesMcoDoesNotHaveAreRejected()

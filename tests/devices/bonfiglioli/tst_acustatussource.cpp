@@ -3,10 +3,12 @@
 // reconnect, the state, fault, warnings and actual values as the drive reports them, and no
 // EEPROM write from status polling, scope polling or the keep-alive.
 
+#include "core/reply.h"
 #include "devices/bonfiglioli/acudescription.h"
 #include "devices/bonfiglioli/acustatussource.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "scope/pollingsource.h"
+#include "vabus/vabusblock.h"
 #include "vabus/vabusclient.h"
 #include "vabus/vabusconnection.h"
 
@@ -14,6 +16,7 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <algorithm>
 #include <memory>
 
 using namespace db;
@@ -169,6 +172,98 @@ private Q_SLOTS:
         QTRY_VERIFY(polling.deliveredCount() >= 200);
         polling.stop();
         QCOMPARE(polling.failedCount(), qint64(0));
+        // As fast as the link allows, the two channels stay in one block telegram each time.
+        QVERIFY2(polling.readCount() <= polling.deliveredCount() / 2 + 1,
+                 qPrintable(QStringLiteral("%1 telegrams for %2 samples")
+                                .arg(polling.readCount())
+                                .arg(polling.deliveredCount())));
+        QCOMPARE(m_acu->eepromWrites(), quint64(0));
+    }
+
+    // The block definition has one owner per connection: a definition written by somebody else
+    // (here one of the same answer length, in another order, which decodes without an error)
+    // is refused while the block is in use, and the status keeps its right values.
+    void foreignDefinitionIsRefusedWhileTheBlockIsInUse()
+    {
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        QVERIFY(m_source->usesBlock());
+        auto *reader = m_connection->blockReader();
+        QList<vabus::BlockItem> reversed = reader->items();
+        std::reverse(reversed.begin(), reversed.end());
+        const QByteArray foreign = vabus::blockDefinition(reversed).value();
+
+        const Result<QVariant> written =
+            Reply::wait(m_connection->write({ 17, 0 }, QString::fromLatin1(foreign)));
+        QVERIFY(!written.ok());
+        QCOMPARE(written.error().kind(), Error::Kind::AccessDenied);
+        QVERIFY2(written.error().message().contains(QStringLiteral("block definition (17)")),
+                 qPrintable(written.error().message()));
+        QVERIFY(!Reply::wait(m_connection->write({ 18, 0 }, QStringLiteral("0000"))).ok());
+
+        const int after = m_source->cycles();
+        QTRY_VERIFY(m_source->cycles() >= after + 3);
+        QCOMPARE(m_source->state(), StatusSource::State::SwitchOnDisabled);
+        const QList<StatusValue> values = m_source->actualValues();
+        QCOMPARE(textOf(values, QStringLiteral("frequency")), QStringLiteral("108.45 Hz"));
+        QCOMPARE(textOf(values, QStringLiteral("current")), QStringLiteral("10.2 A"));
+        QCOMPARE(textOf(values, QStringLiteral("power")), QStringLiteral("4.0 kW"));
+        QCOMPARE(m_source->blockDefinitions(), 1);
+
+        // Nobody uses the block: 17 may be written, and the block is defined again before the
+        // next block read.
+        m_source->release();
+        QTRY_VERIFY(!m_source->isPolling());
+        reader->leave(m_source);
+        QVERIFY(Reply::wait(m_connection->write({ 17, 0 }, QString::fromLatin1(foreign))).ok());
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= after + 6);
+        QCOMPARE(m_source->blockDefinitions(), 2);
+        QCOMPARE(textOf(m_source->actualValues(), QStringLiteral("frequency")),
+                 QStringLiteral("108.45 Hz"));
+    }
+
+    // The scope's host polling joins the status source's block: its channels ride in the same
+    // block telegram (no read of their own), with their right values, and no sample is lost.
+    void scopeChannelsRideInTheStatusBlock()
+    {
+        m_source->acquire();
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        scope::PollingSource polling(m_connection.get());
+        QVERIFY(polling.addChannel({ 210, 0 }, 20).ok());
+        QVERIFY(polling.addChannel({ 372, 2 }, 20).ok());
+        QHash<int, QList<double>> samples;
+        connect(&polling, &scope::TraceSource::samplesReady, this,
+                [&](int channel, const scope::TraceSamples &got) {
+                    for (const auto &sample : got)
+                        samples[channel].append(sample.raw);
+                });
+        m_requests.clear();
+        QElapsedTimer timeBase;
+        timeBase.start();
+        polling.start(timeBase);
+        QTRY_VERIFY(samples.value(0).size() >= 20 && samples.value(1).size() >= 20);
+        polling.stop();
+
+        QCOMPARE(polling.lostCount(), qint64(0));
+        QCOMPARE(polling.failedCount(), qint64(0));
+        QCOMPARE(polling.readCount(), polling.deliveredCount() / 2);
+        for (double v : samples.value(0))
+            QCOMPARE(v, 10845.0); // 108.45 Hz
+        for (double v : samples.value(1))
+            QCOMPARE(v, 1390.0); // 372 data set 2
+        // Nothing but the block: one new definition (the status parameters and 372:2), then
+        // block reads for the status source and the scope alike.
+        int definitions = 0;
+        for (const auto &[parameter, write] : std::as_const(m_requests)) {
+            QVERIFY2((parameter == 17 && write) || (parameter == 19 && !write),
+                     qPrintable(QStringLiteral("unexpected telegram for %1").arg(parameter)));
+            definitions += parameter == 17 ? 1 : 0;
+        }
+        QVERIFY(definitions >= 1 && definitions <= 2);
+        QVERIFY(m_source->isFresh({ 411, 0 }));
+        QCOMPARE(textOf(m_source->actualValues(), QStringLiteral("current")),
+                 QStringLiteral("10.2 A"));
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
     }
 
