@@ -2,6 +2,80 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>ComparisonReport</name>
+    <message>
+        <source>Parameter Comparison</source>
+        <translation>Parametervergleich</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>Datum:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>Vendor:</source>
+        <translation>Hersteller:</translation>
+    </message>
+    <message>
+        <source>Product:</source>
+        <translation>Produkt:</translation>
+    </message>
+    <message>
+        <source>Revision:</source>
+        <translation>Revision:</translation>
+    </message>
+    <message>
+        <source>Serial number:</source>
+        <translation>Seriennummer:</translation>
+    </message>
+    <message>
+        <source>Parameter set:</source>
+        <translation>Parametersatz:</translation>
+    </message>
+    <message>
+        <source>Compared with:</source>
+        <translation>Verglichen mit:</translation>
+    </message>
+    <message>
+        <source>Result:</source>
+        <translation>Ergebnis:</translation>
+    </message>
+    <message>
+        <source>No differences</source>
+        <translation>Keine Unterschiede</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n Unterschied</numerusform>
+            <numerusform>%n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Report not saved to %1: %2</source>
+        <translation>Bericht nicht in %1 gespeichert: %2</translation>
+    </message>
+</context>
+<context>
     <name>MotionChangeLog</name>
     <message>
         <source>target %1 at %2</source>
@@ -1764,6 +1838,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
+    <message>
+        <source>CAN frame</source>
+        <translation>CAN-Frame</translation>
+    </message>
 </context>
 <context>
     <name>db::Cia301</name>
@@ -2990,6 +3068,21 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::canopen::NmtAnswer</name>
+    <message>
+        <source>not confirmed: node %1 sends no heartbeat</source>
+        <translation>nicht bestätigt: Knoten %1 sendet keinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>no answer: node %1 sent no heartbeat within %2 ms</source>
+        <translation>keine Antwort: Knoten %1 sandte innerhalb von %2 ms keinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>node %1 did not follow: it stays %2</source>
+        <translation>Knoten %1 ist nicht gefolgt: er bleibt %2</translation>
+    </message>
+</context>
+<context>
     <name>db::canopen::SdoAbort</name>
     <message>
         <source>toggle bit not alternated</source>
@@ -3193,6 +3286,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>profile torque</source>
         <translation>Profildrehmoment</translation>
+    </message>
+    <message>
+        <source>%1: no answer within %2 ms: the drive did not report its state (waiting for %3)</source>
+        <translation>%1: keine Antwort innerhalb von %2 ms: der Antrieb meldete seinen Zustand nicht (beim Warten auf %3)</translation>
     </message>
 </context>
 <context>
@@ -4140,14 +4237,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Changes</source>
         <translation>Änderungen</translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation>alle Knoten</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>Knoten %1</translation>
     </message>
     <message>
         <source>all parameters</source>
@@ -6068,6 +6157,36 @@ send 605 40 08 10 00</translation>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
+    <message numerus="yes">
+        <source>every %1 ms: stopped after %n frame(s)</source>
+        <translation>
+            <numerusform>alle %1 ms: nach %n Frame gestoppt</numerusform>
+            <numerusform>alle %1 ms: nach %n Frames gestoppt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>macro stopped</source>
+        <translation>Makro gestoppt</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>einmal</translation>
+    </message>
+    <message>
+        <source>every %1 ms: started</source>
+        <translation>alle %1 ms: gestartet</translation>
+    </message>
+    <message numerus="yes">
+        <source>macro, %n step(s)</source>
+        <translation>
+            <numerusform>Makro, %n Schritt</numerusform>
+            <numerusform>Makro, %n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation>Schritt %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::JogPanel</name>
@@ -7445,6 +7564,34 @@ send 605 40 08 10 00</translation>
         <source>Scanning…</source>
         <translation>Suche…</translation>
     </message>
+    <message>
+        <source>all nodes</source>
+        <translation>alle Knoten</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>%1 sent to all nodes</source>
+        <translation>%1 an alle Knoten gesendet</translation>
+    </message>
+    <message>
+        <source>%1 sent to node %2: waiting for its heartbeat</source>
+        <translation>%1 an Knoten %2 gesendet: warte auf seinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>%1 to node %2: %3</source>
+        <translation>%1 an Knoten %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 sent to node %2; %3</source>
+        <translation>%1 an Knoten %2 gesendet; %3</translation>
+    </message>
+    <message>
+        <source>%1: node %2 followed</source>
+        <translation>%1: Knoten %2 ist gefolgt</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeListModel</name>
@@ -8200,16 +8347,8 @@ send 605 40 08 10 00</translation>
         <translation>&amp;Bericht speichern…</translation>
     </message>
     <message>
-        <source>Save every row of the comparison as a CSV file</source>
-        <translation>Alle Zeilen des Vergleichs als CSV-Datei speichern</translation>
-    </message>
-    <message>
         <source>Save Comparison Report</source>
         <translation>Vergleichsbericht speichern</translation>
-    </message>
-    <message>
-        <source>CSV (*.csv);;All files (*)</source>
-        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Saved the comparison to %1</source>
@@ -8258,6 +8397,42 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Compared %1 with %2. Nothing has been written; Re-read Device compares with the device again.</source>
         <translation>%1 mit %2 verglichen. Nichts wurde geschrieben; Gerät neu lesen vergleicht wieder mit dem Gerät.</translation>
+    </message>
+    <message>
+        <source>Save the comparison as a PDF report (identity, date, files and the differences) or every row as a CSV file</source>
+        <translation>Den Vergleich als PDF-Bericht (Identität, Datum, Dateien und die Unterschiede) oder jede Zeile als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <source>PDF report (*.pdf)</source>
+        <translation>PDF-Bericht (*.pdf)</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Another Unit</source>
+        <translation>Anderes Exemplar</translation>
+    </message>
+    <message>
+        <source>Compare Anyway</source>
+        <translation>Trotzdem vergleichen</translation>
+    </message>
+    <message>
+        <source>The file was read from another unit of this product: serial number %1, this device reports %2 (1018h.4). Values such as calibrations and offsets belong to one unit.</source>
+        <translation>Die Datei wurde von einem anderen Exemplar dieses Produkts gelesen: Seriennummer %1, dieses Gerät meldet %2 (1018h.4). Werte wie Kalibrierungen und Offsets gehören zu einem Exemplar.</translation>
+    </message>
+    <message>
+        <source>Compared %1 with another unit. %2 Nothing has been written.</source>
+        <translation>%1 mit einem anderen Exemplar verglichen. %2 Nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Compare with this unit anyway?</source>
+        <translation>Trotzdem mit diesem Exemplar vergleichen?</translation>
+    </message>
+    <message>
+        <source>Not compared: %1</source>
+        <translation>Nicht verglichen: %1</translation>
     </message>
 </context>
 <context>

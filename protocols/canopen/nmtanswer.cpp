@@ -1,5 +1,6 @@
 #include "nmtanswer.h"
 
+#include "nmtmaster.h"
 #include "nodemonitor.h"
 #include "transport/canbus.h"
 
@@ -7,25 +8,6 @@
 #include <QCoreApplication>
 
 namespace db::canopen {
-
-namespace {
-QString stateName(NmtState state)
-{
-    switch (state) {
-    case NmtState::BootUp:
-        return QCoreApplication::translate("NmtAnswer", "boot-up");
-    case NmtState::Stopped:
-        return QCoreApplication::translate("NmtAnswer", "stopped");
-    case NmtState::Operational:
-        return QCoreApplication::translate("NmtAnswer", "operational");
-    case NmtState::PreOperational:
-        return QCoreApplication::translate("NmtAnswer", "pre-operational");
-    case NmtState::Unknown:
-        break;
-    }
-    return QCoreApplication::translate("NmtAnswer", "unknown");
-}
-} // namespace
 
 NmtAnswer::NmtAnswer(CanBus *bus, const NodeMonitor *monitor, NmtCommand command, NodeId node,
                      QObject *parent)
@@ -54,7 +36,7 @@ NmtAnswer::NmtAnswer(CanBus *bus, const NodeMonitor *monitor, NmtCommand command
         else
             finish(Error(
                 Error::Kind::Timeout,
-                tr("node %1 did not follow: it stays %2").arg(m_node).arg(stateName(m_seen))));
+                tr("node %1 did not follow: it stays %2").arg(m_node).arg(nmtStateName(m_seen))));
     });
     m_timer.start(consumer > 0 ? consumer : kDefaultWaitMs);
 }
