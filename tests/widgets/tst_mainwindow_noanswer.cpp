@@ -11,6 +11,7 @@
 #include "core/reply.h"
 #include "mainwindow.h"
 #include "motion/motionaxis.h"
+#include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/canopen/nodelistmodel.h"
 #include "widgets/motion/jogpanel.h"
@@ -23,6 +24,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -229,6 +231,13 @@ private Q_SLOTS:
                  qPrintable(nodes->commandStatus()));
         QVERIFY2(window.statusBar()->currentMessage().contains(QLatin1String("node 50")),
                  qPrintable(window.statusBar()->currentMessage()));
+        // With DRIVEBENCH_SCREENSHOT_DIR=DIR: the network page and the node dock (one list)
+        // with the command's outcome, as DIR/screenshot-nmt-no-answer.png.
+        if (const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            window.pages()->setCurrentWidget(window.networkView());
+            QCoreApplication::processEvents();
+            QVERIFY(window.grab().save(dir + QStringLiteral("/screenshot-nmt-no-answer.png")));
+        }
         demo.setSilent(false);
     }
 };

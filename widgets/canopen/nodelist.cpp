@@ -101,7 +101,9 @@ NodeList::NodeList(QWidget *parent)
     layout->addLayout(buttons);
     layout->addWidget(m_broadcast); // own row: the dock stays narrow on a laptop screen
     m_commandStatus->setObjectName(QStringLiteral("commandStatus"));
-    m_commandStatus->setWordWrap(true);
+    // One line that never widens the dock nor takes the list's rows: the whole text is the
+    // tool tip (and a failure is in the status bar too).
+    m_commandStatus->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_commandStatus->hide();
     layout->addWidget(m_commandStatus);
 
@@ -247,6 +249,7 @@ QString NodeList::commandStatus() const
 void NodeList::showCommandStatus(const QString &text, bool error)
 {
     m_commandStatus->setText(text);
+    m_commandStatus->setToolTip(text);
     m_commandStatus->setVisible(!text.isEmpty());
     style::setTextColor(m_commandStatus, error ? style::errorColor() : style::inactiveColor());
 }
