@@ -1748,6 +1748,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
         <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
     </message>
+    <message>
+        <source>cannot check the device&apos;s serial number (1018h.4); --ignore-identity restores without the check</source>
+        <translation>die Seriennummer des Geräts (1018h.4) lässt sich nicht prüfen; --ignore-identity stellt ohne die Prüfung wieder her</translation>
+    </message>
+    <message>
+        <source>%1 was read from another unit (serial number %2), the device reports %3; give --ignore-identity to restore it to this unit</source>
+        <translation>%1 wurde von einem anderen Exemplar gelesen (Seriennummer %2), das Gerät meldet %3; geben Sie --ignore-identity an, um ihn auf dieses Exemplar wiederherzustellen</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
