@@ -86,7 +86,8 @@ void TestCliParamsFailures::backupKeepsTheGoodFileWhenEveryReadFails_data()
     QTest::addColumn<int>("exitCode");
     QTest::addColumn<QString>("cause");
     QTest::addColumn<int>("failed");
-    // 201 objects, 1018h.4, .3 and .2; 1018h.1 too where its answer is bad (not the first one behind).
+    // 201 objects, 1018h.4, .3 and .2; 1018h.1 too where its answer is bad (not the first one
+    // behind).
     QTest::newRow("answer to the previous request")
         << int(Fault::PreviousAnswer) << 5 << QStringLiteral("does not belong to") << 204;
     QTest::newRow("ERROR to everything")
