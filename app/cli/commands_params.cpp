@@ -123,6 +123,20 @@ Result<void> checkIdentity(Context &c, Session &session, const ParameterSet &set
                          .arg(file)
                          .arg(set.identity.productCode, 8, 16, QLatin1Char('0'))
                          .arg(code->toULongLong(), 8, 16, QLatin1Char('0')));
+    // The same product, but is it the same unit? Calibrations and offsets belong to one.
+    if (set.serialNumber.isEmpty()
+        || !session.connection()->dictionary().contains(ObjectAddress(0x1018, 4)))
+        return {};
+    const auto serial = session.read({ 0x1018, 4 });
+    if (!serial)
+        return serial.error().prefixed(Tr::tr("cannot check the device's serial number "
+                                              "(1018h.4); --ignore-identity restores without "
+                                              "the check"));
+    const QString reported = ParameterSet::identityNumber(quint32(serial->toULongLong()));
+    if (reported.compare(set.serialNumber, Qt::CaseInsensitive) != 0)
+        return usage(Tr::tr("%1 was read from another unit (serial number %2), the device "
+                            "reports %3; give --ignore-identity to restore it to this unit")
+                         .arg(file, set.serialNumber, reported));
     return {};
 }
 

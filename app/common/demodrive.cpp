@@ -25,15 +25,22 @@ struct DemoDrive::Private
         : drive(resources::movingCapDictionary(), options(initialValues))
     {
         QObject::connect(&slcanServer, &SlcanServer::frameReceived, &canopen,
-                         &canopen::MovingCapCanopen::receive);
+                         [this](const QCanBusFrame &frame) {
+                             if (!silent)
+                                 canopen.receive(frame);
+                         });
         QObject::connect(&canopen, &canopen::MovingCapCanopen::transmit, &slcanServer,
-                         &SlcanServer::send);
+                         [this](const QCanBusFrame &frame) {
+                             if (!silent)
+                                 slcanServer.send(frame);
+                         });
     }
     sim::MovingCapDrive drive;
     refgo::MovingCapRefgoHandler handler { &drive };
     refgo::Server refgoServer { &handler };
     canopen::MovingCapCanopen canopen { &drive };
     SlcanServer slcanServer;
+    bool silent = false;
 };
 
 DemoDrive::DemoDrive(const QHash<ObjectAddress, QVariant> &initialValues, QObject *parent)
@@ -85,6 +92,12 @@ sim::MovingCapDrive &DemoDrive::drive()
 int DemoDrive::dropClients()
 {
     return d->refgoServer.dropClients() + d->slcanServer.dropClients();
+}
+
+void DemoDrive::setSilent(bool on)
+{
+    d->silent = on;
+    d->refgoServer.setSilent(on);
 }
 
 void DemoDrive::setHeartbeatSilenced(bool on)

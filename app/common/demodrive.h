@@ -46,6 +46,9 @@ public:
     int dropClients();
     // The CANopen node stops (true) or resumes (false) producing its 1017h heartbeat.
     void setHeartbeatSilenced(bool on);
+    // While on, both doors keep their links up and answer nothing (a hung drive): RefGo
+    // requests and CAN frames are dropped, and the CANopen node sends nothing.
+    void setSilent(bool on);
 
 private:
     struct Private;

@@ -6,6 +6,7 @@
 #include "core/connectionhealth.h"
 #include "morse/input/morseinput.h"
 #include "widgets/canopen/canmonitor.h"
+#include "widgets/canopen/framesender.h"
 #include "widgets/canopen/networkview.h"
 #include "widgets/canopen/nodelist.h"
 #include "widgets/common/changelogview.h"
@@ -120,6 +121,8 @@ MainWindow::MainWindow(const ProtocolRegistry &registry, QWidget *parent)
     // The bus of the current CANopen connection; the tab shows while there is one.
     m_networkView = new widgets::NetworkView(m_pages);
     m_pages->setTabVisible(m_pages->addTab(m_networkView, tr("CANopen Network")), false);
+    // One list of nodes: the dock shows the page's nodes and selection.
+    m_nodeList->follow(m_networkView->nodeList());
     createChangeLog(); // after every widget that changes devices
     createToolBar();
     createWelcome();
@@ -368,6 +371,8 @@ void MainWindow::attachCanopen(DeviceConnection *connection)
         return;
     m_canopen = canopen;
     m_canMonitor->setConnection(canopen);
+    m_canMonitor->frameSender()->setChangeLog(m_changeLog,
+                                              canopen ? canopen->uri().toString() : QString());
     m_nodeList->setConnection(canopen);
     m_networkView->setConnection(canopen);
     m_pages->setTabVisible(m_pages->indexOf(m_networkView), canopen != nullptr);

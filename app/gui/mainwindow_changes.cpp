@@ -1,5 +1,6 @@
 // The change log: what the user changed on the devices this session, fed by every widget that
-// changes a device, and each finished change as a line in the log console.
+// changes a device, and each finished change as a line in the log console (a failed one also
+// in the status bar).
 #include "mainwindow.h"
 
 #include "core/changelog.h"
@@ -15,7 +16,13 @@
 #include "widgets/parameters/paramcompareview.h"
 #include "widgets/parameters/parametersetactions.h"
 
+#include <QStatusBar>
+
 namespace db::gui {
+
+namespace {
+constexpr int kFailureMessageMs = 20000;
+}
 
 void MainWindow::createChangeLog()
 {
@@ -25,18 +32,7 @@ void MainWindow::createChangeLog()
     m_paramActions->setChangeLog(m_changeLog);
 
     m_networkView->setChangeLog(m_changeLog);
-    const auto recordNmt = [this](const QString &command, int node) {
-        ChangeLog::Entry e;
-        e.device = m_canopen ? m_canopen->uri().toString() : QString();
-        e.kind = ChangeLog::Kind::Nmt;
-        e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-        e.newValue = command;
-        e.outcome = ChangeLog::Outcome::Ok; // a broadcast frame: nobody answers it
-        m_changeLog->add(e);
-    };
-    // The node dock and the network page send NMT commands alike.
-    connect(m_nodeList, &widgets::NodeList::commandSent, this, recordNmt);
-    connect(m_networkView->nodeList(), &widgets::NodeList::commandSent, this, recordNmt);
+    m_nodeList->setChangeLog(m_changeLog); // the node dock sends NMT commands as the page does
 
     connect(m_compareView, &widgets::ParamCompareView::restoreFinished, this,
             [this](const RestoreReport &report) {
@@ -98,6 +94,10 @@ void MainWindow::createChangeLog()
             m_logged.removeIf([first](int id) { return id < first; });
         }
         m_log->change(ChangeLog::summary(e));
+        // A command that failed or got no answer is said where the user looks, not only in
+        // the log: the status bar (the panel that sent it says so too).
+        if (e.outcome == ChangeLog::Outcome::Failed)
+            statusBar()->showMessage(ChangeLog::summary(e), kFailureMessageMs);
     };
     connect(m_changeLog, &ChangeLog::entryAdded, this, logFinished);
     connect(m_changeLog, &ChangeLog::entryChanged, this, logFinished);

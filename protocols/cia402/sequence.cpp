@@ -25,6 +25,18 @@ Sequence::Sequence(DeviceConnection *connection, QString name, QObject *parent)
     connect(&m_pollTimer, &QTimer::timeout, this, &Sequence::poll);
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         const Step &step = m_steps[m_index];
+        // A drive that never reported its state in this step did not refuse: say that, not a
+        // statusword never read (the time counts from the step's start, so a read queued
+        // behind others counts too).
+        if (!m_answeredInStep) {
+            fail(Error(Error::Kind::Timeout,
+                       Tr::tr("%1: no answer within %2 ms: the drive did not report its state "
+                              "(waiting for %3)")
+                           .arg(m_name)
+                           .arg(step.timeoutMs)
+                           .arg(step.what)));
+            return;
+        }
         fail(Error(Error::Kind::Timeout,
                    Tr::tr("%1: %2 did not happen within %3 ms (statusword 0x%4)")
                        .arg(m_name, step.what)
@@ -109,6 +121,7 @@ void Sequence::runStep()
         return;
     }
     case Step::Kind::Wait:
+        m_answeredInStep = false;
         m_deadline.start(step.timeoutMs);
         poll();
         return;
@@ -158,6 +171,7 @@ void Sequence::onStatusUpdated()
 void Sequence::onStatus(quint16 statusword)
 {
     m_statusword = statusword;
+    m_answeredInStep = true;
     QString why;
     switch (m_steps[m_index].check(m_statusword, why)) {
     case WaitVerdict::Reached:

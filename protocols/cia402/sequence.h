@@ -90,6 +90,7 @@ private:
     QTimer m_pollTimer;
     QTimer m_deadline;
     quint16 m_statusword = 0;
+    bool m_answeredInStep = false; // a status read of the current wait step was answered
 };
 
 // Convenience checks.

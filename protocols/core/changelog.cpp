@@ -157,6 +157,8 @@ QString ChangeLog::kindName(Kind kind)
         return tr("NMT");
     case Kind::Reset:
         return tr("fault reset");
+    case Kind::Frame:
+        return tr("CAN frame");
     }
     return {};
 }

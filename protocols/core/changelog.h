@@ -14,9 +14,10 @@ class DeviceConnection;
 class Reply;
 
 // What the user changed on the devices during a session: every write, restore, permanent store,
-// enable, motion command and NMT command, with time, device, object, old and new value and the
-// outcome. Views show it; saveCsv() keeps it. Entries are added when the action starts and
-// completed when its outcome is known, so an action that never finishes stays visibly pending.
+// enable, motion command, NMT command and CAN frame sent by hand, with time, device, object, old
+// and new value and the outcome. Views show it; saveCsv() keeps it. Entries are added when the
+// action starts and completed when its outcome is known, so an action that never finishes stays
+// visibly pending.
 //
 // A successful write is marked "not stored" until the same device stores its parameters
 // permanently (markStored()): it is lost at the next power cycle until then. Writes to a
@@ -25,7 +26,7 @@ class ChangeLog : public QObject
 {
     Q_OBJECT
 public:
-    enum class Kind { Write, Restore, Store, Enable, Disable, Motion, Nmt, Reset };
+    enum class Kind { Write, Restore, Store, Enable, Disable, Motion, Nmt, Reset, Frame };
     Q_ENUM(Kind)
     enum class Outcome { Pending, Ok, Failed, Aborted };
     Q_ENUM(Outcome)

@@ -16,6 +16,7 @@ constexpr int kMaxPipelineDepth = 8;
 constexpr ObjectAddress kVendorId { 0x1018, 1 };
 constexpr ObjectAddress kProductCode { 0x1018, 2 };
 constexpr ObjectAddress kRevision { 0x1018, 3 };
+constexpr ObjectAddress kSerialNumber { 0x1018, 4 };
 
 // The type of a value read from an object the description does not know.
 DataType typeOfValue(const QVariant &raw)
@@ -104,12 +105,12 @@ void ParameterBackup::start()
     // description's; read them first when the description has them and the scope does not.
     m_identityOnly.clear();
     m_set.identity = dict.identity;
-    for (const ObjectAddress a : { kRevision, kProductCode, kVendorId }) {
+    for (const ObjectAddress a : { kSerialNumber, kRevision, kProductCode, kVendorId }) {
         const ObjectDef *def = dict.find(a);
         if (m_explicit.isEmpty() && def && def->readable() && !m_todo.contains(a)) {
             m_todo.prepend(a);
             m_identityOnly.insert(a);
-            if (a == kRevision)
+            if (a == kRevision || a == kSerialNumber)
                 continue; // the description's revision stays until the device has answered
             // Unknown until the device has answered: the description's number is not the
             // device's, and 0 would read as a product code.
@@ -230,9 +231,9 @@ void ParameterBackup::onReply(Reply *reply)
         m_timeoutsInRow = 0;
         const bool vendor = address == kVendorId;
         const auto code = codec::normalize(DataType::Unsigned32, reply->value());
-        if (code && address == kRevision) {
-            m_set.identity.revision = QStringLiteral("0x%1").arg(
-                QStringLiteral("%1").arg(code->toULongLong(), 8, 16, QLatin1Char('0')).toUpper());
+        if (code && (address == kRevision || address == kSerialNumber)) {
+            (address == kRevision ? m_set.identity.revision : m_set.serialNumber) =
+                ParameterSet::identityNumber(quint32(code->toULongLong()));
         } else if (code) {
             (vendor ? m_set.identity.vendorId : m_set.identity.productCode) =
                 quint32(code->toULongLong());

@@ -124,6 +124,12 @@ bool ParameterSet::remove(ObjectAddress address)
     return true;
 }
 
+QString ParameterSet::identityNumber(quint32 value)
+{
+    return QStringLiteral("0x%1").arg(
+        QStringLiteral("%1").arg(value, 8, 16, QLatin1Char('0')).toUpper());
+}
+
 QByteArray ParameterSet::serialize(const QStringList &comments) const
 {
     QString text;
@@ -143,6 +149,8 @@ QByteArray ParameterSet::serialize(const QStringList &comments) const
              .arg(productCodeKnown ? hex32(identity.productCode) : unknown,
                   quoted(identity.productName)));
     line(QStringLiteral("revision %1").arg(quoted(identity.revision)));
+    if (!serialNumber.isEmpty())
+        line(QStringLiteral("serial %1").arg(quoted(serialNumber)));
     line(QStringLiteral("description %1 %2")
              .arg(quoted(identity.descriptionFile), quoted(identity.descriptionVersion)));
     line(QStringLiteral("source %1").arg(quoted(source)));

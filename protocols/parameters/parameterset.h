@@ -35,6 +35,8 @@ struct ParameterEntry
 //   vendor 0x000002D6 "Fullmo"          <- identity: id + quoted name
 //   product 0x00000001 "MovingCap"      <- "unknown" instead of the number: not read (below)
 //   revision "1.2"
+//   serial "0x00012345"                 <- the unit's serial number (CANopen 1018h.4); only
+//                                          written when the device reported one
 //   description "resources/devices/movingcap_eth.json" "1.0"   <- file + version
 //   source "refgo://127.0.0.1:10001"
 //   created 2026-11-21T21:00:00Z
@@ -60,6 +62,9 @@ public:
     // a restore cannot check the product against the set.
     bool vendorIdKnown = true;
     bool productCodeKnown = true;
+    // The unit's serial number as the device reported it (CANopen 1018h.4 as "0x0001E240");
+    // empty when not read. Two units of one product differ only here.
+    QString serialNumber;
     QString source; // URI or file the values came from ("defaults" for defaults())
     // How the addresses are written in the file and in messages: the device's format (an
     // address means a different object in another format, so sets of different formats are
@@ -93,6 +98,9 @@ public:
     // Kind Malformed for corrupt/truncated/foreign content, Io when the file cannot be read.
     static Result<ParameterSet> load(const QString &path);
     static Result<ParameterSet> parse(const QByteArray &bytes, const QString &origin);
+
+    // A 32-bit identity number (revision, serial number) as the set writes it: "0x0001E240".
+    static QString identityNumber(quint32 value);
 
     // The description's defaults: every storable object that states a default value.
     static ParameterSet defaults(const ObjectDictionary &dictionary);

@@ -268,6 +268,10 @@ Result<void> Parser::header(const QList<Token> &t)
         if (auto r = want(2); !r)
             return r;
         id.revision = t.at(1).text;
+    } else if (key == QLatin1String("serial")) {
+        if (auto r = want(2); !r)
+            return r;
+        m_set.serialNumber = t.at(1).text;
     } else if (key == QLatin1String("description")) {
         if (auto r = want(3); !r)
             return r;

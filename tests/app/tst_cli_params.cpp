@@ -202,9 +202,9 @@ void TestCliParams::badFileChangesNothing_data()
     QTest::addColumn<QString>("kind");
     QTest::addColumn<QString>("message");
     QTest::newRow("truncated") << QStringLiteral("truncated")
-                               << QStringLiteral(":211: truncated: no 'end' line");
+                               << QStringLiteral(":212: truncated: no 'end' line");
     QTest::newRow("corrupt") << QStringLiteral("corrupt")
-                             << QStringLiteral(":14: expected an object line");
+                             << QStringLiteral(":15: expected an object line");
     QTest::newRow("foreign") << QStringLiteral("foreign")
                              << QStringLiteral(":1: not a drivebench parameter set");
 }

@@ -25,6 +25,7 @@ private Q_SLOTS:
     void backupAbortedByEverySdoKeepsTheGoodFile();
     void partialBackupListsEveryFailedRow();
     void unreadIdentityIsUnknownAndRestoreRefusesIt();
+    void anotherUnitIsRefusedUnlessIgnored();
     void dumpWithFailedRowsPrintsTheRestAndFails();
     void dumpWithNothingReadFails();
     void restoreRefusesAnEmptySet();
@@ -85,17 +86,18 @@ void TestCliParamsFailures::backupKeepsTheGoodFileWhenEveryReadFails_data()
     QTest::addColumn<int>("exitCode");
     QTest::addColumn<QString>("cause");
     QTest::addColumn<int>("failed");
-    // 201 objects, 1018h.3 and .2; 1018h.1 too where its answer is bad (not the first one behind).
+    // 201 objects, 1018h.4, .3 and .2; 1018h.1 too where its answer is bad (not the first one
+    // behind).
     QTest::newRow("answer to the previous request")
-        << int(Fault::PreviousAnswer) << 5 << QStringLiteral("does not belong to") << 203;
+        << int(Fault::PreviousAnswer) << 5 << QStringLiteral("does not belong to") << 204;
     QTest::newRow("ERROR to everything")
-        << int(Fault::Error) << 6 << QStringLiteral("ERROR") << 204;
+        << int(Fault::Error) << 6 << QStringLiteral("ERROR") << 205;
     QTest::newRow("NUL byte in the value")
-        << int(Fault::NulByte) << 5 << QStringLiteral("\\x00") << 204;
+        << int(Fault::NulByte) << 5 << QStringLiteral("\\x00") << 205;
     QTest::newRow("value beyond 64 bits")
-        << int(Fault::HugeValue) << 5 << QStringLiteral("too large") << 204;
-    QTest::newRow("value outside the type") << int(Fault::OutOfRange) << 5 << QString() << 204;
-    QTest::newRow("answer for another object") << int(Fault::OtherObject) << 5 << QString() << 204;
+        << int(Fault::HugeValue) << 5 << QStringLiteral("too large") << 205;
+    QTest::newRow("value outside the type") << int(Fault::OutOfRange) << 5 << QString() << 205;
+    QTest::newRow("answer for another object") << int(Fault::OtherObject) << 5 << QString() << 205;
 }
 
 void TestCliParamsFailures::backupKeepsTheGoodFileWhenEveryReadFails()
@@ -144,7 +146,7 @@ void TestCliParamsFailures::backupAbortedByEverySdoKeepsTheGoodFile()
     QVERIFY(peer.aborts() > 200);
     QCOMPARE(contents(path), good);
     const QByteArray partial = contents(path + QStringLiteral(".partial"));
-    QCOMPARE(int(partial.count("\n# failed ")), 204); // 201 objects, 1018h.1, .2 and .3
+    QCOMPARE(int(partial.count("\n# failed ")), 205); // 201 objects, 1018h.1-.4
     QVERIFY2(partial.contains("06020000"), partial.left(900).constData());
     QVERIFY(partial.contains("\nvendor unknown "));
 }
@@ -157,7 +159,7 @@ void TestCliParamsFailures::partialBackupListsEveryFailedRow()
     const Run r = cli({ QStringLiteral("backup"), peer.uri(), QStringLiteral("-o"), path });
     QCOMPARE(r.exitCode, 6);
     QCOMPARE(contents(path), good);
-    QVERIFY2(r.err.contains(QLatin1String("2 of 204 objects could not be read")),
+    QVERIFY2(r.err.contains(QLatin1String("2 of 205 objects could not be read")),
              qPrintable(r.err));
     QVERIFY(r.err.contains(QLatin1String("warning: 6084:0 Profile deceleration: device error: ")));
     const QByteArray partial = contents(path + QStringLiteral(".partial"));
@@ -194,6 +196,32 @@ void TestCliParamsFailures::unreadIdentityIsUnknownAndRestoreRefusesIt()
     QVERIFY2(forced.exitCode == 0, qPrintable(forced.out + forced.err));
     QVERIFY(forced.out.startsWith(QLatin1String("restore: 1 verified")));
     QVERIFY(forced.err.contains(QLatin1String("--ignore-identity")));
+}
+
+void TestCliParamsFailures::anotherUnitIsRefusedUnlessIgnored()
+{
+    // A set of the same product read from another unit (its serial number changed).
+    const QString path = file(QStringLiteral("unit.dbp"));
+    const Run backup = cli({ QStringLiteral("backup"), m_refgo, QStringLiteral("-o"), path });
+    QVERIFY2(backup.exitCode == 0, qPrintable(backup.err));
+    QByteArray text = contents(path);
+    const qsizetype at = text.indexOf("\nserial \"");
+    QVERIFY2(at >= 0, text.left(400).constData());
+    const qsizetype end = text.indexOf('\n', at + 1);
+    text.replace(at, end - at, "\nserial \"0x7FFFFFFE\"");
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(text);
+    }
+    const Run refused = cli({ QStringLiteral("restore"), m_refgo, path, QStringLiteral("--only"),
+                              QStringLiteral("3300:4") });
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.err.contains(QLatin1String("another unit (serial number 0x7FFFFFFE)")),
+             qPrintable(refused.err));
+    const Run forced = cli({ QStringLiteral("restore"), m_refgo, path, QStringLiteral("--only"),
+                             QStringLiteral("3300:4"), QStringLiteral("--ignore-identity") });
+    QVERIFY2(forced.exitCode == 0, qPrintable(forced.out + forced.err));
 }
 
 void TestCliParamsFailures::dumpWithFailedRowsPrintsTheRestAndFails()

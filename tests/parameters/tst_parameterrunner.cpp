@@ -108,9 +108,11 @@ void TestParameterRunner::backupReadsEveryStorableObject()
     QCOMPARE(set->identity.productName, QStringLiteral("MovingCap ETH"));
     QCOMPARE(set->find({ 0x6083, 0 })->raw, rig.drive.read({ 0x6083, 0 }).value());
     QVERIFY(!set->contains({ 0x6041, 0 })); // a process value, not a parameter
-    // Three more reads: 1018h.1/.2/.3 give the identity the device reports.
-    QCOMPARE(progress.last().at(0).toInt(), storable + 3);
-    QCOMPARE(progress.last().at(1).toInt(), storable + 3);
+    // Four more reads: 1018h.1-.4 give the identity the device reports, serial number included.
+    QCOMPARE(progress.last().at(0).toInt(), storable + 4);
+    QCOMPARE(progress.last().at(1).toInt(), storable + 4);
+    QCOMPARE(set->serialNumber,
+             ParameterSet::identityNumber(rig.drive.read({ 0x1018, 4 }).value().toUInt()));
     QCOMPARE(set->identity.productCode, rig.drive.read({ 0x1018, 2 }).value().toUInt());
     QCOMPARE(set->identity.vendorId, 0x53Bu);
     QVERIFY(!set->contains({ 0x1018, 2 }));

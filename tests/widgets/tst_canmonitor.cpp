@@ -1,6 +1,7 @@
 #include "canopen/canopenconnection.h"
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "core/changelog.h"
 #include "core/reply.h"
 #include "resources/builtindescriptions.h"
 #include "scriptedcanbus.h"
@@ -370,6 +371,74 @@ private Q_SLOTS:
         sender->stopMacro();
         QVERIFY(!sender->isMacroRunning());
         QCOMPARE(bus.takeSent().size(), 1);
+    }
+
+    // One change-log entry per send action: a frame sent once, the start and the stop of a
+    // periodic sending (not one per frame), a macro from its start to its end; input refused
+    // before anything is sent makes none.
+    void senderActionsGoToTheChangeLog()
+    {
+        ScriptedCanBus bus;
+        CanMonitor monitor;
+        setUp(monitor, bus);
+        ChangeLog log;
+        FrameSender *sender = monitor.frameSender();
+        sender->setChangeLog(&log, QStringLiteral("canopen+slcan://bus"));
+
+        sender->setFrameText(QStringLiteral("6G1"), QStringLiteral("01"));
+        QVERIFY(!sender->sendOnce());
+        QCOMPARE(log.count(), 0);
+
+        sender->setFrameText(QStringLiteral("000"), QStringLiteral("0105"));
+        QVERIFY(sender->sendOnce());
+        QCOMPARE(log.count(), 1);
+        ChangeLog::Entry e = log.entries().at(0);
+        QCOMPARE(e.kind, ChangeLog::Kind::Frame);
+        QCOMPARE(e.device, QStringLiteral("canopen+slcan://bus"));
+        QCOMPARE(e.object, QStringLiteral("000 01 05"));
+        QCOMPARE(e.outcome, ChangeLog::Outcome::Ok);
+
+        sender->setFrameText(QStringLiteral("080"), QString());
+        sender->setPeriodMs(20);
+        QVERIFY(sender->setPeriodic(true));
+        QTRY_VERIFY(bus.sent().size() >= 5);
+        sender->setPeriodic(false);
+        const int periodic = int(bus.takeSent().size()) - 1;
+        QCOMPARE(log.count(), 3); // start and stop, not one per frame
+        QCOMPARE(log.entries().at(1).object, QStringLiteral("080"));
+        QVERIFY2(log.entries().at(1).newValue.contains(QStringLiteral("20 ms")),
+                 qPrintable(log.entries().at(1).newValue));
+        const ChangeLog::Entry stop = log.entries().at(2);
+        QVERIFY2(stop.newValue.contains(QStringLiteral("after %1 frame").arg(periodic)),
+                 qPrintable(stop.newValue));
+        QCOMPARE(stop.outcome, ChangeLog::Outcome::Ok);
+
+        // A closed bus ends the periodic sending: the stop says why.
+        QVERIFY(sender->setPeriodic(true));
+        bus.close();
+        QTRY_VERIFY(!sender->isPeriodic());
+        QCOMPARE(log.count(), 5);
+        QCOMPARE(log.entries().at(4).outcome, ChangeLog::Outcome::Failed);
+        QVERIFY2(log.entries().at(4).message.contains(QStringLiteral("not open")),
+                 qPrintable(log.entries().at(4).message));
+
+        // A macro: one entry, pending while it runs, done at its end; stopped: aborted.
+        bus.open();
+        sender->setMacroText(QStringLiteral("send 000 01 05\nwait 30\nsend 080"));
+        QSignalSpy finished(sender, &FrameSender::macroFinished);
+        QVERIFY(sender->runMacro());
+        QCOMPARE(log.count(), 6);
+        QCOMPARE(log.entries().at(5).outcome, ChangeLog::Outcome::Pending);
+        QVERIFY2(log.entries().at(5).newValue.contains(QStringLiteral("send 000 01 05; wait 30")),
+                 qPrintable(log.entries().at(5).newValue));
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(log.count(), 6);
+        QCOMPARE(log.entries().at(5).outcome, ChangeLog::Outcome::Ok);
+        sender->setMacroText(QStringLiteral("send 080\nwait 10000\nsend 080"));
+        QVERIFY(sender->runMacro());
+        sender->stopMacro();
+        QCOMPARE(log.count(), 7);
+        QCOMPARE(log.entries().at(6).outcome, ChangeLog::Outcome::Aborted);
     }
 
     void showsTheDemoDriveOverSlcan()

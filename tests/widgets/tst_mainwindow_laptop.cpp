@@ -22,6 +22,7 @@
 #include <QDockWidget>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QTabWidget>
@@ -132,6 +133,44 @@ private Q_SLOTS:
                                     .arg(inViewport.right())
                                     .arg(scroll->viewport()->width())));
         }
+
+        // The Drive Status page needs no sideways scrolling: every lamp (I/O included) lies
+        // inside its viewport. With DRIVEBENCH_SCREENSHOT_DIR=DIR the window is saved as
+        // DIR/screenshot-status-LANGUAGE.png.
+        window.pages()->setCurrentIndex(0);
+        auto *statusScroll = qobject_cast<QScrollArea *>(window.pages()->widget(0));
+        QVERIFY(statusScroll);
+        QTRY_VERIFY(window.statusPanel()->findChild<QWidget *>(QStringLiteral("IN10")));
+        QTRY_VERIFY(
+            window.statusPanel()->findChild<QWidget *>(QStringLiteral("IN10"))->isVisible());
+        const int viewportWidth = statusScroll->viewport()->width();
+        QVERIFY2(statusScroll->widget()->width() <= viewportWidth,
+                 qPrintable(QStringLiteral("%1: the Drive Status page is %2 wide in %3")
+                                .arg(language)
+                                .arg(statusScroll->widget()->width())
+                                .arg(viewportWidth)));
+        int lamps = 0;
+        for (QWidget *lamp : window.statusPanel()->findChildren<QWidget *>()) {
+            const QString name = lamp->objectName();
+            if (!lamp->isVisible()
+                || !(name.startsWith(QLatin1String("IN")) || name.startsWith(QLatin1String("OUT"))
+                     || name.startsWith(QLatin1String("bit_"))))
+                continue;
+            ++lamps;
+            const QRect inViewport(lamp->mapTo(statusScroll->viewport(), QPoint(0, 0)),
+                                   lamp->size());
+            QVERIFY2(inViewport.left() >= 0 && inViewport.right() < viewportWidth,
+                     qPrintable(QStringLiteral("%1: '%2' at x %3..%4, viewport %5 wide")
+                                    .arg(language, name)
+                                    .arg(inViewport.left())
+                                    .arg(inViewport.right())
+                                    .arg(viewportWidth)));
+        }
+        QVERIFY(lamps >= 10);
+        const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+        if (!dir.isEmpty())
+            QVERIFY(window.grab().save(
+                QStringLiteral("%1/screenshot-status-%2.png").arg(dir, language)));
     }
 
     void nm17xDockFitsWithALine_data() { fitsWithTheDemoConnected_data(); }

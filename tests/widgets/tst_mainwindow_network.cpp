@@ -76,12 +76,26 @@ private Q_SLOTS:
         QCOMPARE(view->network(), canopen::networkNodeOf(connection).network);
         pages->setCurrentWidget(view);
 
+        // The node dock and the page are one list: a scan started in the dock fills the page,
+        // a node selected on the page is the dock's target, "All nodes" is one setting.
+        widgets::NodeList *dock = window.nodeList();
+        QCOMPARE(dock->model(), view->nodeList()->model());
         QSignalSpy scanned(view->nodeList(), &widgets::NodeList::scanFinished);
-        QVERIFY(view->nodeList()->scan());
+        QVERIFY(dock->scan());
+        QVERIFY(dock->isScanning() && view->nodeList()->isScanning());
+        QVERIFY(!view->nodeList()->scan()); // one scan at a time
         QVERIFY(scanned.wait(kTimeoutMs));
         QCOMPARE(view->nodeList()->model()->rowCount(), 3);
         view->nodeList()->selectNode(2);
         QCOMPARE(view->pdoPanel()->node(), canopen::NodeId(2));
+        QCOMPARE(dock->targetNode(), 2);
+        dock->selectNode(5);
+        QCOMPARE(view->pdoPanel()->node(), canopen::NodeId(5));
+        dock->setBroadcast(true);
+        QCOMPARE(view->nodeList()->targetNode(), 0);
+        dock->setBroadcast(false);
+        view->nodeList()->selectNode(2);
+        QCOMPARE(dock->targetNode(), 2);
         QSignalSpy read(view->pdoPanel(), &widgets::PdoPanel::readFinished);
         QVERIFY(view->pdoPanel()->read());
         QVERIFY(read.wait(kTimeoutMs));
@@ -121,7 +135,7 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("%1x%2").arg(minimum.width()).arg(minimum.height())));
 
         if (const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR"); !dir.isEmpty()) {
-            // The page gets the room of the Motion dock and of the node dock it repeats; the
+            // The page gets the room of the Motion dock and of the node dock it shares; the
             // CAN monitor at the bottom shows the bus, with a frame ready in the sender.
             for (const char *name : { "motionDock", "nodeListDock" })
                 window.findChild<QDockWidget *>(QString::fromLatin1(name))->hide();

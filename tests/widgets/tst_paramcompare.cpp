@@ -4,6 +4,7 @@
 #include "fakeconnection.h"
 #include "mainwindow.h"
 #include "parameters/parameterrunner.h"
+#include "pdftext.h"
 #include "resources/builtindescriptions.h"
 #include "widgets/common/recentfolder.h"
 #include "widgets/odeditor/odeditor.h"
@@ -16,6 +17,7 @@
 #include "widgets/parameters/parametersetactions.h"
 
 #include <QCheckBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QMenu>
@@ -39,6 +41,12 @@ namespace {
 constexpr ObjectAddress kVelocity { 0x6081, 0 };
 constexpr ObjectAddress kWindow { 0x3401, 3 };
 constexpr ObjectAddress kPositionWindow { 0x6067, 0 };
+
+QByteArray readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
 
 QVariant u32(qulonglong v)
 {
@@ -248,6 +256,132 @@ private Q_SLOTS:
         view.refreshDevice();
         QTRY_VERIFY(!view.isBusy() && view.model()->comparison().rows.size() == set->size());
         QVERIFY(!view.statusText().contains(QStringLiteral("Not compared")));
+    }
+
+    // A backup records the unit's serial number (1018h.4) and keeps it in the file; the same
+    // product with another serial number is compared and restored only once the user said so;
+    // another product is refused as before, whatever the serial number.
+    void anotherUnitNeedsConfirmation()
+    {
+        auto f = fake();
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x100u));
+        f->setValue({ 0x1018, 4 }, QVariant::fromValue(0x1E240u));
+        QTRY_VERIFY(f->isConnected());
+        auto set = backup(f.get());
+        QVERIFY2(set.ok(), qPrintable(set ? QString() : set.error().toString()));
+        QCOMPARE(set->serialNumber, QStringLiteral("0x0001E240"));
+        QVERIFY(!set->contains({ 0x1018, 4 })); // identity, not a parameter
+        const QString path = m_dir.filePath(QStringLiteral("unit.dbp"));
+        QVERIFY(set->save(path).ok());
+        const auto loaded = ParameterSet::load(path);
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded->serialNumber, QStringLiteral("0x0001E240"));
+
+        // The same unit: no question.
+        QStringList asked;
+        bool answer = false;
+        ParamCompareView view;
+        view.setConfirmation([&](const QString &q) {
+            asked << q;
+            return answer;
+        });
+        view.setConnection(f.get());
+        view.setFileSet(loaded.value(), QStringLiteral("unit.dbp"));
+        QTRY_VERIFY(!view.isBusy() && view.model()->comparison().rows.size() == set->size());
+        QVERIFY(asked.isEmpty());
+
+        // Another unit, the user says no: nothing compared, nothing to restore.
+        f->setValue({ 0x1018, 4 }, QVariant::fromValue(0x1E241u));
+        view.refreshDevice();
+        QTRY_VERIFY(!view.isBusy() && asked.size() == 1);
+        QVERIFY2(asked.first().contains(QStringLiteral("0x0001E240"))
+                     && asked.first().contains(QStringLiteral("0x0001E241")),
+                 qPrintable(asked.first()));
+        QCOMPARE(view.model()->comparison().rows.size(), 0);
+        QVERIFY2(view.statusText().contains(QStringLiteral("Not compared")),
+                 qPrintable(view.statusText()));
+        QVERIFY(!view.findChild<QPushButton *>(QStringLiteral("restoreSelected"))->isEnabled());
+
+        // The user says yes: compared, with the warning in the status line; asked once only.
+        answer = true;
+        view.refreshDevice();
+        QTRY_VERIFY(!view.isBusy() && view.model()->comparison().rows.size() == set->size());
+        QCOMPARE(asked.size(), 2);
+        QVERIFY2(view.statusText().contains(QStringLiteral("another unit")),
+                 qPrintable(view.statusText()));
+        view.setCompareWithDefaults(false);
+        view.setCompareWithDefaults(true);
+        QCOMPARE(asked.size(), 2);
+
+        // Another product with the file's serial number: refused without a question.
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x200u));
+        f->setValue({ 0x1018, 4 }, QVariant::fromValue(0x1E240u));
+        view.refreshDevice();
+        QTRY_VERIFY(!view.isBusy() && view.statusText().contains(QStringLiteral("Not compared")));
+        QVERIFY2(view.statusText().contains(QStringLiteral("00000200h")),
+                 qPrintable(view.statusText()));
+        QCOMPARE(asked.size(), 2);
+
+        // A file without a serial number (older files, devices without 1018h.4): no question.
+        ParameterSet old = loaded.value();
+        old.serialNumber.clear();
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x100u));
+        f->setValue({ 0x1018, 4 }, QVariant::fromValue(0x999u));
+        view.setFileSet(old, QStringLiteral("old.dbp"));
+        QTRY_VERIFY(!view.isBusy() && view.model()->comparison().rows.size() == set->size());
+        QCOMPARE(asked.size(), 2);
+    }
+
+    // Save Report as PDF: the device's identity, the date, the file and the differences table,
+    // written atomically (a whole new file or the old one; no temporary file left behind).
+    void reportAsPdf()
+    {
+        auto f = fake();
+        f->setValue({ 0x1018, 1 }, QVariant::fromValue(0x2D6u));
+        f->setValue({ 0x1018, 2 }, QVariant::fromValue(0x100u));
+        f->setValue({ 0x1018, 4 }, QVariant::fromValue(0x1E240u));
+        QTRY_VERIFY(f->isConnected());
+        auto set = backup(f.get());
+        QVERIFY(set.ok());
+        ParamCompareView view;
+        view.setConnection(f.get());
+        view.setFileSet(changed(set.value(), { kVelocity }, 7), QStringLiteral("commissioned.dbp"));
+        QTRY_VERIFY(!view.isBusy()
+                    && view.model()->comparison().count(CompareStatus::Changed) == 1);
+
+        const QString path = m_dir.filePath(QStringLiteral("report/comparison.pdf"));
+        QVERIFY(QDir().mkpath(QFileInfo(path).path()));
+        {
+            QFile old(path);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write("old report");
+        }
+        QVERIFY(!ParamCompareView().saveReportPdf(path).ok()); // nothing compared there
+        QCOMPARE(readAll(path), QByteArray("old report"));
+        const auto saved = view.saveReportPdf(path);
+        QVERIFY2(saved.ok(), qPrintable(saved ? QString() : saved.error().toString()));
+        const QByteArray pdf = readAll(path);
+        QVERIFY(pdf.startsWith("%PDF-"));
+        QVERIFY(pdf.trimmed().endsWith("%%EOF"));
+        QCOMPARE(QDir(QFileInfo(path).path()).entryList(QDir::Files),
+                 QStringList { QStringLiteral("comparison.pdf") });
+        const QString text = test::pdfText(pdf);
+        const QString device = f->uri().toString();
+        const qulonglong fileVelocity = set->find(kVelocity)->raw.toULongLong() + 7;
+        for (const QString &expected :
+             { QStringLiteral("Parameter Comparison"), QStringLiteral("0x0001E240"),
+               QStringLiteral("00000100h"), QStringLiteral("commissioned.dbp"),
+               QStringLiteral("6081:0"), QString::number(fileVelocity),
+               QString::number(QDate::currentDate().year()), device })
+            QVERIFY2(text.contains(expected),
+                     qPrintable(QStringLiteral("'%1' not in: %2").arg(expected, text)));
+        // Rows without a difference are not in the table.
+        QVERIFY(!text.contains(QStringLiteral("6083:0")));
+
+        const auto missing = view.saveReportPdf(m_dir.filePath(QStringLiteral("no/such/r.pdf")));
+        QVERIFY(!missing.ok());
+        QVERIFY2(missing.error().message().contains(QStringLiteral("r.pdf")),
+                 qPrintable(missing.error().message()));
     }
 
     // File against file: no device is read or written.

@@ -1,5 +1,6 @@
 #include "framesender.h"
 
+#include "core/changelog.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
 #include "widgets/common/widgetstyle.h"
@@ -24,6 +25,36 @@ constexpr quint32 kMaxExtendedId = 0x1FFFFFFF;
 Error invalid(const QString &text)
 {
     return Error(Error::Kind::InvalidArgument, text);
+}
+
+// "601 40 00 10 00": the identifier and the data bytes as typed in the sender (hex).
+QString frameText(const QCanBusFrame &frame)
+{
+    QString text = QString::number(frame.frameId(), 16).toUpper();
+    if (frame.hasExtendedFrameFormat())
+        text = text.rightJustified(8, QLatin1Char('0'));
+    else
+        text = text.rightJustified(3, QLatin1Char('0'));
+    const QByteArray data = frame.payload();
+    if (!data.isEmpty())
+        text += QLatin1Char(' ') + QString::fromLatin1(data.toHex(' ').toUpper());
+    return text;
+}
+
+// The macro's steps in one line for the change log, shortened when long.
+QString stepsText(const QList<SenderStep> &steps)
+{
+    constexpr int kMaxChars = 200;
+    QStringList parts;
+    for (const SenderStep &step : steps) {
+        parts << (step.kind == SenderStep::Kind::Wait
+                      ? QStringLiteral("wait %1").arg(step.waitMs)
+                      : QStringLiteral("send %1").arg(frameText(step.frame)));
+    }
+    QString text = parts.join(QStringLiteral("; "));
+    if (text.size() > kMaxChars)
+        text = text.left(kMaxChars - 1) + QChar(0x2026);
+    return text;
 }
 
 } // namespace
@@ -111,8 +142,18 @@ FrameSender::FrameSender(QWidget *parent)
     connect(m_period, &QSpinBox::valueChanged, this,
             [this](int ms) { m_periodTimer.setInterval(ms); });
     connect(&m_periodTimer, &QTimer::timeout, this, [this] {
-        if (!send(m_periodicFrame))
-            setPeriodic(false);
+        if (send(m_periodicFrame)) {
+            ++m_periodicSent;
+            return;
+        }
+        const QString cause = status();
+        m_periodTimer.stop();
+        const QSignalBlocker blocker(m_periodic);
+        m_periodic->setChecked(false);
+        record(
+            frameText(m_periodicFrame),
+            tr("every %1 ms: stopped after %n frame(s)", nullptr, m_periodicSent).arg(m_periodicMs),
+            cause);
     });
     connect(m_macroToggle, &QToolButton::toggled, m_macroBox, &QWidget::setVisible);
     connect(m_run, &QPushButton::clicked, this, [this] {
@@ -125,7 +166,37 @@ FrameSender::FrameSender(QWidget *parent)
     updateButtons();
 }
 
-FrameSender::~FrameSender() = default;
+FrameSender::~FrameSender()
+{
+    finishMacroEntry(int(ChangeLog::Outcome::Aborted), tr("macro stopped"));
+}
+
+void FrameSender::setChangeLog(ChangeLog *log, const QString &device)
+{
+    m_changeLog = log;
+    m_device = device;
+}
+
+int FrameSender::record(const QString &object, const QString &value, const QString &error)
+{
+    if (!m_changeLog)
+        return 0;
+    ChangeLog::Entry e;
+    e.device = m_device;
+    e.kind = ChangeLog::Kind::Frame;
+    e.object = object;
+    e.newValue = value;
+    e.outcome = error.isEmpty() ? ChangeLog::Outcome::Ok : ChangeLog::Outcome::Failed;
+    e.message = error;
+    return m_changeLog->add(e);
+}
+
+void FrameSender::finishMacroEntry(int outcome, const QString &message)
+{
+    if (m_changeLog && m_macroEntry)
+        m_changeLog->complete(m_macroEntry, ChangeLog::Outcome(outcome), message);
+    m_macroEntry = 0;
+}
 
 void FrameSender::setBus(CanBus *bus)
 {
@@ -217,19 +288,29 @@ bool FrameSender::sendOnce()
         showStatus(frame.error().message(), true);
         return false;
     }
-    if (!send(frame.value()))
+    if (!send(frame.value())) {
+        record(frameText(frame.value()), tr("once"), status());
         return false;
+    }
+    record(frameText(frame.value()), tr("once"), {});
     showStatus(tr("sent %1").arg(frame->toString()), false);
     return true;
 }
 
 bool FrameSender::setPeriodic(bool on)
 {
-    if (!on) {
-        m_periodTimer.stop();
+    if (!on || isPeriodic()) { // a new frame or period: the old sending stops first
+        if (isPeriodic()) {
+            m_periodTimer.stop();
+            record(frameText(m_periodicFrame),
+                   tr("every %1 ms: stopped after %n frame(s)", nullptr, m_periodicSent)
+                       .arg(m_periodicMs),
+                   {});
+        }
         const QSignalBlocker blocker(m_periodic);
         m_periodic->setChecked(false);
-        return true;
+        if (!on)
+            return true;
     }
     auto frame = parseFrame(m_id->text(), m_data->text());
     if (!frame) {
@@ -241,7 +322,10 @@ bool FrameSender::setPeriodic(bool on)
         return false;
     }
     m_periodicFrame = frame.value();
+    m_periodicSent = 0;
+    m_periodicMs = m_period->value();
     m_periodTimer.start(m_period->value());
+    record(frameText(m_periodicFrame), tr("every %1 ms: started").arg(m_periodicMs), {});
     const QSignalBlocker blocker(m_periodic);
     m_periodic->setChecked(true);
     showStatus(tr("sending %1 every %2 ms").arg(frame->toString()).arg(m_period->value()), false);
@@ -278,6 +362,14 @@ bool FrameSender::runMacro()
     m_steps = std::move(steps).value();
     m_next = 0;
     m_macroRunning = true;
+    if (m_changeLog) {
+        ChangeLog::Entry e;
+        e.device = m_device;
+        e.kind = ChangeLog::Kind::Frame;
+        e.object = tr("macro, %n step(s)", nullptr, int(m_steps.size()));
+        e.newValue = stepsText(m_steps);
+        m_macroEntry = m_changeLog->add(e);
+    }
     updateButtons();
     runSteps();
     return true;
@@ -291,6 +383,7 @@ void FrameSender::stopMacro()
     m_macroRunning = false;
     updateButtons();
     showStatus(tr("macro stopped at step %1 of %2").arg(m_next).arg(m_steps.size()), false);
+    finishMacroEntry(int(ChangeLog::Outcome::Aborted), status());
     Q_EMIT macroFinished(false);
 }
 
@@ -305,6 +398,8 @@ void FrameSender::runSteps()
         if (!send(step.frame)) { // the cause is in the status line
             m_macroRunning = false;
             updateButtons();
+            finishMacroEntry(int(ChangeLog::Outcome::Failed),
+                             tr("step %1: %2").arg(m_next).arg(status()));
             Q_EMIT macroFinished(false);
             return;
         }
@@ -314,6 +409,7 @@ void FrameSender::runSteps()
     m_macroRunning = false;
     updateButtons();
     showStatus(tr("macro done: %n step(s)", nullptr, int(m_steps.size())), false);
+    finishMacroEntry(int(ChangeLog::Outcome::Ok), {});
     Q_EMIT macroFinished(true);
 }
 

@@ -3,6 +3,8 @@
 // The CAN monitor's frame sender: one frame typed as ID and data bytes (hex), sent once or every
 // period, and a macro of `send ID DATA` / `wait MS` lines run top to bottom (one line a step;
 // `#` starts a comment). Frames go out through the bus given; nothing is sent while it is closed.
+// With a change log, each action is one entry: a frame sent once, the start and the stop of
+// periodic sending, a macro from its start to its end (never one entry per frame).
 
 #include "core/result.h"
 
@@ -20,7 +22,8 @@ class QToolButton;
 
 namespace db {
 class CanBus;
-}
+class ChangeLog;
+} // namespace db
 
 namespace db::widgets {
 
@@ -44,6 +47,8 @@ public:
     // Not owned; nullptr detaches (periodic sending and a running macro stop).
     void setBus(CanBus *bus);
     CanBus *bus() const { return m_bus; }
+    // Not owned; `device` names the bus in the entries (the connection's URI).
+    void setChangeLog(ChangeLog *log, const QString &device);
 
     // "601" / "0x18FF0001" (hex; above 7FF a 29-bit id) and "40 00 10 00" or "40001000" (hex,
     // up to 8 bytes). InvalidArgument names what is wrong.
@@ -75,6 +80,9 @@ private:
     void runSteps();
     void showStatus(const QString &text, bool error);
     void updateButtons();
+    // Adds a finished entry for a send action; returns its id.
+    int record(const QString &object, const QString &value, const QString &error);
+    void finishMacroEntry(int outcome, const QString &message);
 
     QPointer<CanBus> m_bus;
     QLineEdit *m_id;
@@ -94,6 +102,11 @@ private:
     int m_next = 0;
     bool m_macroRunning = false;
     int m_sent = 0;
+    QPointer<ChangeLog> m_changeLog;
+    QString m_device;
+    int m_periodicSent = 0; // frames of the running periodic sending
+    int m_periodicMs = 0;
+    int m_macroEntry = 0; // the running macro's pending entry
 };
 
 } // namespace db::widgets

@@ -83,6 +83,7 @@ void NetworkView::setChangeLog(ChangeLog *log)
 {
     m_pdo->setChangeLog(log);
     m_lss->setChangeLog(log);
+    m_nodes->setChangeLog(log);
 }
 
 canopen::CanNetwork *NetworkView::network() const

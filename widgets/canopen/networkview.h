@@ -47,7 +47,7 @@ public:
     PdoPanel *pdoPanel() const { return m_pdo; }
     LssPanel *lssPanel() const { return m_lss; }
     QTabWidget *tools() const { return m_tools; }
-    // PDO writes and LSS settings go to this log (NMT commands: NodeList::commandSent).
+    // PDO writes, LSS settings and NMT commands go to this log.
     void setChangeLog(ChangeLog *log);
 
     // The SYNC producer of the network: on with the period of the spin box, or off. False

@@ -1,8 +1,10 @@
 #include "nodelist.h"
 
 #include "canopen/cannetwork.h"
+#include "canopen/nmtanswer.h"
 #include "canopen/nmtmaster.h"
 #include "canopen/nodescanner.h"
+#include "core/changelog.h"
 #include "nodelistmodel.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
@@ -11,6 +13,7 @@
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLabel>
 #include <QTableView>
 #include <QToolButton>
 
@@ -24,6 +27,7 @@ NodeList::NodeList(QWidget *parent)
     , m_view(new QTableView(this))
     , m_broadcast(new QCheckBox(tr("All nodes"), this))
     , m_scanButton(new QToolButton(this))
+    , m_commandStatus(new QLabel(this))
 {
     m_view->setObjectName(QStringLiteral("nodes"));
     m_view->setModel(m_model);
@@ -96,6 +100,12 @@ NodeList::NodeList(QWidget *parent)
     layout->addWidget(m_view, 1);
     layout->addLayout(buttons);
     layout->addWidget(m_broadcast); // own row: the dock stays narrow on a laptop screen
+    m_commandStatus->setObjectName(QStringLiteral("commandStatus"));
+    // One line that never widens the dock nor takes the list's rows: the whole text is the
+    // tool tip (and a failure is in the status bar too).
+    m_commandStatus->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_commandStatus->hide();
+    layout->addWidget(m_commandStatus);
 
     connect(m_broadcast, &QCheckBox::toggled, this, &NodeList::updateActions);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
@@ -116,6 +126,7 @@ void NodeList::setConnection(DeviceConnection *connection)
         setNetwork(nullptr);
         return;
     }
+    m_device = connection->uri().toString();
     const DeviceIdentity &id = connection->dictionary().identity;
     setNetwork(at.network, at.node, id.productName.isEmpty() ? id.vendorName : id.productName);
 }
@@ -133,6 +144,10 @@ void NodeList::setNetwork(canopen::CanNetwork *network, canopen::NodeId ownNode,
         connect(network, &canopen::CanNetwork::closed, this, &NodeList::updateActions);
     }
     m_nmt = network ? network->nmt() : nullptr;
+    if (m_leader) { // the leader keeps the model
+        updateActions();
+        return;
+    }
     m_model->setOwnNode(0);
     m_model->setSources(nullptr, nullptr); // forgets the previous bus's nodes
     m_model->setOwnNode(ownNode, ownName);
@@ -171,20 +186,119 @@ bool NodeList::sendCommand(canopen::NmtCommand command)
     const int node = targetNode();
     if (!m_nmt || node < 0)
         return false;
-    if (!m_nmt->send(command, canopen::NodeId(node)))
+    // Watching starts before the command goes out: a fast node's heartbeat is not missed.
+    auto *answer = node == 0 || !m_network
+        ? nullptr
+        : new canopen::NmtAnswer(m_network->bus(), m_network->monitor(), command,
+                                 canopen::NodeId(node), this);
+    if (!m_nmt->send(command, canopen::NodeId(node))) {
+        delete answer;
         return false;
-    m_model->noteCommand(canopen::NmtMaster::commandName(command), canopen::NodeId(node));
-    Q_EMIT commandSent(canopen::NmtMaster::commandName(command), node);
+    }
+    const QString name = canopen::NmtMaster::commandName(command);
+    m_model->noteCommand(name, canopen::NodeId(node));
+    int entry = 0;
+    if (m_changeLog) {
+        ChangeLog::Entry e;
+        e.device = m_device;
+        e.kind = ChangeLog::Kind::Nmt;
+        e.object = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
+        e.newValue = name;
+        if (!answer)
+            e.outcome = ChangeLog::Outcome::Ok; // a broadcast: no node answers for all
+        entry = m_changeLog->add(e);
+    }
+    Q_EMIT commandSent(name, node);
+    if (!answer) {
+        showCommandStatus(tr("%1 sent to all nodes").arg(name), false);
+        return true;
+    }
+    showCommandStatus(tr("%1 sent to node %2: waiting for its heartbeat").arg(name).arg(node),
+                      false);
+    connect(
+        answer, &canopen::NmtAnswer::finished, this,
+        [this, answer, name, node, entry](const Error &error) {
+            answer->deleteLater();
+            if (m_changeLog && entry)
+                m_changeLog->complete(
+                    entry, error.isError() ? ChangeLog::Outcome::Failed : ChangeLog::Outcome::Ok,
+                    answer->note());
+            if (error.isError())
+                showCommandStatus(tr("%1 to node %2: %3").arg(name).arg(node).arg(error.message()),
+                                  true);
+            else if (!answer->note().isEmpty())
+                showCommandStatus(
+                    tr("%1 sent to node %2; %3").arg(name).arg(node).arg(answer->note()), false);
+            else
+                showCommandStatus(tr("%1: node %2 followed").arg(name).arg(node), false);
+            Q_EMIT commandAnswered(name, node, error, answer->note());
+        });
     return true;
+}
+
+void NodeList::setChangeLog(ChangeLog *log)
+{
+    m_changeLog = log;
+}
+
+QString NodeList::commandStatus() const
+{
+    return m_commandStatus->text();
+}
+
+void NodeList::showCommandStatus(const QString &text, bool error)
+{
+    m_commandStatus->setText(text);
+    m_commandStatus->setToolTip(text);
+    m_commandStatus->setVisible(!text.isEmpty());
+    style::setTextColor(m_commandStatus, error ? style::errorColor() : style::inactiveColor());
 }
 
 bool NodeList::isScanning() const
 {
+    if (m_leader)
+        return m_leader->isScanning();
     return m_scanner && m_scanner->isRunning();
+}
+
+void NodeList::follow(NodeList *leader)
+{
+    if (!leader || leader == this || m_leader)
+        return;
+    m_leader = leader;
+    NodeListModel *own = m_model;
+    QList<int> widths;
+    for (int c = 0; c < own->columnCount(); ++c)
+        widths.append(m_view->horizontalHeader()->sectionSize(c));
+    m_model = leader->m_model;
+    m_view->setModel(m_model);
+    m_view->setSelectionModel(leader->m_view->selectionModel());
+    delete own;
+    for (int c = 0; c < widths.size(); ++c)
+        m_view->horizontalHeader()->resizeSection(c, widths.at(c));
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &NodeList::updateActions);
+    // The model goes with the leader: an empty one of our own from then on.
+    connect(leader, &QObject::destroyed, this, [this] {
+        m_leader = nullptr;
+        m_model = new NodeListModel(this);
+        m_view->setModel(m_model);
+        connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+                &NodeList::updateActions);
+        updateActions();
+    });
+    setBroadcast(leader->broadcast());
+    connect(m_broadcast, &QCheckBox::toggled, leader, &NodeList::setBroadcast);
+    connect(leader->m_broadcast, &QCheckBox::toggled, this, &NodeList::setBroadcast);
+    connect(leader, &NodeList::scanStarted, this, &NodeList::updateActions);
+    connect(leader, &NodeList::scanFinished, this, &NodeList::updateActions);
+    updateActions();
 }
 
 bool NodeList::scan()
 {
+    if (m_leader)
+        return m_leader->scan();
     if (!m_network || !m_network->isOpen() || isScanning())
         return false;
     auto *scanner = new canopen::NodeScanner(m_network->sdo(), m_network->monitor(), this);
@@ -212,6 +326,7 @@ bool NodeList::scan()
         return false;
     }
     updateActions();
+    Q_EMIT scanStarted();
     return true;
 }
 

@@ -5,20 +5,25 @@
 // pre-operational, reset, reset communication) for the selected node or, with "All nodes", as
 // a broadcast (node 0). Scan probes node ids 1..127 by SDO (NodeScanner) and lists every node
 // that answers with its name (1008h) and identity (1018h).
+// Whether a node followed a command is judged from its heartbeat (NmtAnswer) and shown below
+// the list and in the change log; a command to all nodes expects no answer.
 // It receives the network and never creates a transport.
 
 #include "canopen/canopenids.h"
+#include "core/error.h"
 
 #include <QPointer>
 #include <QWidget>
 
 class QCheckBox;
+class QLabel;
 class QTableView;
 class QToolButton;
 
 namespace db {
+class ChangeLog;
 class DeviceConnection;
-}
+} // namespace db
 
 namespace db::canopen {
 class CanNetwork;
@@ -54,6 +59,16 @@ public:
     void setBroadcast(bool on);
 
     bool isScanning() const;
+    // NMT commands go to this log (not owned), as changes of the connection's device (its URI).
+    void setChangeLog(ChangeLog *log);
+    // The last command's outcome as shown below the list (empty before the first one).
+    QString commandStatus() const;
+
+    // Makes this list a second view of `leader`: the same model (nodes, states, names), the same
+    // selection and "All nodes", one scan at a time. The leader keeps attaching the network;
+    // setConnection()/setNetwork() on this list then only enable its buttons. Call once.
+    void follow(NodeList *leader);
+    NodeList *leader() const { return m_leader; }
 
 public Q_SLOTS:
     // Sends to targetNode(); false when there is none or the bus is not open.
@@ -66,11 +81,17 @@ Q_SIGNALS:
     // The selected node changed (0 = none selected).
     void selectedNodeChanged(db::canopen::NodeId node);
     void scanFinished(int nodesFound);
+    void scanStarted();
     // An NMT command went out: its name ("start", ...) and the node (0: all nodes).
     void commandSent(const QString &command, int node);
+    // Whether the node followed it (after commandSent; not for all nodes): the error says
+    // that it did not answer or stayed in another state; `note` says why it is not confirmed.
+    void commandAnswered(const QString &command, int node, const db::Error &error,
+                         const QString &note);
 
 private:
     void updateActions();
+    void showCommandStatus(const QString &text, bool error);
 
     NodeListModel *m_model;
     QTableView *m_view;
@@ -81,6 +102,10 @@ private:
     QPointer<canopen::CanNetwork> m_network;
     QPointer<canopen::NodeScanner> m_scanner;
     canopen::NodeId m_selected = 0;
+    QPointer<NodeList> m_leader;
+    QLabel *m_commandStatus;
+    QPointer<ChangeLog> m_changeLog;
+    QString m_device; // the connection's URI, for the change log
 };
 
 } // namespace db::widgets

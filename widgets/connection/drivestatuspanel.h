@@ -8,7 +8,7 @@
 
 class QFormLayout;
 class QGroupBox;
-class QHBoxLayout;
+class QLayout;
 class QLabel;
 
 namespace db::widgets {
@@ -87,7 +87,7 @@ private:
     QLabel *m_statuswordLabel = nullptr;
     QLabel *m_modeName = nullptr;
     QLabel *m_modeLabel = nullptr;
-    QHBoxLayout *m_bitRow = nullptr;
+    QLayout *m_bitRow = nullptr; // a FlowLayout: wraps on a narrow page
     QList<Lamp *> m_bitLamps;
     QGroupBox *m_valuesBox = nullptr;
     QFormLayout *m_valuesForm = nullptr;

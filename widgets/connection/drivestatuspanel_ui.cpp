@@ -2,6 +2,7 @@
 // frame, and the parts that depend on the device family (lamps, actual values, I/O).
 #include "drivestatuspanel.h"
 
+#include "widgets/common/flowlayout.h"
 #include "widgets/common/lamp.h"
 #include "widgets/common/widgetstyle.h"
 
@@ -11,6 +12,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QVBoxLayout>
+
+#include <functional>
 
 namespace db::widgets {
 
@@ -90,7 +93,7 @@ void DriveStatusPanel::buildUi()
     m_modeLabel = new QLabel(stateBox);
     m_modeLabel->setObjectName(QStringLiteral("mode"));
     m_modeName = new QLabel(tr("Mode:"), stateBox);
-    m_bitRow = new QHBoxLayout;
+    m_bitRow = new FlowLayout;
 
     auto *stateForm = new QFormLayout;
     stateForm->addRow(m_statusWordName, m_statuswordLabel);
@@ -115,9 +118,9 @@ void DriveStatusPanel::buildUi()
     m_valuesBox = new QGroupBox(tr("Actual values"), this);
     m_valuesForm = new QFormLayout(m_valuesBox);
 
-    // Digital I/O, where the family has them.
+    // Digital I/O, where the family has them: per row its name and the lamps, which wrap.
     m_ioBox = new QGroupBox(tr("Digital I/O"), this);
-    new QGridLayout(m_ioBox);
+    new QVBoxLayout(m_ioBox);
 
     // Faults and warnings.
     m_faultBox = new QGroupBox(tr("Faults"), this);
@@ -163,12 +166,17 @@ void DriveStatusPanel::buildFamilyUi()
     for (const auto &row : std::as_const(m_ioLamps))
         qDeleteAll(row);
     m_ioLamps.clear();
-    auto *ioGrid = static_cast<QGridLayout *>(m_ioBox->layout());
-    while (QLayoutItem *item = ioGrid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
-
+    // The rows' layouts go with their items; the lamps and labels are deleted above or here.
+    const std::function<void(QLayout *)> clear = [&clear](QLayout *layout) {
+        while (QLayoutItem *item = layout->takeAt(0)) {
+            if (item->layout())
+                clear(item->layout());
+            delete item->widget();
+            delete item;
+        }
+    };
+    auto *ioRows = static_cast<QVBoxLayout *>(m_ioBox->layout());
+    clear(ioRows);
     StatusSource *source = m_source;
     if (source) {
         for (const StatusLamp &bit : source->lamps()) {
@@ -183,30 +191,30 @@ void DriveStatusPanel::buildFamilyUi()
             m_valueLabels.append(label);
             m_valuesForm->addRow(value.label, label);
         }
-        // Inputs in rows of five, each row of outputs below.
-        constexpr int kPerRow = 5;
-        int row = 0;
+        // One row per kind (inputs, outputs): its name, then the lamps, wrapping when narrow.
         for (const StatusIoRow &io : source->ioRows()) {
-            ioGrid->addWidget(new QLabel(io.label, m_ioBox), row, 0);
+            auto *row = new QHBoxLayout;
+            auto *name = new QLabel(io.label, m_ioBox);
+            name->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+            row->addWidget(name, 0, Qt::AlignTop);
+            auto *lampsRow = new FlowLayout;
             QList<Lamp *> lamps;
             const bool input = io.prefix == QLatin1String("IN");
             for (int i = 0; i < io.count; ++i) {
-                const QString name = QStringLiteral("%1%2").arg(io.prefix).arg(i + 1);
-                auto *lamp =
-                    new Lamp(name, input ? style::okColor() : QColor(0xe0, 0x9b, 0x00), m_ioBox);
-                lamp->setObjectName(name);
+                const QString lampName = QStringLiteral("%1%2").arg(io.prefix).arg(i + 1);
+                auto *lamp = new Lamp(lampName, input ? style::okColor() : QColor(0xe0, 0x9b, 0x00),
+                                      m_ioBox);
+                lamp->setObjectName(lampName);
                 lamps.append(lamp);
-                ioGrid->addWidget(lamp, row + i / kPerRow, 1 + i % kPerRow);
+                lampsRow->addWidget(lamp);
             }
+            row->addLayout(lampsRow, 1);
+            ioRows->addLayout(row);
             m_ioLamps.append(lamps);
-            row += (io.count + kPerRow - 1) / kPerRow;
         }
-        ioGrid->setColumnStretch(kPerRow + 1, 1);
-        ioGrid->setRowStretch(row, 1);
-        ioGrid->setHorizontalSpacing(12);
+        ioRows->addStretch(1);
         m_statusWordName->setText(source->statusWordLabel());
     }
-    m_bitRow->addStretch();
     m_ioBox->setVisible(source && !source->ioRows().isEmpty());
     m_valuesBox->setVisible(!source || !m_valueLabels.isEmpty());
     const bool hasMode = source && !source->mode().key.isEmpty();

@@ -2,6 +2,7 @@
 
 #include "core/printable.h"
 #include "paramcomparemodel.h"
+#include "paramcomparepdf.h"
 #include "paramcomparereport.h"
 #include "widgets/common/flowlayout.h"
 #include "widgets/common/recentfolder.h"
@@ -94,16 +95,24 @@ ParamCompareView::ParamCompareView(QWidget *parent)
     // The comparison as a CSV file (for the commissioning record).
     auto *saveReport = new QPushButton(tr("Save &Report…"), this);
     saveReport->setObjectName(QStringLiteral("saveReport"));
-    saveReport->setToolTip(tr("Save every row of the comparison as a CSV file"));
+    saveReport->setToolTip(tr("Save the comparison as a PDF report (identity, date, files and "
+                              "the differences) or every row as a CSV file"));
     connect(saveReport, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(
+        const QString pdf = tr("PDF report (*.pdf)");
+        QString filter = pdf;
+        QString path = QFileDialog::getSaveFileName(
             this, tr("Save Comparison Report"),
-            QDir(recentFolder(QStringLiteral("csv"))).filePath(QStringLiteral("comparison.csv")),
-            tr("CSV (*.csv);;All files (*)"));
+            QDir(recentFolder(QStringLiteral("csv"))).filePath(QStringLiteral("comparison.pdf")),
+            pdf + QStringLiteral(";;") + tr("CSV (*.csv)"), &filter);
         rememberFolder(QStringLiteral("csv"), path);
         if (path.isEmpty())
             return;
-        const auto saved = saveReportCsv(path);
+        const bool asPdf = QFileInfo(path).suffix().isEmpty()
+            ? filter == pdf
+            : QFileInfo(path).suffix().compare(QLatin1String("pdf"), Qt::CaseInsensitive) == 0;
+        if (QFileInfo(path).suffix().isEmpty())
+            path += asPdf ? QStringLiteral(".pdf") : QStringLiteral(".csv");
+        const auto saved = asPdf ? saveReportPdf(path) : saveReportCsv(path);
         showStatus(saved ? tr("Saved the comparison to %1").arg(QDir::toNativeSeparators(path))
                          : saved.error().message(),
                    saved ? QColor() : style::errorColor());
@@ -287,6 +296,51 @@ Result<void> ParamCompareView::saveReportCsv(const QString &path) const
     return {};
 }
 
+Result<void> ParamCompareView::saveReportPdf(const QString &path) const
+{
+    const ParameterComparison &c = m_model->comparison();
+    if (c.rows.isEmpty())
+        return Error(Error::Kind::InvalidArgument, tr("Nothing compared yet: no report saved"));
+    ComparisonReportInfo info;
+    info.created = QDateTime::currentDateTime();
+    info.fileOrigin = m_fileOrigin;
+    info.referenceFile = m_referenceFile;
+    info.note = m_otherUnit;
+    const auto hex = [](quint32 v) {
+        return QStringLiteral("%1").arg(v, 8, 16, QLatin1Char('0')).toUpper() + QLatin1Char('h');
+    };
+    const auto named = [](const QString &name, const QString &number) {
+        return name.isEmpty()  ? number
+            : number.isEmpty() ? name
+                               : QStringLiteral("%1 (%2)").arg(name, number);
+    };
+    if (m_device) {
+        const ParameterSet &d = *m_device;
+        // The numbers the device reported (read for the identity check), else the set's own.
+        const auto reported = [&d](ObjectAddress a) -> std::optional<quint32> {
+            const ParameterEntry *e = d.find(a);
+            return e ? std::optional<quint32>(quint32(e->raw.toULongLong())) : std::nullopt;
+        };
+        const auto vendor = reported({ 0x1018, 1 });
+        const auto product = reported({ 0x1018, 2 });
+        const auto serial = reported({ 0x1018, 4 });
+        info.vendor = named(d.identity.vendorName,
+                            vendor                                       ? hex(*vendor)
+                                : d.vendorIdKnown && d.identity.vendorId ? hex(d.identity.vendorId)
+                                                                         : QString());
+        info.product =
+            named(d.identity.productName,
+                  product                                            ? hex(*product)
+                      : d.productCodeKnown && d.identity.productCode ? hex(d.identity.productCode)
+                                                                     : QString());
+        info.revision = d.identity.revision;
+        info.serialNumber = serial ? ParameterSet::identityNumber(*serial) : d.serialNumber;
+    }
+    if (m_referenceFile.isEmpty() && m_connection)
+        info.device = m_connection->uri().toString();
+    return saveComparisonPdf(path, info, c);
+}
+
 QString ParamCompareView::countsText() const
 {
     return m_model->comparison().countsText();
@@ -334,16 +388,29 @@ void ParamCompareView::restoreSelected()
                     tr("Write %n selected value(s) from %1 to %2?", nullptr, int(rows.size()))
                         .arg(m_fileOrigin, m_connection->uri().toString()),
                     QMessageBox::Cancel, this);
-    box.setInformativeText((m_store->isChecked()
-                                ? tr("Afterwards the values are stored permanently (1010h).")
-                                : tr("The values are not stored permanently; they are lost at "
-                                     "the next power cycle unless you store them.")));
+    const QString store = m_store->isChecked()
+        ? tr("Afterwards the values are stored permanently (1010h).")
+        : tr("The values are not stored permanently; they are lost at the next power cycle "
+             "unless you store them.");
+    box.setInformativeText(m_otherUnit.isEmpty() ? store
+                                                 : m_otherUnit + QStringLiteral("\n\n") + store);
+    if (!m_otherUnit.isEmpty())
+        box.setIcon(QMessageBox::Warning);
     box.setDetailedText(names.join(QLatin1Char('\n')));
     QPushButton *go = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
     box.exec();
     if (box.clickedButton() == go)
         startRestore();
+}
+
+bool ParamCompareView::askOtherUnit(const QString &question)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Another Unit"), question, QMessageBox::Cancel, this);
+    QPushButton *go = box.addButton(tr("Compare Anyway"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == go;
 }
 
 void ParamCompareView::showStatus(const QString &text, const QColor &color)

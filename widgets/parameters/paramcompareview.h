@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 
 class QCheckBox;
@@ -57,12 +58,23 @@ public:
     // Every row of the comparison (address, name, one value per side, unit, status) as CSV,
     // written atomically; fails when nothing was compared or the file cannot be written.
     Result<void> saveReportCsv(const QString &path) const;
+    // The report for the record as a PDF (A4): the device's identity, the date, the file(s),
+    // the counts and the rows that differ; written atomically. Fails like saveReportCsv().
+    Result<void> saveReportPdf(const QString &path) const;
     // File against file: the set at `path` takes the device's place as the reference side (the
     // device is neither read nor written until Re-read Device). Needs a loaded set.
     Result<void> loadReferenceFile(const QString &path);
     bool comparesTwoFiles() const { return !m_referenceFile.isEmpty(); }
     void setStoreAfterRestore(bool on);
     std::optional<RestoreReport> lastReport() const { return m_lastReport; }
+    // Asked before a set is compared with, and so may be restored to, another unit of the same
+    // product (same vendor and product, another serial number): true goes on, false shows
+    // nothing. The default asks with a message box; tests answer themselves.
+    using Confirmation = std::function<bool(const QString &question)>;
+    void setConfirmation(Confirmation confirm) { m_confirm = std::move(confirm); }
+    // Why `device` is another unit than the one `file` was read from: both name a serial number
+    // (1018h.4) and they differ; empty otherwise.
+    static QString otherUnit(const ParameterSet &file, const ParameterSet &device);
 
 public Q_SLOTS:
     // File dialog, then loadFile().
@@ -82,6 +94,7 @@ Q_SIGNALS:
 private:
     void compare();
     static QString identityMismatch(const ParameterSet &file, const ParameterSet &device);
+    bool askOtherUnit(const QString &question);
     void setBusy(const QString &what);
     void setIdle();
     void showStatus(const QString &text, const QColor &color = {});
@@ -101,6 +114,9 @@ private:
     // The restore's outcome stays in the status line while the device is read again.
     QString m_restoreOutcome;
     bool m_restoreOk = true;
+    Confirmation m_confirm;
+    QString m_acceptedUnit; // the file and device serial numbers the user accepted to compare
+    QString m_otherUnit; // otherUnit() of the comparison shown (accepted), else empty
 
     ParamCompareModel *m_model;
     ParamCompareFilter *m_filter;

@@ -16,6 +16,7 @@ namespace db::widgets {
 namespace {
 constexpr ObjectAddress kVendorId(0x1018, 1);
 constexpr ObjectAddress kProductCode(0x1018, 2);
+constexpr ObjectAddress kSerialNumber(0x1018, 4);
 
 QString hex32(quint32 v)
 {
@@ -46,6 +47,20 @@ QString ParamCompareView::identityMismatch(const ParameterSet &file, const Param
              vendor ? hex32(*vendor) : tr("unknown"), product ? hex32(*product) : tr("unknown"));
 }
 
+QString ParamCompareView::otherUnit(const ParameterSet &file, const ParameterSet &device)
+{
+    const ParameterEntry *reported = device.find(kSerialNumber);
+    if (file.serialNumber.isEmpty() || !reported)
+        return {};
+    const QString serial = ParameterSet::identityNumber(quint32(reported->raw.toULongLong()));
+    if (serial.compare(file.serialNumber, Qt::CaseInsensitive) == 0)
+        return {};
+    return tr("The file was read from another unit of this product: serial number %1, this "
+              "device reports %2 (1018h.4). Values such as calibrations and offsets belong to "
+              "one unit.")
+        .arg(file.serialNumber, serial);
+}
+
 void ParamCompareView::refreshDevice()
 {
     if (!m_file || isBusy())
@@ -68,7 +83,7 @@ void ParamCompareView::refreshDevice()
             addresses.append(def.address);
     }
     // The device's identity, checked against the file's before anything is compared.
-    for (ObjectAddress a : { kVendorId, kProductCode }) {
+    for (ObjectAddress a : { kVendorId, kProductCode, kSerialNumber }) {
         const ObjectDef *def = m_connection->dictionary().find(a);
         if (def && def->readable() && !addresses.contains(a))
             addresses.append(a);
@@ -103,14 +118,18 @@ void ParamCompareView::onBackupFinished()
     }
     m_device = read;
     compare();
-    if (m_file && !identityMismatch(*m_file, read).isEmpty()) {
+    if (m_model->comparison().rows.isEmpty()) {
         m_restoreOutcome.clear();
-        return; // compare() said why nothing is shown
+        return; // compare() said why nothing is shown (another device, unit or address format)
     }
     if (!m_restoreOutcome.isEmpty()) {
         showStatus(std::exchange(m_restoreOutcome, {}) + QLatin1Char(' ')
                        + tr("The comparison shows the device after the restore."),
                    m_restoreOk ? style::okColor() : style::errorColor());
+    } else if (!m_otherUnit.isEmpty()) {
+        showStatus(tr("Compared %1 with another unit. %2 Nothing has been written.")
+                       .arg(m_fileOrigin, m_otherUnit),
+                   style::warningColor());
     } else if (warnings.isEmpty()) {
         showStatus(tr("Compared %1 with the device. Nothing has been written.").arg(m_fileOrigin));
     } else {
@@ -148,10 +167,31 @@ void ParamCompareView::compare()
             updateActions();
             return;
         }
-        for (ObjectAddress a : { kVendorId, kProductCode }) {
+        // Another unit of the same product: only once the user said so.
+        m_otherUnit = otherUnit(*m_file, device);
+        if (!m_otherUnit.isEmpty()) {
+            const QString key = m_file->serialNumber + QLatin1Char('|')
+                + QString::number(device.find(kSerialNumber)->raw.toULongLong());
+            if (key != m_acceptedUnit) {
+                const QString question =
+                    m_otherUnit + QLatin1Char('\n') + tr("Compare with this unit anyway?");
+                if (!(m_confirm ? m_confirm(question) : askOtherUnit(question))) {
+                    m_model->setComparison({}, {}, {});
+                    m_counts->clear();
+                    showStatus(tr("Not compared: %1").arg(m_otherUnit), style::warningColor());
+                    m_otherUnit.clear();
+                    updateActions();
+                    return;
+                }
+                m_acceptedUnit = key;
+            }
+        }
+        for (ObjectAddress a : { kVendorId, kProductCode, kSerialNumber }) {
             if (!m_file->contains(a))
                 device.remove(a); // read for the check only
         }
+    } else {
+        m_otherUnit.clear();
     }
     QList<ParameterSet> sides { device, *m_file };
     QStringList names { m_referenceFile.isEmpty() ? tr("Device") : m_referenceFile, tr("File") };

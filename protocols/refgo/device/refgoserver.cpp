@@ -35,6 +35,7 @@ public:
     DeviceHandler *handler;
     StreamServer tcp;
     QHash<QTcpSocket *, QByteArray> buffers; // received bytes not handled yet, per client
+    bool silent = false;
 
     void read(QTcpSocket *socket);
     QByteArray answer(const QString &line);
@@ -77,6 +78,12 @@ int Server::dropClients()
     return d->tcp.dropClients();
 }
 
+void Server::setSilent(bool on)
+{
+    d->silent = on;
+    d->buffers.clear();
+}
+
 int Server::clientCount() const
 {
     return d->tcp.clientCount();
@@ -99,6 +106,8 @@ void Server::Private::read(QTcpSocket *socket)
     if (!tcp.mayRead(socket))
         return;
     QByteArray buffer = buffers.take(socket) + socket->read(ClientThrottle::kReadSliceBytes);
+    if (silent)
+        return;
     buffer.replace('\n', QByteArray()); // requests end with CR only (spec 3.1); LF is ignored
     qsizetype start = 0;
     qsizetype cr;

@@ -42,6 +42,8 @@ public:
     // clients see it. Returns how many were dropped.
     int dropClients();
     int clientCount() const;
+    // While on, requests are read and dropped unanswered: a device that hangs with its link up.
+    void setSilent(bool on);
     // Applies to clients that connect afterwards.
     void setClientLimits(const ClientThrottle::Limits &limits);
     // The longest output queue (unread answers) any client had so far, in bytes.
