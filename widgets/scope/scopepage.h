@@ -43,8 +43,9 @@ class ScopePlot;
 // lives. A channel belongs to the device it was added from (ChannelInfo::device, its URI) and is
 // recorded from it, so that the same object of two drives can be recorded side by side; its name
 // carries the device then (scopeChannelName()). Changing the current connection only changes
-// where new channels come from: a running recording goes on. At Start, a channel whose device
-// is gone (a loaded recording, a removed connection) is recorded from the current connection.
+// where new channels come from: a running recording goes on (setConnection(nullptr) stops it).
+// At Start, a channel whose device is gone (a loaded recording, a removed connection) is
+// recorded from the current connection.
 //
 // On a CANopen connection, new channels come from host polling (SDO) or, passively, from the
 // TPDOs that already carry them (the "Source" box): the page reads the node's PDO configuration

@@ -13,7 +13,6 @@
 
 #include <qcustomplot.h>
 
-
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -34,6 +33,8 @@ void ScopePage::setConnection(DeviceConnection *connection)
     m_devices.removeAll(nullptr);
     if (connection && !m_devices.contains(connection))
         m_devices.append(connection);
+    if (!connection)
+        m_recorder->stop(); // no device left (or the window closes)
     // The old connection's sources: a running recording keeps them until it ends; otherwise
     // their channels stay in the recorder (orphans) and are made again at the next Start.
     if (m_recorder->isRunning()) {
