@@ -100,12 +100,13 @@ QStringList ScopePage::exportHeader() const
                                        : QStringLiteral("%1 %2").arg(QString::number(v), info.unit);
         };
         if (t.kind == scope::Trigger::Kind::BitSet || t.kind == scope::Trigger::Kind::BitClear)
-            condition = tr("%1 %2").arg(condition).arg(t.bit);
+            condition = QStringLiteral("%1 %2").arg(condition).arg(t.bit);
         else if (t.kind == scope::Trigger::Kind::WindowInside
                  || t.kind == scope::Trigger::Kind::WindowOutside)
-            condition = tr("%1 %2 … %3").arg(condition, value(t.level), value(t.level2));
+            condition =
+                QStringLiteral("%1 %2 … %3").arg(condition, value(t.level), value(t.level2));
         else
-            condition = tr("%1 %2").arg(condition, value(t.level));
+            condition = QStringLiteral("%1 %2").arg(condition, value(t.level));
         lines.append(tr("Trigger: %1, %2; %3 s before, %4 s after; time 0 = trigger")
                          .arg(scopeChannelName(*m_recorder, t.channel), condition)
                          .arg(t.preTriggerS)
