@@ -16,6 +16,12 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr qint64 kMinSpectrumSamples = 8;
 constexpr qint64 kMaxSpectrumPoints = qint64(1) << 22; // keeps a resampled FFT under ~100 MB
+// A step's height is at least this share of the signal's peak-to-peak (an underdamped second
+// order system with 70 % overshoot still passes; a sine gives at most 0.5).
+constexpr double kStepShareOfSwing = 0.55;
+// The mean of the last tenth of the range differs from that of the tenth before by at most
+// this share of the step's height (a ramp over the whole range moves by about 10 %).
+constexpr double kUnsettledShare = 0.04;
 
 struct Tr
 {
@@ -194,8 +200,35 @@ Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t
     const double height = r.final - r.initial;
     if (height == 0 || !std::isfinite(height))
         return Error(Error::Kind::InvalidArgument,
-                     Tr::tr("no step in the range (initial and final value are equal)"));
+                     Tr::tr("not a step: the first and the final value are equal"));
     const double sign = height > 0 ? 1 : -1;
+
+    // A step moves from one level to another and stays there. A signal that swings more than
+    // it moves (a sine, noise) or is still moving at the end (a ramp that has not stopped) has
+    // no rise time or overshoot that would mean anything.
+    double lo = r.initial, hi = r.initial;
+    for (qint64 i = first; i < last; ++i) {
+        lo = std::min(lo, shown(buffer, i, info));
+        hi = std::max(hi, shown(buffer, i, info));
+    }
+    if (std::abs(height) < kStepShareOfSwing * (hi - lo))
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("not a step: the signal swings more than it moves from its first "
+                            "to its final value"));
+    // Still moving at the end: the two halves of the last fifth differ in their mean (a mean,
+    // so that noise and decayed ringing do not count).
+    const qint64 tailStart = last - std::max<qint64>(4, n / 5);
+    const qint64 tailMiddle = tailStart + (last - tailStart) / 2;
+    double early = 0, late = 0;
+    for (qint64 i = std::max(first, tailStart); i < tailMiddle; ++i)
+        early += shown(buffer, i, info);
+    for (qint64 i = tailMiddle; i < last; ++i)
+        late += shown(buffer, i, info);
+    early /= double(tailMiddle - std::max(first, tailStart));
+    late /= double(last - tailMiddle);
+    if (std::abs(late - early) > kUnsettledShare * std::abs(height))
+        return Error(Error::Kind::InvalidArgument,
+                     Tr::tr("not a step: the signal has not settled at the end of the range"));
 
     // Normalised progress p = (v - initial) / height: 0 at the start, 1 at the end.
     auto progress = [&](qint64 i) {
@@ -214,7 +247,8 @@ Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0, double t
     const double t10 = crossing(0.1), t90 = crossing(0.9);
     if (std::isnan(t10) || std::isnan(t90))
         return Error(Error::Kind::InvalidArgument,
-                     Tr::tr("the signal does not rise from 10 % to 90 % of the step in the range"));
+                     Tr::tr("not a step: the signal does not pass from 10 % to 90 % of the step in "
+                            "the range"));
     r.riseTime = t90 - t10;
 
     qint64 peak = first;

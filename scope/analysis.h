@@ -68,8 +68,10 @@ struct StepResponse
     double peakTime = 0;
     double settlingTime = 0;
 };
-// InvalidArgument when fewer than 3 samples are in range or there is no step (|final-initial|
-// is 0), or the 90 % level is never reached.
+// InvalidArgument when fewer than 3 samples are in range, or, with a message starting "not a
+// step:", when the signal is not one: |final - initial| is 0 or less than about half the
+// signal's peak-to-peak (a sine, noise), the last tenth of the range still varies by more than
+// a quarter of the step (not settled), or the 90 % level is never reached.
 Result<StepResponse> stepResponse(const TraceBuffer &buffer, double t0 = -kAll, double t1 = kAll,
                                   const ChannelInfo &info = {}, double settlingBand = 0.02);
 

@@ -27,6 +27,11 @@ struct ChannelInfo
     LocalTexts localNames = {}; // name in further languages (people read them, files keep name)
     QString unit; // unit of the displayed value ("inc", "mA"); may be empty
     QString device; // connection URI of the device the channel comes from
+    // Short name of that device for people ("ACTIVE Cube ACU 127.0.0.1"); may be empty.
+    QString deviceName;
+    // Decimal places the displayed value has (an integer object's scale, a fixed-point
+    // parameter's decimals); -1 when not fixed (floating-point values).
+    int decimals = -1;
     double scale = 1.0;
     double offset = 0.0;
     int sourceRateMs = 0; // requested sample period; 0 = as fast as the link allows / event driven
@@ -39,6 +44,13 @@ struct ChannelInfo
     // name and label in the language the program speaks, for the scope's legend and lists.
     QString displayName() const { return localText(name, localNames); }
     QString displayLabel() const;
+    // "ACTIVE Cube ACU 127.0.0.1: 210 Actual frequency": displayLabel() with the device in
+    // front (its name, else its URI), to tell the same object of two devices apart.
+    QString deviceLabel() const;
+    // The decimals to show a displayed value with: `decimals`, or for values without fixed
+    // decimals enough for about five significant digits at `magnitude` (the largest absolute
+    // value shown), at most 9.
+    int displayDecimals(double magnitude) const;
 
     // A channel for `address` with name, unit and scaling (factor/offset) taken from the
     // dictionary when it knows the object; otherwise named by the address only. The id is

@@ -131,6 +131,10 @@ bool writeCsv(QIODevice &device, const Recording &rec, double t0, double t1)
         // "372:2" means another object in hex.
         if (i.addressFormat->key() != AddressFormat::canopen().key())
             out += "; addresses: " + i.addressFormat->key().toUtf8();
+        if (i.decimals >= 0)
+            out += "; decimals: " + QByteArray::number(i.decimals);
+        if (!i.deviceName.isEmpty())
+            out += "; device-name: " + escape(i.deviceName).toUtf8();
         out += '\n';
         if (i.device != rec.device)
             out += "# channel-device: " + escape(i.id).toUtf8() + "; " + escape(i.device).toUtf8()

@@ -8,7 +8,10 @@
 //   # mode: single
 //   # trigger: 6064:0,rising,100; pre 0.1 s; post 0.5 s; at 1.234567000 s
 //   # channel: 6064:0; name: Position actual value; unit: inc; scale: 1; offset: 0; rate-ms: 10; …
-//   # channel: …   (one line per channel in column order, ending "dropped: N; lost: N")
+//   # channel: …   (one line per channel in column order, ending "dropped: N; lost: N", then
+//                    "decimals: N" and "device-name: NAME" when known)
+//   # channel-device: 6064:0; refgo://127.0.0.2:10001   (after the channel line of a channel
+//                    from another device than the "device" line's)
 //   # range: 0.000812345 .. 2.500000000 s
 //   time_s,6064:0 Position actual value,6078:0 Current actual value
 //   0.000812345,1000,

@@ -106,7 +106,7 @@ struct Pending
     QString triggerSpec;
     int triggerLine = 0;
     QHash<QString, QSet<qint64>> gaps; // channel id -> times (ns) that start a gap
-    QHash<QString, QPair<qint64, qint64>> counters; // channel id -> (dropped, lost)
+    QList<QPair<qint64, qint64>> counters; // per channel line: (dropped, lost)
 };
 
 Result<void> parseTrigger(Recording &rec, const Pending &p)
@@ -200,13 +200,19 @@ Result<Recording> fromCsv(const QByteArray &text)
             c.info.scale = *scale;
             c.info.offset = *offset;
             c.info.sourceRateMs = map.value(QStringLiteral("rate-ms")).toInt();
-            pending.counters.insert(c.info.id,
-                                    { map.value(QStringLiteral("dropped")).toLongLong(),
+            c.info.decimals = std::clamp(
+                map.value(QStringLiteral("decimals"), QStringLiteral("-1")).toInt(), -1, 9);
+            c.info.deviceName = map.value(QStringLiteral("device-name"));
+            pending.counters.append({ map.value(QStringLiteral("dropped")).toLongLong(),
                                       map.value(QStringLiteral("lost")).toLongLong() });
             rec.channels.append(c);
         } else if (key == QLatin1String("channel-device")) {
             const QStringList parts = splitUnescaped(value);
-            if (parts.size() == 2)
+            // It follows its channel's line: the same object of two devices has the same id.
+            if (parts.size() == 2 && !rec.channels.isEmpty()
+                && rec.channels.constLast().info.id == parts[0].trimmed())
+                rec.channels.last().info.device = parts[1].trimmed();
+            else if (parts.size() == 2)
                 channelDevice.insert(parts[0].trimmed(), parts[1].trimmed());
         } else if (key == QLatin1String("gaps")) {
             const qsizetype semi = value.indexOf(QLatin1Char(';'));
@@ -223,7 +229,8 @@ Result<Recording> fromCsv(const QByteArray &text)
     if (rec.channels.isEmpty())
         return malformed(lineNo + 1, Tr::tr("no '# channel:' lines before the data"));
     for (RecordedChannel &c : rec.channels)
-        c.info.device = channelDevice.value(c.info.id, rec.device);
+        if (c.info.device.isEmpty())
+            c.info.device = channelDevice.value(c.info.id, rec.device);
     if (auto ok = parseTrigger(rec, pending); !ok)
         return ok.error();
 
@@ -272,9 +279,9 @@ Result<Recording> fromCsv(const QByteArray &text)
             ch.buffer.append(double(*ns) * 1e-9, v);
         }
     }
-    for (RecordedChannel &c : rec.channels) {
-        const auto counters = pending.counters.value(c.info.id);
-        c.buffer.setCounters(counters.first, counters.second);
+    for (qsizetype i = 0; i < rec.channels.size(); ++i) {
+        const auto counters = pending.counters.value(i);
+        rec.channels[i].buffer.setCounters(counters.first, counters.second);
     }
     return rec;
 }

@@ -5079,12 +5079,20 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>eine Sprungantwort braucht mindestens 3 Messwerte im Bereich (vorhanden: %1)</translation>
     </message>
     <message>
-        <source>no step in the range (initial and final value are equal)</source>
-        <translation>kein Sprung im Bereich (Anfangs- und Endwert sind gleich)</translation>
+        <source>not a step: the first and the final value are equal</source>
+        <translation>kein Sprung: erster Wert und Endwert sind gleich</translation>
     </message>
     <message>
-        <source>the signal does not rise from 10 % to 90 % of the step in the range</source>
-        <translation>das Signal steigt im Bereich nicht von 10 % auf 90 % des Sprungs</translation>
+        <source>not a step: the signal swings more than it moves from its first to its final value</source>
+        <translation>kein Sprung: das Signal schwankt stärker, als es sich vom ersten zum Endwert bewegt</translation>
+    </message>
+    <message>
+        <source>not a step: the signal has not settled at the end of the range</source>
+        <translation>kein Sprung: das Signal hat sich am Ende des Bereichs nicht eingeschwungen</translation>
+    </message>
+    <message>
+        <source>not a step: the signal does not pass from 10 % to 90 % of the step in the range</source>
+        <translation>kein Sprung: das Signal durchläuft im Bereich nicht 10 % bis 90 % des Sprungs</translation>
     </message>
 </context>
 <context>
@@ -8770,10 +8778,6 @@ Die jetzigen Werte des Geräts werden seine Einschaltwerte.</translation>
         <translation>Sprungantwort</translation>
     </message>
     <message>
-        <source>none: %1</source>
-        <translation>keine: %1</translation>
-    </message>
-    <message>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
@@ -8890,6 +8894,10 @@ Doppelklick auf den Namen ändert die Farbe</translation>
     <message>
         <source>&lt;b&gt;A&lt;/b&gt; %1 s &amp;nbsp; &lt;b&gt;B&lt;/b&gt; %2 s &amp;nbsp; &lt;b&gt;Δt&lt;/b&gt; %3 s &amp;nbsp; &lt;b&gt;1/Δt&lt;/b&gt; %4 Hz</source>
         <translation>&lt;b&gt;A&lt;/b&gt; %1 s &amp;nbsp; &lt;b&gt;B&lt;/b&gt; %2 s &amp;nbsp; &lt;b&gt;Δt&lt;/b&gt; %3 s &amp;nbsp; &lt;b&gt;1/Δt&lt;/b&gt; %4 Hz</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
     </message>
 </context>
 <context>
@@ -9326,6 +9334,42 @@ Change it?</source>
         <source>%1: cannot be written: %2</source>
         <translation>%1: kann nicht geschrieben werden: %2</translation>
     </message>
+    <message>
+        <source> node %1</source>
+        <translation> Knoten %1</translation>
+    </message>
+    <message>
+        <source>Device: none</source>
+        <translation>Gerät: keines</translation>
+    </message>
+    <message>
+        <source>Device: %1</source>
+        <translation>Gerät: %1</translation>
+    </message>
+    <message>
+        <source>Devices: %1</source>
+        <translation>Geräte: %1</translation>
+    </message>
+    <message>
+        <source>Recorded: %1</source>
+        <translation>Aufgezeichnet: %1</translation>
+    </message>
+    <message>
+        <source>Trigger: %1, %2; %3 s before, %4 s after; time 0 = trigger</source>
+        <translation>Trigger: %1, %2; %3 s davor, %4 s danach; Zeit 0 = Trigger</translation>
+    </message>
+    <message>
+        <source>No trigger: time from the start of the recording</source>
+        <translation>Kein Trigger: Zeit ab Beginn der Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>%1 is not connected: connect it or remove its channels</source>
+        <translation>%1 ist nicht verbunden: verbinden oder seine Kanäle entfernen</translation>
+    </message>
+    <message>
+        <source>%1 would be recorded twice from %2: remove one</source>
+        <translation>%1 würde zweimal von %2 aufgezeichnet: einen entfernen</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::ScopePlot</name>
@@ -9336,6 +9380,10 @@ Change it?</source>
     <message>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>time from the trigger (s)</source>
+        <translation>Zeit ab Trigger (s)</translation>
     </message>
 </context>
 <context>

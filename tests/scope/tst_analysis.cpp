@@ -132,6 +132,37 @@ private Q_SLOTS:
             flat.append(i, 5);
         QCOMPARE(analysis::stepResponse(flat).error().kind(), Error::Kind::InvalidArgument);
     }
+    void notAStep()
+    {
+        // A sine, noise and a signal still rising at the end get "not a step" instead of a
+        // rise time and an overshoot; a lightly damped step (70 % overshoot) is still one.
+        const auto notAStep = [](const TraceBuffer &b) {
+            const auto r = analysis::stepResponse(b);
+            return !r.ok() && r.error().message().startsWith(QLatin1String("not a step:"));
+        };
+        QVERIFY(notAStep(sine(3, 10, 1000, 1.3)));
+        TraceBuffer noise;
+        quint32 state = 7;
+        for (int i = 0; i < 1000; ++i) {
+            state = state * 1664525u + 1013904223u;
+            noise.append(i * 1e-3, 50 + double(state >> 20) / 4096.0);
+        }
+        QVERIFY(notAStep(noise));
+        TraceBuffer rising;
+        for (int i = 0; i < 1000; ++i)
+            rising.append(i * 1e-3, i < 100 ? 0.0 : (i - 100) * (i - 100) * 1e-3);
+        QVERIFY(notAStep(rising));
+        TraceBuffer flat;
+        for (int i = 0; i < 10; ++i)
+            flat.append(i, 5);
+        QVERIFY(notAStep(flat));
+        TraceBuffer ringing;
+        for (int i = 0; i <= 3000; ++i)
+            ringing.append(i * 1e-3, 100 * secondOrder(i * 1e-3, 0.11, 2 * std::numbers::pi * 5));
+        const auto r = analysis::stepResponse(ringing);
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QVERIFY(r->overshootPercent > 69);
+    }
 
     void statisticsBetweenCursors()
     {

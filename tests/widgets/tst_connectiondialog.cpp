@@ -124,6 +124,28 @@ private Q_SLOTS:
                  QStringLiteral("10.0.0.7"));
     }
 
+    void anAddressWithoutPortShowsTheProtocolsPort()
+    {
+        // The Morse panel's Connect gives "refgo://IP": after a recent connection on another
+        // port, the field shows the port the connection will use, and so does an SLCAN one.
+        ConnectionDialog dialog(m_registry, { QStringLiteral("refgo://127.0.0.1:40123") });
+        auto *port = dialog.findChild<QSpinBox *>(QStringLiteral("port"));
+        QCOMPARE(port->value(), 40123);
+        dialog.setUri(QStringLiteral("refgo://10.20.30.40"));
+        QCOMPARE(port->value(), 10001);
+        QCOMPARE(dialog.uri(), QStringLiteral("refgo://10.20.30.40:10001"));
+        dialog.setUri(QStringLiteral("canopen+slcan://127.0.0.1:40999?node=50"));
+        QCOMPARE(port->value(), 40999);
+        dialog.setUri(QStringLiteral("canopen+slcan://10.20.30.40?node=50"));
+        QCOMPARE(port->value(), 15001);
+        QCOMPARE(dialog.uri(), QStringLiteral("canopen+slcan://10.20.30.40:15001?node=50"));
+        // Editing the host keeps the port the field shows.
+        QLineEdit *host = dialog.findChild<QLineEdit *>(QStringLiteral("host"));
+        host->clear();
+        QTest::keyClicks(host, QStringLiteral("10.20.30.41"));
+        QCOMPARE(dialog.uri(), QStringLiteral("canopen+slcan://10.20.30.41:15001?node=50"));
+    }
+
     void portlessProtocolWithOptions()
     {
         ConnectionDialog dialog(m_registry, {});

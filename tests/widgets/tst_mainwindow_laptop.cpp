@@ -14,11 +14,17 @@
 #include "widgets/motion/jogpanel.h"
 #include "widgets/nm17x/nm17xlinemodel.h"
 #include "widgets/nm17x/nm17xlinepanel.h"
+#include "widgets/scope/scopecursors.h"
+#include "widgets/scope/scopemeasurements.h"
 #include "widgets/scope/scopepage.h"
+#include "widgets/scope/scopeplot.h"
+
+#include <qcustomplot.h>
 
 #include <QAbstractScrollArea>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -26,6 +32,7 @@
 #include <QSettings>
 #include <QStackedWidget>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -346,6 +353,55 @@ private Q_SLOTS:
         QCOMPARE(kept.connectTimeoutMs, 1500);
         QCOMPARE(kept.requestTimeoutMs, 700);
         again.applySettings({ QString(), 3000, 1000, {} }); // as before, for the other tests
+    }
+
+    // For the README: DRIVEBENCH_SCREENSHOT_DIR=docs writes screenshot-scope.png, the Scope page
+    // at 1366x740 with a move of the demo drive recorded by a trigger on its velocity.
+    void scopeScreenshot()
+    {
+        const QString dir = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+        if (dir.isEmpty())
+            QSKIP("DRIVEBENCH_SCREENSHOT_DIR not set");
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo(0).ok());
+        MainWindow window(app::protocolRegistry());
+        window.resize(kLaptopWidth, kUsableHeight);
+        window.show();
+        const Result<DeviceConnection *> connection = window.openConnection(demo.refgoUri());
+        QVERIFY(connection.ok());
+        // As an engineer would lay it out for the scope on a laptop: the other docks closed.
+        for (QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+            if (dock->objectName() != QLatin1String("devicesDock"))
+                dock->close();
+        }
+        window.pages()->setCurrentWidget(window.scopePage());
+        widgets::ScopePage *page = window.scopePage();
+        QVERIFY(page->addChannels(
+            { ObjectAddress(0x606C, 0), ObjectAddress(0x6064, 0), ObjectAddress(0x6078, 0) }, 0));
+        page->setMode(int(scope::Recorder::Mode::Single));
+        scope::Trigger trigger = page->triggerSettings();
+        QCOMPARE(trigger.channel, 0); // preselected
+        trigger.kind = scope::Trigger::Kind::RisingEdge;
+        trigger.level = 50;
+        trigger.preTriggerS = 0.25;
+        trigger.postTriggerS = 2.0;
+        page->setTriggerSettings(trigger);
+        QTRY_VERIFY((*connection)->isConnected());
+        page->start();
+        QVERIFY2(page->recorder()->state() == scope::Recorder::State::Armed,
+                 qPrintable(page->statusText()));
+        QTRY_VERIFY(page->recorder()->now() > 0.4); // some pre-trigger at standstill
+        std::unique_ptr<Reply> go((*connection)->rawCommand(QStringLiteral("G1000")));
+        QTRY_COMPARE_WITH_TIMEOUT(page->recorder()->state(), scope::Recorder::State::Stopped,
+                                  10000);
+        page->plot()->autoscale();
+        page->setCursorsEnabled(true);
+        const double t0 = page->recorder()->triggerTime();
+        page->plot()->cursors()->setPositions(t0, t0 + 1.5);
+        QTRY_COMPARE(page->measurements()->table()->rowCount(), 3);
+        page->plot()->refreshNow();
+        page->plot()->customPlot()->replot();
+        QVERIFY(window.grab().save(QDir(dir).filePath(QStringLiteral("screenshot-scope.png"))));
     }
 
     void resetLayoutBringsEveryDockBack()

@@ -94,7 +94,7 @@ private slots:
         QCOMPARE(page.channelModel()->rowCount(), 2);
         QVERIFY(page.plot()->graph(0));
         QVERIFY(page.plot()->graph(1));
-        QCOMPARE(page.plot()->lanes(), QList<int>({ 1 }));
+        QCOMPARE(page.plot()->lanes(), QList<int>({ 1, 2 })); // inc and mA: an axis each
         // Decimated to the pixels: about two points per column, not a million.
         const int points = page.plot()->graph(0)->data()->size();
         QVERIFY2(points > 100 && points < 5000, qPrintable(QString::number(points)));
@@ -138,6 +138,10 @@ private slots:
         ScopePage page;
         page.recorder()->load(syntheticRecording());
         ScopeChannelModel *model = page.channelModel();
+        // Merged into one axis by the user, then apart again.
+        QVERIFY(model->setData(model->index(1, ScopeChannelModel::Lane), 1, Qt::EditRole));
+        page.plot()->refreshNow();
+        QCOMPARE(page.plot()->lanes(), QList<int>({ 1 }));
         QVERIFY(model->setData(model->index(1, ScopeChannelModel::Lane), 2, Qt::EditRole));
         QVERIFY(!model->setData(model->index(1, ScopeChannelModel::Lane), 9, Qt::EditRole));
         page.plot()->refreshNow();

@@ -201,8 +201,13 @@ void ConnectionDialog::fillFieldsFromUri()
         onProtocolChanged();
     }
     m_host->setText(parsed->host());
-    if (parsed->port() >= 0 && m_port->isEnabled())
-        m_port->setValue(parsed->port());
+    // No port in the URI: the protocol's own (RefGo 10001, ...), not the one a recent
+    // connection left in the field (which the URI would not use).
+    const ProtocolInfo *info = m_registry.find(parsed->scheme());
+    if (m_port->isEnabled())
+        m_port->setValue(parsed->port() >= 0                  ? parsed->port()
+                             : info && info->defaultPort >= 0 ? info->defaultPort
+                                                              : m_port->value());
     fillCanopenFields(*parsed);
     QStringList options;
     const auto query = parsed->query();

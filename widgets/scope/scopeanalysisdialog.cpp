@@ -125,7 +125,7 @@ void ScopeAnalysisDialog::fillFigures(QFormLayout *form, const scope::ChannelInf
         form->addRow(tr("Sample period"), figure(seconds(m_spectrum->samplePeriodS)));
     }
     if (!m_step) {
-        form->addRow(tr("Step response"), figure(tr("none: %1").arg(m_step.error().message())));
+        form->addRow(tr("Step response"), figure(m_step.error().message()));
         return;
     }
     const scope::analysis::StepResponse &r = *m_step;

@@ -49,9 +49,14 @@ void ScopeChannelModel::refreshCounts()
         Q_EMIT dataChanged(index(0, Name), index(m_rows - 1, Name), { Qt::ToolTipRole });
 }
 
-void ScopeChannelModel::setRateMs(const QString &id, int rateMs)
+QString ScopeChannelModel::key(const scope::ChannelInfo &info)
 {
-    m_rates.insert(id, std::max(0, rateMs));
+    return info.device + QLatin1Char('\n') + info.id;
+}
+
+void ScopeChannelModel::setRateMs(const QString &key, int rateMs)
+{
+    m_rates.insert(key, std::max(0, rateMs));
 }
 
 int ScopeChannelModel::rowCount(const QModelIndex &parent) const
@@ -111,9 +116,12 @@ QVariant ScopeChannelModel::data(const QModelIndex &index, int role) const
         const scope::TraceBuffer &b = m_recorder->buffer(row);
         return tr("%1 [%2]\ndevice: %3\ndisplay = raw × %4 + %5\n%6 samples, %7 lost\n"
                   "double-click the name to change the colour")
-            .arg(info.displayLabel(), info.unit, info.device, QString::number(info.scale),
-                 QString::number(info.offset), QLocale().toString(b.size()),
-                 QLocale().toString(b.dropped()));
+            .arg(info.displayLabel(), info.unit,
+                 info.deviceName.isEmpty()
+                     ? info.device
+                     : QStringLiteral("%1 (%2)").arg(info.deviceName, info.device),
+                 QString::number(info.scale), QString::number(info.offset),
+                 QLocale().toString(b.size()), QLocale().toString(b.dropped()));
     }
     if (role == Qt::TextAlignmentRole && index.column() >= Scale)
         return int(Qt::AlignRight | Qt::AlignVCenter);
@@ -121,7 +129,7 @@ QVariant ScopeChannelModel::data(const QModelIndex &index, int role) const
         return {};
     switch (index.column()) {
     case Name:
-        return info.displayLabel();
+        return scopeChannelName(*m_recorder, row);
     case Scale:
         return edit ? QVariant(info.scale) : QVariant(QString::number(info.scale, 'g', 8));
     case Offset:
@@ -129,7 +137,7 @@ QVariant ScopeChannelModel::data(const QModelIndex &index, int role) const
     case Lane:
         return style.lane;
     case Rate: {
-        const int rate = rateMs(info.id, info.sourceRateMs);
+        const int rate = rateMs(key(info), info.sourceRateMs);
         return edit || rate > 0 ? QVariant(rate) : QVariant(tr("max"));
     }
     default:
@@ -179,7 +187,7 @@ bool ScopeChannelModel::setData(const QModelIndex &index, const QVariant &value,
         const int rate = value.toInt(&ok);
         if (!ok || rate < 0)
             return false;
-        setRateMs(info.id, rate);
+        setRateMs(key(info), rate);
         Q_EMIT dataChanged(index, index);
         return true;
     }

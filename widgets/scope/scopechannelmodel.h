@@ -30,8 +30,10 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
     // Polling period in ms of a channel (its id), default `fallback`.
-    int rateMs(const QString &id, int fallback = 0) const { return m_rates.value(id, fallback); }
-    void setRateMs(const QString &id, int rateMs);
+    // Polling periods by key(): the same object of two devices has its own.
+    static QString key(const scope::ChannelInfo &info);
+    int rateMs(const QString &key, int fallback = 0) const { return m_rates.value(key, fallback); }
+    void setRateMs(const QString &key, int rateMs);
     // Re-reads the sample counters (called by the page a few times per second).
     void refreshCounts();
 

@@ -6,10 +6,12 @@
 #include "widgets/common/widgetstyle.h"
 
 #include <QHeaderView>
+
 #include <QLabel>
 #include <QLocale>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace db::widgets {
 
@@ -18,6 +20,13 @@ QString scopeNumber(double value)
     if (!std::isfinite(value))
         return QStringLiteral("—");
     return QLocale::c().toString(value, 'g', 5);
+}
+
+QString scopeNumber(double value, int decimals)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("—");
+    return QLocale::c().toString(value, 'f', std::clamp(decimals, 0, 12));
 }
 
 ScopeMeasurements::ScopeMeasurements(QWidget *parent)
@@ -34,8 +43,9 @@ ScopeMeasurements::ScopeMeasurements(QWidget *parent)
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setWordWrap(true); // the plot beside the controls fits a laptop screen
     m_table->setObjectName(QStringLiteral("measurementTable"));
-    m_table->setHorizontalHeaderLabels({ tr("Channel"), tr("at A"), tr("at B"), tr("B − A"),
-                                         tr("Mean"), tr("RMS"), tr("Min"), tr("Max"), tr("P-P") });
+    m_table->setHorizontalHeaderLabels({ tr("Channel"), tr("Unit"), tr("at A"), tr("at B"),
+                                         tr("B − A"), tr("Mean"), tr("RMS"), tr("Min"), tr("Max"),
+                                         tr("P-P") });
     m_table->horizontalHeaderItem(Dy)->setToolTip(tr("dy: value at B minus value at A"));
     m_table->horizontalHeaderItem(PeakToPeak)->setToolTip(tr("peak-to-peak between A and B"));
     m_table->verticalHeader()->setVisible(false);
@@ -61,9 +71,10 @@ void ScopeMeasurements::update(const scope::Recorder &recorder, const ScopePlot 
                                double b)
 {
     const double dt = b - a;
+    const double origin = plot.timeOrigin();
     m_summary->setText(tr("<b>A</b> %1 s &nbsp; <b>B</b> %2 s &nbsp; <b>Δt</b> %3 s &nbsp; "
                           "<b>1/Δt</b> %4 Hz")
-                           .arg(scopeNumber(a), scopeNumber(b), scopeNumber(dt),
+                           .arg(scopeNumber(a - origin), scopeNumber(b - origin), scopeNumber(dt),
                                 scopeNumber(dt != 0.0 ? 1.0 / dt : INFINITY)));
     QList<int> rows;
     for (int i = 0; i < recorder.channelCount(); ++i) {
@@ -88,14 +99,24 @@ void ScopeMeasurements::update(const scope::Recorder &recorder, const ScopePlot 
                                    any ? s.min : NAN,
                                    any ? s.max : NAN,
                                    any ? s.peakToPeak : NAN };
-        auto *name = new QTableWidgetItem(
-            info.unit.isEmpty() ? info.displayLabel()
-                                : QStringLiteral("%1 [%2]").arg(info.displayLabel(), info.unit));
+        auto *name = new QTableWidgetItem(scopeChannelName(recorder, channel));
         name->setForeground(plot.channelStyle(channel).color.darker(115));
         name->setFont(font());
+        name->setToolTip(info.deviceLabel());
         m_table->setItem(r, Channel, name);
+        auto *unit = new QTableWidgetItem(info.unit);
+        unit->setFont(font());
+        m_table->setItem(r, Unit, unit);
+        double magnitude = 0;
+        for (const double v : figures) {
+            if (std::isfinite(v))
+                magnitude = std::max(magnitude, std::abs(v));
+        }
+        const int decimals = info.displayDecimals(magnitude);
         for (int c = AtA; c < ColumnCount; ++c) {
-            auto *item = new QTableWidgetItem(scopeNumber(figures[c - AtA]));
+            const bool average = c == Mean || c == Rms;
+            auto *item =
+                new QTableWidgetItem(scopeNumber(figures[c - AtA], decimals + (average ? 1 : 0)));
             item->setData(Qt::UserRole, figures[c - AtA]);
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             m_table->setItem(r, c, item);

@@ -15,14 +15,16 @@ namespace db::widgets {
 
 class ScopePlot;
 
-// The cursor measurement table: the A/B times with dt and 1/dt, and per visible channel its
-// value at A and B, dy = B - A, and mean, RMS, min, max and peak-to-peak of the samples between
-// the cursors (scope/analysis.h, displayed units).
+// The cursor measurement table: the A/B times (from the plot's time origin) with dt and 1/dt,
+// and per visible channel its unit, value at A and B, dy = B - A, and mean, RMS, min, max and
+// peak-to-peak of the samples between the cursors (scope/analysis.h, displayed units). A
+// channel's figures have the same decimals (its object's, or for floating-point values enough
+// for five digits of its largest figure); mean and RMS one more.
 class ScopeMeasurements : public QWidget
 {
     Q_OBJECT
 public:
-    enum Column { Channel, AtA, AtB, Dy, Mean, Rms, Min, Max, PeakToPeak, ColumnCount };
+    enum Column { Channel, Unit, AtA, AtB, Dy, Mean, Rms, Min, Max, PeakToPeak, ColumnCount };
 
     explicit ScopeMeasurements(QWidget *parent = nullptr);
 
@@ -43,5 +45,7 @@ private:
 
 // A measured figure as text: 5 significant digits, "—" for NaN/inf.
 QString scopeNumber(double value);
+// A figure with exactly `decimals` decimal places in the C locale, "—" for NaN/inf.
+QString scopeNumber(double value, int decimals);
 
 } // namespace db::widgets

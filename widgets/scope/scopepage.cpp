@@ -203,6 +203,9 @@ QWidget *ScopePage::createAcquisitionPanel()
                           tr("Roll (last seconds)") });
     m_rollBox = secondsBox(box, 10.0, 3600.0);
     m_triggerChannelBox = new QComboBox(box);
+    m_triggerChannelBox->setObjectName(QStringLiteral("scopeTriggerChannel"));
+    connect(m_triggerChannelBox, &QComboBox::activated, this,
+            [this] { m_triggerChoice = m_triggerChannelBox->currentData().toString(); });
     m_triggerKindBox = new QComboBox(box);
     m_triggerKindBox->addItems({ tr("rising edge"), tr("falling edge"), tr("above level"),
                                  tr("below level"), tr("inside window"), tr("outside window"),
@@ -337,18 +340,24 @@ void ScopePage::updateStatus()
 
 void ScopePage::updateTriggerChannels()
 {
+    // The channel the user chose last (also after it was removed and added again), else the
+    // one shown, else the recorder's, else the first.
     const QString current = m_triggerChannelBox->currentData().toString();
     m_triggerChannelBox->clear();
     for (int i = 0; i < m_recorder->channelCount(); ++i) {
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        m_triggerChannelBox->addItem(info.displayLabel(), info.id);
+        m_triggerChannelBox->addItem(scopeChannelName(*m_recorder, i),
+                                     ScopeChannelModel::key(info));
     }
-    const int keep = m_triggerChannelBox->findData(current);
+    int pick = m_triggerChoice.isEmpty() ? -1 : m_triggerChannelBox->findData(m_triggerChoice);
+    if (pick < 0)
+        pick = m_triggerChannelBox->findData(current);
     const int fromRecorder = m_recorder->trigger().channel;
-    m_triggerChannelBox->setCurrentIndex(keep >= 0 ? keep
-                                             : fromRecorder < m_recorder->channelCount()
-                                             ? fromRecorder
-                                             : 0);
+    if (pick < 0 && fromRecorder >= 0 && fromRecorder < m_recorder->channelCount())
+        pick = fromRecorder;
+    if (pick < 0 && m_triggerChannelBox->count() > 0)
+        pick = 0;
+    m_triggerChannelBox->setCurrentIndex(pick);
 }
 
 void ScopePage::showMessage(const QString &text, bool error)

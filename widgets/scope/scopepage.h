@@ -37,8 +37,15 @@ class ScopePlot;
 // Ownership: the page owns its Recorder and the PollingSource/PdoSource it makes on the
 // connection given to setConnection() (never a transport). Start re-creates the sources with the
 // page's channels on the current connection (so a loaded recording can be recorded again); the
-// recorded data stays in the Recorder until the next Start or Open. Changing the connection stops
-// recording; the channels keep their data.
+// recorded data stays in the Recorder until the next Start or Open.
+//
+// Several devices: every connection given to setConnection() is remembered (not owned) while it
+// lives. A channel belongs to the device it was added from (ChannelInfo::device, its URI) and is
+// recorded from it, so that the same object of two drives can be recorded side by side; its name
+// carries the device then (scopeChannelName()). Changing the current connection only changes
+// where new channels come from: a running recording goes on (setConnection(nullptr) stops it).
+// At Start, a channel whose device is gone (a loaded recording, a removed connection) is
+// recorded from the current connection.
 //
 // On a CANopen connection, new channels come from host polling (SDO) or, passively, from the
 // TPDOs that already carry them (the "Source" box): the page reads the node's PDO configuration
@@ -90,8 +97,12 @@ public:
     // (0-based) so that it carries unmappedObjects() every eventMs (RAM only), then adds them as
     // PDO channels. pdoLookupFinished() follows.
     void mapToTpdo(int tpdoNumber, int eventMs);
-    // The PDO a channel (id) is sampled from; nullopt for polling channels.
+    // The PDO a channel (id, of the current connection) is sampled from; nullopt for polling
+    // channels.
     std::optional<scope::PdoSource::Mapping> pdoMapping(const QString &id) const;
+    // What a channel of this connection is called: its product and host ("MovingCap ETH
+    // 127.0.0.1"), with port and node when another remembered connection has the same.
+    QString deviceName(const DeviceConnection *connection) const;
 
     // Trigger settings of the controls (channel -1 when no channel is chosen).
     scope::Trigger triggerSettings() const;
@@ -103,8 +114,11 @@ public:
     bool cursorsEnabled() const;
 
     Result<void> exportCsv(const QString &fileName, bool visibleRangeOnly) const;
-    // PNG or PDF by the file's suffix.
+    // PNG or PDF by the file's suffix: the plot under a header with the device(s), the
+    // recording's date and time (local) and the trigger settings (or the mode when untriggered).
     Result<void> exportImage(const QString &fileName) const;
+    // The header lines of an image export.
+    QStringList exportHeader() const;
     Result<void> openRecording(const QString &fileName);
     // The last problem or result shown in the status line.
     QString statusText() const;
@@ -142,6 +156,10 @@ private:
     void promptExportCsv(bool visibleRangeOnly);
     void promptExportImage();
     Result<void> rebuildSource();
+    // The remembered, still existing connection a channel was added from; null when none.
+    DeviceConnection *connectionOf(const scope::ChannelInfo &info) const;
+    scope::ChannelInfo channelFor(ObjectAddress address, int rateMs) const;
+    static QString pdoKey(const QString &device, const QString &id);
     void onPdoPlan(Reply *reply);
     void promptMapToTpdo();
     QString channelSourceNote(const QString &id) const;
@@ -151,9 +169,12 @@ private:
 
     QPointer<DeviceConnection> m_connection;
     scope::Recorder *m_recorder;
-    QPointer<scope::PollingSource> m_source;
-    QPointer<scope::PdoSource> m_pdoSource;
-    QHash<QString, scope::PdoChannelPlanEntry> m_pdoMappings; // channel id -> its PDO
+    QList<QPointer<DeviceConnection>> m_devices; // every connection given, while it lives
+    QPointer<scope::PollingSource> m_source; // new polling channels of the current connection
+    QPointer<scope::PdoSource> m_pdoSource; // new PDO channels of the current connection
+    QList<QPointer<scope::TraceSource>> m_otherSources; // of other connections, made at Start
+    QHash<QString, scope::PdoChannelPlanEntry> m_pdoMappings; // pdoKey() -> its PDO
+    QString m_triggerChoice; // the trigger channel chosen last (ScopeChannelModel::key)
     QList<canopen::PdoConfig> m_tpdos; // the node's TPDOs as last read
     int m_pdoWatch = 0; // counts starts: a first-PDO check of an earlier run is ignored
     QList<ObjectAddress> m_unmapped; // objects of the last PDO lookup in no TPDO

@@ -13,10 +13,6 @@
 
 #include <qcustomplot.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -27,7 +23,6 @@
 #include <QMimeData>
 #include <QSpinBox>
 #include <QTableView>
-#include <QTemporaryFile>
 
 namespace db::widgets {
 
@@ -35,11 +30,22 @@ void ScopePage::setConnection(DeviceConnection *connection)
 {
     if (connection == m_connection)
         return;
-    m_recorder->stop();
-    // The old source goes; its channels stay in the recorder with their data (orphans) and are
-    // recorded on the new connection at the next Start.
-    delete m_source;
-    delete m_pdoSource;
+    m_devices.removeAll(nullptr);
+    if (connection && !m_devices.contains(connection))
+        m_devices.append(connection);
+    if (!connection)
+        m_recorder->stop(); // no device left (or the window closes)
+    // The old connection's sources: a running recording keeps them until it ends; otherwise
+    // their channels stay in the recorder (orphans) and are made again at the next Start.
+    if (m_recorder->isRunning()) {
+        m_otherSources.append(m_source.data());
+        m_otherSources.append(m_pdoSource.data());
+        m_source = nullptr;
+        m_pdoSource = nullptr;
+    } else {
+        delete m_source;
+        delete m_pdoSource;
+    }
     delete m_pdoRequest; // a lookup on the old connection
     m_unmapped.clear();
     m_connection = connection;
@@ -101,22 +107,26 @@ Result<void> ScopePage::addChannels(const QList<ObjectAddress> &addresses, int r
     if (!m_source)
         m_source = new scope::PollingSource(m_connection, this);
     const int rate = rateMs >= 0 ? rateMs : m_rateBox->value();
+    const QString device = m_connection->uri().toString();
     QStringList problems;
     for (const ObjectAddress &address : addresses) {
         bool present = false;
-        for (int i = 0; i < m_recorder->channelCount(); ++i)
-            present = present || m_recorder->channelInfo(i).address == address;
+        for (int i = 0; i < m_recorder->channelCount(); ++i) {
+            const scope::ChannelInfo &info = m_recorder->channelInfo(i);
+            present = present || (info.address == address && info.device == device);
+        }
         if (present) {
             problems.append(tr("%1 is already recorded").arg(addressFormat().format(address)));
             continue;
         }
-        const Result<int> index = m_source->addChannel(address, rate);
+        const scope::ChannelInfo info = channelFor(address, rate);
+        const Result<int> index = m_source->addChannel(info);
         if (!index) {
             problems.append(
                 tr("%1: %2").arg(addressFormat().format(address), index.error().message()));
             continue;
         }
-        m_model->setRateMs(m_source->channels().at(*index).id, rate);
+        m_model->setRateMs(ScopeChannelModel::key(info), rate);
         m_recorder->addChannel(m_source, *index);
     }
     if (!problems.isEmpty()) {
@@ -130,10 +140,57 @@ Result<void> ScopePage::addChannels(const QList<ObjectAddress> &addresses, int r
     return {};
 }
 
+scope::ChannelInfo ScopePage::channelFor(ObjectAddress address, int rateMs) const
+{
+    scope::ChannelInfo info =
+        scope::ChannelInfo::forObject(address, m_connection->dictionary(),
+                                      m_connection->uri().toString(), rateMs, &addressFormat());
+    info.deviceName = deviceName(m_connection);
+    return info;
+}
+
+QString ScopePage::deviceName(const DeviceConnection *connection) const
+{
+    if (!connection)
+        return {};
+    const auto base = [](const DeviceConnection *c) {
+        // "ACTIVE Cube ACU (VABus/TCP)": the part in brackets names the link, not the device.
+        const QString product = c->dictionary().identity.productName;
+        QString name = product.left(product.indexOf(QLatin1String(" ("))).trimmed();
+        if (name.isEmpty())
+            name = c->protocolKey();
+        return c->uri().host().isEmpty() ? name : name + QLatin1Char(' ') + c->uri().host();
+    };
+    QString name = base(connection);
+    bool clash = false;
+    for (const QPointer<DeviceConnection> &other : m_devices)
+        clash = clash || (other && other != connection && base(other) == name);
+    if (clash && connection->uri().port() >= 0)
+        name += QLatin1Char(':') + QString::number(connection->uri().port());
+    if (clash && connection->networkAddress() > 0)
+        name += tr(" node %1").arg(connection->networkAddress());
+    return name;
+}
+
+DeviceConnection *ScopePage::connectionOf(const scope::ChannelInfo &info) const
+{
+    for (const QPointer<DeviceConnection> &c : m_devices) {
+        if (c && c->uri().toString() == info.device)
+            return c;
+    }
+    return nullptr;
+}
+
+QString ScopePage::pdoKey(const QString &device, const QString &id)
+{
+    return device + QLatin1Char('\n') + id;
+}
+
 bool ScopePage::removeChannel(int index)
 {
     if (!m_recorder->isRunning() && index >= 0 && index < m_recorder->channelCount())
-        m_pdoMappings.remove(m_recorder->channelInfo(index).id);
+        m_pdoMappings.remove(
+            pdoKey(m_recorder->channelInfo(index).device, m_recorder->channelInfo(index).id));
     // The source keeps polling the object until Start re-creates it; the recorder forgets it now.
     return m_recorder->removeChannel(index);
 }
@@ -247,6 +304,8 @@ void ScopePage::start()
         return;
     }
     setTriggerSettings(trigger);
+    if (trigger.channel >= 0 && trigger.channel < m_recorder->channelCount())
+        m_triggerChoice = ScopeChannelModel::key(m_recorder->channelInfo(trigger.channel));
     const auto mode = scope::Recorder::Mode(m_modeBox->currentIndex());
     m_recorder->setMode(mode);
     m_recorder->setRollWindowS(m_rollBox->value());
@@ -294,45 +353,6 @@ void ScopePage::measure()
     m_measurements->update(*m_recorder, *m_plot, cursors->a(), cursors->b());
 }
 
-Result<void> ScopePage::exportCsv(const QString &fileName, bool visibleRangeOnly) const
-{
-    if (visibleRangeOnly)
-        return scope::csv::save(fileName, m_recorder->recording(), m_plot->timeLower(),
-                                m_plot->timeUpper());
-    return scope::csv::save(fileName, m_recorder->recording());
-}
-
-Result<void> ScopePage::exportImage(const QString &fileName) const
-{
-    QCustomPlot *plot = m_plot->customPlot();
-    const QString suffix = QFileInfo(fileName).suffix().toLower();
-    if (suffix != QLatin1String("pdf") && suffix != QLatin1String("png"))
-        return Error(Error::Kind::InvalidArgument,
-                     tr("%1: choose a .png or .pdf file name").arg(fileName));
-    // QCustomPlot writes by file name, so the image goes to a temporary file next to the
-    // target that then replaces it in one rename: an export that fails or is interrupted
-    // leaves the old file as it was and no half-written image.
-    QTemporaryFile temp(QFileInfo(fileName).absolutePath() + QStringLiteral("/.XXXXXX.") + suffix);
-    if (!temp.open())
-        return Error(Error::Kind::Io,
-                     tr("%1: cannot be written: %2").arg(fileName, temp.errorString()));
-    temp.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ReadGroup
-                        | QFileDevice::ReadOther);
-    temp.close();
-    const bool ok = suffix == QLatin1String("pdf") ? plot->savePdf(temp.fileName())
-                                                   : plot->savePng(temp.fileName(), 0, 0, 2.0);
-    if (!ok)
-        return Error(Error::Kind::Io, tr("%1: cannot be written").arg(fileName));
-    if (std::rename(QFile::encodeName(temp.fileName()).constData(),
-                    QFile::encodeName(fileName).constData())
-        != 0)
-        return Error(
-            Error::Kind::Io,
-            tr("%1: cannot be written: %2").arg(fileName, QString::fromLocal8Bit(strerror(errno))));
-    temp.setAutoRemove(false); // renamed: nothing left to remove
-    return {};
-}
-
 Result<void> ScopePage::openRecording(const QString &fileName)
 {
     Result<scope::Recording> recording = scope::csv::load(fileName);
@@ -344,7 +364,7 @@ Result<void> ScopePage::openRecording(const QString &fileName)
         infos.append(c.info);
     m_recorder->load(std::move(*recording)); // the samples move, a large file is not copied
     for (const scope::ChannelInfo &info : infos)
-        m_model->setRateMs(info.id, info.sourceRateMs);
+        m_model->setRateMs(ScopeChannelModel::key(info), info.sourceRateMs);
     if (trigger.isValid())
         setTriggerSettings(trigger);
     m_plot->autoscale();
@@ -359,26 +379,6 @@ void ScopePage::promptOpen()
         return;
     const Result<void> r = openRecording(file);
     showMessage(r ? tr("Opened %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
-}
-
-void ScopePage::promptExportCsv(bool visibleRangeOnly)
-{
-    const QString file =
-        QFileDialog::getSaveFileName(this, tr("Export recording"), {}, tr("CSV (*.csv)"));
-    if (file.isEmpty())
-        return;
-    const Result<void> r = exportCsv(file, visibleRangeOnly);
-    showMessage(r ? tr("Saved %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
-}
-
-void ScopePage::promptExportImage()
-{
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export image"), {},
-                                                      tr("PNG image (*.png);;PDF (*.pdf)"));
-    if (file.isEmpty())
-        return;
-    const Result<void> r = exportImage(file);
-    showMessage(r ? tr("Saved %1").arg(QFileInfo(file).fileName()) : r.error().message(), !r);
 }
 
 void ScopePage::showAnalysis()

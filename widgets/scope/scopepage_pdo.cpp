@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSet>
 #include <QSpinBox>
 #include <QTimer>
 
@@ -71,8 +72,8 @@ QAbstractItemModel *ScopePage::createTableModel()
         [this](int row, bool tooltip) -> QString {
             if (row < 0 || row >= m_recorder->channelCount())
                 return {};
-            const QString id = m_recorder->channelInfo(row).id;
-            const auto found = m_pdoMappings.constFind(id);
+            const scope::ChannelInfo &info = m_recorder->channelInfo(row);
+            const auto found = m_pdoMappings.constFind(pdoKey(info.device, info.id));
             if (found == m_pdoMappings.cend())
                 return {};
             const scope::PdoSource::Mapping *it = &found->mapping;
@@ -129,7 +130,8 @@ ScopePage::ChannelSource ScopePage::channelSource() const
 
 std::optional<scope::PdoSource::Mapping> ScopePage::pdoMapping(const QString &id) const
 {
-    const auto it = m_pdoMappings.constFind(id);
+    const QString device = m_connection ? m_connection->uri().toString() : QString();
+    const auto it = m_pdoMappings.constFind(pdoKey(device, id));
     return it == m_pdoMappings.cend() ? std::nullopt : std::make_optional(it->mapping);
 }
 
@@ -173,26 +175,27 @@ void ScopePage::onPdoPlan(Reply *reply)
     const auto plan = reply->value().value<scope::PdoChannelPlan>();
     if (!m_pdoSource)
         m_pdoSource = new scope::PdoSource(conn, this);
+    const QString device = conn->uri().toString();
     QStringList problems;
     for (const scope::PdoChannelPlanEntry &entry : plan.found) {
         const QString id = entry.address.toString();
         bool present = false;
-        for (int i = 0; i < m_recorder->channelCount(); ++i)
-            present = present || m_recorder->channelInfo(i).id == id;
+        for (int i = 0; i < m_recorder->channelCount(); ++i) {
+            const scope::ChannelInfo &info = m_recorder->channelInfo(i);
+            present = present || (info.id == id && info.device == device);
+        }
         if (present) {
             problems.append(tr("%1 is already recorded").arg(id));
             continue;
         }
-        scope::PdoChannelPlan one = plan;
-        one.found = { entry };
-        const auto added = scope::addPlannedChannels(*m_pdoSource, one, conn->dictionary(),
-                                                     conn->uri().toString());
+        const auto added = m_pdoSource->addChannel(
+            channelFor(entry.address, entry.mapping.expectedPeriodMs), entry.mapping);
         if (!added) {
             problems.append(added.error().message());
             continue;
         }
-        m_pdoMappings.insert(id, entry);
-        m_recorder->addChannel(m_pdoSource, added->constFirst());
+        m_pdoMappings.insert(pdoKey(device, id), entry);
+        m_recorder->addChannel(m_pdoSource, *added);
     }
     m_unmapped = plan.missing;
     m_tpdos = plan.tpdos;
@@ -298,8 +301,9 @@ void ScopePage::watchPdoArrival()
         silent.tpdos = m_tpdos;
         QStringList ids;
         for (int i = 0; i < m_recorder->channelCount(); ++i) {
-            const QString id = m_recorder->channelInfo(i).id;
-            const auto it = m_pdoMappings.constFind(id);
+            const scope::ChannelInfo &info = m_recorder->channelInfo(i);
+            const QString id = info.id;
+            const auto it = m_pdoMappings.constFind(pdoKey(info.device, id));
             if (it != m_pdoMappings.cend() && m_recorder->buffer(i).size() == 0
                 && m_recorder->buffer(i).lostAtSource() == 0) {
                 silent.found.append(*it);
@@ -318,40 +322,94 @@ void ScopePage::watchPdoArrival()
 
 Result<void> ScopePage::rebuildSource()
 {
-    // Every channel of the page, with its scaling, on the current connection: polling channels
-    // at their rate, PDO channels from their PDO. The recorder's channel order is kept.
-    auto *polling = new scope::PollingSource(m_connection, this);
-    auto *pdo = canopen::networkNodeOf(m_connection.data())
-        ? new scope::PdoSource(m_connection.data(), this)
-        : nullptr;
+    // Every channel of the page, with its scaling, on the device it was added from (the
+    // current connection for channels whose device is gone): polling channels at their rate,
+    // PDO channels from their PDO. One polling and one PDO source per device; the recorder's
+    // channel order is kept.
+    struct Sources
+    {
+        DeviceConnection *connection = nullptr;
+        scope::PollingSource *polling = nullptr;
+        scope::PdoSource *pdo = nullptr;
+    };
+    QList<Sources> made;
+    const auto cleanUp = [&made] {
+        for (const Sources &m : std::as_const(made)) {
+            delete m.polling;
+            delete m.pdo;
+        }
+    };
+    const auto sourcesFor = [this, &made](DeviceConnection *c) -> Sources & {
+        for (Sources &m : made) {
+            if (m.connection == c)
+                return m;
+        }
+        made.append({ c, new scope::PollingSource(c, this),
+                      canopen::networkNodeOf(c) ? new scope::PdoSource(c, this) : nullptr });
+        return made.last();
+    };
     QList<std::pair<scope::TraceSource *, int>> order;
+    QSet<QString> keys;
     for (int i = 0; i < m_recorder->channelCount(); ++i) {
         scope::ChannelInfo info = m_recorder->channelInfo(i);
-        info.device = m_connection->uri().toString();
+        const QString oldKey = ScopeChannelModel::key(info);
+        const std::optional<scope::PdoSource::Mapping> mapping = [&] {
+            const auto it = m_pdoMappings.constFind(pdoKey(info.device, info.id));
+            return it == m_pdoMappings.cend() ? std::nullopt : std::make_optional(it->mapping);
+        }();
+        DeviceConnection *connection = connectionOf(info);
+        if (!connection)
+            connection = m_connection;
+        if (!connection->isConnected()) {
+            cleanUp();
+            return Error(Error::Kind::InvalidArgument,
+                         tr("%1 is not connected: connect it or remove its channels")
+                             .arg(deviceName(connection)));
+        }
+        info.device = connection->uri().toString();
+        info.deviceName = deviceName(connection);
+        if (keys.contains(ScopeChannelModel::key(info))) {
+            cleanUp();
+            return Error(Error::Kind::InvalidArgument,
+                         tr("%1 would be recorded twice from %2: remove one")
+                             .arg(info.displayLabel(), info.deviceName));
+        }
+        keys.insert(ScopeChannelModel::key(info));
+        Sources &sources = sourcesFor(connection);
         Result<int> added = 0;
-        const std::optional<scope::PdoSource::Mapping> mapping = pdoMapping(info.id);
-        if (mapping && !pdo) {
+        if (mapping && !sources.pdo) {
             added =
                 Error(Error::Kind::InvalidArgument, tr("a PDO channel needs a CANopen connection"));
         } else if (mapping) {
             info.sourceRateMs = mapping->expectedPeriodMs;
-            added = pdo->addChannel(info, *mapping);
+            added = sources.pdo->addChannel(info, *mapping);
         } else {
-            info.sourceRateMs = m_model->rateMs(info.id, info.sourceRateMs);
-            added = polling->addChannel(info);
+            info.sourceRateMs = m_model->rateMs(oldKey, info.sourceRateMs);
+            m_model->setRateMs(ScopeChannelModel::key(info), info.sourceRateMs);
+            added = sources.polling->addChannel(info);
         }
         if (!added) {
-            delete polling;
-            delete pdo;
+            cleanUp();
             return added.error().prefixed(info.displayLabel());
         }
-        order.append({ mapping ? static_cast<scope::TraceSource *>(pdo) : polling, *added });
+        order.append(
+            { mapping ? static_cast<scope::TraceSource *>(sources.pdo) : sources.polling, *added });
     }
     m_recorder->removeAllChannels();
     delete m_source;
     delete m_pdoSource;
-    m_source = polling;
-    m_pdoSource = pdo;
+    for (const QPointer<scope::TraceSource> &source : std::as_const(m_otherSources))
+        delete source.data();
+    m_otherSources.clear();
+    for (const Sources &m : std::as_const(made)) {
+        if (m.connection == m_connection) {
+            m_source = m.polling;
+            m_pdoSource = m.pdo;
+        } else {
+            m_otherSources.append(m.polling);
+            m_otherSources.append(m.pdo);
+        }
+    }
     for (const auto &[source, index] : std::as_const(order))
         m_recorder->addChannel(source, index);
     return {};

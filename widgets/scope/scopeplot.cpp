@@ -96,6 +96,37 @@ QString ScopePlot::styleKey(int channel) const
     return occurrence == 0 ? id : id + QLatin1Char('#') + QString::number(occurrence);
 }
 
+QString scopeChannelName(const scope::Recorder &recorder, int channel)
+{
+    const scope::ChannelInfo &info = recorder.channelInfo(channel);
+    for (int i = 0; i < recorder.channelCount(); ++i) {
+        if (recorder.channelInfo(i).device != info.device)
+            return info.deviceLabel();
+    }
+    return info.displayLabel();
+}
+
+int ScopePlot::defaultLane(int channel) const
+{
+    // One value axis per unit: a new channel joins the lane of a channel with its unit, else
+    // takes the first free lane (the last one when all are taken).
+    const QString unit = m_recorder->channelInfo(channel).unit;
+    QList<int> taken;
+    for (int i = 0; i < m_recorder->channelCount(); ++i) {
+        const auto it = m_styles.constFind(styleKey(i));
+        if (i == channel || it == m_styles.cend())
+            continue;
+        if (m_recorder->channelInfo(i).unit == unit)
+            return it->lane;
+        taken.append(it->lane);
+    }
+    for (int lane = 1; lane <= kMaxLanes; ++lane) {
+        if (!taken.contains(lane))
+            return lane;
+    }
+    return kMaxLanes;
+}
+
 void ScopePlot::syncStyles()
 {
     QStringList keys;
@@ -103,7 +134,8 @@ void ScopePlot::syncStyles()
     for (int i = 0; i < n; ++i) {
         keys.append(styleKey(i));
         if (!m_styles.contains(keys.last()))
-            m_styles.insert(keys.last(), { scopeChannelColor(m_nextColor++), true, 1 });
+            m_styles.insert(keys.last(),
+                            { scopeChannelColor(m_nextColor++), true, defaultLane(i) });
     }
     if (keys != m_layoutKeys) {
         m_layoutKeys = keys;
@@ -151,6 +183,12 @@ QCPAxisRect *ScopePlot::laneRect(int lane) const
             return l.rect;
     }
     return nullptr;
+}
+
+double ScopePlot::timeOrigin() const
+{
+    const double t = m_recorder ? m_recorder->triggerTime() : NAN;
+    return std::isfinite(t) ? t : 0.0;
 }
 
 double ScopePlot::timeLower() const
@@ -217,6 +255,8 @@ void ScopePlot::hideEvent(QHideEvent *event)
 
 void ScopePlot::refreshNow()
 {
+    if (timeOrigin() != m_origin)
+        m_layoutDirty = true; // the time axis is labelled from another instant
     if (m_layoutDirty)
         rebuildLayout();
     if (m_following)

@@ -72,6 +72,11 @@ public:
     QList<int> lanes() const;
     QCPAxisRect *laneRect(int lane) const;
 
+    // The time the time axis counts from: the trigger instant of a triggered recording (so
+    // the pre-trigger is negative), else 0 (the recording's start). Times in this class's API
+    // stay on the recorder's time base; only what people read is shifted.
+    double timeOrigin() const;
+
     double timeLower() const;
     double timeUpper() const;
     // Shows [t0, t1] and stops following.
@@ -118,11 +123,13 @@ private:
     void syncStyles();
     QString styleKey(int channel) const;
     QString laneLabel(int lane) const;
+    int defaultLane(int channel) const;
 
     QCustomPlot *m_plot = nullptr;
     ScopeCursors *m_cursors = nullptr;
     QPointer<scope::Recorder> m_recorder;
     QCPMarginGroup *m_marginGroup = nullptr;
+    double m_origin = 0.0; // timeOrigin() when the time axes were last labelled
     double m_t0 = 0.0; // the shared time range
     double m_t1 = 1.0;
     QTimer m_frameTimer;
@@ -141,5 +148,9 @@ private:
 
 // The colour of the n-th channel (a palette that stays apart on white).
 QColor scopeChannelColor(int n);
+// How people see recorder channel `channel` named: with its device in front when the channels
+// come from more than one device ("ACTIVE Cube ACU 127.0.0.1: 210 Actual frequency"), else
+// without ("210 Actual frequency").
+QString scopeChannelName(const scope::Recorder &recorder, int channel);
 
 } // namespace db::widgets

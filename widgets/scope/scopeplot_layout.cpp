@@ -26,6 +26,33 @@ void styleAxis(QCPAxis *axis)
     axis->setLabelColor(QColor(50, 50, 50));
 }
 
+// Labels the time axis from an origin (the trigger instant) while its coordinates stay on the
+// recorder's time base: ticks fall on round numbers counted from the origin.
+class RelativeTimeTicker : public QCPAxisTicker
+{
+public:
+    explicit RelativeTimeTicker(double origin)
+        : m_origin(origin)
+    { }
+
+protected:
+    QVector<double> createTickVector(double tickStep, const QCPRange &range) override
+    {
+        QVector<double> ticks = QCPAxisTicker::createTickVector(tickStep, range - m_origin);
+        for (double &t : ticks)
+            t += m_origin;
+        return ticks;
+    }
+    QString getTickLabel(double tick, const QLocale &locale, QChar formatChar,
+                         int precision) override
+    {
+        return QCPAxisTicker::getTickLabel(tick - m_origin, locale, formatChar, precision);
+    }
+
+private:
+    double m_origin;
+};
+
 } // namespace
 
 QString ScopePlot::laneLabel(int lane) const
@@ -56,6 +83,8 @@ void ScopePlot::rebuildLayout()
     delete m_marginGroup;
     m_marginGroup = new QCPMarginGroup(m_plot);
     m_lanes.clear();
+    m_origin = timeOrigin();
+    const bool relative = m_recorder && std::isfinite(m_recorder->triggerTime());
     const int n = m_recorder ? m_recorder->channelCount() : 0;
     m_graphs.assign(size_t(n), nullptr);
     m_decimated.resize(size_t(n));
@@ -91,8 +120,9 @@ void ScopePlot::rebuildLayout()
         styleAxis(x);
         styleAxis(y);
         x->setTickLabels(bottom);
+        x->setTicker(QSharedPointer<QCPAxisTicker>(new RelativeTimeTicker(m_origin)));
         if (bottom)
-            x->setLabel(tr("time (s)"));
+            x->setLabel(relative ? tr("time from the trigger (s)") : tr("time (s)"));
         y->setLabel(laneLabel(number));
         y->setNumberFormat(QStringLiteral("gb"));
         x->setRange(m_t0, m_t1);
@@ -129,9 +159,8 @@ void ScopePlot::rebuildLayout()
         QCPGraph *g = m_plot->addGraph(lane->rect->axis(QCPAxis::atBottom),
                                        lane->rect->axis(QCPAxis::atLeft));
         const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-        g->setName(info.unit.isEmpty()
-                       ? info.displayLabel()
-                       : QStringLiteral("%1 [%2]").arg(info.displayLabel(), info.unit));
+        const QString name = scopeChannelName(*m_recorder, i);
+        g->setName(info.unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, info.unit));
         g->setPen(QPen(s.color, 1.4));
         g->setAdaptiveSampling(false); // the data is decimated already
         g->addToLegend(lane->legend);
