@@ -9447,6 +9447,14 @@ Change it?</source>
         <source>Cannot start the demo drive: %1</source>
         <translation>Der Demo-Antrieb kann nicht gestartet werden: %1</translation>
     </message>
+    <message>
+        <source>Demo ACTIVE Cube not started: %1</source>
+        <translation>Demo-ACTIVE-Cube nicht gestartet: %1</translation>
+    </message>
+    <message>
+        <source>Demo NM17x displays not started: %1</source>
+        <translation>Demo-NM17x-Anzeigen nicht gestartet: %1</translation>
+    </message>
 </context>
 <context>
     <name>protocols</name>

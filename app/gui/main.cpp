@@ -1,10 +1,8 @@
 // drivebench: the GUI's composition root. It picks the real protocols (app/common) and, with
 // --demo, runs the simulated MovingCap, an ACTIVE Cube and a line of NM17x displays in-process.
-#include "common/demodrive.h"
 #include "common/descriptions.h"
 #include "common/protocols.h"
-#include "devices/bonfiglioli/simulatedacu.h"
-#include "devices/nm17x/device/nm17xsim.h"
+#include "demosimulators.h"
 #include "jogtesthook.h"
 #include "mainwindow.h"
 #include "translations/language.h"
@@ -67,9 +65,7 @@ int main(int argc, char *argv[])
     parser.process(app);
 
     const db::ProtocolRegistry &registry = db::app::protocolRegistry();
-    std::unique_ptr<db::app::DemoDrive> demo; // outlives the window and its connections
-    std::unique_ptr<db::nm17x::Nm17xSim> displays; // the demo's line of NM17x displays
-    std::unique_ptr<db::bonfiglioli::SimulatedAcu> acu; // the demo's ACTIVE Cube inverter
+    db::gui::DemoSimulators demo; // outlives the window and its connections
     db::gui::MainWindow window(registry);
     window.logConsole()->installMessageHandler();
     // A description the user picks for a device goes into the library, so that the next device
@@ -97,61 +93,47 @@ int main(int argc, char *argv[])
     // The demo: from --demo or the welcome page's button. A second start reconnects to the
     // drive that already runs.
     const auto startDemo = [&]() -> bool {
-        const auto acuUri = [&acu] {
-            return QStringLiteral("vabus://127.0.0.1:%1").arg(acu->port());
-        };
-        if (demo) {
-            if (acu)
-                window.openConnection(acuUri(), Remember::No);
-            window.openConnection(demo->refgoUri(), Remember::No);
-            if (demo->slcanPort() != 0)
-                window.openConnection(demo->slcanUri(), Remember::No);
-            return true;
-        }
-        // An ACTIVE Cube inverter over VABus/TCP, opened first so that the MovingCap stays the
-        // device shown at start.
-        acu = std::make_unique<db::bonfiglioli::SimulatedAcu>();
-        if (auto started = acu->listen(0); started) {
-            window.logConsole()->info(
-                QApplication::translate("main", "Demo ACTIVE Cube at %1").arg(acuUri()));
-            window.openConnection(acuUri(), Remember::No);
-        } else {
-            acu.reset();
-        }
-        demo = std::make_unique<db::app::DemoDrive>();
-        if (auto started = demo->startRefgo(0); !started) {
+        const bool first = !demo.isRunning();
+        const auto started = demo.start();
+        if (!started) {
             const QString text = QApplication::translate("main", "Cannot start the demo drive: %1")
                                      .arg(started.error().toString());
             std::fprintf(stderr, "drivebench: %s\n", qPrintable(text));
             window.logConsole()->error(text);
-            demo.reset();
             return false;
         }
-        window.logConsole()->info(
-            QApplication::translate("main", "Demo drive listening at %1").arg(demo->refgoUri()));
-        window.openConnection(demo->refgoUri(), Remember::No);
-        // The same drive as CANopen node 50 on its SLCAN door: the CAN monitor shows its traffic.
-        if (auto slcan = demo->startSlcan(0); !slcan) {
-            window.logConsole()->warning(
-                QApplication::translate("main", "Demo drive without CANopen: %1")
-                    .arg(slcan.error().toString()));
-        } else {
+        const db::gui::DemoSimulators::Started &uris = started.value();
+        // The ACTIVE Cube inverter is opened first so that the MovingCap stays the device shown
+        // at start. A second start reconnects to the devices that already run.
+        if (!uris.acuUri.isEmpty()) {
+            if (first)
+                window.logConsole()->info(
+                    QApplication::translate("main", "Demo ACTIVE Cube at %1").arg(uris.acuUri));
+            window.openConnection(uris.acuUri, Remember::No);
+        }
+        if (first)
             window.logConsole()->info(
-                QApplication::translate("main", "Demo drive CANopen at %1").arg(demo->slcanUri()));
-            window.openConnection(demo->slcanUri(), Remember::No);
-            window.showCanMonitor();
+                QApplication::translate("main", "Demo drive listening at %1").arg(uris.refgoUri));
+        window.openConnection(uris.refgoUri, Remember::No);
+        // The same drive as CANopen node 50 on its SLCAN door: the CAN monitor shows its traffic.
+        if (!uris.slcanUri.isEmpty()) {
+            if (first)
+                window.logConsole()->info(
+                    QApplication::translate("main", "Demo drive CANopen at %1").arg(uris.slcanUri));
+            window.openConnection(uris.slcanUri, Remember::No);
+            if (first)
+                window.showCanMonitor();
         }
         // A line of three NM17x displays on a bus of their own, for the NM17x Line dock.
-        displays = std::make_unique<db::nm17x::Nm17xSim>();
-        displays->create(
-            db::nm17x::Nm17xSim::parseDevices(QStringLiteral("nm172@2,nm172@3,nm174@4"))
-                .valueOr({}));
-        if (auto started = displays->startSlcan(0); started)
+        if (first && uris.nm17xPort != 0)
             window.logConsole()->info(
                 QApplication::translate("main",
                                         "Demo NM17x displays (nodes 2, 3, 4) at "
                                         "canopen+slcan://127.0.0.1:%1?node=2")
-                    .arg(displays->slcanPort()));
+                    .arg(uris.nm17xPort));
+        if (first)
+            for (const QString &warning : uris.warnings)
+                window.logConsole()->warning(warning);
         return true;
     };
     window.setDemoStarter([&startDemo] { startDemo(); });

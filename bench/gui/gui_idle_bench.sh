@@ -2,8 +2,10 @@
 # CPU use of the GUI while nothing changes on screen: runs `drivebench --demo` under Xvfb
 # (1366 x 768), lets it settle, then reads the process's CPU time from /proc/PID/stat over a
 # window and prints % of one core, per thread name as well, and the resident memory. Repeats
-# --runs times and prints the median and spread. Settings go to a temporary folder, so the
-# user's layout and recent connections do not change the figure.
+# --runs times and prints the median and spread. The demo's simulated devices run in a thread of
+# their own ("demo devices"): the figures are given for the whole process, for the program
+# without that thread (the GUI's own cost) and for that thread alone. Settings go to a temporary
+# folder, so the user's layout and recent connections do not change the figure.
 #
 #   bench/gui/gui_idle_bench.sh [--build DIR | --binary PATH] [--runs N] [--seconds S]
 #                               [--settle S] [--rt] [-- EXTRA DRIVEBENCH ARGUMENTS]
@@ -25,7 +27,7 @@ while (($#)); do
     --settle) settle=$2; shift 2 ;;
     --rt) rt=(chrt -f 20); shift ;;
     --) shift; extra=("$@"); break ;;
-    -h | --help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "gui_idle_bench.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -71,20 +73,26 @@ for run in $(seq "$runs"); do
     kill "$pid"
     wait "$runner" 2>/dev/null || true
     cpu=$(awk -v a="$before" -v b="$after" -v s="$seconds" -v t="$tck" 'BEGIN { printf "%.2f", 100 * (b - a) / (s * t) }')
-    printf 'run %d: %s %% of a core, %.0f MB resident; threads:' "$run" "$cpu" "$rss"
+    devices=$(join -a2 -e0 -o 0,1.2,2.2 "$home/threads.before" "$home/threads.after" |
+        awk -v s="$seconds" -v t="$tck" '$1 == "demo_devices" { d = $3 - $2 } END { printf "%.2f", 100 * d / (s * t) }')
+    gui=$(awk -v c="$cpu" -v d="$devices" 'BEGIN { printf "%.2f", c - d }')
+    printf 'run %d: %s %% of a core (GUI %s %%, demo devices %s %%), %.0f MB resident; threads:' \
+        "$run" "$cpu" "$gui" "$devices" "$rss"
     join -a2 -e0 -o 0,1.2,2.2 "$home/threads.before" "$home/threads.after" |
         awk -v s="$seconds" -v t="$tck" '{ d = $3 - $2; if (d > 0) printf " %s %.2f %%", $1, 100 * d / (s * t) }'
     echo
-    results+=("$cpu $rss")
+    results+=("$cpu $rss $gui $devices")
     rm -rf "$home"
 done
 printf '%s\n' "${results[@]}" | awk -v n="$runs" -v s="$seconds" '
-    { c[NR] = $1; m[NR] = $2 }
+    { for (k = 1; k <= 4; ++k) v[k, NR] = $k }
+    function sort(k,   a, b, t) {
+        for (a = 1; a <= NR; ++a) for (b = a + 1; b <= NR; ++b)
+            if (v[k, b] < v[k, a]) { t = v[k, a]; v[k, a] = v[k, b]; v[k, b] = t } }
+    function med(k) { return NR % 2 ? v[k, (NR + 1) / 2] : (v[k, NR / 2] + v[k, NR / 2 + 1]) / 2 }
     END {
-        for (a = 1; a <= NR; ++a) for (b = a + 1; b <= NR; ++b) {
-            if (c[b] < c[a]) { t = c[a]; c[a] = c[b]; c[b] = t }
-            if (m[b] < m[a]) { t = m[a]; m[a] = m[b]; m[b] = t } }
-        med = NR % 2 ? c[(NR + 1) / 2] : (c[NR / 2] + c[NR / 2 + 1]) / 2
-        mm = NR % 2 ? m[(NR + 1) / 2] : (m[NR / 2] + m[NR / 2 + 1]) / 2
-        printf "idle CPU (%d runs of %d s): median %.2f %% of a core (%.2f..%.2f)\n", NR, s, med, c[1], c[NR]
-        printf "resident memory: median %.0f MB (%.0f..%.0f)\n", mm, m[1], m[NR] }'
+        for (k = 1; k <= 4; ++k) sort(k)
+        printf "idle CPU (%d runs of %d s): median %.2f %% of a core (%.2f..%.2f)\n", NR, s, med(1), v[1, 1], v[1, NR]
+        printf "idle CPU of the GUI without the demo devices: median %.2f %% of a core (%.2f..%.2f)\n", med(3), v[3, 1], v[3, NR]
+        printf "idle CPU of the demo devices thread: median %.2f %% of a core (%.2f..%.2f)\n", med(4), v[4, 1], v[4, NR]
+        printf "resident memory: median %.0f MB (%.0f..%.0f)\n", med(2), v[2, 1], v[2, NR] }'

@@ -1,5 +1,6 @@
 #include "reply.h"
 
+#include <QAbstractEventDispatcher>
 #include <QBasicTimer>
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -20,9 +21,12 @@ struct Tr
 namespace db {
 
 // Emits finished() of the replies of one thread from its event loop, in the order they
-// finished, through one zero timer. A posted event per reply would wake the event dispatcher
-// (a write and a read on its wake-up descriptor and one more poll) for every request, which is
-// a large part of a round trip on a fast link.
+// finished. A posted event per reply would wake the event dispatcher (a write and a read on its
+// wake-up descriptor and one more poll) for every request, and even one zero timer costs a pass
+// of the loop with a poll of its own: so the replies are delivered when the loop is about to wait
+// (QAbstractEventDispatcher::aboutToBlock, between two passes, with no handler of anyone else on
+// the stack). The zero timer is only the fallback for loops that never wait (processEvents()
+// without WaitForMoreEvents) and for replies finished by a finished() handler.
 class Reply::FinishedQueue : public QObject
 {
 public:
@@ -34,25 +38,55 @@ public:
         queue->m_pending.append(reply);
         if (!queue->m_timer.isActive())
             queue->m_timer.start(0, queue.get());
+        queue->watchDispatcher();
     }
 
 protected:
     void timerEvent(QTimerEvent *event) override
     {
-        if (event->timerId() != m_timer.timerId())
-            return;
-        m_timer.stop();
-        // Replies finished by a finished() handler wait for the next pass.
-        const QList<QPointer<Reply>> due = std::exchange(m_pending, {});
-        for (const QPointer<Reply> &reply : due) {
-            if (reply) // the requester may have deleted it meanwhile
-                reply->deliverFinished();
-        }
+        if (event->timerId() == m_timer.timerId())
+            deliver();
     }
 
 private:
+    void watchDispatcher()
+    {
+        if (m_dispatcher)
+            return;
+        m_dispatcher = QAbstractEventDispatcher::instance(thread());
+        if (m_dispatcher)
+            connect(m_dispatcher, &QAbstractEventDispatcher::aboutToBlock, this,
+                    &FinishedQueue::deliver, Qt::DirectConnection);
+    }
+
+    void deliver()
+    {
+        if (m_pending.isEmpty())
+            return;
+        // Replies finished by a finished() handler wait for the next pass. The two lists swap
+        // roles and keep their capacity, so a round trip allocates nothing here; a handler that
+        // runs a nested event loop delivers from a list of its own.
+        QList<QPointer<Reply>> nested;
+        QList<QPointer<Reply>> &due = m_delivering ? nested : m_spare;
+        const bool outer = !m_delivering;
+        m_delivering = true;
+        due.swap(m_pending);
+        for (const QPointer<Reply> &reply : std::as_const(due)) {
+            if (reply) // the requester may have deleted it meanwhile
+                reply->deliverFinished();
+        }
+        due.clear();
+        if (outer)
+            m_delivering = false;
+        if (m_pending.isEmpty())
+            m_timer.stop();
+    }
+
     QList<QPointer<Reply>> m_pending;
+    QList<QPointer<Reply>> m_spare; // the list being delivered, empty between passes
+    bool m_delivering = false;
     QBasicTimer m_timer;
+    QPointer<QAbstractEventDispatcher> m_dispatcher;
 };
 
 Reply::Reply(ObjectAddress address, QObject *parent)

@@ -27,6 +27,9 @@ private Q_SLOTS:
     void finishedNeedsNoEventPerReply();
     void repliesFinishedTogetherSignalInOrder();
     void replyDeletedBeforeDeliveryIsSkipped();
+    void finishedComesWithoutATimerPass();
+    void finishedComesFromLoopsThatNeverWait();
+    void replyFinishedByAHandlerComesInTheNextPass();
 };
 
 void TestReply::finishesExactlyOnce()
@@ -186,6 +189,75 @@ void TestReply::replyDeletedBeforeDeliveryIsSkipped()
     delete gone;
     QVERIFY(keptFinished.wait(1000));
     QCOMPARE(keptFinished.count(), 1);
+}
+
+namespace {
+// Counts the timer events of every object of the thread.
+struct TimerEventCounter : QObject
+{
+    int count = 0;
+    bool eventFilter(QObject *, QEvent *event) override
+    {
+        if (event->type() == QEvent::Timer)
+            ++count;
+        return false;
+    }
+};
+} // namespace
+
+// A reply finished while the event loop handles something (here a queued call; on a link the
+// answer's socket notification) signals when the loop is about to wait again: no timer and no
+// extra pass of the loop, whose poll would be one more system call per round trip.
+void TestReply::finishedComesWithoutATimerPass()
+{
+    Reply reply;
+    TimerEventCounter timers;
+    QCoreApplication::instance()->installEventFilter(&timers);
+    QSignalSpy finished(&reply, &Reply::finished);
+    QMetaObject::invokeMethod(
+        this, [&reply] { reply.finish(7); }, Qt::QueuedConnection);
+    QVERIFY(finished.wait(1000));
+    QCoreApplication::instance()->removeEventFilter(&timers);
+    QCOMPARE(timers.count, 0);
+    QCOMPARE(reply.value().toInt(), 7);
+}
+
+// A loop that only polls (processEvents() without waiting) never gets to "about to wait": the
+// replies still come, through the zero timer.
+void TestReply::finishedComesFromLoopsThatNeverWait()
+{
+    Reply reply;
+    bool signalled = false;
+    connect(&reply, &Reply::finished, this, [&] { signalled = true; });
+    reply.finish(1);
+    QElapsedTimer spent;
+    spent.start();
+    while (!signalled && spent.elapsed() < 1000)
+        QCoreApplication::processEvents();
+    QVERIFY(signalled);
+}
+
+// A reply finished from another reply's finished() handler is not delivered inside that
+// handler but in a later pass, and both arrive once.
+void TestReply::replyFinishedByAHandlerComesInTheNextPass()
+{
+    Reply first;
+    Reply second;
+    QList<int> order;
+    bool insideFirst = false;
+    connect(&first, &Reply::finished, this, [&] {
+        insideFirst = true;
+        second.finish(2);
+        order.append(1);
+        insideFirst = false;
+    });
+    connect(&second, &Reply::finished, this, [&] {
+        QVERIFY(!insideFirst);
+        order.append(2);
+    });
+    first.finish(1);
+    QTRY_COMPARE(order.size(), 2);
+    QCOMPARE(order, QList<int>({ 1, 2 }));
 }
 
 #include "tst_reply.moc"

@@ -19,12 +19,39 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 using namespace db;
 using db::test::ScriptedCanBus;
 using db::widgets::CanMonitor;
 using db::widgets::CanMonitorModel;
 using db::widgets::FrameSender;
+
+namespace {
+// Counts the events of one type a watched object receives.
+class EventCounter : public QObject
+{
+public:
+    EventCounter(QObject *watched, QEvent::Type type, int *count)
+        : m_type(type)
+        , m_count(count)
+    {
+        watched->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject *, QEvent *event) override
+    {
+        if (event->type() == m_type)
+            ++*m_count;
+        return false;
+    }
+
+private:
+    QEvent::Type m_type;
+    int *m_count;
+};
+} // namespace
 
 // Level 4: the CAN monitor offscreen against a ScriptedCanBus (frames of movingcap.md 4.3) and,
 // end to end, against the demo drive's SLCAN door.
@@ -87,6 +114,31 @@ private Q_SLOTS:
         QCOMPARE(cell(monitor, 6, CanMonitorModel::Node), QStringLiteral("50"));
         QCOMPARE(monitor.model()->entry(1).decoded.text,
                  QStringLiteral("SDO tx node 50: upload 6041:0 Statusword → 0x0427"));
+    }
+
+    // New frames scroll the table and change the frame count; the count repaints itself but
+    // lays out nothing (a label's new text used to lay out the whole window at every batch).
+    void newFramesDoNotLayOutTheWindow()
+    {
+        ScriptedCanBus bus;
+        QWidget window;
+        auto *layout = new QVBoxLayout(&window);
+        auto *monitor = new CanMonitor(&window);
+        layout->addWidget(monitor);
+        setUp(*monitor, bus);
+        window.resize(800, 400);
+        window.show();
+        playTraffic(bus);
+        playTraffic(bus);
+        QTRY_COMPARE(monitor->model()->rowCount(), 14);
+        QCoreApplication::processEvents();
+        int layouts = 0;
+        auto *counter = new EventCounter(monitor, QEvent::LayoutRequest, &layouts);
+        playTraffic(bus);
+        QTRY_COMPARE(monitor->model()->rowCount(), 21);
+        QCoreApplication::processEvents();
+        QCOMPARE(layouts, 0);
+        delete counter;
     }
 
     void answersSentFromAReceiveHandlerComeAfterTheirCause()

@@ -35,6 +35,28 @@ void fillHealthyDrive(FakeConnection &fake)
     fake.setValue({ 0x60FD, 0 }, QVariant::fromValue<qulonglong>(0));
     fake.setValue({ 0x60FE, 1 }, QVariant::fromValue<qulonglong>(0));
 }
+// Counts the events of one type a watched object receives.
+class EventCounter : public QObject
+{
+public:
+    EventCounter(QObject *watched, QEvent::Type type)
+        : m_type(type)
+    {
+        watched->installEventFilter(this);
+    }
+    int count = 0;
+
+protected:
+    bool eventFilter(QObject *, QEvent *event) override
+    {
+        if (event->type() == m_type)
+            ++count;
+        return false;
+    }
+
+private:
+    QEvent::Type m_type;
+};
 } // namespace
 
 class TestDriveStatusPanel : public QObject
@@ -70,6 +92,33 @@ private Q_SLOTS:
         QVERIFY(!lamp(panel, QStringLiteral("bit_0008"))->isOn()); // fault
         QVERIFY(!lamp(panel, QStringLiteral("bit_0100"))->isOn()); // moving
         QCOMPARE(labelText(panel, "lastErrorText"), QStringLiteral("No error"));
+    }
+
+    // A cycle that brings the same values repaints nothing that changed and lays out nothing:
+    // re-setting the badge's style sheet re-polished it and laid out the whole window each time.
+    void unchangedCyclesNeitherRestyleNorLayOut()
+    {
+        FakeConnection fake;
+        fillHealthyDrive(fake);
+        QWidget window;
+        auto *panel = new DriveStatusPanel(&window);
+        panel->setPollInterval(10);
+        QSignalSpy cycles(panel, &DriveStatusPanel::cycleFinished);
+        panel->setConnection(&fake);
+        window.show();
+        fake.open();
+        QTRY_VERIFY(cycles.count() >= 2);
+        QTRY_COMPARE(labelText(*panel, "stateName"), QStringLiteral("Operation enabled"));
+        QCoreApplication::processEvents();
+        auto *badge = panel->findChild<QLabel *>(QStringLiteral("stateName"));
+        QVERIFY(badge);
+        const EventCounter restyled(badge, QEvent::StyleChange);
+        const EventCounter laidOut(panel, QEvent::LayoutRequest);
+        const qsizetype before = cycles.count();
+        QTRY_VERIFY(cycles.count() >= before + 5);
+        QCoreApplication::processEvents();
+        QCOMPARE(restyled.count, 0);
+        QCOMPARE(laidOut.count, 0);
     }
 
     void underVoltageFaultShowsDeviceText()

@@ -279,7 +279,7 @@ void CanMonitor::updateStatus()
         text += tr(" — paused, %1 waiting").arg(m_model->pendingCount());
     if (!bus())
         text += tr(" — no CAN bus");
-    m_status->setText(text);
+    style::setFrequentText(m_status, text); // changes with every batch of frames
 }
 
 Result<void> CanMonitor::saveLog(const QString &path, const QString &interface) const

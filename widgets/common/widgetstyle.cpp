@@ -45,6 +45,20 @@ void setTextColor(QWidget *widget, const QColor &color)
     widget->setPalette(pal);
 }
 
+void setFrequentText(QLabel *label, const QString &text)
+{
+    if (label->text() == text)
+        return;
+    label->setText(text);
+    const QSize hint = label->sizeHint();
+    const int step = 4 * qMax(1, label->fontMetrics().averageCharWidth());
+    const int fixed = label->minimumWidth() == label->maximumWidth() ? label->maximumWidth() : 0;
+    if (hint.width() > fixed || hint.width() < fixed / 2)
+        label->setFixedWidth((hint.width() + step - 1) / step * step);
+    if (label->minimumHeight() != hint.height() || label->maximumHeight() != hint.height())
+        label->setFixedHeight(hint.height());
+}
+
 QString toolTip(const QString &plainText)
 {
     if (plainText.isEmpty())

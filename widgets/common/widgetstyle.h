@@ -36,6 +36,11 @@ QString toolTip(const QString &plainText);
 void setStale(QLabel *label, bool stale);
 // Sets the text colour of a label (invalid colour = the palette's).
 void setTextColor(QWidget *widget, const QColor &color);
+// A text that changes often (a counter, a clock): the label gets a fixed size, so that a new
+// text repaints the label alone instead of laying out the whole window. The width grows in steps
+// of four average characters when the text needs more room and shrinks when it needs less than
+// half of it.
+void setFrequentText(QLabel *label, const QString &text);
 
 // A round icon in the colour of a connection state.
 QIcon connectionStateIcon(DeviceConnection::State state);

@@ -135,19 +135,22 @@ void DriveStatusPanel::render()
 void DriveStatusPanel::renderFooter()
 {
     if (!m_connection) {
-        m_footer->setText(tr("No device selected."));
+        style::setFrequentText(m_footer, tr("No device selected."));
     } else if (!m_connection->isConnected()) {
-        m_footer->setText(
+        style::setFrequentText(
+            m_footer,
             tr("%1 is %2.").arg(m_connection->uri().toString(), stateName(m_connection->state())));
     } else if (m_source && !m_source->errors().isEmpty()) {
         const auto first = m_source->errors().constBegin();
-        m_footer->setText(
+        style::setFrequentText(
+            m_footer,
             tr("%n read(s) failed; %1: %2", nullptr, int(m_source->errors().size()))
                 .arg(m_connection->addressFormat().format(first.key()), first.value()));
     } else if (m_source && m_source->cycles() > 0) {
-        m_footer->setText(tr("Updated %1, every %2 ms")
-                              .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")))
-                              .arg(m_intervalMs));
+        style::setFrequentText(m_footer,
+                               tr("Updated %1, every %2 ms")
+                                   .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")))
+                                   .arg(m_intervalMs));
     }
 }
 
@@ -159,10 +162,13 @@ void DriveStatusPanel::renderState()
     const StatusSource::State state = m_source ? m_source->state() : StatusSource::State::Unknown;
     m_stateLabel->setText(valid ? StatusSource::stateText(state) : tr("No status"));
     const QColor badge = valid && !stale ? stateColor(state) : style::inactiveColor();
-    m_stateLabel->setStyleSheet(
-        QStringLiteral("QLabel { color: white; background: %1; border-radius: 5px; "
-                       "padding: 8px 16px; }")
-            .arg(badge.name()));
+    // A style sheet set again re-polishes the label and lays out the whole window: only when the
+    // colour changes.
+    const QString sheet = QStringLiteral("QLabel { color: white; background: %1; "
+                                         "border-radius: 5px; padding: 8px 16px; }")
+                              .arg(badge.name());
+    if (m_stateLabel->styleSheet() != sheet)
+        m_stateLabel->setStyleSheet(sheet);
     m_stateLabel->setToolTip(word.error);
     showValue(m_statuswordLabel, word);
     const quint32 sw = quint32(word.raw.toULongLong());
