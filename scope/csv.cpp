@@ -1,5 +1,6 @@
 #include "csv.h"
 #include "core/filereader.h"
+#include "core/filewriter.h"
 
 #include "core/printable.h"
 
@@ -195,6 +196,7 @@ QByteArray toCsv(const Recording &recording, double t0, double t1)
 
 Result<void> save(const QString &fileName, const Recording &recording, double t0, double t1)
 {
+    db::files::removeStaleTemporaries(fileName); // what a killed writer left
     QSaveFile file(fileName);
     if (!file.open(QIODevice::WriteOnly))
         return Error(Error::Kind::Io,

@@ -1,5 +1,6 @@
 #include "commands_canopen.h"
 #include "core/filereader.h"
+#include "core/filewriter.h"
 
 #include "networksession.h"
 
@@ -342,6 +343,7 @@ int saveValueToFile(Context &c, DataType type, const QVariant &raw)
         bytes = encoded.value();
     else
         return fail(c, encoded.error());
+    db::files::removeStaleTemporaries(c.file); // what a killed writer left
     QSaveFile file(c.file);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
         return fail(

@@ -1,4 +1,5 @@
 #include "changelog.h"
+#include "filewriter.h"
 
 #include "deviceconnection.h"
 #include "reply.h"
@@ -231,6 +232,7 @@ QString ChangeLog::toCsv() const
 
 Error ChangeLog::saveCsv(const QString &path) const
 {
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
         return Error(Error::Kind::Io,

@@ -1,4 +1,5 @@
 #include "dcfwriter.h"
+#include "core/filewriter.h"
 
 #include "descriptionlibrary.h"
 #include "devicedescription.h"
@@ -193,6 +194,7 @@ Result<void> writeDcf(const QString &path, const ObjectDictionary &dictionary,
                       const QMap<ObjectAddress, QVariant> &values,
                       const DcfCommissioning &commissioning)
 {
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));

@@ -1,4 +1,5 @@
 #include "descriptionlibrary.h"
+#include "core/filewriter.h"
 
 #include "devicedescription.h"
 
@@ -161,6 +162,7 @@ Result<QString> DescriptionLibrary::addFile(const QString &path)
     QFile in(path);
     if (!in.open(QIODevice::ReadOnly))
         return Error(Error::Kind::Io, Tr::tr("cannot read %1: %2").arg(path, in.errorString()));
+    db::files::removeStaleTemporaries(target); // what a killed writer left
     QSaveFile out(target);
     if (!out.open(QIODevice::WriteOnly) || out.write(in.readAll()) < 0 || !out.commit())
         return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(target, out.errorString()));

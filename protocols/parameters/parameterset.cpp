@@ -1,5 +1,6 @@
 #include "parameterset.h"
 #include "core/filereader.h"
+#include "core/filewriter.h"
 #include "core/printable.h"
 
 #include <QFile>
@@ -171,6 +172,7 @@ QByteArray ParameterSet::serialize(const QStringList &comments) const
 
 Result<void> ParameterSet::save(const QString &path, const QStringList &comments) const
 {
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return Error(Error::Kind::Io, Tr::tr("cannot write %1: %2").arg(path, file.errorString()));

@@ -117,6 +117,13 @@ void TcpStream::onSocketError(QAbstractSocket::SocketError error)
     setClosed(e);
 }
 
+TcpStream::~TcpStream()
+{
+    // Members die in reverse order: m_connectTimer before m_socket, whose destructor still
+    // emits disconnected(). Nothing of the socket reaches this object any more.
+    m_socket.disconnect(this);
+}
+
 void TcpStream::onDisconnected()
 {
     m_connectTimer.stop();

@@ -25,6 +25,9 @@ public:
     static constexpr qint64 kReadBufferBytes = 64 * 1024;
 
     TcpStream(const QString &host, quint16 port, QObject *parent = nullptr);
+    // Closes without a closed() signal: the socket's own destructor would report its close into
+    // this object after the timer member is gone.
+    ~TcpStream() override;
 
     void setConnectTimeoutMs(int ms) override { m_connectTimeoutMs = ms; }
     QString peerName() const override;

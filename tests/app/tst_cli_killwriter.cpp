@@ -6,8 +6,10 @@
 #include "parameters/parameterset.h"
 #include "scope/csv.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QRandomGenerator>
 #include <QRegularExpression>
@@ -30,6 +32,19 @@ bool writeFile(const QString &path, const QByteArray &bytes)
 {
     QFile f(path);
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
+}
+
+// Files next to `path` named like a temporary of it: "<name>." and six more characters.
+QStringList temporariesOf(const QString &path)
+{
+    const QFileInfo info(path);
+    QStringList found;
+    for (const QString &name : info.dir().entryList(QDir::Files | QDir::Hidden)) {
+        if (name.size() == info.fileName().size() + 7
+            && name.startsWith(info.fileName() + QLatin1Char('.')))
+            found.append(name);
+    }
+    return found;
 }
 
 } // namespace
@@ -63,16 +78,26 @@ private:
                                                                       : QStringLiteral("cut");
     }
 
+    // A run that ended normally. A recording that lost samples on a busy machine says so and
+    // exits with 1, but still writes its whole file (the gaps marked): that counts too.
+    static bool wroteItsFile(const test::CliRun &run)
+    {
+        return run.exitCode == 0
+            || (run.exitCode == 1 && run.err.contains(QLatin1String("samples were lost")));
+    }
+
     QStringList argsFor(const QString &kind, const QString &path) const
     {
         if (kind == QLatin1String("backup"))
             return { QStringLiteral("backup"), m_refgo, QStringLiteral("-o"), path };
         if (kind == QLatin1String("record"))
-            return { QStringLiteral("record"),     m_refgo,
-                     QStringLiteral("--obj"),      QStringLiteral("6064:0"),
-                     QStringLiteral("--obj"),      QStringLiteral("6041:0"),
+            return { QStringLiteral("record"), m_refgo, QStringLiteral("--obj"),
+                     QStringLiteral("6064:0"), QStringLiteral("--obj"), QStringLiteral("6041:0"),
                      QStringLiteral("--duration"), QStringLiteral("0.3"),
-                     QStringLiteral("-o"),         path };
+                     // 50 ms: a busy machine (or a sanitizer build) keeps up, so the run that
+                     // must succeed does not fail for lost samples; the file is what counts.
+                     QStringLiteral("--rate-ms"), QStringLiteral("50"), QStringLiteral("-o"),
+                     path };
         return { QStringLiteral("dcf"), m_refgo, QStringLiteral("-o"), path };
     }
 
@@ -118,7 +143,7 @@ private Q_SLOTS:
         // A good file of this kind first, and how long a whole run takes.
         const test::CliRun first =
             test::runProgram(QStringLiteral(DRIVEBENCH_CLI), argsFor(kind, path), 30000);
-        QVERIFY2(first.exitCode == 0, qPrintable(first.err));
+        QVERIFY2(wroteItsFile(first), qPrintable(first.err));
         QCOMPARE(judge(kind, path), QStringLiteral("complete"));
         const QByteArray old = contents(path);
         QVERIFY(!old.isEmpty());
@@ -153,9 +178,30 @@ private Q_SLOTS:
                                     .arg(verdict)));
             ++wroteNew;
         }
-        qInfo("%s: %d runs killed at random moments: %d left the old file, %d a complete new one",
-              qPrintable(kind), kRuns, keptOld, wroteNew);
+        const QStringList leftovers = temporariesOf(path);
+        qInfo("%s: %d runs killed at random moments: %d left the old file, %d a complete new "
+              "one; %lld temporary files left",
+              qPrintable(kind), kRuns, keptOld, wroteNew, qlonglong(leftovers.size()));
         QCOMPARE(keptOld + wroteNew, kRuns);
+
+        // Temporaries a killed writer left (named ones exist where the file system has no
+        // unnamed files, and for an instant during the rename) go with the next complete
+        // write once they are a minute old; one more is planted so that this is always tried.
+        const QDateTime stale = QDateTime::currentDateTime().addSecs(-120);
+        QFile planted(path + QStringLiteral(".kIlLeD"));
+        QVERIFY(planted.open(QIODevice::WriteOnly) && planted.write(old.left(old.size() / 2)) > 0
+                && planted.flush());
+        planted.close();
+        for (const QString &name : temporariesOf(path)) {
+            QFile f(m_dir.filePath(name));
+            QVERIFY(f.open(QIODevice::ReadWrite)
+                    && f.setFileTime(stale, QFileDevice::FileModificationTime));
+        }
+        const test::CliRun last =
+            test::runProgram(QStringLiteral(DRIVEBENCH_CLI), argsFor(kind, path), 30000);
+        QVERIFY2(wroteItsFile(last), qPrintable(last.err));
+        QCOMPARE(judge(kind, path), QStringLiteral("complete"));
+        QCOMPARE(temporariesOf(path), QStringList());
     }
 };
 

@@ -11,6 +11,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <memory>
+
 using namespace db;
 using db::test::FakeConnection;
 
@@ -43,6 +45,7 @@ private Q_SLOTS:
         QSignalSpy added(&log, &ChangeLog::entryAdded);
         QSignalSpy changed(&log, &ChangeLog::entryChanged);
         Reply *reply = c.write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(2000));
+        const std::unique_ptr<Reply> owned(reply); // the requester owns its reply
         const int id = log.track(
             ChangeLog::writeEntry(c, { 0x6083, 0 }, QStringLiteral("1000"), QStringLiteral("2000")),
             reply);
@@ -69,8 +72,10 @@ private Q_SLOTS:
         c.setFailure({ 0x6083, 0 },
                      Error(Error::Kind::DeviceError, QStringLiteral("value range exceeded")));
         ChangeLog log;
+        const std::unique_ptr<Reply> reply(
+            c.write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(9)));
         const int id = log.track(ChangeLog::writeEntry(c, { 0x6083, 0 }, {}, QStringLiteral("9")),
-                                 c.write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(9)));
+                                 reply.get());
         QTRY_COMPARE(log.find(id)->outcome, ChangeLog::Outcome::Failed);
         QVERIFY(log.find(id)->message.contains(QLatin1String("value range exceeded")));
         // Without a permanent store on the device nothing is "not stored"; a failure never is.

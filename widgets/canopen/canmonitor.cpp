@@ -1,4 +1,5 @@
 #include "canmonitor.h"
+#include "core/filewriter.h"
 
 #include "canmonitorlog.h"
 #include "canopen/cannetwork.h"
@@ -286,6 +287,7 @@ Result<void> CanMonitor::saveLog(const QString &path, const QString &interface) 
 {
     const QString iface =
         !interface.isEmpty() ? interface : candump::interfaceName(bus() ? bus()->name() : QString());
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
         return Error(Error::Kind::Io, tr("Cannot write %1: %2").arg(path, file.errorString()));

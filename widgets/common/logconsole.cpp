@@ -1,4 +1,5 @@
 #include "logconsole.h"
+#include "core/filewriter.h"
 
 #include "widgetstyle.h"
 
@@ -252,6 +253,7 @@ QString LogConsole::shownText() const
 
 QString LogConsole::save(const QString &path) const
 {
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     const QByteArray bytes = shownText().toUtf8();
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(bytes) != bytes.size()

@@ -1,4 +1,5 @@
 #include "paramcompareview.h"
+#include "core/filewriter.h"
 
 #include "core/printable.h"
 #include "paramcomparemodel.h"
@@ -286,6 +287,7 @@ Result<void> ParamCompareView::saveReportCsv(const QString &path) const
         cells << field(row.unit) << compareStatusName(row.status);
         lines << cells.join(QLatin1Char(','));
     }
+    db::files::removeStaleTemporaries(path); // what a killed writer left
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)
         || file.write((lines.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8()) < 0

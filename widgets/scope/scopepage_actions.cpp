@@ -2,6 +2,7 @@
 #include "scopepage.h"
 
 #include "core/deviceconnection.h"
+#include "core/filewriter.h"
 #include "scope/csv.h"
 #include "scope/pollingsource.h"
 #include "scope/recorder.h"

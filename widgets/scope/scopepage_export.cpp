@@ -1,6 +1,8 @@
 // ScopePage: CSV and image export (the image with a header naming devices, time and trigger).
 #include "scopepage.h"
 
+#include "core/filewriter.h"
+
 #include "scope/csv.h"
 #include "scope/recorder.h"
 #include "scopeplot.h"
@@ -38,7 +40,8 @@ Result<void> ScopePage::exportImage(const QString &fileName) const
     // QCustomPlot writes by file name, so the image goes to a temporary file next to the
     // target that then replaces it in one rename: an export that fails or is interrupted
     // leaves the old file as it was and no half-written image.
-    QTemporaryFile temp(QFileInfo(fileName).absolutePath() + QStringLiteral("/.XXXXXX.") + suffix);
+    db::files::removeStaleTemporaries(fileName); // what a killed export left
+    QTemporaryFile temp(db::files::temporaryTemplate(fileName));
     if (!temp.open())
         return Error(Error::Kind::Io,
                      tr("%1: cannot be written: %2").arg(fileName, temp.errorString()));
