@@ -2,6 +2,80 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>ComparisonReport</name>
+    <message>
+        <source>Parameter Comparison</source>
+        <translation>Parametervergleich</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>Datum:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>Vendor:</source>
+        <translation>Hersteller:</translation>
+    </message>
+    <message>
+        <source>Product:</source>
+        <translation>Produkt:</translation>
+    </message>
+    <message>
+        <source>Revision:</source>
+        <translation>Revision:</translation>
+    </message>
+    <message>
+        <source>Serial number:</source>
+        <translation>Seriennummer:</translation>
+    </message>
+    <message>
+        <source>Parameter set:</source>
+        <translation>Parametersatz:</translation>
+    </message>
+    <message>
+        <source>Compared with:</source>
+        <translation>Verglichen mit:</translation>
+    </message>
+    <message>
+        <source>Result:</source>
+        <translation>Ergebnis:</translation>
+    </message>
+    <message>
+        <source>No differences</source>
+        <translation>Keine Unterschiede</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n Unterschied</numerusform>
+            <numerusform>%n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Report not saved to %1: %2</source>
+        <translation>Bericht nicht in %1 gespeichert: %2</translation>
+    </message>
+</context>
+<context>
     <name>MotionChangeLog</name>
     <message>
         <source>target %1 at %2</source>
@@ -38,6 +112,10 @@
     <message>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>ratio %1:%2</source>
+        <translation>Übersetzung %1:%2</translation>
     </message>
 </context>
 <context>
@@ -1028,10 +1106,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>move: Weg ab dem letzten Ziel (MC_MoveAdditive).</translation>
     </message>
     <message>
-        <source>move, jog, home: acceleration (units/s²).</source>
-        <translation>move, jog, home: Beschleunigung (Einheiten/s²).</translation>
-    </message>
-    <message>
         <source>motion commands: longest wait for the end (ms, default 60000).</source>
         <translation>Bewegungsbefehle: längste Wartezeit auf das Ende (ms, Standard 60000).</translation>
     </message>
@@ -1523,14 +1597,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>move, jog, velocity, home: velocity (units/s).</source>
         <translation>move, jog, velocity, home: Geschwindigkeit (Einheiten/s).</translation>
     </message>
-    <message>
-        <source>move, jog, velocity, halt, stop: deceleration (units/s²).</source>
-        <translation>move, jog, velocity, halt, stop: Verzögerung (Einheiten/s²).</translation>
-    </message>
-    <message>
-        <source>jog, velocity: how long to move (ms).</source>
-        <translation>jog, velocity: Fahrdauer (ms).</translation>
-    </message>
     <message numerus="yes">
         <source>%1 kbit/s: %n display(s)</source>
         <translation>
@@ -1674,6 +1740,70 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>drivebench-cli: warning: the drive has no profile position mode, so MC_MoveVelocity cannot move in leases, and nothing on the drive&apos;s side stops it if drivebench-cli dies on this connection</source>
         <translation>drivebench-cli: Warnung: Der Antrieb hat keinen Profile-Position-Modus, daher kann MC_MoveVelocity nicht in befristeten Abschnitten fahren, und nichts auf der Seite des Antriebs hält ihn an, wenn drivebench-cli auf dieser Verbindung ausfällt</translation>
     </message>
+    <message>
+        <source>couple the axis to its master at N:D (electronic gear) for MS ms, then uncouple; --out uncouples a running gear</source>
+        <translation>die Achse für MS ms mit N:D an ihren Master kuppeln (elektronisches Getriebe), dann auskuppeln; --out kuppelt ein laufendes Getriebe aus</translation>
+    </message>
+    <message>
+        <source>--ratio takes NUMERATOR:DENOMINATOR (e.g. 3:2), not &apos;%1&apos;</source>
+        <translation>--ratio erwartet ZÄHLER:NENNER (z. B. 3:2), nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>--ratio %1: the numerator must not be 0 and the denominator must be at least 1</source>
+        <translation>--ratio %1: der Zähler darf nicht 0 sein, und der Nenner muss mindestens 1 sein</translation>
+    </message>
+    <message>
+        <source>--%1 takes a ramp &gt;= 0 (units/s²)</source>
+        <translation>--%1 erwartet eine Rampe &gt;= 0 (Einheiten/s²)</translation>
+    </message>
+    <message>
+        <source>gear: slave turns per master turn, NUMERATOR:DENOMINATOR.</source>
+        <translation>gear: Umdrehungen des Slaves je Umdrehung des Masters, ZÄHLER:NENNER.</translation>
+    </message>
+    <message>
+        <source>gear: uncouple a gear started elsewhere.</source>
+        <translation>gear: ein anderswo gestartetes Getriebe auskuppeln.</translation>
+    </message>
+    <message>
+        <source>gear takes --ratio N:D --time MS, or --out</source>
+        <translation>gear erwartet --ratio N:D --time MS oder --out</translation>
+    </message>
+    <message>
+        <source>gear --ratio needs --time MS: how long the axis follows its master</source>
+        <translation>gear --ratio braucht --time MS: wie lange die Achse ihrem Master folgt</translation>
+    </message>
+    <message>
+        <source>--time takes ms &gt;= 0</source>
+        <translation>--time erwartet ms &gt;= 0</translation>
+    </message>
+    <message>
+        <source>in gear %1:%2 after %3 ms</source>
+        <translation>eingekuppelt mit %1:%2 nach %3 ms</translation>
+    </message>
+    <message>
+        <source>MC_GearOut: the axis did not stop within %1 ms (--wait); quick stop</source>
+        <translation>MC_GearOut: die Achse hat nicht innerhalb von %1 ms angehalten (--wait); Schnellhalt</translation>
+    </message>
+    <message>
+        <source>move, jog, home, gear: acceleration (units/s²).</source>
+        <translation>move, jog, home, gear: Beschleunigung (Einheiten/s²).</translation>
+    </message>
+    <message>
+        <source>move, jog, velocity, halt, stop, gear: deceleration (units/s²).</source>
+        <translation>move, jog, velocity, halt, stop, gear: Verzögerung (Einheiten/s²).</translation>
+    </message>
+    <message>
+        <source>jog, velocity, gear: how long to move (ms).</source>
+        <translation>jog, velocity, gear: Fahrdauer (ms).</translation>
+    </message>
+    <message>
+        <source>cannot check the device&apos;s serial number (1018h.4); --ignore-identity restores without the check</source>
+        <translation>die Seriennummer des Geräts (1018h.4) lässt sich nicht prüfen; --ignore-identity stellt ohne die Prüfung wieder her</translation>
+    </message>
+    <message>
+        <source>%1 was read from another unit (serial number %2), the device reports %3; give --ignore-identity to restore it to this unit</source>
+        <translation>%1 wurde von einem anderen Exemplar gelesen (Seriennummer %2), das Gerät meldet %3; geben Sie --ignore-identity an, um ihn auf dieses Exemplar wiederherzustellen</translation>
+    </message>
 </context>
 <context>
     <name>db::AddressFormat</name>
@@ -1763,6 +1893,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>CAN frame</source>
+        <translation>CAN-Frame</translation>
     </message>
 </context>
 <context>
@@ -2399,6 +2533,26 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>the inverter did not report &apos;in gear&apos; (status bit 10) within %1 s</source>
         <translation>der Umrichter hat nicht innerhalb von %1 s „eingekuppelt“ (Statusbit 10) gemeldet</translation>
     </message>
+    <message>
+        <source>gear ratio %1:%2: the numerator must not be 0 and the denominator must be at least 1</source>
+        <translation>Getriebeübersetzung %1:%2: der Zähler darf nicht 0 sein, und der Nenner muss mindestens 1 sein</translation>
+    </message>
+    <message>
+        <source>not coupled: the inverter is not in electronic gear mode (1454 = -3)</source>
+        <translation>nicht eingekuppelt: der Umrichter ist nicht in der Betriebsart elektronisches Getriebe (1454 = -3)</translation>
+    </message>
+    <message>
+        <source>leaving the electronic gear</source>
+        <translation>Verlassen des elektronischen Getriebes</translation>
+    </message>
+    <message>
+        <source>the connection has no status source</source>
+        <translation>die Verbindung hat keine Statusquelle</translation>
+    </message>
+    <message>
+        <source>411 was not read</source>
+        <translation>411 wurde nicht gelesen</translation>
+    </message>
 </context>
 <context>
     <name>db::bonfiglioli::AcuStatusSource</name>
@@ -2990,6 +3144,21 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     </message>
 </context>
 <context>
+    <name>db::canopen::NmtAnswer</name>
+    <message>
+        <source>not confirmed: node %1 sends no heartbeat</source>
+        <translation>nicht bestätigt: Knoten %1 sendet keinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>no answer: node %1 sent no heartbeat within %2 ms</source>
+        <translation>keine Antwort: Knoten %1 sandte innerhalb von %2 ms keinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>node %1 did not follow: it stays %2</source>
+        <translation>Knoten %1 ist nicht gefolgt: er bleibt %2</translation>
+    </message>
+</context>
+<context>
     <name>db::canopen::SdoAbort</name>
     <message>
         <source>toggle bit not alternated</source>
@@ -3197,6 +3366,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>a state from which %1 can be reached</source>
         <translation>ein Zustand, von dem aus %1 erreichbar ist</translation>
+    </message>
+    <message>
+        <source>%1: no answer within %2 ms: the drive did not report its state (waiting for %3)</source>
+        <translation>%1: keine Antwort innerhalb von %2 ms: der Antrieb meldete seinen Zustand nicht (beim Warten auf %3)</translation>
+    </message>
+    <message>
+        <source>connection to %1 closed</source>
+        <translation>Verbindung zu %1 geschlossen</translation>
+    </message>
+    <message>
+        <source>the statusword was not read</source>
+        <translation>das Statuswort wurde nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -4178,14 +4359,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>Änderungen</translation>
     </message>
     <message>
-        <source>all nodes</source>
-        <translation>alle Knoten</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>Knoten %1</translation>
-    </message>
-    <message>
         <source>all parameters</source>
         <translation>alle Parameter</translation>
     </message>
@@ -4548,6 +4721,18 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>Motion block</source>
         <translation>Fahrsatz</translation>
+    </message>
+    <message>
+        <source>this drive has no electronic gear</source>
+        <translation>dieser Antrieb hat kein elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>the drive has no electronic gear</source>
+        <translation>der Antrieb hat kein elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>gear ratio needs a numerator other than 0 and a denominator of at least 1</source>
+        <translation>die Getriebeübersetzung braucht einen Zähler ungleich 0 und einen Nenner von mindestens 1</translation>
     </message>
 </context>
 <context>
@@ -5231,10 +5416,6 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <translation>kein Qt-CAN-Plugin „%1“ für Schnittstelle %2 (vorhandene Plugins: %3)</translation>
     </message>
     <message>
-        <source>%1 has no interface &apos;%2&apos; (available: %3)</source>
-        <translation>%1 hat keine Schnittstelle „%2“ (vorhanden: %3)</translation>
-    </message>
-    <message>
         <source>cannot create %1 interface &apos;%2&apos;: %3 (available: %4)</source>
         <translation>%1-Schnittstelle „%2“ kann nicht angelegt werden: %3 (vorhanden: %4)</translation>
     </message>
@@ -5357,6 +5538,14 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>disconnected from %1</source>
         <translation>Verbindung zu %1 getrennt</translation>
+    </message>
+    <message>
+        <source>CAN interface &apos;%1&apos; does not exist for plugin %2 (available: %3)</source>
+        <translation>CAN-Schnittstelle „%1“ gibt es für das Plugin %2 nicht (vorhanden: %3)</translation>
+    </message>
+    <message>
+        <source>cannot use %1 interface &apos;%2&apos;: %3 (available: %4)</source>
+        <translation>%1-Schnittstelle „%2“ ist nicht verwendbar: %3 (vorhanden: %4)</translation>
     </message>
 </context>
 <context>
@@ -6115,6 +6304,95 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Stop</source>
         <translation>Stopp</translation>
+    </message>
+    <message numerus="yes">
+        <source>every %1 ms: stopped after %n frame(s)</source>
+        <translation>
+            <numerusform>alle %1 ms: nach %n Frame gestoppt</numerusform>
+            <numerusform>alle %1 ms: nach %n Frames gestoppt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>macro stopped</source>
+        <translation>Makro gestoppt</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>einmal</translation>
+    </message>
+    <message>
+        <source>every %1 ms: started</source>
+        <translation>alle %1 ms: gestartet</translation>
+    </message>
+    <message numerus="yes">
+        <source>macro, %n step(s)</source>
+        <translation>
+            <numerusform>Makro, %n Schritt</numerusform>
+            <numerusform>Makro, %n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation>Schritt %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>db::widgets::GearBox</name>
+    <message>
+        <source>Electronic gear</source>
+        <translation>Elektronisches Getriebe</translation>
+    </message>
+    <message>
+        <source>Slave turns per master turn: numerator (negative: the other way)</source>
+        <translation>Umdrehungen des Slaves je Umdrehung des Masters: Zähler (negativ: in die andere Richtung)</translation>
+    </message>
+    <message>
+        <source>drive&apos;s own</source>
+        <translation>die des Antriebs</translation>
+    </message>
+    <message>
+        <source>Couple</source>
+        <translation>Einkuppeln</translation>
+    </message>
+    <message>
+        <source>MC_GearIn: follow the drive&apos;s master at this ratio</source>
+        <translation>MC_GearIn: dem Master des Antriebs mit dieser Übersetzung folgen</translation>
+    </message>
+    <message>
+        <source>Uncouple</source>
+        <translation>Auskuppeln</translation>
+    </message>
+    <message>
+        <source>MC_GearOut: the drive brakes the axis to a stop</source>
+        <translation>MC_GearOut: der Antrieb bremst die Achse bis zum Stillstand</translation>
+    </message>
+    <message>
+        <source>Ratio:</source>
+        <translation>Übersetzung:</translation>
+    </message>
+    <message>
+        <source>Acc.:</source>
+        <translation>Beschl.:</translation>
+    </message>
+    <message>
+        <source>Dec.:</source>
+        <translation>Verz.:</translation>
+    </message>
+    <message>
+        <source>Coupling at %1:%2 …</source>
+        <translation>Kuppelt ein mit %1:%2 …</translation>
+    </message>
+    <message>
+        <source>Uncoupling …</source>
+        <translation>Kuppelt aus …</translation>
+    </message>
+    <message>
+        <source>In gear at %1:%2</source>
+        <translation>Eingekuppelt mit %1:%2</translation>
+    </message>
+    <message>
+        <source>Uncoupled, at standstill</source>
+        <translation>Ausgekuppelt, im Stillstand</translation>
     </message>
 </context>
 <context>
@@ -7528,6 +7806,34 @@ send 605 40 08 10 00</translation>
         <source>Scanning…</source>
         <translation>Suche…</translation>
     </message>
+    <message>
+        <source>all nodes</source>
+        <translation>alle Knoten</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>Knoten %1</translation>
+    </message>
+    <message>
+        <source>%1 sent to all nodes</source>
+        <translation>%1 an alle Knoten gesendet</translation>
+    </message>
+    <message>
+        <source>%1 sent to node %2: waiting for its heartbeat</source>
+        <translation>%1 an Knoten %2 gesendet: warte auf seinen Heartbeat</translation>
+    </message>
+    <message>
+        <source>%1 to node %2: %3</source>
+        <translation>%1 an Knoten %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 sent to node %2; %3</source>
+        <translation>%1 an Knoten %2 gesendet; %3</translation>
+    </message>
+    <message>
+        <source>%1: node %2 followed</source>
+        <translation>%1: Knoten %2 ist gefolgt</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeListModel</name>
@@ -8287,16 +8593,8 @@ send 605 40 08 10 00</translation>
         <translation>&amp;Bericht speichern…</translation>
     </message>
     <message>
-        <source>Save every row of the comparison as a CSV file</source>
-        <translation>Alle Zeilen des Vergleichs als CSV-Datei speichern</translation>
-    </message>
-    <message>
         <source>Save Comparison Report</source>
         <translation>Vergleichsbericht speichern</translation>
-    </message>
-    <message>
-        <source>CSV (*.csv);;All files (*)</source>
-        <translation>CSV (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Saved the comparison to %1</source>
@@ -8345,6 +8643,42 @@ send 605 40 08 10 00</translation>
     <message>
         <source>Compared %1 with %2. Nothing has been written; Re-read Device compares with the device again.</source>
         <translation>%1 mit %2 verglichen. Nichts wurde geschrieben; Gerät neu lesen vergleicht wieder mit dem Gerät.</translation>
+    </message>
+    <message>
+        <source>Save the comparison as a PDF report (identity, date, files and the differences) or every row as a CSV file</source>
+        <translation>Den Vergleich als PDF-Bericht (Identität, Datum, Dateien und die Unterschiede) oder jede Zeile als CSV-Datei speichern</translation>
+    </message>
+    <message>
+        <source>PDF report (*.pdf)</source>
+        <translation>PDF-Bericht (*.pdf)</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Another Unit</source>
+        <translation>Anderes Exemplar</translation>
+    </message>
+    <message>
+        <source>Compare Anyway</source>
+        <translation>Trotzdem vergleichen</translation>
+    </message>
+    <message>
+        <source>The file was read from another unit of this product: serial number %1, this device reports %2 (1018h.4). Values such as calibrations and offsets belong to one unit.</source>
+        <translation>Die Datei wurde von einem anderen Exemplar dieses Produkts gelesen: Seriennummer %1, dieses Gerät meldet %2 (1018h.4). Werte wie Kalibrierungen und Offsets gehören zu einem Exemplar.</translation>
+    </message>
+    <message>
+        <source>Compared %1 with another unit. %2 Nothing has been written.</source>
+        <translation>%1 mit einem anderen Exemplar verglichen. %2 Nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Compare with this unit anyway?</source>
+        <translation>Trotzdem mit diesem Exemplar vergleichen?</translation>
+    </message>
+    <message>
+        <source>Not compared: %1</source>
+        <translation>Nicht verglichen: %1</translation>
     </message>
 </context>
 <context>
