@@ -6692,6 +6692,11 @@ send 605 40 08 10 00</translation>
         <comment>PLCopen axis state</comment>
         <translation>Homing (Referenzfahrt)</translation>
     </message>
+    <message>
+        <source>Synchronized Motion</source>
+        <comment>PLCopen axis state</comment>
+        <translation>Synchronized Motion (Synchronbetrieb)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::LogConsole</name>

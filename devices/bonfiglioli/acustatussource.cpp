@@ -208,7 +208,7 @@ void AcuStatusSource::poll()
         if (!reply->ok()) {
             // The reader writes the definition again for the next cycle.
             for (ObjectAddress address : held)
-                storeError(address, reply->error().toString());
+                storeError(address, reply->error());
             m_usedBlock = false;
         } else {
             const QVariantList values = reply->value().toList();

@@ -43,6 +43,8 @@ QString stateText(AxisState state)
         return JogPanel::tr("ErrorStop", "PLCopen axis state");
     case AxisState::Homing:
         return JogPanel::tr("Homing", "PLCopen axis state");
+    case AxisState::SynchronizedMotion:
+        return JogPanel::tr("Synchronized Motion", "PLCopen axis state");
     }
     return axisStateName(state);
 }
