@@ -189,6 +189,7 @@ Reply *AcuAxis::initialize()
                                   kTargetWindow,    kTargetWindowTime,  kHomingMethod,
                                   kFastSpeed,       kCreepSpeed,        kHomingAcceleration };
     auto values = std::make_shared<QHash<quint16, QVariant>>();
+    auto configurationError = std::make_shared<Error>();
     auto pending = std::make_shared<int>(int(wanted.size()));
     QPointer<Reply> guard(result);
     for (const quint16 p : wanted) {
@@ -197,6 +198,8 @@ Reply *AcuAxis::initialize()
             r->deleteLater();
             if (r->ok())
                 values->insert(p, r->value());
+            else if (p == kConfiguration)
+                *configurationError = r->error();
             if (--*pending > 0)
                 return;
             const auto v = [&](quint16 p, double fallback) {
@@ -222,9 +225,13 @@ Reply *AcuAxis::initialize()
             m_limits.homingMethod = m_homing.method;
             if (!guard)
                 return;
+            // The read's own cause (no answer, closed link, device error) where there is one.
             if (!values->contains(kConfiguration))
-                guard->fail(Error(Error::Kind::DeviceError,
-                                  Tr::tr("the inverter did not give its configuration (30)")));
+                guard->fail(
+                    configurationError->isError()
+                        ? *configurationError
+                        : Error(Error::Kind::DeviceError,
+                                Tr::tr("the inverter did not give its configuration (30)")));
             else
                 guard->finish();
         });
