@@ -5,7 +5,8 @@
 #   bash tools/bootstrap.sh build  install dependencies and build only
 #   bash tools/bootstrap.sh deb    install dependencies, build, make build/drivebench_*.deb
 #                                  (cpack) and check it with lintian
-# Environment: BUILD_DIR (default: build), CI=true turns warnings into errors.
+# Environment: BUILD_DIR (default: build), CI=true turns warnings into errors,
+# DRIVEBENCH_CMAKE_ARGS: more options for cmake (.ci/run sets the build speed ones there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -33,6 +34,7 @@ packages=(
     desktop-file-utils appstream bash-completion         # tst_packaging's validators
     python3-can                                          # a third-party CANopen master in tests
     clang-format                                         # tst_format
+    mold                                                 # a fast linker (DRIVEBENCH_LINKER)
 )
 # The .deb: dpkg-shlibdeps (dpkg-dev) and file for its dependencies, lintian to check it.
 if [ "$mode" = deb ]; then
@@ -54,7 +56,9 @@ fi
 build_dir=${BUILD_DIR:-build}
 werror=OFF
 [ "${CI:-}" = "true" ] || [ "${DRIVEBENCH_WERROR:-}" = "ON" ] && werror=ON
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEBENCH_WERROR="$werror"
+# shellcheck disable=SC2086 # DRIVEBENCH_CMAKE_ARGS is a list of options
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEBENCH_WERROR="$werror" \
+    ${DRIVEBENCH_CMAKE_ARGS:-}
 cmake --build "$build_dir" --parallel "$(nproc)"
 
 case "$mode" in
