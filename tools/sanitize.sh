@@ -12,15 +12,20 @@
 # not run them.
 # Warnings are not errors here: the normal build (CI's first stage) checks them, and GCC warns
 # differently with the instrumentation.
-# Environment: SANITIZE_BUILD_DIR (default: build-sanitize), SANITIZE_CXX_FLAGS (default: -O0 -g0).
+# Test time limits are three times the normal ones (DRIVEBENCH_TEST_TIMEOUT_SCALE): the
+# instrumented programs run slower.
+# Environment: SANITIZE_BUILD_DIR (default: build-sanitize), SANITIZE_CXX_FLAGS (default: -O0 -g0),
+# DRIVEBENCH_CMAKE_ARGS: more options for cmake (.ci/run: precompiled headers, mold).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=${SANITIZE_BUILD_DIR:-build-sanitize}
 flags=${SANITIZE_CXX_FLAGS:--O0 -g0}
+# shellcheck disable=SC2086 # DRIVEBENCH_CMAKE_ARGS is a list of options
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$flags -DNDEBUG" -DDRIVEBENCH_SANITIZE=address,undefined \
-    -DDRIVEBENCH_BUILD_BENCH=OFF -DDRIVEBENCH_WERROR=OFF >/dev/null
+    -DDRIVEBENCH_BUILD_BENCH=OFF -DDRIVEBENCH_WERROR=OFF -DDRIVEBENCH_TEST_TIMEOUT_SCALE=3 \
+    ${DRIVEBENCH_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build_dir" --parallel "$(nproc)"
 [ "${1:-}" = build ] && exit 0
 
