@@ -5,8 +5,10 @@
 # Four donor targets each build one header set once; every own target reuses the set that matches
 # its Qt modules (chosen at the end of its folder, when its libraries are known). GCC takes a
 # precompiled header only when the macros it depends on are defined the same way (QtTest's
-# headers look at QT_WIDGETS_LIB and QT_GUI_LIB, QtCore's at QT_NO_URL_CAST_FROM_STRING);
-# otherwise it reads the headers as text, so a target that matches no set still builds.
+# headers look at QT_WIDGETS_LIB, QT_GUI_LIB and QT_TESTCASE_BUILDDIR, QtCore's at
+# QT_NO_URL_CAST_FROM_STRING); otherwise it reads the headers as text, so a target that matches
+# no set still builds. QT_TESTCASE_BUILDDIR (only used by QFINDTESTDATA, which no test uses) is
+# the build folder for every test, so that one set serves them all.
 # Off by default: ccache does not cache compilations that use a precompiled header.
 
 set(_drivebench_pch_core
@@ -32,6 +34,7 @@ function(_drivebench_pch_donor name headers)
     target_compile_options(${name} PRIVATE -Wall -Wextra -Wpedantic)
     target_compile_definitions(${name} PRIVATE QT_NO_URL_CAST_FROM_STRING)
     target_precompile_headers(${name} PRIVATE ${headers})
+    set_target_properties(${name} PROPERTIES QT_TESTCASE_BUILDDIR ${CMAKE_BINARY_DIR})
 endfunction()
 
 if(DRIVEBENCH_PCH)
@@ -69,5 +72,6 @@ function(_drivebench_pch_choose target)
             set(kind test)
         endif()
     endif()
-    set_target_properties(${target} PROPERTIES PRECOMPILE_HEADERS_REUSE_FROM drivebench_pch_${kind})
+    set_target_properties(${target} PROPERTIES PRECOMPILE_HEADERS_REUSE_FROM drivebench_pch_${kind}
+                                               QT_TESTCASE_BUILDDIR ${CMAKE_BINARY_DIR})
 endfunction()
