@@ -47,10 +47,10 @@ void TraceBuffer::append(double t, double raw)
 {
     if (m_size > 0 && t < lastTime())
         t = lastTime();
-    const qint64 slots = qint64(m_time.size());
-    if (m_size == slots && slots < m_capacity) {
+    const qint64 allocated = qint64(m_time.size()); // not "slots": a Qt macro
+    if (m_size == allocated && allocated < m_capacity) {
         // Grow: unwrap into index order, then double (capped at the capacity).
-        const qint64 grown = std::min(m_capacity, std::max(kInitialSlots, slots * 2));
+        const qint64 grown = std::min(m_capacity, std::max(kInitialSlots, allocated * 2));
         std::rotate(m_time.begin(), m_time.begin() + m_head, m_time.end());
         std::rotate(m_value.begin(), m_value.begin() + m_head, m_value.end());
         std::rotate(m_gap.begin(), m_gap.begin() + m_head, m_gap.end());

@@ -77,8 +77,12 @@ void TstCanopenConnection::init()
 
 void TstCanopenConnection::cleanup()
 {
-    delete m_conn; // owns the bus
+    if (m_conn)
+        delete m_conn; // owns the bus
+    else
+        delete m_bus; // the test made no connection
     m_conn = nullptr;
+    m_bus = nullptr;
 }
 
 void TstCanopenConnection::open(const QString &text)
