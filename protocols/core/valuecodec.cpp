@@ -348,7 +348,8 @@ Result<QVariant> fromText(DataType type, const QString &text)
         return normalize(type, text); // strings are taken as typed, spaces included
     // OCTET_STRING / DOMAIN: hex bytes
     QString hex = t;
-    hex.remove(QRegularExpression(QStringLiteral("[\\s:,-]")));
+    static const QRegularExpression separators(QStringLiteral("[\\s:,-]"));
+    hex.remove(separators);
     if (hex.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
         hex = hex.mid(2);
     static const QRegularExpression hexOnly(QStringLiteral("^[0-9a-fA-F]*$"));
