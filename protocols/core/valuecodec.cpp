@@ -378,8 +378,14 @@ QString toText(DataType type, const QVariant &raw, TextFormat format)
         return datatype::isSignedInteger(type) ? QString::number(raw.toLongLong())
                                                : QString::number(raw.toULongLong());
     }
-    if (datatype::isReal(type))
-        return QString::number(raw.toDouble(), 'g', type == DataType::Real32 ? 9 : 17);
+    if (datatype::isReal(type)) {
+        const double d = raw.toDouble();
+        // QString::number() prints -0.0 as "0", which parses back to +0.0: other bits than
+        // the device sent, e.g. when a backup is restored.
+        if (d == 0 && std::signbit(d))
+            return QStringLiteral("-0");
+        return QString::number(d, 'g', type == DataType::Real32 ? 9 : 17);
+    }
     if (type == DataType::VisibleString || type == DataType::UnicodeString)
         return raw.toString();
     return QString::fromLatin1(raw.toByteArray().toHex(' ').toUpper());
