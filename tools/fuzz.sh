@@ -12,7 +12,7 @@
 # UndefinedBehaviorSanitizer. Each target starts from its seed corpus in tests/fuzz/corpus/ and
 # keeps what it finds in build-fuzz/corpus/<target>/ (not in the repository); a crash, leak,
 # timeout or sanitizer report is saved in build-fuzz/findings/<target>/ and counted as a finding,
-# and the target is started again for the rest of its time (at most 5 findings per target).
+# and the target is started again for the rest of its time (at most 6 runs per target).
 # To keep a finding as a regression input, copy it into tests/fuzz/corpus/<target>/ once fixed.
 # Exit status 1 when any target had a finding.
 set -euo pipefail
@@ -82,6 +82,13 @@ max_len() {
     esac
 }
 
+fork_mode() {
+    case $1 in
+    slcan | framedecoder) echo yes ;;
+    *) echo no ;;
+    esac
+}
+
 status=0
 for t in "${targets[@]}"; do
     corpus=$build/corpus/$t
@@ -92,17 +99,24 @@ for t in "${targets[@]}"; do
     [[ -f $root/tests/fuzz/dict/$t.dict ]] && dict=(-dict="$root/tests/fuzz/dict/$t.dict")
     before=$(find "$findings" -type f | wc -l)
     : >"$log"
-    # One process fuzzes for the whole time: libFuzzer's -fork mode started a new process
-    # for every job of 1, 2, 3... seconds and replayed part of the corpus in each, which cost
-    # more than the fuzzing itself for the targets whose inputs take milliseconds. A finding
-    # ends the process, so it is started again (from the grown corpus) for the time left.
+    # Most targets fuzz in one process for the whole time: libFuzzer's -fork mode first
+    # replays the whole corpus and then starts a process for every job of 1, 2, 3... seconds,
+    # which cost more than the fuzzing for the targets whose inputs take milliseconds (EDS, the
+    # simulated node, texts). A finding ends that process, so it is started again (from the
+    # grown corpus) for the time left. The fastest targets (microseconds per input) run twice
+    # as many inputs in -fork mode, whose jobs each mutate a few recent inputs.
     end=$((SECONDS + seconds))
     runs=0
+    mode=()
+    [[ $(fork_mode "$t") == no ]] ||
+        mode=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     while left=$((end - SECONDS)) && [[ $left -gt 0 && $runs -lt 6 ]]; do
         runs=$((runs + 1))
         "$build/tests/fuzz/fuzz_$t" "$corpus" "$root/tests/fuzz/corpus/$t" "${dict[@]}" \
             -max_total_time="$left" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len "$t")" \
-            -reload=0 -artifact_prefix="$findings/" -print_final_stats=1 >>"$log" 2>&1 && break
+            "${mode[@]}" -reload=0 -artifact_prefix="$findings/" -print_final_stats=1 \
+            >>"$log" 2>&1 && break
+        [[ ${#mode[@]} -eq 0 ]] || break
     done
     execs=$(grep -Eo 'stat::number_of_executed_units: *[0-9]+' "$log" | awk '{s+=$2} END {print s+0}' || true)
     if [[ $execs -eq 0 ]]; then
