@@ -331,9 +331,70 @@ Result<qint64> parseNumber(const QString &text)
     return parseNumberView(text);
 }
 
+namespace {
+
+// Digits of `text` from `pos` up to `stop` (or the end) in base 16 or 10, at most maxDigits of
+// them; the position after them, or -1 when there are none, too many, or another character.
+qsizetype scanDigits(QStringView text, qsizetype pos, char16_t stop, int base, int maxDigits,
+                     quint64 &value)
+{
+    value = 0;
+    const qsizetype start = pos;
+    for (; pos < text.size() && text[pos].unicode() != stop; ++pos) {
+        const char16_t c = text[pos].unicode();
+        unsigned digit;
+        if (c >= u'0' && c <= u'9')
+            digit = c - u'0';
+        else if (base == 16 && c >= u'A' && c <= u'F')
+            digit = c - u'A' + 10;
+        else if (base == 16 && c >= u'a' && c <= u'f')
+            digit = c - u'a' + 10;
+        else
+            return -1;
+        value = value * unsigned(base) + digit;
+    }
+    const qsizetype digits = pos - start;
+    return digits == 0 || digits > maxDigits ? -1 : pos;
+}
+
+// The drive's own form of an OR result line, "OR6041,0,1591" or "OR6041,0,427h", read without
+// the general parser's string work: it comes once for every object read. False for anything
+// else (spaces, prefixes, signs on hex, more digits), which the general parser then reads.
+bool parseCanonicalObjectRead(QStringView t, ObjectValue &out)
+{
+    if (t.size() < 7 || t[0] != u'O' || t[1] != u'R')
+        return false;
+    quint64 index = 0;
+    quint64 sub = 0;
+    quint64 magnitude = 0;
+    qsizetype pos = scanDigits(t, 2, u',', 16, 4, index);
+    if (pos < 0 || pos == t.size())
+        return false;
+    pos = scanDigits(t, pos + 1, u',', 16, 2, sub);
+    if (pos < 0 || ++pos >= t.size())
+        return false;
+    const bool hex = t.back() == u'h' || t.back() == u'H';
+    if (hex) {
+        if (scanDigits(t.first(t.size() - 1), pos, u',', 16, 16, magnitude) != t.size() - 1)
+            return false;
+        out = { ObjectAddress(quint16(index), quint8(sub)), qint64(magnitude), true };
+        return true;
+    }
+    const bool negative = t[pos] == u'-';
+    if (scanDigits(t, negative ? pos + 1 : pos, u',', 10, 18, magnitude) != t.size())
+        return false;
+    const qint64 value = qint64(magnitude); // 18 digits always fit
+    out = { ObjectAddress(quint16(index), quint8(sub)), negative ? -value : value, false };
+    return true;
+}
+
+} // namespace
+
 // Fields are views into the line, not copies: this runs once for every object read.
 Result<ObjectValue> parseObjectRead(const QString &line)
 {
+    if (ObjectValue canonical; parseCanonicalObjectRead(line, canonical))
+        return canonical;
     const QStringView t = QStringView(line).trimmed();
     if (!t.startsWith(QLatin1String("OR"), Qt::CaseInsensitive))
         return invalid(Tr::tr("'%1' is not an OR result line").arg(t.toString()));
