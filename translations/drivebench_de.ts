@@ -5350,6 +5350,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>a recording</source>
         <translation>eine Aufzeichnung</translation>
     </message>
+    <message>
+        <source>bad gap line &apos;%1&apos;</source>
+        <translation>ungültige Lückenzeile „%1“</translation>
+    </message>
 </context>
 <context>
     <name>db::sim</name>
