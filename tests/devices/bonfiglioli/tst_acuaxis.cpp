@@ -480,6 +480,29 @@ private Q_SLOTS:
         m_acu->server().setFailure({});
     }
 
+    // A silent inverter: the first read's own failure ends initialize() at once, and the
+    // reads queued behind it are dropped instead of timing out one after the other.
+    void initializeAgainstASilentInverterFailsAtOnce()
+    {
+        vabus::Server::FailureMode silent;
+        silent.failure = vabus::Server::Failure::Silent;
+        m_acu->server().setFailure(silent);
+        QElapsedTimer clock;
+        clock.start();
+        const auto init = await(m_axis->initialize(), 60000);
+        const qint64 elapsed = clock.elapsed();
+        QVERIFY(!init.ok());
+        QCOMPARE(init.error().kind(), Error::Kind::Timeout);
+        // One request's time limit with its retransmissions, not twelve of them.
+        QVERIFY2(elapsed < 8000, qPrintable(QString::number(elapsed)));
+        m_acu->server().setFailure({});
+        // Nothing of the dropped reads is left in the queue ahead of the next request.
+        QElapsedTimer next;
+        next.start();
+        QVERIFY(await(m_connection->read(ObjectAddress(30, 0)), 5000).ok());
+        QVERIFY2(next.elapsed() < 2500, qPrintable(QString::number(next.elapsed())));
+    }
+
     void quickStop()
     {
         QVERIFY(power(true));
