@@ -7,6 +7,7 @@
 #include "devices/axisfactory.h"
 #include "devices/bonfiglioli/acuaxis.h"
 #include "devices/bonfiglioli/acudescription.h"
+#include "devices/bonfiglioli/acusteps.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
@@ -93,6 +94,27 @@ private Q_SLOTS:
         QVERIFY(m_acu->controlWritesRam() >= 4); // 0x0000, 0x0006, 0x0007, 0x000F
         QVERIFY(power(false));
         QCOMPARE(m_acu->statusWord() & 0x006F, 0x0040);
+    }
+
+    // A wait step is judged by its own read of 411: one queued behind other requests past the
+    // step's time (here 1 ms behind 200 reads) is an answer, not a timeout.
+    void waitJudgedByItsOwnStatusRead()
+    {
+        QList<Reply *> ahead;
+        for (int i = 0; i < 200; ++i)
+            ahead.append(m_connection->read(ObjectAddress(12, 0)));
+        auto *steps = new bonfiglioli::AcuSteps(m_axis.get(), QStringLiteral("slow queue"));
+        steps->waitStatus([](quint16 word) { return (word & 0x006F) == 0x0040; }, 1,
+                          QStringLiteral("not switch on disabled"));
+        QElapsedTimer clock;
+        clock.start();
+        Result<QVariant> r = await(steps->start());
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QVERIFY(clock.elapsed() > 1);
+        for (Reply *reply : ahead) {
+            QVERIFY(reply->isFinished());
+            reply->deleteLater();
+        }
     }
 
     void enableNeedsMainsAndSto()
