@@ -148,8 +148,15 @@ bool writeCsv(QIODevice &device, const Recording &rec, double t0, double t1)
             if (b.startsGap(k))
                 gaps += ' ' + timeText(nanos(b.time(k)));
         }
-        if (!gaps.isEmpty())
-            out += "# gaps: " + escape(rec.channels[c].info.id).toUtf8() + ';' + gaps + '\n';
+        if (gaps.isEmpty())
+            continue;
+        // Keyed by the channel as recorded: the same object of two devices has the same id.
+        const ChannelInfo &i = rec.channels[c].info;
+        if (i.device != rec.device)
+            out += "# device-gaps: " + escape(i.id).toUtf8() + "; " + escape(i.device).toUtf8()
+                + ';' + gaps + '\n';
+        else
+            out += "# gaps: " + escape(i.id).toUtf8() + ';' + gaps + '\n';
     }
     out += "# range: " + timeText(nanos(first)) + " .. " + timeText(nanos(last)) + " s\n";
     out += "time_s";

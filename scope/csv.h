@@ -26,7 +26,10 @@
 //   scaling.
 // - Gaps (a sample after lost samples) are listed in comment lines after the channel lines,
 //   "# gaps: 6064:0; 1.234001000 2.500000000" (the times of the samples that start a gap), so the
-//   data columns stay plain numbers for spreadsheets; the importer restores startsGap().
+//   data columns stay plain numbers for spreadsheets; the importer restores startsGap(). A
+//   channel of another device than the "device" line's has
+//   "# device-gaps: 6064:0; refgo://127.0.0.2:10001; 1.234001000" instead, so the same object
+//   of two devices keeps its own gaps.
 // - In the "# key: value; key: value" lines a backslash escapes ';', '\' and line breaks
 //   ("\;", "\\", "\n") inside values. The device line holds one URI, or several joined by "; "
 //   (escaped).

@@ -3,7 +3,9 @@
 
 #include <QCoreApplication>
 #include <QHash>
+#include <QPair>
 #include <QSet>
+#include <algorithm>
 #include <cmath>
 
 namespace db::scope::csv {
@@ -106,6 +108,8 @@ struct Pending
     QString triggerSpec;
     int triggerLine = 0;
     QHash<QString, QSet<qint64>> gaps; // channel id -> times (ns) that start a gap
+    // (channel id, device) -> the same, for channels of another device than the file's
+    QHash<QPair<QString, QString>, QSet<qint64>> deviceGaps;
     QList<QPair<qint64, qint64>> counters; // per channel line: (dropped, lost)
 };
 
@@ -214,15 +218,20 @@ Result<Recording> fromCsv(const QByteArray &text)
                 rec.channels.last().info.device = parts[1].trimmed();
             else if (parts.size() == 2)
                 channelDevice.insert(parts[0].trimmed(), parts[1].trimmed());
-        } else if (key == QLatin1String("gaps")) {
-            const qsizetype semi = value.indexOf(QLatin1Char(';'));
-            const QString id = unescape(value.left(semi).trimmed());
-            for (const QString &word :
-                 value.mid(semi + 1).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        } else if (key == QLatin1String("gaps") || key == QLatin1String("device-gaps")) {
+            // "ID; T1 T2 ..." or, for a channel of another device, "ID; DEVICE; T1 T2 ...".
+            const QStringList parts = splitUnescaped(value);
+            const bool ofDevice = key == QLatin1String("device-gaps");
+            if (parts.size() != (ofDevice ? 3 : 2))
+                return malformed(n, Tr::tr("bad gap line '%1'").arg(value));
+            const QString id = parts[0].trimmed();
+            QSet<qint64> &times =
+                ofDevice ? pending.deviceGaps[{ id, parts[1].trimmed() }] : pending.gaps[id];
+            for (const QString &word : parts.last().split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
                 const auto ns = parseNanos(word.toLatin1());
-                if (semi < 0 || !ns)
+                if (!ns)
                     return malformed(n, Tr::tr("bad gap time '%1'").arg(word));
-                pending.gaps[id].insert(*ns);
+                times.insert(*ns);
             }
         }
     }
@@ -233,6 +242,21 @@ Result<Recording> fromCsv(const QByteArray &text)
             c.info.device = channelDevice.value(c.info.id, rec.device);
     if (auto ok = parseTrigger(rec, pending); !ok)
         return ok.error();
+    // Each channel's gap times. A "gaps" line names an object of the file's device; files
+    // written before "device-gaps" existed also used it for other devices' channels, so it
+    // applies to those when the file's device has no channel of that id.
+    QList<QSet<qint64>> channelGaps;
+    for (const RecordedChannel &c : rec.channels) {
+        QSet<qint64> times = pending.deviceGaps.value({ c.info.id, c.info.device });
+        const bool own = c.info.device == rec.device
+            || std::none_of(rec.channels.cbegin(), rec.channels.cend(),
+                            [&](const RecordedChannel &o) {
+                                return o.info.id == c.info.id && o.info.device == rec.device;
+                            });
+        if (own)
+            times.unite(pending.gaps.value(c.info.id));
+        channelGaps.append(times);
+    }
 
     // Column header.
     if (lineNo >= lines.size() || !lines[lineNo].startsWith("time_s"))
@@ -274,7 +298,7 @@ Result<Recording> fromCsv(const QByteArray &text)
                                  Tr::tr("column %1 (%2): '%3' is not a number")
                                      .arg(c + 1)
                                      .arg(ch.info.id, QString::fromUtf8(cells[c])));
-            if (pending.gaps.value(ch.info.id).contains(*ns))
+            if (channelGaps[c - 1].contains(*ns))
                 ch.buffer.markGap();
             ch.buffer.append(double(*ns) * 1e-9, v);
         }

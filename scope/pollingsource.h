@@ -17,11 +17,14 @@ namespace db::scope {
 // previous one plus the period, so a late wake-up is caught up instead of carried forward. At
 // most one read per channel is in flight; reads of several channels are handed to the
 // connection together and queue there (the protocols answer in order).
-// Lost samples: a slot counts as lost only when its read could not start before the next slot
-// began (the channel's previous read was still unanswered, or the host woke that late), so
-// "zero lost samples" means every period got its sample. Rate 0 channels never lose samples.
+// Late reads: when the host woke late or a read was slow, the periods that began meanwhile are
+// each read, back to back, until the channel has caught up (PollSchedule's catch-up window,
+// 100 ms), so a loaded machine delays samples but does not lose them.
+// Lost samples: a slot counts as lost only when the channel fell further behind than that
+// window (the link cannot keep up, or the host stalled that long), so "zero lost samples" means
+// every period got its sample. Rate 0 channels never lose samples.
 // Timestamps: the time base's elapsed time when the reply ARRIVES (the value is at most one
-// round trip old).
+// round trip old); a sample read to catch up carries the time it was read.
 // stop() counts the slots that ended without a read as lost too (a read that has been waiting
 // for its answer for three periods has cost two samples already), so that a source whose reads
 // never come back does not end with "zero lost".

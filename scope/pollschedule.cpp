@@ -31,10 +31,11 @@ QList<PollSchedule::Read> PollSchedule::due(qint64 nowNs)
         else if (c.nextSlotNs <= nowNs)
             fixed.append(i);
     }
-    // The slot each due channel serves now: the newest that has begun.
+    // The slot each due channel serves now: the oldest within its catch-up window.
     const auto served = [this, nowNs](int i) {
         const Channel &c = m_channels.at(i);
-        return c.nextSlotNs + (nowNs - c.nextSlotNs) / c.periodNs * c.periodNs;
+        const qint64 owed = (nowNs - c.nextSlotNs) / c.periodNs + 1;
+        return c.nextSlotNs + std::max<qint64>(0, owed - maxOwed(c.periodNs)) * c.periodNs;
     };
     std::stable_sort(fixed.begin(), fixed.end(),
                      [&served](int a, int b) { return served(a) < served(b); });
@@ -42,8 +43,9 @@ QList<PollSchedule::Read> PollSchedule::due(qint64 nowNs)
     reads.reserve(fixed.size() + free.size());
     for (int i : fixed) {
         Channel &c = m_channels[i];
-        // Slots whose successor has already begun could not get their read in time.
-        const qint64 skipped = (nowNs - c.nextSlotNs) / c.periodNs;
+        // Slots begun and not read; those beyond the window can no longer be caught up.
+        const qint64 owed = (nowNs - c.nextSlotNs) / c.periodNs + 1;
+        const qint64 skipped = std::max<qint64>(0, owed - maxOwed(c.periodNs));
         c.nextSlotNs += (skipped + 1) * c.periodNs;
         c.inFlight = true;
         reads.append({ i, skipped });
@@ -53,6 +55,14 @@ QList<PollSchedule::Read> PollSchedule::due(qint64 nowNs)
         reads.append({ i, 0 });
     }
     return reads;
+}
+
+qint64 PollSchedule::maxOwed(qint64 periodNs) const
+{
+    // The slot being served counts too: with no window, only the newest slot may be owed.
+    if (m_catchUpNs == 0)
+        return 1;
+    return std::max(kMinCatchUpSlots, m_catchUpNs / periodNs);
 }
 
 void PollSchedule::finished(int channel)

@@ -3,6 +3,7 @@
 #include <QList>
 #include <QtGlobal>
 
+#include <algorithm>
 #include <optional>
 
 namespace db::scope {
@@ -17,9 +18,13 @@ namespace db::scope {
 //   read finished() (reads of different channels overlap; the link queues them).
 // - Deadlines do not drift: after the read for slot k starts, the next deadline is slot k + 1,
 //   however late slot k's read started (a late wake-up is caught up, not carried forward).
-// - A slot is lost only when its read could not start before the next slot began (the link was
-//   still busy with the channel's previous read, or the caller woke that late). due() then
-//   serves the newest slot that has begun and reports the ones skipped (lostBefore).
+// - A read that comes late does not cost a sample: when the caller woke late, or the channel's
+//   previous read was slow, the slots that have begun since are each served by a read of their
+//   own, back to back (due() again as soon as the previous one finished), until the channel has
+//   caught up. Their samples carry the time they were read.
+// - A slot is lost only when the channel is further behind than its catch-up window
+//   (catchUpNs(), at least kMinCatchUpSlots slots): the link cannot keep up, or the caller
+//   stalled that long. due() then skips the oldest slots and reports them (lostBefore).
 // - Channels of period 0 are due whenever they have no read in flight and never lose a slot.
 class PollSchedule
 {
@@ -30,6 +35,16 @@ public:
         qint64 lostBefore = 0; // slots of this channel skipped since its previous read
     };
 
+    // How far behind a channel may fall and still catch up: a stall of the host or the link
+    // this long costs no sample.
+    static constexpr qint64 kDefaultCatchUpNs = 100 * 1000000;
+    // A slow channel may owe this many slots whatever its period.
+    static constexpr qint64 kMinCatchUpSlots = 2;
+
+    qint64 catchUpNs() const { return m_catchUpNs; }
+    // 0: no catching up; a slot is lost as soon as the next one has begun.
+    void setCatchUpNs(qint64 ns) { m_catchUpNs = std::max<qint64>(0, ns); }
+
     // Appends a channel (period in ns, < 0 taken as 0) and returns its index.
     int addChannel(qint64 periodNs);
     int channelCount() const { return int(m_channels.size()); }
@@ -38,7 +53,8 @@ public:
     // Every channel's first slot begins at nowNs; nothing is in flight.
     void start(qint64 nowNs);
     // Reads to start now, each marked in flight: fixed-rate channels in the order of the slots
-    // they serve (the oldest first, ties by channel index), then channels of period 0.
+    // they serve (the oldest first, ties by channel index), then channels of period 0. A
+    // channel that is behind serves its oldest slot within the catch-up window.
     QList<Read> due(qint64 nowNs);
     // The channel's read has been answered or has failed: it may be read again.
     void finished(int channel);
@@ -51,6 +67,9 @@ public:
     QList<qint64> lostUntil(qint64 nowNs);
 
 private:
+    // Slots a channel of this period may owe (begun, not yet read) before the oldest is lost.
+    qint64 maxOwed(qint64 periodNs) const;
+
     struct Channel
     {
         qint64 periodNs = 0;
@@ -58,6 +77,7 @@ private:
         bool inFlight = false;
     };
     QList<Channel> m_channels;
+    qint64 m_catchUpNs = kDefaultCatchUpNs;
 };
 
 } // namespace db::scope

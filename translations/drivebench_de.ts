@@ -2553,6 +2553,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>411 was not read</source>
         <translation>411 wurde nicht gelesen</translation>
     </message>
+    <message>
+        <source>no answer within %1 ms: the inverter did not report its state</source>
+        <translation>keine Antwort innerhalb von %1 ms: der Umrichter meldete seinen Zustand nicht</translation>
+    </message>
 </context>
 <context>
     <name>db::bonfiglioli::AcuStatusSource</name>
@@ -5345,6 +5349,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
     <message>
         <source>a recording</source>
         <translation>eine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>bad gap line &apos;%1&apos;</source>
+        <translation>ungültige Lückenzeile „%1“</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "buildcommit.h"
 
 #include "core/objectdef.h" // textLanguage()
+#include "widgets/common/fittedimages.h"
 
 #include <QCoreApplication>
 #include <QDialog>
@@ -58,6 +59,7 @@ void MainWindow::showManual()
         auto *browser = new QTextBrowser(m_manual);
         browser->setObjectName(QStringLiteral("manualText"));
         browser->setOpenExternalLinks(true);
+        widgets::FittedImages::install(browser); // screenshots as wide as the window, no wider
         auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, m_manual);
         connect(buttons, &QDialogButtonBox::rejected, m_manual, &QDialog::close);
         auto *layout = new QVBoxLayout(m_manual);

@@ -16,7 +16,10 @@
 #
 #   bench/scope/poll_record_bench.sh [--build DIR] [--cli PATH] [--sim PATH] [--uri URI]...
 #                                    [--runs N] [--duration S] [--rates "1 2"]
-#                                    [--objects "2 8"] [--rt]
+#                                    [--objects "2 8"] [--obj-list "I:S ..."] [--rt]
+# --obj-list names the objects to record (the first N of them for N objects); the default is
+# 6064:0 6078:0 606C:0 6041:0 6061:0 607A:0 6081:0 6083:0, which a CiA 402 drive has. For an
+# ACTIVE Cube over VABus, e.g. --obj-list "210:0 211:0 213:0 240:0" --objects "2 4".
 set -euo pipefail
 
 build=build
@@ -40,6 +43,7 @@ while (($#)); do
     --duration) duration=$2; shift 2 ;;
     --rates) rates=$2; shift 2 ;;
     --objects) counts=$2; shift 2 ;;
+    --obj-list) read -r -a objects <<<"$2"; shift 2 ;;
     --rt) rt=(chrt -f 20); shift ;;
     -h | --help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "poll_record_bench: unknown option $1 (see --help)" >&2; exit 2 ;;

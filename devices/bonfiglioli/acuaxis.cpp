@@ -30,6 +30,21 @@ QList<ObjectAddress> statusObjects()
              ObjectAddress(kActualSpeedRpm, 0), ObjectAddress(kApplicationWarnings, 0) };
 }
 
+// No answer, or no link: a failure of the request's way to the inverter, not of the parameter.
+bool isLinkFailure(const Error &error)
+{
+    switch (error.kind()) {
+    case Error::Kind::Timeout:
+    case Error::Kind::Disconnected:
+    case Error::Kind::ConnectionRefused:
+    case Error::Kind::HostNotFound:
+    case Error::Kind::Io:
+        return true;
+    default:
+        return false;
+    }
+}
+
 // The connection's status source; an ACU one, made now, when it has none.
 StatusSource *statusSourceOf(DeviceConnection *connection)
 {
@@ -191,15 +206,30 @@ Reply *AcuAxis::initialize()
     auto values = std::make_shared<QHash<quint16, QVariant>>();
     auto configurationError = std::make_shared<Error>();
     auto pending = std::make_shared<int>(int(wanted.size()));
+    auto reads = std::make_shared<QList<QPointer<Reply>>>();
     QPointer<Reply> guard(result);
     for (const quint16 p : wanted) {
         Reply *r = connection()->read(ObjectAddress(p, 0));
+        reads->append(r);
         connect(r, &Reply::finished, this, [=, this] {
             r->deleteLater();
             if (r->ok())
                 values->insert(p, r->value());
             else if (p == kConfiguration)
                 *configurationError = r->error();
+            if (!r->ok() && isLinkFailure(r->error())) {
+                // The inverter did not answer (or the link is gone): the reads queued behind
+                // this one would only wait out their own time limits. Deleting an unsent
+                // request withdraws it.
+                for (const QPointer<Reply> &other : std::as_const(*reads))
+                    if (other && other != r)
+                        delete other.data();
+                reads->clear();
+                *pending = 0;
+                if (guard)
+                    guard->fail(r->error());
+                return;
+            }
             if (--*pending > 0)
                 return;
             const auto v = [&](quint16 p, double fallback) {

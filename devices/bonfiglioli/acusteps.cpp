@@ -26,8 +26,27 @@ AcuSteps::AcuSteps(AcuAxis *axis, const QString &name)
     m_retry.setSingleShot(true);
     m_retry.setInterval(kStatusReadMs);
     connect(&m_retry, &QTimer::timeout, this, &AcuSteps::readStatus);
-    connect(&m_deadline, &QTimer::timeout, this,
-            [this] { fail(Error(Error::Kind::Timeout, m_steps.at(m_index).failText)); });
+    connect(&m_deadline, &QTimer::timeout, this, &AcuSteps::onDeadline);
+    m_overdue.setSingleShot(true);
+    connect(&m_overdue, &QTimer::timeout, this, [this] {
+        fail(Error(Error::Kind::Timeout,
+                   Tr::tr("no answer within %1 ms: the inverter did not report its state")
+                       .arg(m_stepTimer.elapsed())));
+    });
+}
+
+void AcuSteps::onDeadline()
+{
+    // The step's own read of 411 is still out (queued behind other requests, or behind one lost
+    // to a silence): judge the step by that read, not by the clock alone. The read has its own
+    // timeout; the grace only bounds a queue that never drains.
+    if (m_waitSerial != 0 && m_axis->connection()->isConnected()) {
+        m_deadlinePassed = true;
+        m_overdue.start(
+            qMax(m_steps.at(m_index).timeoutMs, 2 * m_axis->connection()->requestTimeoutMs()));
+        return;
+    }
+    fail(Error(Error::Kind::Timeout, m_steps.at(m_index).failText));
 }
 
 void AcuSteps::write(quint16 parameter, qint64 value)
@@ -94,6 +113,7 @@ void AcuSteps::fail(const Error &error)
         return;
     m_done = true;
     m_deadline.stop();
+    m_overdue.stop();
     m_retry.stop();
     if (m_reply)
         m_reply->fail(error.prefixed(m_name));
@@ -105,6 +125,8 @@ void AcuSteps::next()
     if (m_done)
         return;
     m_deadline.stop();
+    m_overdue.stop();
+    m_deadlinePassed = false;
     if (++m_index >= m_steps.size()) {
         m_done = true;
         if (m_reply)
@@ -136,6 +158,7 @@ void AcuSteps::next()
         return;
     }
     case Step::Kind::Wait:
+        m_stepTimer.start();
         if (s.timeoutMs != kOnce)
             m_deadline.start(s.timeoutMs);
         readStatus();
@@ -207,6 +230,10 @@ void AcuSteps::onStatus(quint16 word)
         fail(Error(Error::Kind::DeviceError,
                    Tr::tr("the inverter went to fault (status word 0x%1)")
                        .arg(word, 4, 16, QLatin1Char('0'))));
+        return;
+    }
+    if (m_deadlinePassed) {
+        fail(Error(Error::Kind::Timeout, s.failText)); // read after the deadline, still not there
         return;
     }
     m_retry.start();

@@ -6,6 +6,7 @@
 //   write(P, v) --ok--> next      waitStatus(pred) --411 read, pred true--> next
 //                                 checkStatus(pred): the same with one read, no waiting
 //        |                              |--fault bit or timeout--> fail
+//        |                              |  (a 411 read still out at the timeout decides)
 //        +--error--> fail          call(fn) --ok--> next, --error--> fail
 //
 // Writes go to the RAM data set (P:5). 411 comes from the axis's status source, read after the
@@ -17,6 +18,7 @@
 #include "core/result.h"
 #include "core/statussource.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -72,6 +74,7 @@ private:
         std::function<Result<void>()> fn;
     };
     void next();
+    void onDeadline();
     void readStatus();
     void onStatusUpdated();
     void onStatus(quint16 word);
@@ -84,6 +87,9 @@ private:
     int m_index = -1;
     QPointer<Reply> m_reply;
     QTimer m_deadline;
+    QTimer m_overdue; // bounds the wait for a 411 read still out at the deadline
+    QElapsedTimer m_stepTimer;
+    bool m_deadlinePassed = false; // the wait step now waits only for its 411 read
     QTimer m_retry;
     std::function<QVariant()> m_result;
     bool m_done = false;

@@ -5,6 +5,7 @@
 #include "sdoblocktransfer.h"
 #include "sdocodec.h"
 #include "transport/canbus.h"
+#include "transport/responsetimer.h"
 
 #include <QCanBusFrame>
 #include <QTimer>
@@ -36,7 +37,9 @@ struct SdoClient::Channel
     NodeId node = 0;
     std::deque<Job> queue;
     std::optional<Job> active;
-    QTimer timer; // response timeout of the active transfer
+    // Response timeout of the active transfer (re-armed for every frame without registering a
+    // dispatcher timer each time).
+    std::unique_ptr<ResponseTimer> timer;
     QTimer quiet; // kLateGraceMs after a timeout: late answers are dropped, nothing is sent
     // Timeouts since the node last answered: only the first of a silent episode is logged at
     // info level, so that a node that stops answering does not flood the user's log.
@@ -125,10 +128,9 @@ SdoClient::Channel &SdoClient::channel(NodeId node)
         slot = std::make_unique<Channel>();
         Channel *ch = slot.get();
         ch->node = node;
-        ch->timer.setSingleShot(true);
+        ch->timer = std::make_unique<ResponseTimer>([this, ch] { onTimeout(*ch); });
         ch->quiet.setSingleShot(true);
         ch->quiet.setInterval(kLateGraceMs);
-        connect(&ch->timer, &QTimer::timeout, this, [this, ch] { onTimeout(*ch); });
         connect(&ch->quiet, &QTimer::timeout, this, [this, ch] { startNext(*ch); });
     }
     return *slot;
@@ -150,7 +152,6 @@ void SdoClient::startNext(Channel &ch)
         if (!job.reply)
             continue; // the requester gave up before it started
         ch.active = std::move(job);
-        ch.timer.setInterval(ch.active->timeoutMs);
         apply(ch, ch.active->transfer->start());
     }
 }
@@ -190,7 +191,7 @@ void SdoClient::apply(Channel &ch, const SdoStep &step)
         return;
     switch (step.outcome) {
     case SdoStep::Outcome::Continue:
-        ch.timer.start();
+        ch.timer->start(ch.active->timeoutMs);
         return;
     case SdoStep::Outcome::Done:
         finishActive(ch, {}, step.data);
@@ -226,7 +227,7 @@ bool SdoClient::sendAll(Channel &ch, const QByteArrayList &frames)
 
 void SdoClient::finishActive(Channel &ch, const Error &error, const QByteArray &data)
 {
-    ch.timer.stop();
+    ch.timer->stop();
     if (!ch.active)
         return;
     const Job job = std::move(*ch.active);

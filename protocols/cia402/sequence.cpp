@@ -23,26 +23,50 @@ Sequence::Sequence(DeviceConnection *connection, QString name, QObject *parent)
     m_pollTimer.setSingleShot(true);
     m_deadline.setSingleShot(true);
     connect(&m_pollTimer, &QTimer::timeout, this, &Sequence::poll);
-    connect(&m_deadline, &QTimer::timeout, this, [this] {
-        const Step &step = m_steps[m_index];
-        // A drive that never reported its state in this step did not refuse: say that, not a
-        // statusword never read (the time counts from the step's start, so a read queued
-        // behind others counts too).
-        if (!m_answeredInStep) {
-            fail(Error(Error::Kind::Timeout,
-                       Tr::tr("%1: no answer within %2 ms: the drive did not report its state "
-                              "(waiting for %3)")
-                           .arg(m_name)
-                           .arg(step.timeoutMs)
-                           .arg(step.what)));
-            return;
-        }
-        fail(Error(Error::Kind::Timeout,
-                   Tr::tr("%1: %2 did not happen within %3 ms (statusword 0x%4)")
-                       .arg(m_name, step.what)
-                       .arg(step.timeoutMs)
-                       .arg(m_statusword, 4, 16, QLatin1Char('0'))));
-    });
+    connect(&m_deadline, &QTimer::timeout, this, &Sequence::onDeadline);
+    m_overdue.setSingleShot(true);
+    connect(&m_overdue, &QTimer::timeout, this, [this] { failNoAnswer(); });
+}
+
+void Sequence::onDeadline()
+{
+    const Step &step = m_steps[m_index];
+    // The step's own status read is still out (queued behind other requests, or behind one
+    // lost to a silence): judge the step by that read, not by the clock alone. The read has
+    // its own timeout; the grace only bounds a queue that never drains.
+    if (m_waitSerial != 0 && m_connection->isConnected()) {
+        m_deadlinePassed = true;
+        m_overdue.start(qMax(step.timeoutMs, 2 * m_connection->requestTimeoutMs()));
+        return;
+    }
+    if (!m_answeredInStep) {
+        failNoAnswer();
+        return;
+    }
+    failNotReached();
+}
+
+void Sequence::failNoAnswer()
+{
+    // A drive that never reported its state in this step did not refuse: say that, not a
+    // statusword never read.
+    const Step &step = m_steps[m_index];
+    fail(Error(Error::Kind::Timeout,
+               Tr::tr("%1: no answer within %2 ms: the drive did not report its state "
+                      "(waiting for %3)")
+                   .arg(m_name)
+                   .arg(m_stepTimer.elapsed())
+                   .arg(step.what)));
+}
+
+void Sequence::failNotReached()
+{
+    const Step &step = m_steps[m_index];
+    fail(Error(Error::Kind::Timeout,
+               Tr::tr("%1: %2 did not happen within %3 ms (statusword 0x%4)")
+                   .arg(m_name, step.what)
+                   .arg(step.timeoutMs)
+                   .arg(m_statusword, 4, 16, QLatin1Char('0'))));
 }
 
 Sequence::~Sequence()
@@ -80,6 +104,7 @@ Reply *Sequence::start()
     connect(reply, &QObject::destroyed, this, [this] {
         m_pollTimer.stop();
         m_deadline.stop();
+        m_overdue.stop();
         deleteLater();
     });
     QMetaObject::invokeMethod(this, &Sequence::runStep, Qt::QueuedConnection);
@@ -122,6 +147,8 @@ void Sequence::runStep()
     }
     case Step::Kind::Wait:
         m_answeredInStep = false;
+        m_deadlinePassed = false;
+        m_stepTimer.start();
         m_deadline.start(step.timeoutMs);
         poll();
         return;
@@ -176,6 +203,7 @@ void Sequence::onStatus(quint16 statusword)
     switch (m_steps[m_index].check(m_statusword, why)) {
     case WaitVerdict::Reached:
         m_deadline.stop();
+        m_overdue.stop();
         next();
         return;
     case WaitVerdict::Failed:
@@ -185,6 +213,10 @@ void Sequence::onStatus(quint16 statusword)
                        .arg(m_statusword, 4, 16, QLatin1Char('0'))));
         return;
     case WaitVerdict::Pending:
+        if (m_deadlinePassed) {
+            failNotReached(); // the read that came after the deadline still says no
+            return;
+        }
         m_pollTimer.start(kPollIntervalMs);
         return;
     }
@@ -200,6 +232,7 @@ void Sequence::fail(const Error &error)
 {
     m_pollTimer.stop();
     m_deadline.stop();
+    m_overdue.stop();
     if (m_reply && m_reply->fail(error))
         deleteLater();
 }
@@ -208,6 +241,7 @@ void Sequence::finishOk()
 {
     m_pollTimer.stop();
     m_deadline.stop();
+    m_overdue.stop();
     if (m_reply && m_reply->finish(m_statusword))
         deleteLater();
 }

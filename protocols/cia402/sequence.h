@@ -3,6 +3,7 @@
 #include "core/deviceconnection.h"
 #include "core/statussource.h"
 
+#include <QElapsedTimer>
 #include <QPointer>
 #include <QTimer>
 
@@ -28,6 +29,9 @@ enum class WaitVerdict { Pending, Reached, Failed };
 //   Idle --start()--> Running(step i) --write ok / wait Reached--> Running(step i+1) ...
 //                        |   wait Pending: ask for 6041h again after kPollIntervalMs
 //                        |   wait deadline passed       --> Failed (Timeout, names the step)
+//                        |     ... but its status read still out: judged by that read when it
+//                        |         comes (Reached: next step; Pending: Failed; read failed:
+//                        |         Failed with the read's error, e.g. no answer)
 //                        |   write/read error, Failed   --> Failed (the cause)
 //                        |   cancel()                   --> Failed (the given error)
 //                        +-- after the last step        --> Finished (value: last statusword)
@@ -73,6 +77,9 @@ private:
 
     void runStep();
     void poll();
+    void onDeadline();
+    void failNoAnswer();
+    void failNotReached();
     void onStatusUpdated();
     void onStatus(quint16 statusword);
     void next();
@@ -89,8 +96,11 @@ private:
     quint64 m_waitSerial = 0; // the source's cycle that brings a statusword read after the ask
     QTimer m_pollTimer;
     QTimer m_deadline;
+    QTimer m_overdue; // bounds the wait for a status read still out at the deadline
+    QElapsedTimer m_stepTimer;
     quint16 m_statusword = 0;
     bool m_answeredInStep = false; // a status read of the current wait step was answered
+    bool m_deadlinePassed = false; // ... and the step now waits only for its status read
 };
 
 // Convenience checks.

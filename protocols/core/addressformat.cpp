@@ -35,7 +35,8 @@ public:
     // Parameter numbers fit the 16-bit index; data sets 0-9 (0 = all, 1-4 EEPROM, 5-9 the RAM
     // copies of 0-4) fit the sub-index with room to spare, so 0-255 is accepted here and the
     // protocol refuses what it cannot send.
-    QString key() const override { return Tr::tr("parameter"); }
+    // The key names the format in files and URIs: never translated.
+    QString key() const override { return QStringLiteral("parameter"); }
     Result<ObjectAddress> parse(const QString &text) const override
     {
         static const QRegularExpression re(

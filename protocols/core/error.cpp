@@ -6,7 +6,7 @@ namespace db {
 
 Error::Error(Kind kind, QString message, quint32 deviceCode)
     : m_kind(kind)
-    , m_message(printable(message))
+    , m_message(isPrintable(message) ? std::move(message) : printable(message))
     , m_deviceCode(deviceCode)
 { }
 

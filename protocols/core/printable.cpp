@@ -12,15 +12,23 @@ bool isBidiOrSeparator(char16_t u)
 
 bool needsEscape(char16_t u, LineBreaks lineBreaks)
 {
+    if (u >= 0x20 && u < 0x7F) // printable ASCII first: nearly every character is one
+        return false;
     if (u < 0x20)
         return !(u == '\n' && lineBreaks == LineBreaks::Keep);
     return (u >= 0x7F && u <= 0x9F) || isBidiOrSeparator(u);
 }
 
+// Lower-case hex with at least `digits` digits, written in place: error messages quoting
+// binary answers escape every byte, and a temporary string per byte made that the cost.
 void appendHex(QString &out, const char *prefix, uint value, int digits)
 {
+    static constexpr char hex[] = "0123456789abcdef";
     out += QLatin1String(prefix);
-    out += QString::number(value, 16).rightJustified(digits, QLatin1Char('0'));
+    while (digits < 8 && (value >> (4 * digits)) != 0)
+        ++digits;
+    for (int shift = 4 * (digits - 1); shift >= 0; shift -= 4)
+        out += QLatin1Char(hex[(value >> shift) & 0xF]);
 }
 
 void appendEscape(QString &out, char16_t u)
@@ -90,6 +98,8 @@ bool isPrintable(QStringView text, LineBreaks lineBreaks)
 {
     for (qsizetype i = 0; i < text.size(); ++i) {
         const char16_t u = text[i].unicode();
+        if (u >= 0x20 && u < 0x7F)
+            continue;
         if (QChar::isHighSurrogate(u) && i + 1 < text.size()
             && QChar::isLowSurrogate(text[i + 1].unicode())) {
             ++i;
@@ -109,8 +119,10 @@ QString printable(QStringView text, LineBreaks lineBreaks)
     out.reserve(text.size() + 16);
     for (qsizetype i = 0; i < text.size(); ++i) {
         const char16_t u = text[i].unicode();
-        if (QChar::isHighSurrogate(u) && i + 1 < text.size()
-            && QChar::isLowSurrogate(text[i + 1].unicode())) {
+        if (u >= 0x20 && u < 0x7F) {
+            out += text[i];
+        } else if (QChar::isHighSurrogate(u) && i + 1 < text.size()
+                   && QChar::isLowSurrogate(text[i + 1].unicode())) {
             out += text[i];
             out += text[++i];
         } else if (QChar::isSurrogate(u) || needsEscape(u, lineBreaks)) {

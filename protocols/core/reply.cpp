@@ -23,10 +23,13 @@ namespace db {
 // Emits finished() of the replies of one thread from its event loop, in the order they
 // finished. A posted event per reply would wake the event dispatcher (a write and a read on its
 // wake-up descriptor and one more poll) for every request, and even one zero timer costs a pass
-// of the loop with a poll of its own: so the replies are delivered when the loop is about to wait
-// (QAbstractEventDispatcher::aboutToBlock, between two passes, with no handler of anyone else on
-// the stack). The zero timer is only the fallback for loops that never wait (processEvents()
-// without WaitForMoreEvents) and for replies finished by a finished() handler.
+// of the loop with a poll of its own (and registering and unregistering it, for every request):
+// so the replies are delivered when the loop is about to wait (QAbstractEventDispatcher::
+// aboutToBlock, between two passes, with no handler of anyone else on the stack), or, in loops
+// that never wait (processEvents() without WaitForMoreEvents), when the next pass starts
+// (QAbstractEventDispatcher::awake, which every pass emits that does not wait). Every pass of
+// every loop emits one of the two. A zero timer is left only for replies finished by a
+// finished() handler, which come in the next pass.
 class Reply::FinishedQueue : public QObject
 {
 public:
@@ -36,9 +39,9 @@ public:
         if (!queue)
             queue = std::make_unique<FinishedQueue>();
         queue->m_pending.append(reply);
-        if (!queue->m_timer.isActive())
-            queue->m_timer.start(0, queue.get());
         queue->watchDispatcher();
+        if ((queue->m_delivering || !queue->m_dispatcher) && !queue->m_timer.isActive())
+            queue->m_timer.start(0, queue.get());
     }
 
 protected:
@@ -54,9 +57,12 @@ private:
         if (m_dispatcher)
             return;
         m_dispatcher = QAbstractEventDispatcher::instance(thread());
-        if (m_dispatcher)
+        if (m_dispatcher) {
             connect(m_dispatcher, &QAbstractEventDispatcher::aboutToBlock, this,
                     &FinishedQueue::deliver, Qt::DirectConnection);
+            connect(m_dispatcher, &QAbstractEventDispatcher::awake, this, &FinishedQueue::deliver,
+                    Qt::DirectConnection);
+        }
     }
 
     void deliver()

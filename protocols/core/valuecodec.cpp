@@ -348,7 +348,8 @@ Result<QVariant> fromText(DataType type, const QString &text)
         return normalize(type, text); // strings are taken as typed, spaces included
     // OCTET_STRING / DOMAIN: hex bytes
     QString hex = t;
-    hex.remove(QRegularExpression(QStringLiteral("[\\s:,-]")));
+    static const QRegularExpression separators(QStringLiteral("[\\s:,-]"));
+    hex.remove(separators);
     if (hex.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
         hex = hex.mid(2);
     static const QRegularExpression hexOnly(QStringLiteral("^[0-9a-fA-F]*$"));
@@ -377,8 +378,14 @@ QString toText(DataType type, const QVariant &raw, TextFormat format)
         return datatype::isSignedInteger(type) ? QString::number(raw.toLongLong())
                                                : QString::number(raw.toULongLong());
     }
-    if (datatype::isReal(type))
-        return QString::number(raw.toDouble(), 'g', type == DataType::Real32 ? 9 : 17);
+    if (datatype::isReal(type)) {
+        const double d = raw.toDouble();
+        // QString::number() prints -0.0 as "0", which parses back to +0.0: other bits than
+        // the device sent, e.g. when a backup is restored.
+        if (d == 0 && std::signbit(d))
+            return QStringLiteral("-0");
+        return QString::number(d, 'g', type == DataType::Real32 ? 9 : 17);
+    }
     if (type == DataType::VisibleString || type == DataType::UnicodeString)
         return raw.toString();
     return QString::fromLatin1(raw.toByteArray().toHex(' ').toUpper());

@@ -129,7 +129,8 @@ namespace {
 std::optional<qlonglong> nodeIdOffset(const QString &text, bool allowOctal)
 {
     QString t = text;
-    t.remove(QRegularExpression(QStringLiteral("\\s")));
+    static const QRegularExpression space(QStringLiteral("\\s"));
+    t.remove(space);
     const QStringList terms = t.split(QLatin1Char('+'));
     qlonglong sum = 0;
     int nodeIds = 0;

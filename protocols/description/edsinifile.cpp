@@ -35,21 +35,25 @@ IniFile IniFile::parse(const QString &text, QStringList *warnings)
     const QStringList lines = text.split(QLatin1Char('\n'));
     for (int i = 0; i < lines.size(); ++i) {
         const QString line = lines.at(i).trimmed(); // also drops the CR of CRLF
-        const QString where = Tr::tr("line %1").arg(i + 1);
+        // Made only for a warning: translating and formatting it for every line was most of
+        // the time spent reading a file.
+        const auto where = [i] {
+            return Tr::tr("line %1").arg(i + 1);
+        };
         if (line.isEmpty() || line.startsWith(QLatin1Char(';'))
             || line.startsWith(QLatin1Char('#')))
             continue;
         if (line.startsWith(QLatin1Char('['))) {
             const qsizetype close = line.indexOf(QLatin1Char(']'));
             if (close < 0) {
-                warn(where, Tr::tr("broken section header '%1'; skipped").arg(line));
+                warn(where(), Tr::tr("broken section header '%1'; skipped").arg(line));
                 current = nullptr;
                 continue;
             }
             const QString name = line.mid(1, close - 1).trimmed();
             const QString key = name.toUpper();
             if (ini.sections.contains(key))
-                warn(where, Tr::tr("section [%1] appears again; merged").arg(name));
+                warn(where(), Tr::tr("section [%1] appears again; merged").arg(name));
             current = &ini.sections[key];
             if (current->name.isEmpty()) {
                 current->name = name;
@@ -59,13 +63,13 @@ IniFile IniFile::parse(const QString &text, QStringList *warnings)
         }
         const qsizetype eq = line.indexOf(QLatin1Char('='));
         if (eq <= 0 || !current) {
-            warn(where,
+            warn(where(),
                  Tr::tr("'%1' is not a key=value line in a section; ignored").arg(line.left(40)));
             continue;
         }
         const QString key = line.left(eq).trimmed().toLower();
         if (current->values.contains(key))
-            warn(where,
+            warn(where(),
                  Tr::tr("[%1] %2 given twice; the last one is used")
                      .arg(current->name, line.left(eq).trimmed()));
         current->values.insert(key, line.mid(eq + 1).trimmed());

@@ -103,7 +103,9 @@ private:
                 m_entries.remove(command);
             });
         }
-        onStatus(command, command->status()); // a refusal may have ended it already
+        // commandStarted comes before the axis starts the command: its status is still the one
+        // of its previous run (Done, Error), which says nothing about this one. Even a refusal
+        // arrives later, through statusChanged.
     }
 
     void onStatus(MotionCommand *command, MotionCommand::Status s)

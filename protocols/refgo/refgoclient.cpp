@@ -2,6 +2,7 @@
 
 #include "refgologging.h"
 #include <QCoreApplication>
+#include <QMetaMethod>
 
 namespace {
 // The context of this file's translated messages.
@@ -20,7 +21,7 @@ namespace {
 std::optional<QString> deviceErrorLine(const QStringList &lines)
 {
     for (const QString &line : lines) {
-        if (line.trimmed().startsWith(QLatin1String("ERROR"), Qt::CaseInsensitive)
+        if (QStringView(line).trimmed().startsWith(QLatin1String("ERROR"), Qt::CaseInsensitive)
             || line.contains(QLatin1Char('?')))
             return line;
     }
@@ -42,7 +43,6 @@ RefgoClient::RefgoClient(ByteStream *stream, QObject *parent)
     // flight and is no late one belongs to that command, so a wrong echo breaks the exchange.
     m_engine.setForeignAnswerFails(true);
     m_engine.setTimeoutMs(kDefaultTimeoutMs);
-    connect(&m_engine, &RequestEngineBase::logLine, this, &RefgoClient::logLine);
 }
 
 RefgoClient::~RefgoClient()
@@ -68,14 +68,20 @@ Reply *RefgoClient::execute(const QString &rawCommand)
                                               "non-printable or non-ASCII character")
                                            .arg(rawCommand)));
     }
-    return enqueue(rawCommand,
-                   [](const QStringList &lines) -> Result<QVariant> { return QVariant(lines); });
+    return enqueue(rawCommand, [](const QString &, const QStringList &lines) -> Result<QVariant> {
+        return QVariant(lines);
+    });
 }
 
 Reply *RefgoClient::enqueue(const QString &text, Decoder decode, ObjectAddress address)
 {
-    return m_engine.submit(text.toLatin1() + '\r', text,
-                           Protocol::Matcher { text, std::move(decode) }, address);
+    // The line as sent, CR included, in one allocation (this runs for every request).
+    QByteArray bytes(text.size() + 1, '\r');
+    char *out = bytes.data();
+    for (const QChar c : text)
+        *out++ = c.unicode() < 0x100 ? char(c.unicode()) : '?';
+    return m_engine.submit(std::move(bytes), text, Protocol::Matcher { text, std::move(decode) },
+                           address);
 }
 
 Verdict RefgoClient::Protocol::Matcher::operator()(const Answer &answer) const
@@ -85,12 +91,20 @@ Verdict RefgoClient::Protocol::Matcher::operator()(const Answer &answer) const
     if (const auto line = deviceErrorLine(answer.lines))
         return Verdict::mine(Error(Error::Kind::DeviceError,
                                    Tr::tr("drive refused '%1': %2").arg(answer.echo, *line)));
-    return Verdict::mine(decode(answer.lines));
+    return Verdict::mine(decode(text, answer.lines));
 }
 
 QString RefgoClient::Protocol::summary(const Answer &answer)
 {
     return describeAnswer(answer.lines);
+}
+
+void RefgoClient::connectNotify(const QMetaMethod &signal)
+{
+    if (!m_forwardingLog && signal == QMetaMethod::fromSignal(&RefgoClient::logLine)) {
+        m_forwardingLog = true;
+        connect(&m_engine, &RequestEngineBase::logLine, this, &RefgoClient::logLine);
+    }
 }
 
 } // namespace db::refgo

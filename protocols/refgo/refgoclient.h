@@ -94,9 +94,17 @@ Q_SIGNALS:
     // One human-readable line per request, answer, drop or error, for the log console.
     void logLine(const QString &line);
 
+protected:
+    // logLine() is forwarded from the engine once someone listens, so that a client nobody
+    // logs formats no log lines.
+    void connectNotify(const QMetaMethod &signal) override;
+
 private:
-    // Turns the result lines of a matched answer into the reply's value.
-    using Decoder = std::function<Result<QVariant>(const QStringList &lines)>;
+    // Turns the result lines of a matched answer to `command` into the reply's value. It gets
+    // the command rather than capturing it, so that most decoders fit std::function's inline
+    // storage and a request allocates no decoder.
+    using Decoder =
+        std::function<Result<QVariant>(const QString &command, const QStringList &lines)>;
     // RefGo for the request engine: answers framed by Framer, matched by their echo line.
     struct Protocol
     {
@@ -115,6 +123,7 @@ private:
     Reply *enqueue(const QString &text, Decoder decode, ObjectAddress address = {});
 
     RequestEngine<Protocol> m_engine;
+    bool m_forwardingLog = false;
 };
 
 } // namespace db::refgo

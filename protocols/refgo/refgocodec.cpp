@@ -79,9 +79,9 @@ struct ScannedNumber
     bool hex = false;
 };
 
-Result<ScannedNumber> scanNumber(const QString &original)
+Result<ScannedNumber> scanNumber(QStringView original)
 {
-    QStringView t = QStringView(original).trimmed();
+    QStringView t = original.trimmed();
     ScannedNumber n;
     if (t.startsWith(QLatin1Char('-')) || t.startsWith(QLatin1Char('+'))) {
         n.negative = t.front() == QLatin1Char('-');
@@ -95,25 +95,25 @@ Result<ScannedNumber> scanNumber(const QString &original)
         t.chop(1);
     }
     if (t.isEmpty())
-        return invalid(Tr::tr("'%1' is not a number").arg(original));
+        return invalid(Tr::tr("'%1' is not a number").arg(original.toString()));
     for (QChar c : t) {
         const bool digit = c >= QLatin1Char('0') && c <= QLatin1Char('9');
         const bool hexLetter = (c >= QLatin1Char('a') && c <= QLatin1Char('f'))
             || (c >= QLatin1Char('A') && c <= QLatin1Char('F'));
         if (!digit && !(n.hex && hexLetter))
-            return invalid(Tr::tr("'%1' is not a number").arg(original));
+            return invalid(Tr::tr("'%1' is not a number").arg(original.toString()));
     }
     bool ok = false;
     n.magnitude = t.toULongLong(&ok, n.hex ? 16 : 10);
     if (!ok)
-        return invalid(Tr::tr("'%1' is too large").arg(original));
+        return invalid(Tr::tr("'%1' is too large").arg(original.toString()));
     return n;
 }
 
 // Index or sub-index field: hexadecimal, with or without "h" suffix or "0x" prefix (spec 3.2).
-Result<quint32> parseHexField(const QString &field, quint32 max, const QString &what)
+Result<quint32> parseHexField(QStringView field, quint32 max, const QString &what)
 {
-    QStringView t = QStringView(field).trimmed();
+    QStringView t = field.trimmed();
     if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
         t = t.mid(2);
     else if (endsWithH(t))
@@ -123,13 +123,13 @@ Result<quint32> parseHexField(const QString &field, quint32 max, const QString &
     bool ok = false;
     const qulonglong v = t.toULongLong(&ok, 16);
     if (!ok || t.startsWith(QLatin1Char('+')) || t.startsWith(QLatin1Char('-')))
-        return invalid(Tr::tr("%1 '%2' is not hexadecimal").arg(what, field.trimmed()));
+        return invalid(Tr::tr("%1 '%2' is not hexadecimal").arg(what, field.trimmed().toString()));
     if (v > max)
-        return invalid(Tr::tr("%1 '%2' is too large").arg(what, field.trimmed()));
+        return invalid(Tr::tr("%1 '%2' is too large").arg(what, field.trimmed().toString()));
     return quint32(v);
 }
 
-Result<ObjectAddress> parseAddress(const QString &indexField, const QString &subField)
+Result<ObjectAddress> parseAddress(QStringView indexField, QStringView subField)
 {
     const auto index = parseHexField(indexField, 0xFFFF, QStringLiteral("index"));
     if (!index)
@@ -206,13 +206,22 @@ QString format(Command command, std::optional<qint64> argument)
 
 QString formatRead(ObjectAddress address, bool hexOutput)
 {
-    QString text = QStringLiteral("OR%1,%2")
-                       .arg(address.index, 4, 16, QLatin1Char('0'))
-                       .arg(address.sub, 0, 16)
-                       .toUpper();
-    if (hexOutput)
-        text += QLatin1String(",h");
-    return text;
+    // Written digit by digit: this runs for every object read, and QString::arg would
+    // allocate three strings.
+    static constexpr char kDigits[] = "0123456789ABCDEF";
+    char text[12] = { 'O', 'R' };
+    qsizetype n = 2;
+    for (int shift = 12; shift >= 0; shift -= 4)
+        text[n++] = kDigits[(address.index >> shift) & 0xF];
+    text[n++] = ',';
+    if (address.sub > 0xF)
+        text[n++] = kDigits[address.sub >> 4];
+    text[n++] = kDigits[address.sub & 0xF];
+    if (hexOutput) {
+        text[n++] = ',';
+        text[n++] = 'h';
+    }
+    return QString::fromLatin1(text, n);
 }
 
 QString formatWrite(ObjectAddress address, const QVariant &value)
@@ -296,7 +305,9 @@ Result<Request> parseRequest(const QString &line)
     return r;
 }
 
-Result<qint64> parseNumber(const QString &text)
+namespace {
+
+Result<qint64> parseNumberView(QStringView text)
 {
     const auto n = scanNumber(text);
     if (!n)
@@ -305,31 +316,107 @@ Result<qint64> parseNumber(const QString &text)
     const auto signedMax = qulonglong(std::numeric_limits<qint64>::max());
     if (v.negative) {
         if (v.magnitude > signedMax + 1)
-            return invalid(Tr::tr("'%1' is too small").arg(text.trimmed()));
+            return invalid(Tr::tr("'%1' is too small").arg(text.trimmed().toString()));
         return qint64(0 - v.magnitude);
     }
     if (!v.hex && v.magnitude > signedMax)
-        return invalid(Tr::tr("'%1' is too large").arg(text.trimmed()));
+        return invalid(Tr::tr("'%1' is too large").arg(text.trimmed().toString()));
     return qint64(v.magnitude); // hex: the unsigned bit pattern
 }
 
+} // namespace
+
+Result<qint64> parseNumber(const QString &text)
+{
+    return parseNumberView(text);
+}
+
+namespace {
+
+// Digits of `text` from `pos` up to `stop` (or the end) in base 16 or 10, at most maxDigits of
+// them; the position after them, or -1 when there are none, too many, or another character.
+qsizetype scanDigits(QStringView text, qsizetype pos, char16_t stop, int base, int maxDigits,
+                     quint64 &value)
+{
+    value = 0;
+    const qsizetype start = pos;
+    for (; pos < text.size() && text[pos].unicode() != stop; ++pos) {
+        const char16_t c = text[pos].unicode();
+        unsigned digit;
+        if (c >= u'0' && c <= u'9')
+            digit = c - u'0';
+        else if (base == 16 && c >= u'A' && c <= u'F')
+            digit = c - u'A' + 10;
+        else if (base == 16 && c >= u'a' && c <= u'f')
+            digit = c - u'a' + 10;
+        else
+            return -1;
+        value = value * unsigned(base) + digit;
+    }
+    const qsizetype digits = pos - start;
+    return digits == 0 || digits > maxDigits ? -1 : pos;
+}
+
+// The drive's own form of an OR result line, "OR6041,0,1591" or "OR6041,0,427h", read without
+// the general parser's string work: it comes once for every object read. False for anything
+// else (spaces, prefixes, signs on hex, more digits), which the general parser then reads.
+bool parseCanonicalObjectRead(QStringView t, ObjectValue &out)
+{
+    if (t.size() < 7 || t[0] != u'O' || t[1] != u'R')
+        return false;
+    quint64 index = 0;
+    quint64 sub = 0;
+    quint64 magnitude = 0;
+    qsizetype pos = scanDigits(t, 2, u',', 16, 4, index);
+    if (pos < 0 || pos == t.size())
+        return false;
+    pos = scanDigits(t, pos + 1, u',', 16, 2, sub);
+    if (pos < 0 || ++pos >= t.size())
+        return false;
+    const bool hex = t.back() == u'h' || t.back() == u'H';
+    if (hex) {
+        if (scanDigits(t.first(t.size() - 1), pos, u',', 16, 16, magnitude) != t.size() - 1)
+            return false;
+        out = { ObjectAddress(quint16(index), quint8(sub)), qint64(magnitude), true };
+        return true;
+    }
+    const bool negative = t[pos] == u'-';
+    if (scanDigits(t, negative ? pos + 1 : pos, u',', 10, 18, magnitude) != t.size())
+        return false;
+    const qint64 value = qint64(magnitude); // 18 digits always fit
+    out = { ObjectAddress(quint16(index), quint8(sub)), negative ? -value : value, false };
+    return true;
+}
+
+} // namespace
+
+// Fields are views into the line, not copies: this runs once for every object read.
 Result<ObjectValue> parseObjectRead(const QString &line)
 {
-    const QString t = line.trimmed();
+    if (ObjectValue canonical; parseCanonicalObjectRead(line, canonical))
+        return canonical;
+    const QStringView t = QStringView(line).trimmed();
     if (!t.startsWith(QLatin1String("OR"), Qt::CaseInsensitive))
-        return invalid(Tr::tr("'%1' is not an OR result line").arg(t));
-    const QStringList fields = t.mid(2).split(QLatin1Char(','));
-    if (fields.size() < 3 || fields.at(2).trimmed().isEmpty())
-        return invalid(Tr::tr("'%1' has no value field").arg(t));
-    if (fields.size() > 3)
-        return invalid(Tr::tr("'%1' has more than three fields").arg(t));
-    const auto address = parseAddress(fields.at(0), fields.at(1));
+        return invalid(Tr::tr("'%1' is not an OR result line").arg(t.toString()));
+    const QStringView fields = t.sliced(2);
+    const qsizetype first = fields.indexOf(QLatin1Char(','));
+    const qsizetype second = first < 0 ? -1 : fields.indexOf(QLatin1Char(','), first + 1);
+    const qsizetype third = second < 0 ? -1 : fields.indexOf(QLatin1Char(','), second + 1);
+    const QStringView valueField = second < 0
+        ? QStringView()
+        : fields.sliced(second + 1, (third < 0 ? fields.size() : third) - second - 1);
+    const QStringView v = valueField.trimmed();
+    if (v.isEmpty())
+        return invalid(Tr::tr("'%1' has no value field").arg(t.toString()));
+    if (third >= 0)
+        return invalid(Tr::tr("'%1' has more than three fields").arg(t.toString()));
+    const auto address =
+        parseAddress(fields.first(first), fields.sliced(first + 1, second - first - 1));
     if (!address)
-        return address.error().prefixed(t);
-    const auto value = parseNumber(fields.at(2));
+        return address.error().prefixed(t.toString());
+    const auto value = parseNumberView(valueField);
     if (!value)
-        return value.error().prefixed(t);
-    const QString v = fields.at(2).trimmed();
+        return value.error().prefixed(t.toString());
     return ObjectValue { address.value(), value.value(),
                          endsWithH(v) || v.contains(QLatin1String("0x"), Qt::CaseInsensitive) };
 }

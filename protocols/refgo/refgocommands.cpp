@@ -49,7 +49,7 @@ bool isBrokenNumber(const QString &line)
     return numeric;
 }
 
-Result<QVariant> decodeNone(const QStringList &)
+Result<QVariant> decodeNone(const QString &, const QStringList &)
 {
     return QVariant();
 }
@@ -86,28 +86,30 @@ Reply *RefgoClient::send(Command command, std::optional<qint64> argument)
     const QString text = format(command, argument);
     switch (command) {
     case Command::TPSR:
-        return enqueue(text, [text](const QStringList &lines) -> Result<QVariant> {
-            const auto line = singleLine(text, lines);
+        return enqueue(text, [](const QString &sent, const QStringList &lines) -> Result<QVariant> {
+            const auto line = singleLine(sent, lines);
             if (!line)
                 return line.error();
             const auto status = parseTpsr(line.value());
             if (!status)
-                return malformed(text, status.error().message());
+                return malformed(sent, status.error().message());
             return QVariant::fromValue<quint32>(status->raw);
         });
     case Command::TS:
-        return enqueue(text, [text](const QStringList &lines) -> Result<QVariant> {
-            const auto v = decodeInteger(text, lines, false);
+        return enqueue(text, [](const QString &sent, const QStringList &lines) -> Result<QVariant> {
+            const auto v = decodeInteger(sent, lines, false);
             if (!v)
                 return v;
             return QVariant(int(v.value().toLongLong()));
         });
     case Command::TP:
-        return enqueue(
-            text, [text](const QStringList &lines) { return decodeInteger(text, lines, false); });
+        return enqueue(text, [](const QString &sent, const QStringList &lines) {
+            return decodeInteger(sent, lines, false);
+        });
     case Command::TI:
-        return enqueue(
-            text, [text](const QStringList &lines) { return decodeInteger(text, lines, true); });
+        return enqueue(text, [](const QString &sent, const QStringList &lines) {
+            return decodeInteger(sent, lines, true);
+        });
     default:
         return enqueue(text, decodeNone);
     }
@@ -215,24 +217,24 @@ Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
     const QString text = formatRead(address, hexOutput);
     return enqueue(
         text,
-        [text, address](const QStringList &lines) -> Result<QVariant> {
+        [address](const QString &sent, const QStringList &lines) -> Result<QVariant> {
             // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
             if (lines.isEmpty())
                 return Error(Error::Kind::DeviceError,
-                             Tr::tr("drive gave no value for '%1'").arg(text));
-            const auto line = singleLine(text, lines);
+                             Tr::tr("drive gave no value for '%1'").arg(sent));
+            const auto line = singleLine(sent, lines);
             if (!line)
                 return line.error();
             const auto value = parseObjectRead(line.value());
             if (!value && isBrokenNumber(line.value()))
-                return malformed(text, value.error().message());
+                return malformed(sent, value.error().message());
             if (!value)
                 return Error(
                     Error::Kind::DeviceError,
-                    Tr::tr("drive gave no value for '%1': %2").arg(text, value.error().message()));
+                    Tr::tr("drive gave no value for '%1': %2").arg(sent, value.error().message()));
             if (value->address != address)
                 return malformed(
-                    text,
+                    sent,
                     Tr::tr("names object %1: '%2'").arg(value->address.toString(), line.value()));
             return QVariant::fromValue<qlonglong>(value->value);
         },
@@ -264,7 +266,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
     const QString text = formatWrite(address, value);
     return enqueue(
         text,
-        [text](const QStringList &lines) -> Result<QVariant> {
+        [](const QString &sent, const QStringList &lines) -> Result<QVariant> {
             // Spec 3.7 [R]: every OW result line must end in ",OK" (and there must be one).
             const bool acknowledged = !lines.isEmpty()
                 && std::all_of(lines.begin(), lines.end(), [](const QString &line) {
@@ -273,7 +275,7 @@ Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)
             if (!acknowledged)
                 return Error(Error::Kind::DeviceError,
                              Tr::tr("drive did not acknowledge '%1' with ',OK': %2")
-                                 .arg(text,
+                                 .arg(sent,
                                       lines.isEmpty() ? QStringLiteral("(no result)")
                                                       : lines.join(QLatin1String(" / "))));
             return QVariant();

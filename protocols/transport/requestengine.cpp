@@ -1,5 +1,6 @@
 #include "requestengine.h"
 #include <QCoreApplication>
+#include <QMetaMethod>
 
 namespace {
 // The context of this file's translated messages.
@@ -17,13 +18,12 @@ RequestEngineBase::RequestEngineBase(ByteStream *stream, Category category, Cate
     , m_stream(stream)
     , m_category(category)
     , m_rawCategory(rawCategory)
+    , m_timer([this] { onTimeout(); })
 {
     qRegisterMetaType<db::Error>();
-    m_timer.setSingleShot(true);
     m_quiet.setSingleShot(true);
     m_quiet.setInterval(0);
     m_keepAlive.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, [this] { onTimeout(); });
     connect(&m_quiet, &QTimer::timeout, this, [this] { onQuietOver(); });
     connect(&m_keepAlive, &QTimer::timeout, this, [this] { onKeepAliveDue(); });
     connect(m_stream, &ByteStream::received, this,
@@ -45,6 +45,12 @@ bool RequestEngineBase::writeRaw(const QByteArray &bytes)
     return true;
 }
 
+bool RequestEngineBase::wantsLogLines() const
+{
+    static const QMetaMethod signal = QMetaMethod::fromSignal(&RequestEngineBase::logLine);
+    return isSignalConnected(signal);
+}
+
 void RequestEngineBase::transmitted(const QString &label, int transmission, bool keepAlive)
 {
     m_timer.start(m_timeoutMs);
@@ -53,6 +59,8 @@ void RequestEngineBase::transmitted(const QString &label, int transmission, bool
         qCDebug(m_category).noquote() << "keep-alive" << label << "to" << m_stream->peerName();
         return;
     }
+    if (!wantsLogLines())
+        return;
     if (transmission == 1)
         Q_EMIT logLine(QStringLiteral("> ") + label);
     else

@@ -14,7 +14,8 @@
 // - Each answer is shown to the matcher of the request in flight: Mine (its value, or
 //   Malformed/DeviceError when it is the request's answer but unusable), NotMine, or Retry
 //   (the device asks for the request again).
-// - Timeout: one QTimer, restarted for every transmission. On timeout the request is sent
+// - Timeout: one ResponseTimer, restarted for every transmission (without registering a
+//   dispatcher timer per request). On timeout the request is sent
 //   again while it has had fewer than maxTransmissions() transmissions (default 1: no resend),
 //   else it fails with Timeout. A Retry verdict resends the same way, or fails with the
 //   verdict's reason once the transmissions are used up.
@@ -50,6 +51,7 @@
 #include "bytestream.h"
 #include "core/reply.h"
 #include "core/result.h"
+#include "responsetimer.h"
 
 #include <QList>
 #include <QLoggingCategory>
@@ -135,6 +137,8 @@ protected:
     // After a transmission: starts its timeout and the keep-alive idle time, logs it.
     void transmitted(const QString &label, int transmission, bool keepAlive);
     void stopTimeout() { m_timer.stop(); }
+    // True when someone listens to logLine(): the lines are only formatted for a listener.
+    bool wantsLogLines() const;
     bool isQuiet() const { return m_quiet.isActive(); }
     void startQuiet();
     void enableKeepAlive(int idleMs);
@@ -161,7 +165,7 @@ private:
     ByteStream *m_stream;
     Category m_category;
     Category m_rawCategory;
-    QTimer m_timer; // time limit of the transmission in flight
+    ResponseTimer m_timer; // time limit of the transmission in flight
     QTimer m_quiet; // after a timeout: late answers are dropped, nothing is sent
     QTimer m_keepAlive; // idle time before the next keep-alive
     int m_timeoutMs = kDefaultTimeoutMs;
@@ -362,7 +366,8 @@ private:
         }
         forgetAbandoned();
         ++m_inFlight->answered;
-        logAnswer(Protocol::summary(answer), m_inFlight->keepAlive);
+        if (m_inFlight->keepAlive || wantsLogLines())
+            logAnswer(Protocol::summary(answer), m_inFlight->keepAlive);
         if (verdict->kind == Verdict::Kind::Retry && mayResend()) {
             logRetry(m_inFlight->label, verdict->result.error().message(), m_inFlight->sent + 1);
             resend();

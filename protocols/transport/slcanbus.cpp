@@ -122,6 +122,14 @@ void SlcanBus::onStreamClosed(const Error &error)
 void SlcanBus::onReceived(const QByteArray &bytes)
 {
     qCDebug(lcSlcanRaw) << name() << "<-" << bytes;
+    if (m_backlog.isEmpty() && !m_skipping && !m_draining && bytes.size() <= kSliceBytes) {
+        // The usual case, a few frames with nothing waiting: decoded as they are, not copied
+        // through the backlog.
+        m_peakBacklog = qMax(m_peakBacklog, bytes.size());
+        m_draining = true;
+        decode(bytes);
+        return;
+    }
     enqueue(bytes);
     drain();
 }
@@ -164,6 +172,13 @@ void SlcanBus::drain()
     m_draining = true;
     const QByteArray slice = m_backlog.first(qMin(kSliceBytes, m_backlog.size()));
     m_backlog.remove(0, slice.size());
+    decode(slice);
+}
+
+// Hands the messages of one slice to their receivers (m_draining is set), then schedules the
+// rest of the backlog.
+void SlcanBus::decode(const QByteArray &slice)
+{
     for (const slcan::Message &m : m_decoder.feed(slice)) {
         handle(m);
         if (state() != State::Open)

@@ -54,6 +54,7 @@ private:
     void onReceived(const QByteArray &bytes);
     void enqueue(const QByteArray &bytes);
     void drain();
+    void decode(const QByteArray &slice);
     void handle(const slcan::Message &m);
 
     ByteStream *m_stream;

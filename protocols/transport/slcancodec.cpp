@@ -4,7 +4,7 @@ namespace db::slcan {
 
 namespace {
 
-std::optional<quint32> hexValue(const QByteArray &text)
+std::optional<quint32> hexValue(QByteArrayView text)
 {
     if (text.isEmpty())
         return std::nullopt;
@@ -24,7 +24,7 @@ std::optional<quint32> hexValue(const QByteArray &text)
     return value;
 }
 
-bool isHex(const QByteArray &text)
+bool isHex(QByteArrayView text)
 {
     return text.isEmpty() || hexValue(text).has_value();
 }
@@ -46,7 +46,7 @@ Message parseFrame(const QByteArray &line)
     const int idDigits = extended ? 8 : 3;
     if (line.size() < 1 + idDigits + 1)
         return unknown(line);
-    const auto id = hexValue(line.mid(1, idDigits));
+    const auto id = hexValue(QByteArrayView(line).sliced(1, idDigits));
     const char dlcChar = line.at(1 + idDigits);
     if (!id || *id > (extended ? 0x1FFFFFFFu : 0x7FFu) || dlcChar < '0' || dlcChar > '8')
         return unknown(line);
@@ -60,14 +60,19 @@ Message parseFrame(const QByteArray &line)
     if (remote) {
         payload = QByteArray(dlc, '\0'); // Qt carries the DLC of a remote frame as payload size
     } else {
-        const QByteArray hex = line.mid(dataStart, dataDigits);
-        if (!isHex(hex))
-            return unknown(line);
-        payload = QByteArray::fromHex(hex);
+        // Decoded in place (this runs for every received frame): no copies of the hex digits.
+        payload = QByteArray(dlc, Qt::Uninitialized);
+        const char *hex = line.constData() + dataStart;
+        for (int i = 0; i < dlc; ++i) {
+            const auto byte = hexValue(QByteArrayView(hex + 2 * i, 2));
+            if (!byte)
+                return unknown(line);
+            payload[i] = char(*byte);
+        }
     }
     Message m;
     if (rest == 4) {
-        const auto stamp = hexValue(line.right(4));
+        const auto stamp = hexValue(QByteArrayView(line).last(4));
         if (!stamp)
             return unknown(line);
         m.timestamp = quint16(*stamp);
@@ -101,7 +106,7 @@ Message parseLine(const QByteArray &line)
         return m;
     }
     const char letter = line.at(0);
-    const QByteArray arg = line.mid(1);
+    const QByteArrayView arg = QByteArrayView(line).sliced(1);
     switch (letter) {
     case 't':
     case 'T':
@@ -140,7 +145,9 @@ Message parseLine(const QByteArray &line)
 QList<Message> Decoder::feed(const QByteArray &bytes)
 {
     QList<Message> out;
-    for (const char c : bytes) {
+    const char *const end = bytes.constEnd();
+    for (const char *p = bytes.constBegin(); p != end; ++p) {
+        const char c = *p;
         if (c == kBell) {
             Message m;
             m.kind = Message::Kind::Bell;
@@ -154,7 +161,15 @@ QList<Message> Decoder::feed(const QByteArray &bytes)
             }
             m_line.clear();
         } else if (m_line.size() < kMaxLineLength) {
-            m_line.append(c);
+            // The run of ordinary bytes up to the next terminator or BEL, appended at once.
+            const char *runEnd = p + 1;
+            while (runEnd != end && *runEnd != kCr && *runEnd != '\n' && *runEnd != kBell)
+                ++runEnd;
+            const qsizetype take = qMin<qsizetype>(runEnd - p, kMaxLineLength - m_line.size());
+            m_line.append(p, take);
+            if (take < runEnd - p)
+                m_overflow = true; // keep the first kMaxLineLength bytes for the report
+            p = runEnd - 1;
         } else {
             m_overflow = true; // keep the first kMaxLineLength bytes for the report
         }
@@ -171,20 +186,33 @@ void Decoder::reset()
 QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timestamp)
 {
     const bool remote = frame.frameType() == QCanBusFrame::RemoteRequestFrame;
+    const QByteArray payload = frame.payload();
     if ((frame.frameType() != QCanBusFrame::DataFrame && !remote)
-        || frame.hasFlexibleDataRateFormat() || frame.payload().size() > 8)
+        || frame.hasFlexibleDataRateFormat() || payload.size() > 8)
         return {};
+    // Written digit by digit into one allocation: this runs for every frame sent.
+    static constexpr char kDigits[] = "0123456789ABCDEF";
     const bool extended = frame.hasExtendedFrameFormat();
-    QByteArray line;
-    line += extended ? (remote ? 'R' : 'T') : (remote ? 'r' : 't');
-    line += QByteArray::number(frame.frameId(), 16).toUpper().rightJustified(extended ? 8 : 3, '0');
-    line += char('0' + frame.payload().size());
-    if (!remote)
-        line += frame.payload().toHex().toUpper();
-    if (timestamp)
-        line += QByteArray::number(*timestamp, 16).toUpper().rightJustified(4, '0');
-    line += kCr;
-    return line;
+    const int idDigits = extended ? 8 : 3;
+    char text[1 + 8 + 1 + 16 + 4 + 1];
+    qsizetype n = 0;
+    text[n++] = extended ? (remote ? 'R' : 'T') : (remote ? 'r' : 't');
+    const quint32 id = frame.frameId();
+    for (int shift = 4 * (idDigits - 1); shift >= 0; shift -= 4)
+        text[n++] = kDigits[(id >> shift) & 0xF];
+    text[n++] = char('0' + payload.size());
+    if (!remote) {
+        for (const char byte : payload) {
+            text[n++] = kDigits[(uchar(byte) >> 4) & 0xF];
+            text[n++] = kDigits[uchar(byte) & 0xF];
+        }
+    }
+    if (timestamp) {
+        for (int shift = 12; shift >= 0; shift -= 4)
+            text[n++] = kDigits[(*timestamp >> shift) & 0xF];
+    }
+    text[n++] = kCr;
+    return QByteArray(text, n);
 }
 
 QByteArray encodeCommand(char command, const QByteArray &argument)

@@ -3,6 +3,7 @@
 #include "vabuslogging.h"
 
 #include <QCoreApplication>
+#include <QMetaMethod>
 
 namespace db::vabus {
 
@@ -36,7 +37,6 @@ VabusClient::VabusClient(ByteStream *stream, QObject *parent)
     m_engine.setMaxTransmissions(kMaxTransmissions);
     m_engine.setDropsPartialAnswerOnTimeout(true);
     m_engine.setLateGraceMs(kLateGraceMs);
-    connect(&m_engine, &RequestEngineBase::logLine, this, &VabusClient::logLine);
     updateKeepAlive();
 }
 
@@ -164,6 +164,14 @@ QString VabusClient::Protocol::identify(const Answer &answer)
     if (answer.kind != Frame::Kind::Telegram)
         return answer.problem;
     return label(answer.telegram);
+}
+
+void VabusClient::connectNotify(const QMetaMethod &signal)
+{
+    if (!m_forwardingLog && signal == QMetaMethod::fromSignal(&VabusClient::logLine)) {
+        m_forwardingLog = true;
+        connect(&m_engine, &RequestEngineBase::logLine, this, &VabusClient::logLine);
+    }
 }
 
 } // namespace db::vabus

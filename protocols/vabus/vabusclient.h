@@ -82,6 +82,11 @@ Q_SIGNALS:
     // One human-readable line per request, answer, drop or error, for the log console.
     void logLine(const QString &line);
 
+protected:
+    // logLine() is forwarded from the engine once someone listens, so that a client nobody
+    // logs formats no log lines.
+    void connectNotify(const QMetaMethod &signal) override;
+
 private:
     struct Protocol
     {
@@ -103,6 +108,7 @@ private:
     RequestEngine<Protocol> m_engine;
     quint8 m_sys = 0;
     int m_keepAliveIdleMs = kDefaultKeepAliveIdleMs;
+    bool m_forwardingLog = false;
 };
 
 // "372:2" (parameter:data set), for messages.

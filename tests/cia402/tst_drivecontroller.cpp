@@ -2,10 +2,12 @@
 // MovingCap in-process, over RefGo (OR/OW) and over CANopen SDO (SLCAN door, node 50).
 #include "cia402/drivecontroller.h"
 #include "cia402/modes.h"
+#include "cia402/sequence.h"
 #include "cia402/statusword.h"
 #include "devices/movingcap/movingcapfaults.h"
 #include "driverig.h"
 
+#include <QElapsedTimer>
 #include <QTest>
 
 using namespace db;
@@ -122,6 +124,83 @@ private Q_SLOTS:
         QCOMPARE(r.error().kind(), Error::Kind::Timeout);
         QVERIFY2(r.error().message().contains(QLatin1String("Ready to switch on")),
                  qPrintable(r.error().message()));
+    }
+    // A wait step is judged by its own status read: one answered after the step's time (here
+    // every answer takes 60 ms, the step allows 20) is an answer, not "no answer"; the state
+    // it shows decides.
+    void waitJudgedByItsOwnStatusRead()
+    {
+        auto rig = makeRig(QStringLiteral("sim"));
+        QVERIFY(rig);
+        rig->sim->immediate = false;
+        rig->sim->replyDelayMs = 60;
+        auto reached = [](quint16 word, QString &) {
+            return (word & 0x4F) == 0x40 ? WaitVerdict::Reached : WaitVerdict::Pending;
+        };
+        auto *seq = new Sequence(rig->connection.get(), QStringLiteral("slow drive"));
+        seq->waitFor(QStringLiteral("switch on disabled"), reached, 20);
+        auto r = await(seq->start(), 5000);
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QCOMPARE(quint16(r->toUInt()) & 0x4F, 0x40);
+
+        // Answered late and not there: the state is named, not a missing answer.
+        auto *late = new Sequence(rig->connection.get(), QStringLiteral("slow drive"));
+        late->waitFor(
+            QStringLiteral("operation enabled"),
+            [](quint16, QString &) { return WaitVerdict::Pending; }, 20);
+        r = await(late->start(), 5000);
+        QCOMPARE(r.error().kind(), Error::Kind::Timeout);
+        QVERIFY2(r.error().message().contains(QLatin1String("operation enabled did not happen")),
+                 qPrintable(r.error().message()));
+        QVERIFY2(r.error().message().contains(QLatin1String("statusword 0x")),
+                 qPrintable(r.error().message()));
+    }
+    // The same over RefGo and CANopen SDO, where requests go one at a time: a status read queued
+    // behind an editor's reads (here 200, past the step's 1 ms) is an answer when it comes.
+    void waitBehindQueuedReads_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+    void waitBehindQueuedReads()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        QList<Reply *> ahead;
+        for (int i = 0; i < 200; ++i)
+            ahead.append(rig->connection->read({ 0x1000, 0 }));
+        auto *seq = new Sequence(rig->connection.get(), QStringLiteral("queued"));
+        seq->waitFor(QStringLiteral("switch on disabled"), bitsSet(0x40), 1);
+        auto r = await(seq->start(), 10000);
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        for (Reply *reply : ahead) {
+            QVERIFY(reply->isFinished() && reply->ok());
+            reply->deleteLater();
+        }
+    }
+    // A status read that gets no answer: the step says so, with the read's own cause.
+    void waitWithoutStatusAnswerSaysNoAnswer()
+    {
+        auto rig = makeRig(QStringLiteral("sim"));
+        QVERIFY(rig);
+        rig->sim->immediate = false;
+        rig->connection->setRequestTimeoutMs(300);
+        rig->sim->silent.insert(kStatusword);
+        auto *seq = new Sequence(rig->connection.get(), QStringLiteral("silent drive"));
+        seq->waitFor(
+            QStringLiteral("switch on disabled"),
+            [](quint16, QString &) { return WaitVerdict::Reached; }, 20);
+        QElapsedTimer clock;
+        clock.start();
+        auto r = await(seq->start(), 5000);
+        QCOMPARE(r.error().kind(), Error::Kind::Timeout);
+        QVERIFY2(r.error().message().contains(QLatin1String("no answer")),
+                 qPrintable(r.error().message()));
+        QVERIFY2(r.error().message().startsWith(QLatin1String("silent drive: ")),
+                 qPrintable(r.error().message()));
+        QVERIFY2(clock.elapsed() >= 250, qPrintable(QString::number(clock.elapsed())));
     }
     void softwareEnableMissingFails()
     {

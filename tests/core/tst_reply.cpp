@@ -29,6 +29,7 @@ private Q_SLOTS:
     void replyDeletedBeforeDeliveryIsSkipped();
     void finishedComesWithoutATimerPass();
     void finishedComesFromLoopsThatNeverWait();
+    void loopsThatNeverWaitNeedNoTimerEither();
     void replyFinishedByAHandlerComesInTheNextPass();
 };
 
@@ -235,6 +236,22 @@ void TestReply::finishedComesFromLoopsThatNeverWait()
     while (!signalled && spent.elapsed() < 1000)
         QCoreApplication::processEvents();
     QVERIFY(signalled);
+}
+
+// Such a loop's passes each begin with the dispatcher's awake(): the reply comes from there, so
+// no request costs a timer registration, not even in a polling loop.
+void TestReply::loopsThatNeverWaitNeedNoTimerEither()
+{
+    Reply reply;
+    TimerEventCounter timers;
+    QCoreApplication::instance()->installEventFilter(&timers);
+    bool signalled = false;
+    connect(&reply, &Reply::finished, this, [&] { signalled = true; });
+    reply.finish(1);
+    QCoreApplication::processEvents();
+    QCoreApplication::instance()->removeEventFilter(&timers);
+    QVERIFY(signalled);
+    QCOMPARE(timers.count, 0);
 }
 
 // A reply finished from another reply's finished() handler is not delivered inside that

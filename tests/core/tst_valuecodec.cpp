@@ -70,6 +70,8 @@ void TestValueCodec::roundTrip_data()
     row("real32", DataType::Real32, "1.5", "0000c03f", "1.5");
     row("real32 negative", DataType::Real32, "-2e3", "0000fac4", "-2000");
     row("real64", DataType::Real64, "0.1", "9a9999999999b93f", "0.10000000000000001");
+    row("real32 negative zero", DataType::Real32, "-0", "00000080", "-0");
+    row("real64 negative zero", DataType::Real64, "-0.0", "0000000000000080", "-0");
     row("visible string", DataType::VisibleString, "MovingCap ETH", "4d6f76696e6743617020455448",
         "MovingCap ETH");
     row("empty string", DataType::VisibleString, "", "", "");

@@ -1,5 +1,7 @@
 // Level 2/3: the command model over Cia402Axis against the simulated MovingCap (in-process, over
 // RefGo and over CANopen SDO): sequences of stoeber_motion.md Sec. 10 and the safety stops.
+#include "core/changelog.h"
+#include "motion/motionchangelog.h"
 #include "motionaxisrig.h"
 
 #include <QSignalSpy>
@@ -406,6 +408,43 @@ private Q_SLOTS:
         QCOMPARE(abs.error().kind(), Error::Kind::Disconnected);
         QVERIFY(abs.error().message().contains(QLatin1String("connection lost")));
         QCOMPARE(a->axis->state(), AxisState::ErrorStop);
+    }
+    // Every start of the same MC_Power block is its own change-log entry, pending until its own
+    // outcome: not completed at once with the status of the block's previous run.
+    void eachPowerStartIsLoggedWithItsOwnOutcome()
+    {
+        auto a = makeAxis(QStringLiteral("sim"));
+        QVERIFY(a);
+        a->rig->sim->immediate = false;
+        a->rig->sim->replyDelayMs = 5;
+        ChangeLog log;
+        recordCommands(a->axis.get(), &log, QStringLiteral("drive"));
+        MotionCommand power(a->axis.get(), CommandKind::Power);
+        for (bool on : { true, false, true, false }) {
+            power.setEnable(on);
+            pulse(power);
+            QVERIFY(!log.entries().isEmpty());
+            const ChangeLog::Entry started = log.entries().last();
+            QCOMPARE(started.kind, on ? ChangeLog::Kind::Enable : ChangeLog::Kind::Disable);
+            QCOMPARE(started.outcome, ChangeLog::Outcome::Pending);
+            QTRY_COMPARE(power.status(), Status::Done);
+            QCOMPARE(log.find(started.id)->outcome, ChangeLog::Outcome::Ok);
+        }
+
+        // A failed enable, then one that works: the second is not the first's failure again.
+        a->rig->sim->silent.insert({ 0x6040, 0 });
+        a->rig->connection->setRequestTimeoutMs(100);
+        power.setEnable(true);
+        pulse(power);
+        QTRY_COMPARE(power.status(), Status::Error);
+        QCOMPARE(log.entries().last().outcome, ChangeLog::Outcome::Failed);
+        a->rig->sim->silent.clear();
+        pulse(power);
+        const int id = log.entries().last().id;
+        QCOMPARE(log.find(id)->outcome, ChangeLog::Outcome::Pending);
+        QTRY_COMPARE(power.status(), Status::Done);
+        QVERIFY2(log.find(id)->outcome == ChangeLog::Outcome::Ok,
+                 qPrintable(log.find(id)->message));
     }
     void torqueNotSupportedByMovingCap()
     {

@@ -1,7 +1,9 @@
 // Level 1: the polling schedule driven by a clock the test controls (no wall clock): late
-// wake-ups are caught up without drift, a slow read delays but loses nothing while its slot
-// lasts, a stalled link counts every slot that ended, mixed rates on a simulated link that
-// serves one read at a time lose nothing below its capacity and count honestly above it.
+// wake-ups are caught up without drift, a wake-up or a read late by several periods is caught
+// up read by read without a lost sample, a stall longer than the catch-up window loses only the
+// oldest slots, a stalled link counts every slot that ended, mixed rates on a simulated link
+// that serves one read at a time lose nothing below its capacity (also when the host stalls
+// now and then) and count honestly above it.
 #include "scope/pollschedule.h"
 
 #include <QtTest>
@@ -17,18 +19,24 @@ constexpr qint64 kMs = 1000000;
 constexpr qint64 kUs = 1000;
 
 // A link that answers one read at a time, in order, each after `serviceNs`, and a host that
-// wakes `wakeLateNs` after each deadline; time jumps from event to event.
+// wakes `wakeLateNs` after each deadline and, with stallNs > 0, sleeps through the first
+// stallNs of every stallEveryNs (a loaded machine); time jumps from event to event.
 struct SimulatedLink
 {
-    SimulatedLink(PollSchedule &s, qint64 service, qint64 wakeLate)
+    SimulatedLink(PollSchedule &s, qint64 service, qint64 wakeLate, qint64 stallEvery = 0,
+                  qint64 stall = 0)
         : schedule(s)
         , serviceNs(service)
         , wakeLateNs(wakeLate)
+        , stallEveryNs(stallEvery)
+        , stallNs(stall)
     { }
 
     PollSchedule &schedule;
     qint64 serviceNs;
     qint64 wakeLateNs;
+    qint64 stallEveryNs;
+    qint64 stallNs;
     qint64 now = 0;
     std::deque<int> queue; // channels whose read waits for (or is on) the link
     qint64 busyUntil = 0;
@@ -54,8 +62,12 @@ struct SimulatedLink
     {
         while (true) {
             qint64 next = end;
-            if (const auto due = schedule.nextDueNs())
-                next = std::min(next, std::max(now, *due + wakeLateNs));
+            if (const auto due = schedule.nextDueNs()) {
+                qint64 wake = std::max(now, *due + wakeLateNs);
+                if (stallNs > 0 && wake % stallEveryNs < stallNs)
+                    wake += stallNs - wake % stallEveryNs; // asleep: the host wakes after it
+                next = std::min(next, wake);
+            }
             if (!queue.empty())
                 next = std::min(next, busyUntil);
             if (next >= end) {
@@ -120,9 +132,30 @@ private Q_SLOTS:
         }
     }
 
-    void wakeUpPastTheNextSlotLosesOnlyTheSkippedSlots()
+    void wakeUpPastTheNextSlotIsCaughtUpReadByRead()
     {
         PollSchedule s;
+        s.addChannel(1 * kMs);
+        s.start(0);
+        QCOMPARE(s.due(0).size(), 1);
+        s.finished(0);
+        // The host slept from 0 to 3.5 ms: slots 1, 2 and 3 have begun. Each gets a read of its
+        // own, back to back, and none is lost.
+        for (int k = 1; k <= 3; ++k) {
+            QCOMPARE(s.nextDueNs(), k * kMs); // in the past: due at once
+            const auto reads = s.due(3500 * kUs);
+            QCOMPARE(reads.size(), 1);
+            QCOMPARE(reads.at(0).lostBefore, 0);
+            s.finished(0);
+        }
+        QCOMPARE(s.nextDueNs(), 4 * kMs); // caught up, and on the old grid
+        QVERIFY(s.due(3500 * kUs).isEmpty());
+    }
+
+    void withoutCatchUpALateWakeUpLosesTheSkippedSlots()
+    {
+        PollSchedule s;
+        s.setCatchUpNs(0);
         s.addChannel(1 * kMs);
         s.start(0);
         QCOMPARE(s.due(0).size(), 1);
@@ -137,7 +170,40 @@ private Q_SLOTS:
         QCOMPARE(s.due(5 * kMs).at(0).lostBefore, 1);
     }
 
-    void slowReadDelaysWithoutLossWhileItsSlotLasts()
+    void stallLongerThanTheWindowLosesOnlyTheOldestSlots()
+    {
+        PollSchedule s;
+        s.setCatchUpNs(10 * kMs);
+        s.addChannel(1 * kMs);
+        s.start(0);
+        QCOMPARE(s.due(0).size(), 1);
+        s.finished(0);
+        // Asleep until 25.5 ms: slots 1..25 have begun, only the newest 10 can be caught up.
+        auto reads = s.due(25500 * kUs);
+        QCOMPARE(reads.size(), 1);
+        QCOMPARE(reads.at(0).lostBefore, 15);
+        s.finished(0);
+        for (int k = 17; k <= 25; ++k) {
+            QCOMPARE(s.nextDueNs(), k * kMs);
+            reads = s.due(25800 * kUs);
+            QCOMPARE(reads.size(), 1);
+            QCOMPARE(reads.at(0).lostBefore, 0);
+            s.finished(0);
+        }
+        QCOMPARE(s.nextDueNs(), 26 * kMs);
+        // A slow channel may owe kMinCatchUpSlots slots even when they exceed the window.
+        PollSchedule slow;
+        slow.setCatchUpNs(10 * kMs);
+        slow.addChannel(100 * kMs);
+        slow.start(0);
+        QCOMPARE(slow.due(0).size(), 1);
+        slow.finished(0);
+        QCOMPARE(slow.due(250 * kMs).at(0).lostBefore, 0); // slots 1 and 2 owed: both read
+        slow.finished(0);
+        QCOMPARE(slow.due(250 * kMs).at(0).lostBefore, 0);
+    }
+
+    void slowReadIsCaughtUp()
     {
         PollSchedule s;
         s.addChannel(1 * kMs);
@@ -150,10 +216,14 @@ private Q_SLOTS:
         auto reads = s.due(1500 * kUs);
         QCOMPARE(reads.size(), 1);
         QCOMPARE(reads.at(0).lostBefore, 0);
-        // That read takes 2.2 ms: slot 2 ends before it could start, slot 3 is served.
+        // That read takes 2.2 ms: slots 2 and 3 have begun; both are read, one after the other.
         s.finished(0);
         reads = s.due(3700 * kUs);
-        QCOMPARE(reads.at(0).lostBefore, 1);
+        QCOMPARE(reads.at(0).lostBefore, 0);
+        s.finished(0);
+        QCOMPARE(s.nextDueNs(), 3 * kMs);
+        reads = s.due(3750 * kUs);
+        QCOMPARE(reads.at(0).lostBefore, 0);
         s.finished(0);
         QCOMPARE(s.nextDueNs(), 4 * kMs);
     }
@@ -212,20 +282,29 @@ private Q_SLOTS:
     {
         QTest::addColumn<qint64>("serviceNs");
         QTest::addColumn<qint64>("wakeLateNs");
-        QTest::newRow("fast link, prompt host") << 50 * kUs << 0ll;
-        QTest::newRow("fast link, host 0.7 ms late") << 50 * kUs << 700 * kUs;
+        QTest::addColumn<qint64>("stallEveryNs");
+        QTest::addColumn<qint64>("stallNs");
+        QTest::newRow("fast link, prompt host") << 50 * kUs << 0ll << 0ll << 0ll;
+        QTest::newRow("fast link, host 0.7 ms late") << 50 * kUs << 700 * kUs << 0ll << 0ll;
         // 16 reads of 55 us in the busiest millisecond: the link is ~90 % busy at worst.
-        QTest::newRow("busy link") << 55 * kUs << 20 * kUs;
+        QTest::newRow("busy link") << 55 * kUs << 20 * kUs << 0ll << 0ll;
+        // A loaded machine: the host sleeps through 8 ms of every 50 (several periods of the
+        // 1 ms channels) with the link at half its capacity.
+        QTest::newRow("half-busy link, host stalls 8 ms")
+            << 30 * kUs << 50 * kUs << 50 * kMs << 8 * kMs;
+        QTest::newRow("fast link, host stalls 40 ms") << 10 * kUs << 0ll << 200 * kMs << 40 * kMs;
     }
     void mixedRatesBelowCapacityLoseNothing()
     {
         QFETCH(qint64, serviceNs);
         QFETCH(qint64, wakeLateNs);
+        QFETCH(qint64, stallEveryNs);
+        QFETCH(qint64, stallNs);
         PollSchedule s;
         const QList<qint64> periods { 1, 1, 1, 1, 2, 2, 2, 2, 5, 5, 5, 5, 10, 10, 10, 10 };
         for (qint64 p : periods)
             s.addChannel(p * kMs);
-        SimulatedLink link { s, serviceNs, wakeLateNs };
+        SimulatedLink link { s, serviceNs, wakeLateNs, stallEveryNs, stallNs };
         link.start();
         link.runUntil(1000 * kMs);
         link.stop();

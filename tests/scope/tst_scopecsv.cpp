@@ -145,6 +145,55 @@ private Q_SLOTS:
         QVERIFY(pos.firstTime() >= 0.05 && pos.lastTime() <= 0.1);
     }
 
+    // The same object from two devices, each with its own gaps: each reads back with its own.
+    void sameObjectOfTwoDevicesKeepsItsGaps()
+    {
+        Recording rec = sample();
+        RecordedChannel other = rec.channels[0];
+        other.info.device = QStringLiteral("refgo://127.0.0.2:10001");
+        other.buffer = TraceBuffer(100);
+        RecordedChannel &own = rec.channels[0];
+        own.buffer = TraceBuffer(100);
+        for (int i = 0; i < 20; ++i) {
+            if (i == 5)
+                own.buffer.markLost(1);
+            if (i == 9 || i == 15)
+                other.buffer.markLost(3);
+            own.buffer.append(0.010 * i, i);
+            other.buffer.append(0.010 * i + 0.002, 100 + i);
+        }
+        rec.channels.append(other);
+        const QByteArray text = csv::toCsv(rec);
+        QVERIFY2(text.contains("# device-gaps: 6064:0; refgo://127.0.0.2:10001; "),
+                 text.constData());
+        const auto back = csv::fromCsv(text);
+        QVERIFY2(back.ok(), qPrintable(back.error().toString()));
+        QCOMPARE(back->channels.size(), 3);
+        for (int c = 0; c < 3; ++c) {
+            QCOMPARE(back->channels[c].info, rec.channels[c].info);
+            compareBuffers(back->channels[c].buffer, rec.channels[c].buffer);
+        }
+        QCOMPARE(csv::toCsv(*back), text);
+    }
+    // A file written before gaps were kept per device: its "gaps" lines name the object, and a
+    // channel of another device takes them when the file's device has no channel of that id.
+    void gapsOfOlderFiles()
+    {
+        const QByteArray text = "# drivebench recording v1\n# device: refgo://a\n"
+                                "# channel: 6064:0; name: P\n"
+                                "# channel: 6078:0; name: I\n# channel-device: 6078:0; refgo://b\n"
+                                "# gaps: 6064:0; 0.200000000\n# gaps: 6078:0; 0.300000000\n"
+                                "time_s,6064:0 P,6078:0 I\n"
+                                "0.1,1,10\n0.2,2,20\n0.3,3,30\n";
+        const auto back = csv::fromCsv(text);
+        QVERIFY2(back.ok(), qPrintable(back.error().toString()));
+        const TraceBuffer &p = back->channels[0].buffer;
+        const TraceBuffer &i = back->channels[1].buffer;
+        QVERIFY(!p.startsGap(0) && p.startsGap(1) && !p.startsGap(2));
+        QVERIFY(!i.startsGap(0) && !i.startsGap(1) && i.startsGap(2));
+        QCOMPARE(back->channels[1].info.device, QStringLiteral("refgo://b"));
+    }
+
     void corruptInputNamesTheLine_data()
     {
         QTest::addColumn<QByteArray>("text");
@@ -168,6 +217,12 @@ private Q_SLOTS:
                                   << "line 4: 'abc' is not a time";
         QTest::newRow("time back") << head + "0.2,1\n0.1,2\n"
                                    << "line 5: time goes back";
+        QTest::newRow("gap line without times")
+            << QByteArray("# drivebench recording v1\n# channel: 6064:0\n# gaps: 6064:0\n")
+            << "line 3: bad gap line";
+        QTest::newRow("bad gap time") << QByteArray("# drivebench recording v1\n# channel: 6064:0\n"
+                                                    "# device-gaps: 6064:0; refgo://b; 1.x\n")
+                                      << "line 3: bad gap time '1.x'";
         QTest::newRow("bad trigger")
             << QByteArray("# drivebench recording v1\n# trigger: 6041:0,bit3,set\n# channel: "
                           "6064:0\ntime_s,x\n")

@@ -1,5 +1,6 @@
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "core/connectionhealth.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "mainwindow.h"
 #include "scope/recorder.h"
@@ -74,6 +75,11 @@ private Q_SLOTS:
         };
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isStale(ObjectAddress(411, 0)), 10000);
         QCOMPARE(text("stateName"), QStringLiteral("Switch on disabled"));
+        // An inverter that answers is shown as responding (green in the device list).
+        ConnectionHealth *health = ConnectionHealth::of(*opened);
+        QVERIFY(health);
+        QTRY_VERIFY2_WITH_TIMEOUT(health->status() == ConnectionHealth::Status::Responding,
+                                  qPrintable(health->description()), 10000);
         QCOMPARE(text("lastErrorText"), QStringLiteral("No fault"));
         QCOMPARE(text("frequency"), QStringLiteral("108.45 Hz"));
         QVERIFY2(text("linkLoss").contains(QStringLiteral("388 = 1")),

@@ -8,6 +8,8 @@
 // DIR/de-NAME.png.
 #include "common/demodrive.h"
 #include "common/protocols.h"
+#include "core/connectionhealth.h"
+#include "devices/bonfiglioli/acudescription.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "devices/movingcap/movingcapdrive.h"
 #include "englishtext.h"
@@ -192,6 +194,33 @@ private Q_SLOTS:
     }
 
     void cleanup() { i18n::installTranslations(*qApp, QStringLiteral("en")); }
+
+    // Names that files and descriptions use stay what they are in German: the ACTIVE Cube's
+    // description (parameter addresses) loads, so the inverter shows its parameters and, when
+    // it is not the device on screen, the health check reads one of them and calls it
+    // responding (before, its lamp stayed "waiting for an answer").
+    void keysStayUntranslated()
+    {
+        QVERIFY(i18n::installTranslations(*qApp, QStringLiteral("de")));
+        QCOMPARE(AddressFormat::parameter().key(), QStringLiteral("parameter"));
+        const auto loaded = bonfiglioli::loadAcuDictionary();
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error().toString()));
+        QCOMPARE(loaded->addressFormat().key(), QStringLiteral("parameter"));
+
+        bonfiglioli::SimulatedAcu acu;
+        QVERIFY(acu.listen(0).ok());
+        app::DemoDrive demo;
+        QVERIFY(demo.startRefgo().ok());
+        MainWindow window(app::protocolRegistry());
+        window.show();
+        auto opened = window.openConnection(QStringLiteral("vabus://127.0.0.1:%1").arg(acu.port()));
+        QVERIFY(opened.ok());
+        QVERIFY((*opened)->dictionary().contains(ObjectAddress(372, 2)));
+        QVERIFY(window.openConnection(demo.refgoUri()).ok()); // now the device on screen
+        ConnectionHealth *health = ConnectionHealth::of(*opened);
+        QTRY_VERIFY2_WITH_TIMEOUT(health->status() == ConnectionHealth::Status::Responding,
+                                  qPrintable(health->description()), 10000);
+    }
 
     void noEnglishLeftOnAnyView()
     {

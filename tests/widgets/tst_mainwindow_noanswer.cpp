@@ -105,7 +105,19 @@ private Q_SLOTS:
         QVERIFY2(saysNoAnswer(jogMessage(window)), qPrintable(jogMessage(window)));
         QVERIFY2(window.statusBar()->currentMessage().contains(ChangeLog::kindName(e.kind)),
                  qPrintable(window.statusBar()->currentMessage()));
+
+        // The drive answers again: the health says so, and the next Enable in the same window
+        // succeeds (a request lost to the silence does not hold up the ones after it).
         demo.setSilent(false);
+        QTRY_COMPARE_WITH_TIMEOUT(health->status(), ConnectionHealth::Status::Responding, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(enable->isEnabled(), kWaitMs);
+        before = lastOf(log, ChangeLog::Kind::Enable).id;
+        QTest::mouseClick(enable, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(finishedAfter(log, ChangeLog::Kind::Enable, before), kWaitMs);
+        e = lastOf(log, ChangeLog::Kind::Enable);
+        QVERIFY2(e.outcome == ChangeLog::Outcome::Ok, qPrintable(e.message));
+        QTRY_VERIFY_WITH_TIMEOUT(jog->motionAxis()->state() == motion::AxisState::Standstill,
+                                 kWaitMs);
     }
 
     void moveAndWriteWithoutAnswer()

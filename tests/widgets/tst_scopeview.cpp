@@ -463,6 +463,113 @@ private slots:
         connection->close();
     }
 
+    // Two CANopen nodes on one bus, the same objects from each as PDO channels of one
+    // recording: each channel samples its own node's PDO, is named with its node, and keeps
+    // its own values and mapping in the page and in the file.
+    void pdoChannelsFromTwoNodesSideBySide()
+    {
+        app::SimNodes sim;
+        QVERIFY(sim.create({ { 5, 6 }, {}, {} }).ok());
+        QVERIFY(sim.startSlcan(0).ok());
+        const ObjectDictionary dict =
+            resources::builtinDescription(QStringLiteral("drivebench_testnode")).valueOr({});
+        std::vector<std::shared_ptr<DeviceConnection>> made;
+        QList<canopen::CanopenConnection *> nodes;
+        for (int node : { 5, 6 }) {
+            auto c = app::protocolRegistry().create(QStringLiteral("canopen+slcan://127.0.0.1:%1"
+                                                                   "?node=%2")
+                                                        .arg(sim.slcanPort())
+                                                        .arg(node));
+            QVERIFY(c.ok());
+            made.push_back(*c);
+            auto *connection = qobject_cast<canopen::CanopenConnection *>(c->get());
+            QVERIFY(connection);
+            connection->setDictionary(dict);
+            connection->open();
+            QTRY_VERIFY(connection->isConnected());
+            // The device side: TPDO1 (6041:0, 6064:0) every 20 ms; node 6's 2101:0 differs.
+            QVERIFY(Reply::wait(connection->write({ 0x1800, 5 }, 20)).ok());
+            QVERIFY(Reply::wait(connection->write({ 0x2101, 0 }, node == 6 ? 777 : -300)).ok());
+            QVERIFY(connection->nmt()->start(quint8(node)));
+            nodes.append(connection);
+        }
+
+        ScopePage page;
+        QSignalSpy looked(&page, &ScopePage::pdoLookupFinished);
+        for (canopen::CanopenConnection *connection : nodes) {
+            page.setConnection(connection);
+            page.setChannelSource(ScopePage::ChannelSource::Pdo);
+            page.addPdoChannels({ ObjectAddress(0x6064, 0), ObjectAddress(0x2101, 0) });
+            QVERIFY(looked.wait(5000));
+            looked.clear();
+            page.mapToTpdo(1, 20); // 2101:0 is in no TPDO yet
+            QVERIFY(looked.wait(5000));
+            QVERIFY2(looked.takeFirst().at(0).toBool(), qPrintable(page.statusText()));
+        }
+        QCOMPARE(page.recorder()->channelCount(), 4);
+        page.setConnection(nodes[0]);
+        QCOMPARE(page.pdoMapping(QStringLiteral("2101:0"))->cobId, 0x285u);
+        page.setConnection(nodes[1]);
+        QCOMPARE(page.pdoMapping(QStringLiteral("2101:0"))->cobId, 0x286u);
+        QCOMPARE(page.pdoMapping(QStringLiteral("6064:0"))->cobId, 0x186u);
+
+        page.start();
+        QCOMPARE(page.recorder()->state(), scope::Recorder::State::Recording);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int i = 0; i < 4; ++i) {
+                    if (page.recorder()->buffer(i).size() < 10)
+                        return false;
+                }
+                return true;
+            }(),
+            10000);
+        page.stop();
+        // Channel order: node 5's 6064:0, 2101:0, then node 6's.
+        const QList<double> expected { 1234, -300, 1234, 777 };
+        for (int i = 0; i < 4; ++i) {
+            const scope::ChannelInfo info = page.recorder()->channelInfo(i);
+            QCOMPARE(info.device, nodes[i / 2]->uri().toString());
+            QCOMPARE(page.recorder()->buffer(i).value(0), expected[i]);
+        }
+        QVERIFY(scopeChannelName(*page.recorder(), 1) != scopeChannelName(*page.recorder(), 3));
+        auto *table = page.findChild<QTableView *>(QStringLiteral("scopeChannels"));
+        for (int row = 0; row < 4; ++row)
+            QVERIFY(table->model()
+                        ->index(row, ScopeChannelModel::Rate)
+                        .data()
+                        .toString()
+                        .startsWith(QLatin1String("PDO 0x")));
+
+        // A second run rebuilds one PDO source per node and samples the same.
+        page.start();
+        QTRY_VERIFY_WITH_TIMEOUT(page.recorder()->buffer(3).size() >= 5, 10000);
+        page.stop();
+        QCOMPARE(page.recorder()->buffer(3).value(0), 777.0);
+        QCOMPARE(page.recorder()->buffer(1).value(0), -300.0);
+
+        const auto back = scope::csv::fromCsv(scope::csv::toCsv(page.recorder()->recording()));
+        QVERIFY2(back.ok(), qPrintable(back.error().toString()));
+        QCOMPARE(back->channels.size(), 4);
+        QCOMPARE(back->channels[3].info.device, nodes[1]->uri().toString());
+        QCOMPARE(back->channels[3].buffer.value(0), 777.0);
+
+        // Node 5 pre-operational while node 6 is the page's device: the page names node 5 and
+        // its channels, not the node it shows.
+        QVERIFY(nodes[0]->nmt()->enterPreOperational(5));
+        QTRY_COMPARE(nodes[0]->monitor()->state(5), canopen::NmtState::PreOperational);
+        page.start();
+        QTRY_VERIFY_WITH_TIMEOUT(page.statusText().contains(QStringLiteral(
+                                     "node 5 is pre-operational (heartbeat), not operational: "
+                                     "NMT start it")),
+                                 5000);
+        QVERIFY2(!page.statusText().contains(QStringLiteral("node 6")),
+                 qPrintable(page.statusText()));
+        page.stop();
+        for (canopen::CanopenConnection *connection : nodes)
+            connection->close();
+    }
+
     void startWithoutDeviceIsRefusedWithAReason()
     {
         ScopePage page;

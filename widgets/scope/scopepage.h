@@ -157,7 +157,11 @@ private:
     void promptExportImage();
     Result<void> rebuildSource();
     // The remembered, still existing connection a channel was added from; null when none.
-    DeviceConnection *connectionOf(const scope::ChannelInfo &info) const;
+    DeviceConnection *connectionOf(const scope::ChannelInfo &info) const
+    {
+        return connectionOf(info.device);
+    }
+    DeviceConnection *connectionOf(const QString &device) const; // by its URI
     scope::ChannelInfo channelFor(ObjectAddress address, int rateMs) const;
     static QString pdoKey(const QString &device, const QString &id);
     void onPdoPlan(Reply *reply);
@@ -175,7 +179,7 @@ private:
     QList<QPointer<scope::TraceSource>> m_otherSources; // of other connections, made at Start
     QHash<QString, scope::PdoChannelPlanEntry> m_pdoMappings; // pdoKey() -> its PDO
     QString m_triggerChoice; // the trigger channel chosen last (ScopeChannelModel::key)
-    QList<canopen::PdoConfig> m_tpdos; // the node's TPDOs as last read
+    QHash<QString, QList<canopen::PdoConfig>> m_tpdos; // device URI -> its TPDOs as last read
     int m_pdoWatch = 0; // counts starts: a first-PDO check of an earlier run is ignored
     QList<ObjectAddress> m_unmapped; // objects of the last PDO lookup in no TPDO
     int m_proposedTpdo = 0; // 0-based TPDO offered by "Map to TPDO…"

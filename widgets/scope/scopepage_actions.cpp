@@ -173,10 +173,10 @@ QString ScopePage::deviceName(const DeviceConnection *connection) const
     return name;
 }
 
-DeviceConnection *ScopePage::connectionOf(const scope::ChannelInfo &info) const
+DeviceConnection *ScopePage::connectionOf(const QString &device) const
 {
     for (const QPointer<DeviceConnection> &c : m_devices) {
-        if (c && c->uri().toString() == info.device)
+        if (c && c->uri().toString() == device)
             return c;
     }
     return nullptr;

@@ -198,7 +198,7 @@ void ScopePage::onPdoPlan(Reply *reply)
         m_recorder->addChannel(m_pdoSource, *added);
     }
     m_unmapped = plan.missing;
-    m_tpdos = plan.tpdos;
+    m_tpdos.insert(device, plan.tpdos);
     // Offer the first disabled TPDO for mapping, else the last one the node has.
     m_proposedTpdo = plan.tpdos.isEmpty() ? 0 : plan.tpdos.constLast().number;
     for (const canopen::PdoConfig &c : plan.tpdos) {
@@ -290,33 +290,43 @@ void ScopePage::watchPdoArrival()
     const int run = ++m_pdoWatch;
     if (m_pdoMappings.isEmpty() || !m_recorder->isRunning())
         return;
-    // PDO channels without a frame after this time get the probable cause shown.
+    // PDO channels without a frame after this time get the probable cause shown, per node: the
+    // channels of a recording may come from several nodes, the page's device being only one.
     const int firstPdoMs = scope::firstPdoTimeoutMs(m_pdoMappings.values());
     QTimer::singleShot(firstPdoMs, this, [this, run, firstPdoMs] {
-        const canopen::NetworkNode at = canopen::networkNodeOf(m_connection.data());
-        if (run != m_pdoWatch || !m_recorder->isRunning() || !at)
+        if (run != m_pdoWatch || !m_recorder->isRunning())
             return;
-        scope::PdoChannelPlan silent;
-        silent.node = at.node;
-        silent.tpdos = m_tpdos;
-        QStringList ids;
+        QStringList devices; // in channel order
+        QHash<QString, scope::PdoChannelPlan> silent;
+        QHash<QString, QStringList> ids;
         for (int i = 0; i < m_recorder->channelCount(); ++i) {
             const scope::ChannelInfo &info = m_recorder->channelInfo(i);
-            const QString id = info.id;
-            const auto it = m_pdoMappings.constFind(pdoKey(info.device, id));
-            if (it != m_pdoMappings.cend() && m_recorder->buffer(i).size() == 0
-                && m_recorder->buffer(i).lostAtSource() == 0) {
-                silent.found.append(*it);
-                ids.append(id);
-            }
+            const auto it = m_pdoMappings.constFind(pdoKey(info.device, info.id));
+            if (it == m_pdoMappings.cend() || m_recorder->buffer(i).size() != 0
+                || m_recorder->buffer(i).lostAtSource() != 0)
+                continue;
+            if (!devices.contains(info.device))
+                devices.append(info.device);
+            silent[info.device].found.append(*it);
+            ids[info.device].append(info.id);
         }
-        if (silent.found.isEmpty())
-            return;
-        showMessage(tr("No PDO within %1 s for %2: %3 (the scope never changes the NMT state).")
-                        .arg(firstPdoMs / 1000.0)
-                        .arg(ids.join(QStringLiteral(", ")),
-                             scope::silentPdoCause(silent, at.network->monitor()->state(at.node))),
-                    true);
+        QStringList causes;
+        for (const QString &device : std::as_const(devices)) {
+            const canopen::NetworkNode at = canopen::networkNodeOf(connectionOf(device));
+            if (!at)
+                continue;
+            scope::PdoChannelPlan &plan = silent[device];
+            plan.node = at.node;
+            plan.tpdos = m_tpdos.value(device);
+            causes.append(
+                tr("No PDO within %1 s for %2: %3 (the scope never changes the NMT "
+                   "state).")
+                    .arg(firstPdoMs / 1000.0)
+                    .arg(ids.value(device).join(QStringLiteral(", ")),
+                         scope::silentPdoCause(plan, at.network->monitor()->state(at.node))));
+        }
+        if (!causes.isEmpty())
+            showMessage(causes.join(QLatin1Char(' ')), true);
     });
 }
 

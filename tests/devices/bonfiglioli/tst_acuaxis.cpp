@@ -7,6 +7,7 @@
 #include "devices/axisfactory.h"
 #include "devices/bonfiglioli/acuaxis.h"
 #include "devices/bonfiglioli/acudescription.h"
+#include "devices/bonfiglioli/acusteps.h"
 #include "devices/bonfiglioli/simulatedacu.h"
 #include "motion/leasedmove.h"
 #include "motion/motionaxis.h"
@@ -93,6 +94,27 @@ private Q_SLOTS:
         QVERIFY(m_acu->controlWritesRam() >= 4); // 0x0000, 0x0006, 0x0007, 0x000F
         QVERIFY(power(false));
         QCOMPARE(m_acu->statusWord() & 0x006F, 0x0040);
+    }
+
+    // A wait step is judged by its own read of 411: one queued behind other requests past the
+    // step's time (here 1 ms behind 200 reads) is an answer, not a timeout.
+    void waitJudgedByItsOwnStatusRead()
+    {
+        QList<Reply *> ahead;
+        for (int i = 0; i < 200; ++i)
+            ahead.append(m_connection->read(ObjectAddress(12, 0)));
+        auto *steps = new bonfiglioli::AcuSteps(m_axis.get(), QStringLiteral("slow queue"));
+        steps->waitStatus([](quint16 word) { return (word & 0x006F) == 0x0040; }, 1,
+                          QStringLiteral("not switch on disabled"));
+        QElapsedTimer clock;
+        clock.start();
+        Result<QVariant> r = await(steps->start());
+        QVERIFY2(r.ok(), qPrintable(r.error().toString()));
+        QVERIFY(clock.elapsed() > 1);
+        for (Reply *reply : ahead) {
+            QVERIFY(reply->isFinished());
+            reply->deleteLater();
+        }
     }
 
     void enableNeedsMainsAndSto()
@@ -456,6 +478,29 @@ private Q_SLOTS:
         QVERIFY2(m_axis->linkSupervision().contains(QLatin1String("reacts in")),
                  qPrintable(m_axis->linkSupervision()));
         m_acu->server().setFailure({});
+    }
+
+    // A silent inverter: the first read's own failure ends initialize() at once, and the
+    // reads queued behind it are dropped instead of timing out one after the other.
+    void initializeAgainstASilentInverterFailsAtOnce()
+    {
+        vabus::Server::FailureMode silent;
+        silent.failure = vabus::Server::Failure::Silent;
+        m_acu->server().setFailure(silent);
+        QElapsedTimer clock;
+        clock.start();
+        const auto init = await(m_axis->initialize(), 60000);
+        const qint64 elapsed = clock.elapsed();
+        QVERIFY(!init.ok());
+        QCOMPARE(init.error().kind(), Error::Kind::Timeout);
+        // One request's time limit with its retransmissions, not twelve of them.
+        QVERIFY2(elapsed < 8000, qPrintable(QString::number(elapsed)));
+        m_acu->server().setFailure({});
+        // Nothing of the dropped reads is left in the queue ahead of the next request.
+        QElapsedTimer next;
+        next.start();
+        QVERIFY(await(m_connection->read(ObjectAddress(30, 0)), 5000).ok());
+        QVERIFY2(next.elapsed() < 2500, qPrintable(QString::number(next.elapsed())));
     }
 
     void quickStop()
