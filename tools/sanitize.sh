@@ -31,6 +31,8 @@ cmake --build "$build_dir" --parallel "$(nproc)"
 
 # Leaks count as findings too (LeakSanitizer runs at the exit of each test program).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+# Leaks inside system libraries only (see the file); our own code is never suppressed.
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tools/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 cd "$build_dir"
 QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" --timeout 600
