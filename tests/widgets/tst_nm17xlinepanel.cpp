@@ -309,8 +309,9 @@ void TstNm17xLinePanel::modesOfTheSelectedDisplay()
 
     // Selecting the other display shows its own values.
     m_panel->selectNode(2);
+    QCOMPARE(keys->currentIndex(), -1); // not the previous display's value while reading
     QTRY_COMPARE(inputs->currentData().toInt(), 0);
-    QCOMPARE(keys->currentData().toInt(), 0);
+    QTRY_COMPARE(keys->currentData().toInt(), 0);
 }
 
 // Scaling from the pitch, the jump filter and the dynamic pre-shutdown, written to the selected

@@ -134,6 +134,9 @@ void Nm17xSettingsBox::setDisplay(Nm17xLine *line, canopen::NodeId node, Variant
         m_steps->setValue(stepsPerRevolution(variant));
         m_scaling->clear();
         m_switchOff->clear();
+        // Blank until this display's own values have been read, never the previous one's.
+        m_inputs->setCurrentIndex(-1);
+        m_keys->setCurrentIndex(-1);
     }
     updateEnabled();
     if (changed)
