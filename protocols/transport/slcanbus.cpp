@@ -179,11 +179,10 @@ void SlcanBus::drain()
 // rest of the backlog.
 void SlcanBus::decode(const QByteArray &slice)
 {
-    for (const slcan::Message &m : m_decoder.feed(slice)) {
+    m_decoder.feedEach(slice, [this](const slcan::Message &m) {
         handle(m);
-        if (state() != State::Open)
-            break; // a receiver closed the bus
-    }
+        return state() == State::Open; // else a receiver closed the bus
+    });
     m_draining = false;
     if (state() != State::Open) {
         m_backlog.clear();

@@ -29,16 +29,16 @@ bool isHex(QByteArrayView text)
     return text.isEmpty() || hexValue(text).has_value();
 }
 
-Message unknown(const QByteArray &line)
+Message unknown(QByteArrayView line)
 {
     Message m;
     m.kind = Message::Kind::Unknown;
-    m.line = line;
+    m.line = line.toByteArray();
     return m;
 }
 
 // t/T/r/R lines (movingcap.md 4.2): id, DLC, data (not for r/R), optional 4-digit timestamp.
-Message parseFrame(const QByteArray &line)
+Message parseFrame(QByteArrayView line)
 {
     const char type = line.at(0);
     const bool extended = type == 'T' || type == 'R';
@@ -46,7 +46,7 @@ Message parseFrame(const QByteArray &line)
     const int idDigits = extended ? 8 : 3;
     if (line.size() < 1 + idDigits + 1)
         return unknown(line);
-    const auto id = hexValue(QByteArrayView(line).sliced(1, idDigits));
+    const auto id = hexValue(line.sliced(1, idDigits));
     const char dlcChar = line.at(1 + idDigits);
     if (!id || *id > (extended ? 0x1FFFFFFFu : 0x7FFu) || dlcChar < '0' || dlcChar > '8')
         return unknown(line);
@@ -72,13 +72,12 @@ Message parseFrame(const QByteArray &line)
     }
     Message m;
     if (rest == 4) {
-        const auto stamp = hexValue(QByteArrayView(line).last(4));
+        const auto stamp = hexValue(line.last(4));
         if (!stamp)
             return unknown(line);
         m.timestamp = quint16(*stamp);
     }
     m.kind = Message::Kind::Frame;
-    m.line = line;
     m.frame = QCanBusFrame(*id, payload);
     m.frame.setExtendedFrameFormat(extended);
     if (remote)
@@ -86,19 +85,19 @@ Message parseFrame(const QByteArray &line)
     return m;
 }
 
-Message command(const QByteArray &line)
+Message command(QByteArrayView line)
 {
     Message m;
     m.kind = Message::Kind::Command;
     m.command = line.at(0);
-    m.argument = line.mid(1);
-    m.line = line;
+    m.argument = line.sliced(1).toByteArray();
+    m.line = line.toByteArray();
     return m;
 }
 
 } // namespace
 
-Message parseLine(const QByteArray &line)
+Message parseLine(QByteArrayView line)
 {
     if (line.isEmpty()) {
         Message m;
@@ -106,7 +105,7 @@ Message parseLine(const QByteArray &line)
         return m;
     }
     const char letter = line.at(0);
-    const QByteArrayView arg = QByteArrayView(line).sliced(1);
+    const QByteArrayView arg = line.sliced(1);
     switch (letter) {
     case 't':
     case 'T':
@@ -119,7 +118,10 @@ Message parseLine(const QByteArray &line)
             Message m;
             m.kind = Message::Kind::TransmitAck;
             m.command = letter;
-            m.line = line;
+            // The adapter sends this for every frame: the line is a constant, not a copy.
+            static const QByteArray kSmall = QByteArray::fromRawData("z", 1);
+            static const QByteArray kExtended = QByteArray::fromRawData("Z", 1);
+            m.line = letter == 'z' ? kSmall : kExtended;
             return m;
         }
         return letter == 'Z' && (arg == "0" || arg == "1") ? command(line) : unknown(line);
@@ -145,26 +147,52 @@ Message parseLine(const QByteArray &line)
 QList<Message> Decoder::feed(const QByteArray &bytes)
 {
     QList<Message> out;
-    const char *const end = bytes.constEnd();
-    for (const char *p = bytes.constBegin(); p != end; ++p) {
+    feedEach(bytes, [&out](const Message &m) {
+        out.append(m);
+        return true;
+    });
+    return out;
+}
+
+void Decoder::feed(QByteArrayView bytes, Sink sink, void *context)
+{
+    const auto stop = [this] {
+        reset();
+        return;
+    };
+    const char *const end = bytes.end();
+    for (const char *p = bytes.begin(); p != end; ++p) {
         const char c = *p;
         if (c == kBell) {
             Message m;
             m.kind = Message::Kind::Bell;
-            out.append(m);
+            if (!sink(context, m))
+                return stop();
         } else if (c == kCr || c == '\n') {
+            bool go = true;
             if (m_overflow) {
-                out.append(unknown(m_line));
+                go = sink(context, unknown(m_line));
                 m_overflow = false;
             } else if (c == kCr || !m_line.isEmpty()) {
-                out.append(parseLine(m_line)); // an empty line ended by "\n" acknowledges nothing
+                // an empty line ended by "\n" acknowledges nothing
+                go = sink(context, parseLine(m_line));
             }
-            m_line.clear();
+            m_line.resize(0); // keeps the capacity for the next partial line
+            if (!go)
+                return stop();
         } else if (m_line.size() < kMaxLineLength) {
-            // The run of ordinary bytes up to the next terminator or BEL, appended at once.
+            // The run of ordinary bytes up to the next terminator or BEL.
             const char *runEnd = p + 1;
             while (runEnd != end && *runEnd != kCr && *runEnd != '\n' && *runEnd != kBell)
                 ++runEnd;
+            if (m_line.isEmpty() && runEnd != end && *runEnd != kBell
+                && runEnd - p <= kMaxLineLength) {
+                // A whole line with its terminator: parsed where it lies.
+                if (!sink(context, parseLine(QByteArrayView(p, runEnd))))
+                    return stop();
+                p = runEnd;
+                continue;
+            }
             const qsizetype take = qMin<qsizetype>(runEnd - p, kMaxLineLength - m_line.size());
             m_line.append(p, take);
             if (take < runEnd - p)
@@ -174,7 +202,6 @@ QList<Message> Decoder::feed(const QByteArray &bytes)
             m_overflow = true; // keep the first kMaxLineLength bytes for the report
         }
     }
-    return out;
 }
 
 void Decoder::reset()

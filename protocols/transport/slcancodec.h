@@ -11,6 +11,7 @@
 #include <QList>
 
 #include <optional>
+#include <type_traits>
 
 namespace db::slcan {
 
@@ -36,7 +37,7 @@ struct Message
     std::optional<quint16> timestamp; // Frame, when a 4-hex-digit timestamp followed (ms)
     char command = 0; // Command letter; 'z'/'Z' for TransmitAck
     QByteArray argument; // Command: text after the letter ("4" for S4, "0314" for s0314)
-    QByteArray line; // the line without its terminator (for logs and Unknown)
+    QByteArray line; // the line without its terminator (for logs and Unknown); empty for Frame
 };
 
 // Splits a byte stream into messages. Tolerant: lines may end in "\r", "\r\n" or "\n"; an
@@ -47,10 +48,27 @@ class Decoder
 {
 public:
     QList<Message> feed(const QByteArray &bytes);
+    // The same, without a list: calls onMessage(const Message &) for each message as soon as
+    // it is complete. onMessage returns false to stop: the rest of bytes and any partial line
+    // are then discarded. Lines that lie whole in bytes are parsed in place (no copy), which is
+    // what a receiver of every frame wants.
+    template<typename F>
+    void feedEach(QByteArrayView bytes, F &&onMessage)
+    {
+        feed(bytes, &Decoder::call<std::remove_reference_t<F>>, &onMessage);
+    }
     qsizetype pendingBytes() const { return m_line.size(); }
     void reset();
 
 private:
+    using Sink = bool (*)(void *context, const Message &message);
+    template<typename F>
+    static bool call(void *context, const Message &message)
+    {
+        return (*static_cast<F *>(context))(message);
+    }
+    void feed(QByteArrayView bytes, Sink sink, void *context);
+
     QByteArray m_line;
     bool m_overflow = false;
 };
@@ -58,7 +76,7 @@ private:
 // One complete line (without terminator) -> message. Frames must have exactly DLC data bytes
 // and optionally 4 more hex digits of timestamp; ids above 7FF (t/r) or 1FFFFFFF (T/R), DLC
 // above 8 and non-hex digits make the line Unknown.
-Message parseLine(const QByteArray &line);
+Message parseLine(QByteArrayView line);
 
 // "t63284041600000000000\r": uppercase hex, terminator included; timestamp appended when given.
 // Frames that cannot be expressed (FD, error frames, more than 8 bytes) give an empty array.

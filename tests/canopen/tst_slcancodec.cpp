@@ -21,6 +21,8 @@ private Q_SLOTS:
     void crlfAndLoneLf();
     void bellInsideStream();
     void overlongGarbageIsOneUnknownLine();
+    void linesAtTheLengthLimit();
+    void feedEachStopsWhenTheReceiverSaysSo();
     void encodeFrames_data();
     void encodeFrames();
     void encodeRejectsFd();
@@ -186,6 +188,50 @@ void TestSlcanCodec::overlongGarbageIsOneUnknownLine()
     QCOMPARE(messages.size(), 2);
     QCOMPARE(messages.at(0).kind, Kind::Unknown);
     QCOMPARE(messages.at(1).kind, Kind::Frame);
+}
+
+void TestSlcanCodec::linesAtTheLengthLimit()
+{
+    // Whole lines in one chunk are parsed where they lie; the limit must hold there too.
+    const QByteArray atLimit(slcan::kMaxLineLength, 'x');
+    const QByteArray overLimit(slcan::kMaxLineLength + 1, 'x');
+    slcan::Decoder decoder;
+    const auto messages = decoder.feed(atLimit + "\r" + overLimit + "\rz\r");
+    QCOMPARE(messages.size(), 3);
+    QCOMPARE(messages.at(0).kind, Kind::Unknown);
+    QCOMPARE(messages.at(0).line, atLimit);
+    QCOMPARE(messages.at(1).kind, Kind::Unknown);
+    QCOMPARE(messages.at(1).line, overLimit.left(slcan::kMaxLineLength));
+    QCOMPARE(messages.at(2).kind, Kind::TransmitAck);
+    QCOMPARE(messages.at(2).line, QByteArray("z"));
+    QCOMPARE(decoder.pendingBytes(), 0);
+}
+
+void TestSlcanCodec::feedEachStopsWhenTheReceiverSaysSo()
+{
+    const QByteArray stream = "z\rt732105\r\at73217F\rt7321";
+    slcan::Decoder all;
+    QList<Kind> kinds;
+    all.feedEach(stream, [&](const slcan::Message &m) {
+        kinds.append(m.kind);
+        return true;
+    });
+    QCOMPARE(kinds, (QList<Kind> { Kind::TransmitAck, Kind::Frame, Kind::Bell, Kind::Frame }));
+    QCOMPARE(all.pendingBytes(), 5); // "t7321" waits for the rest of its line
+
+    slcan::Decoder stopping;
+    QList<quint32> ids;
+    stopping.feedEach(stream, [&](const slcan::Message &m) {
+        if (m.kind != Kind::Frame)
+            return true;
+        ids.append(m.frame.frameId());
+        return false; // e.g. the receiver closed the bus
+    });
+    QCOMPARE(ids, QList<quint32> { 0x732 });
+    QCOMPARE(stopping.pendingBytes(), 0); // the rest is discarded, no partial line kept
+    const auto next = stopping.feed("t73217F\r");
+    QCOMPARE(next.size(), 1);
+    QCOMPARE(next.at(0).frame.payload(), QByteArray::fromHex("7F"));
 }
 
 void TestSlcanCodec::encodeFrames_data()
