@@ -1,26 +1,40 @@
 #include "slcancodec.h"
 
+#include <array>
+
 namespace db::slcan {
 
 namespace {
+
+// Value of each hex digit, -1 for every other byte (looked up for every digit received).
+constexpr auto kHexDigits = [] {
+    std::array<qint8, 256> table {};
+    for (int c = 0; c < 256; ++c) {
+        if (c >= '0' && c <= '9')
+            table[c] = qint8(c - '0');
+        else if (c >= 'A' && c <= 'F')
+            table[c] = qint8(c - 'A' + 10);
+        else if (c >= 'a' && c <= 'f')
+            table[c] = qint8(c - 'a' + 10);
+        else
+            table[c] = -1;
+    }
+    return table;
+}();
 
 std::optional<quint32> hexValue(QByteArrayView text)
 {
     if (text.isEmpty())
         return std::nullopt;
     quint32 value = 0;
+    int invalid = 0;
     for (const char c : text) {
-        int digit;
-        if (c >= '0' && c <= '9')
-            digit = c - '0';
-        else if (c >= 'A' && c <= 'F')
-            digit = c - 'A' + 10;
-        else if (c >= 'a' && c <= 'f')
-            digit = c - 'a' + 10;
-        else
-            return std::nullopt;
-        value = (value << 4) | quint32(digit);
+        const int digit = kHexDigits[uchar(c)];
+        invalid |= digit;
+        value = (value << 4) | quint32(digit & 0xF);
     }
+    if (invalid < 0)
+        return std::nullopt;
     return value;
 }
 
@@ -63,12 +77,16 @@ Message parseFrame(QByteArrayView line)
         // Decoded in place (this runs for every received frame): no copies of the hex digits.
         payload = QByteArray(dlc, Qt::Uninitialized);
         const char *hex = line.constData() + dataStart;
+        char *out = payload.data();
+        int invalid = 0;
         for (int i = 0; i < dlc; ++i) {
-            const auto byte = hexValue(QByteArrayView(hex + 2 * i, 2));
-            if (!byte)
-                return unknown(line);
-            payload[i] = char(*byte);
+            const int high = kHexDigits[uchar(hex[2 * i])];
+            const int low = kHexDigits[uchar(hex[2 * i + 1])];
+            invalid |= high | low;
+            out[i] = char(((high & 0xF) << 4) | (low & 0xF));
         }
+        if (invalid < 0)
+            return unknown(line);
     }
     Message m;
     if (rest == 4) {
