@@ -47,8 +47,23 @@ bool RequestEngineBase::writeRaw(const QByteArray &bytes)
 
 bool RequestEngineBase::wantsLogLines() const
 {
-    static const QMetaMethod signal = QMetaMethod::fromSignal(&RequestEngineBase::logLine);
-    return isSignalConnected(signal);
+    if (m_wantsLogLines < 0) {
+        static const QMetaMethod signal = QMetaMethod::fromSignal(&RequestEngineBase::logLine);
+        m_wantsLogLines = isSignalConnected(signal) ? 1 : 0;
+    }
+    return m_wantsLogLines > 0;
+}
+
+void RequestEngineBase::connectNotify(const QMetaMethod &signal)
+{
+    if (signal == QMetaMethod::fromSignal(&RequestEngineBase::logLine))
+        m_wantsLogLines = 1;
+}
+
+void RequestEngineBase::disconnectNotify(const QMetaMethod &signal)
+{
+    Q_UNUSED(signal) // invalid when every connection of a receiver goes at once
+    m_wantsLogLines = -1;
 }
 
 void RequestEngineBase::transmitted(const QString &label, int transmission, bool keepAlive)

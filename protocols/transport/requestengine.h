@@ -125,6 +125,8 @@ protected:
     // The stream is not owned and must outlive the engine; the categories are the protocol's
     // (raw traffic at debug level in the second).
     RequestEngineBase(ByteStream *stream, Category category, Category rawCategory, QObject *parent);
+    void connectNotify(const QMetaMethod &signal) override;
+    void disconnectNotify(const QMetaMethod &signal) override;
 
     virtual void onReceived(const QByteArray &bytes) = 0;
     virtual void onTimeout() = 0;
@@ -176,6 +178,9 @@ private:
     // Timeouts since the device last answered: only the first of a silent episode is logged
     // at info level, so that a device that stops answering does not flood the user's log.
     int m_timeoutsInRow = 0;
+    // Whether logLine() has a listener: 1 yes, 0 no, -1 to be looked up again (after a
+    // disconnect). Asked twice per request, so it is not looked up every time.
+    mutable qint8 m_wantsLogLines = -1;
 };
 
 template<typename Protocol>

@@ -140,6 +140,7 @@ private Q_SLOTS:
     void keepAliveStopsOnDisconnectAndResumesOnReopen();
     void unansweredKeepAliveIsReportedAndNotResent();
     void oversizeAnswerFailsRequestAndBufferStaysBounded();
+    void logLinesFollowTheirListeners();
 
 private:
     // Transmissions from the nth write on wait as long as the test needs, however late the
@@ -570,6 +571,38 @@ void TstRequestEngine::oversizeAnswerFailsRequestAndBufferStaysBounded()
     // The rest of the oversize answer is discarded; the next answer is b's.
     m_stream->feed("999\nb=2\n");
     QCOMPARE(await(b).value(), QVariant(QStringLiteral("2")));
+}
+
+// Whether anyone listens is remembered between requests: listeners that come and go after
+// requests were made must still get every line, and one that goes must get none.
+void TstRequestEngine::logLinesFollowTheirListeners()
+{
+    const auto roundTrip = [this](const QByteArray &tag) {
+        Reply *r = submit(tag);
+        m_stream->feed(tag + "=1\n");
+        QVERIFY(await(r).ok());
+    };
+    roundTrip("a"); // nobody listens
+    QStringList lines;
+    auto *listener = new QObject(this);
+    connect(m_engine, &RequestEngineBase::logLine, listener,
+            [&lines](const QString &line) { lines.append(line); });
+    roundTrip("b");
+    QCOMPARE(lines, (QStringList { QStringLiteral("> b"), QStringLiteral("< 1") }));
+    delete listener; // its connection goes with it
+    roundTrip("c");
+    QCOMPARE(lines.size(), 2);
+    const auto connection = connect(m_engine, &RequestEngineBase::logLine, this,
+                                    [&lines](const QString &line) { lines.append(line); });
+    roundTrip("d");
+    QCOMPARE(lines.size(), 4);
+    QCOMPARE(lines.at(2), QStringLiteral("> d"));
+    disconnect(connection);
+    roundTrip("e");
+    QCOMPARE(lines.size(), 4);
+    QSignalSpy spy(m_engine, &RequestEngineBase::logLine);
+    roundTrip("f");
+    QCOMPARE(spy.size(), 2);
 }
 
 QTEST_GUILESS_MAIN(TstRequestEngine)
