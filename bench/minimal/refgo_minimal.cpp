@@ -1,10 +1,13 @@
 // The smallest RefGo client we can write: plain C++ and POSIX sockets, no Qt. Sends one object
 // read ("OR6041,0\r"), waits for the prompt '>' that ends the answer, and repeats; prints round
 // trips per second. It sets the ceiling of link + device that our engine is compared with.
-//   refgo_minimal --uri refgo://HOST:PORT [--count N] [--object 6041:0]
+// --wait poll waits in poll() (with a time limit, as an event loop does) before each read
+// instead of blocking in read(): the cost of the event loop's extra system call alone.
+//   refgo_minimal --uri refgo://HOST:PORT [--count N] [--object 6041:0] [--wait read|poll]
 #include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -18,7 +21,7 @@
 
 int main(int argc, char **argv)
 {
-    std::string uri, object = "6041:0";
+    std::string uri, object = "6041:0", wait = "read";
     long count = 20000;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i];
@@ -28,6 +31,8 @@ int main(int argc, char **argv)
             count = std::max(1L, std::atol(argv[i + 1]));
         else if (key == "--object")
             object = argv[i + 1];
+        else if (key == "--wait")
+            wait = argv[i + 1];
     }
     const auto hostStart = uri.find("://"), portStart = uri.rfind(':');
     if (uri.rfind("refgo://", 0) != 0 || portStart == std::string::npos || portStart < 8) {
@@ -52,6 +57,11 @@ int main(int argc, char **argv)
         return 1;
     }
     freeaddrinfo(address);
+    if (wait != "read" && wait != "poll") {
+        std::fprintf(stderr, "refgo_minimal: --wait read or poll, not '%s'\n", wait.c_str());
+        return 2;
+    }
+    const bool polls = wait == "poll";
     std::string request = "OR" + object + "\r";
     request.replace(request.find(':'), 1, ",");
     char buffer[4096];
@@ -63,6 +73,9 @@ int main(int argc, char **argv)
             return std::perror("refgo_minimal: write"), 1;
         // The answer is the echo, the result line and the prompt '>' (nothing follows it).
         for (bool prompt = false; !prompt;) {
+            pollfd readable { fd, POLLIN, 0 };
+            if (polls && poll(&readable, 1, 1000) != 1)
+                return std::fprintf(stderr, "refgo_minimal: no answer within 1 s\n"), 1;
             const ssize_t n = read(fd, buffer, sizeof buffer);
             if (n <= 0)
                 return std::fprintf(stderr, "refgo_minimal: connection closed\n"), 1;
