@@ -8,7 +8,8 @@
 # headers look at QT_WIDGETS_LIB, QT_GUI_LIB and QT_TESTCASE_BUILDDIR, QtCore's at
 # QT_NO_URL_CAST_FROM_STRING); otherwise it reads the headers as text, so a target that matches
 # no set still builds. QT_TESTCASE_BUILDDIR (only used by QFINDTESTDATA, which no test uses) is
-# the build folder for every test, so that one set serves them all.
+# the build folder for every test, and QT_TESTCASE_SOURCEDIR (the target's own source folder,
+# also only for QFINDTESTDATA) is left undefined, so that one set serves them all.
 # Off by default: ccache does not cache compilations that use a precompiled header.
 
 set(_drivebench_pch_core
@@ -35,17 +36,27 @@ function(_drivebench_pch_donor name headers)
     target_compile_definitions(${name} PRIVATE QT_NO_URL_CAST_FROM_STRING)
     target_precompile_headers(${name} PRIVATE ${headers})
     set_target_properties(${name} PROPERTIES QT_TESTCASE_BUILDDIR ${CMAKE_BINARY_DIR})
+    if(name MATCHES "test$")
+        _drivebench_pch_same_sourcedir(${name})
+    endif()
+endfunction()
+
+# Command-line options come after the definitions, so -U removes Qt6::Test's per-folder value.
+function(_drivebench_pch_same_sourcedir target)
+    target_compile_options(${target} PRIVATE -UQT_TESTCASE_SOURCEDIR)
 endfunction()
 
 if(DRIVEBENCH_PCH)
     _drivebench_pch_donor(drivebench_pch_core "${_drivebench_pch_core}" Qt6::Core)
     _drivebench_pch_donor(drivebench_pch_widgets
         "${_drivebench_pch_core};${_drivebench_pch_widgets}" Qt6::Widgets)
+    # Every test links Qt6::Network through its support library, and QtTest's headers look at
+    # QT_NETWORK_LIB.
     _drivebench_pch_donor(drivebench_pch_test "${_drivebench_pch_core};${_drivebench_pch_test}"
-        Qt6::Test)
+        Qt6::Test Qt6::Network)
     _drivebench_pch_donor(drivebench_pch_widgettest
         "${_drivebench_pch_core};${_drivebench_pch_widgets};${_drivebench_pch_test}"
-        Qt6::Test Qt6::Widgets)
+        Qt6::Test Qt6::Widgets Qt6::Network)
 endif()
 
 # Called for every own target (drivebench_warnings); picks the donor once the folder is read.
@@ -74,4 +85,7 @@ function(_drivebench_pch_choose target)
     endif()
     set_target_properties(${target} PROPERTIES PRECOMPILE_HEADERS_REUSE_FROM drivebench_pch_${kind}
                                                QT_TESTCASE_BUILDDIR ${CMAKE_BINARY_DIR})
+    if(kind MATCHES "test$")
+        _drivebench_pch_same_sourcedir(${target})
+    endif()
 endfunction()

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # One entry point for a fresh Debian 12 machine (run as root, or as a user with sudo):
 #   bash tools/bootstrap.sh demo   install dependencies, build, start `drivebench --demo`
-#   bash tools/bootstrap.sh test   install dependencies, build, run the whole test suite (ctest)
+#   bash tools/bootstrap.sh test   install dependencies, build, run the whole test suite (ctest),
+#                                  then build it once more with the sanitizers and run it there
+#                                  (tools/sanitize.sh; DRIVEBENCH_SANITIZER_PASS=OFF skips that)
 #   bash tools/bootstrap.sh build  install dependencies and build only
 #   bash tools/bootstrap.sh deb    install dependencies, build, make build/drivebench_*.deb
 #                                  (cpack) and check it with lintian
 # Environment: BUILD_DIR (default: build), CI=true turns warnings into errors,
-# DRIVEBENCH_CMAKE_ARGS: more options for cmake (.ci/run sets the build speed ones there).
+# DRIVEBENCH_CMAKE_ARGS: more options for cmake. `test` builds from scratch with precompiled Qt
+# headers, without debug information and with mold unless DRIVEBENCH_CMAKE_ARGS is set (also
+# when set to nothing): about half the CPU time of a plain build without a compiler cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -54,6 +58,10 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 build_dir=${BUILD_DIR:-build}
+if [ "$mode" = test ] && [ -z "${DRIVEBENCH_CMAKE_ARGS+set}" ]; then
+    DRIVEBENCH_CMAKE_ARGS="-DDRIVEBENCH_PCH=ON -DDRIVEBENCH_DEBUG_INFO=OFF -DDRIVEBENCH_LINKER=mold"
+fi
+export DRIVEBENCH_CMAKE_ARGS=${DRIVEBENCH_CMAKE_ARGS:-} # tools/sanitize.sh takes them too
 werror=OFF
 [ "${CI:-}" = "true" ] || [ "${DRIVEBENCH_WERROR:-}" = "ON" ] && werror=ON
 # shellcheck disable=SC2086 # DRIVEBENCH_CMAKE_ARGS is a list of options
@@ -70,8 +78,12 @@ demo)
     exec "$build_dir/app/drivebench" --demo
     ;;
 test)
-    cd "$build_dir"
-    QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" --timeout 300
+    (cd "$build_dir" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" \
+        --timeout 300)
+    if [ "${DRIVEBENCH_SANITIZER_PASS:-ON}" != OFF ]; then
+        echo "the whole suite once more under AddressSanitizer, UBSan and LeakSanitizer" >&2
+        bash tools/sanitize.sh
+    fi
     ;;
 deb)
     rm -f "$build_dir"/drivebench_*.deb

@@ -198,7 +198,8 @@ bool AcuAxis::takeStatus(const StatusSource &source, Status &status)
 
 Reply *AcuAxis::initialize()
 {
-    auto *result = new Reply(ObjectAddress(kConfiguration, 0));
+    // The reads and the result die with the axis when it goes before they finish.
+    auto *result = new Reply(ObjectAddress(kConfiguration, 0), this);
     const QList<quint16> wanted { kConfiguration,   kBusErrorBehaviour, kMode,
                                   kProfileVelocity, kAcceleration,      kDeceleration,
                                   kTargetWindow,    kTargetWindowTime,  kHomingMethod,
@@ -210,6 +211,7 @@ Reply *AcuAxis::initialize()
     QPointer<Reply> guard(result);
     for (const quint16 p : wanted) {
         Reply *r = connection()->read(ObjectAddress(p, 0));
+        r->setParent(this);
         reads->append(r);
         connect(r, &Reply::finished, this, [=, this] {
             r->deleteLater();

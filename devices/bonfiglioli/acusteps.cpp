@@ -139,6 +139,7 @@ void AcuSteps::next()
     case Step::Kind::Write: {
         Reply *r = m_axis->connection()->write(ObjectAddress(s.parameter, kRamDataSet),
                                                QVariant::fromValue(s.value));
+        r->setParent(this); // dies with the steps when they are abandoned
         const quint16 parameter = s.parameter;
         const qint64 value = s.value;
         connect(r, &Reply::finished, this, [this, r, parameter, value] {

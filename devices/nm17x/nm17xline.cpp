@@ -238,6 +238,7 @@ Reply *Nm17xLine::read(NodeId node, ObjectAddress address)
                   Tr::tr("node %1 has no object %2").arg(node).arg(address.toString())));
     auto *outer = new Reply(address);
     Reply *inner = m_network->sdo()->upload(node, address);
+    inner->setParent(outer); // a caller that drops `outer` drops the upload, too
     const DataType type = def->type;
     connect(inner, &Reply::finished, outer, [outer, inner, type, node, address] {
         inner->deleteLater();

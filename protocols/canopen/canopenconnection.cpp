@@ -241,6 +241,7 @@ void CanopenConnection::watchHeartbeat()
     if (!dictionary().contains(kProducerHeartbeat))
         return;
     Reply *r = read(kProducerHeartbeat);
+    r->setParent(this);
     connect(r, &Reply::finished, this, [this, r] {
         r->deleteLater();
         const int period = r->ok() ? r->value().toInt() : 0;

@@ -132,6 +132,7 @@ void Sequence::runStep()
         return;
     case Step::Kind::Write: {
         Reply *r = m_connection->write(step.address, step.value);
+        r->setParent(this); // dies with the sequence when it is abandoned
         m_request = r;
         connect(r, &Reply::finished, this, [this, r] {
             r->deleteLater();

@@ -83,7 +83,8 @@ bool Cia402Axis::commandRunning() const
 
 Reply *Cia402Axis::initialize()
 {
-    auto *result = new Reply(obj::SupportedModes);
+    // The reads and the result die with the axis when it goes before they finish.
+    auto *result = new Reply(obj::SupportedModes, this);
     auto values = std::make_shared<QHash<ObjectAddress, QVariant>>();
     QList<ObjectAddress> objects = Scaling::objects();
     objects.append(obj::SupportedModes);
@@ -111,6 +112,7 @@ Reply *Cia402Axis::initialize()
     }
     for (const ObjectAddress &address : objects) {
         Reply *r = connection()->read(address);
+        r->setParent(this);
         connect(r, &Reply::finished, this, [=, this] {
             r->deleteLater();
             if (r->ok())

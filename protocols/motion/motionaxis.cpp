@@ -485,6 +485,7 @@ void MotionAxis::setState(AxisState state)
 
 void MotionAxis::whenFinished(Reply *reply, std::function<void(Reply *)> done)
 {
+    reply->setParent(this); // an axis that goes first takes its requests with it
     connect(reply, &Reply::finished, this, [reply, done = std::move(done)] {
         done(reply);
         reply->deleteLater();

@@ -239,7 +239,7 @@ void TestCliMotion::velocityThenHaltAndStopFromAnotherProcess()
         move.start(QStringLiteral(DRIVEBENCH_CLI),
                    { QStringLiteral("move"), u, QStringLiteral("--abs"),
                      QString::number(after + 50000), QStringLiteral("--vel"),
-                     QStringLiteral("1000"), QStringLiteral("--wait"), QStringLiteral("3000") });
+                     QStringLiteral("1000"), QStringLiteral("--wait"), QStringLiteral("30000") });
         QVERIFY(move.waitForStarted());
         QTRY_VERIFY_WITH_TIMEOUT(
             cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed().toDouble()
@@ -249,7 +249,8 @@ void TestCliMotion::velocityThenHaltAndStopFromAnotherProcess()
         QVERIFY2(r.exitCode == 0, qPrintable(brake + QLatin1String(": ") + r.err));
         QCOMPARE(cli({ QStringLiteral("read"), u, QStringLiteral("606C:0") }).out.trimmed(),
                  QStringLiteral("0"));
-        // The other process's move ends now, not at its --wait.
+        // The other process's move ends now, not at its --wait (long enough for a slow start of
+        // the processes under the sanitizers).
         QVERIFY(move.waitForFinished(10000));
         const QString err = QString::fromUtf8(move.readAllStandardError());
         QVERIFY2(move.exitCode() != 0, qPrintable(err));

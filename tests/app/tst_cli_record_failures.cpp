@@ -117,9 +117,9 @@ void TestCliRecordFailures::failingReadsNameTheirCause_data()
     QTest::newRow("refgo garbage")
         << false << garbage << QByteArray("HELLO WORLD\r\n12\r\n>") << "malformed";
     QTest::newRow("slcan silent") << true << silent << QByteArray() << "timeout";
+    static constexpr char slcanGarbage[] = "\x07zz\rt5818\xff\xfe\rT12\r\x00\x01garbage\r";
     QTest::newRow("slcan garbage")
-        << true << garbage << QByteArray("\x07zz\rt5818\xff\xfe\rT12\r\x00\x01garbage\r", 28)
-        << "timeout";
+        << true << garbage << QByteArray(slcanGarbage, sizeof slcanGarbage - 1) << "timeout";
 }
 
 void TestCliRecordFailures::failingReadsNameTheirCause()

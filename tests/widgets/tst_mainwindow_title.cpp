@@ -100,13 +100,15 @@ private Q_SLOTS:
 
         // A failed write changes nothing on the device: no mark.
         a->setFailure({ 0x6083, 0 }, Error(Error::Kind::DeviceError, QStringLiteral("refused")));
-        Reply *refused = a->write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(2000));
+        std::unique_ptr<Reply> refused(
+            a->write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(2000)));
         QTRY_VERIFY(refused->isFinished());
         QCoreApplication::processEvents();
         QVERIFY(!window.isWindowModified());
         a->clearFailure({ 0x6083, 0 });
 
-        Reply *written = a->write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(2000));
+        std::unique_ptr<Reply> written(
+            a->write({ 0x6083, 0 }, QVariant::fromValue<qulonglong>(2000)));
         QTRY_VERIFY(window.isWindowModified());
         QVERIFY(written->ok());
         QVERIFY(window.hasUnstoredWrites(a));

@@ -156,7 +156,13 @@ MorsePanel::MorsePanel(QWidget *parent)
     refresh();
 }
 
-MorsePanel::~MorsePanel() = default;
+MorsePanel::~MorsePanel()
+{
+    // A live source that is a child dies in QWidget's destructor, after this panel's members:
+    // it must not call back into them.
+    if (m_liveSource)
+        disconnect(m_liveSource, nullptr, this, nullptr);
+}
 
 void MorsePanel::chooseFile()
 {

@@ -29,8 +29,6 @@ void MorsePanel::setLiveSource(MorseLiveSource *source)
         connect(m_liveSource, &MorseLiveSource::error, this, &MorsePanel::liveError);
         connect(m_liveSource, &MorseLiveSource::devicesChanged, this,
                 &MorsePanel::rebuildCameraList);
-        // Only members here: the source may be a child dying in this panel's destructor, after
-        // the widgets.
         connect(m_liveSource, &QObject::destroyed, this, [this] {
             m_liveSource = nullptr;
             m_live = false;

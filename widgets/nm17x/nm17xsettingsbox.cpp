@@ -176,6 +176,7 @@ void Nm17xSettingsBox::refresh()
 void Nm17xSettingsBox::read(ObjectAddress address)
 {
     Reply *reply = m_line->read(m_node, address);
+    reply->setParent(this); // dies with the box when it goes first
     const int generation = m_generation;
     connect(reply, &Reply::finished, this, [this, reply, address, generation] {
         reply->deleteLater();
@@ -220,6 +221,7 @@ void Nm17xSettingsBox::write(ObjectAddress address, qint64 value, const QString 
     if (!m_line || m_node == 0)
         return;
     Reply *reply = m_line->write(m_node, address, value);
+    reply->setParent(this);
     const canopen::NodeId node = m_node;
     const int generation = m_generation;
     connect(reply, &Reply::finished, this, [this, reply, address, node, what, generation] {
@@ -246,6 +248,7 @@ void Nm17xSettingsBox::oscillate(bool on)
     if (!m_line || m_node == 0)
         return;
     Reply *reply = m_line->write(m_node, kOscillation, on ? 1 : 0);
+    reply->setParent(this);
     const canopen::NodeId node = m_node;
     connect(reply, &Reply::finished, this, [this, reply, node, on] {
         reply->deleteLater();
