@@ -176,8 +176,7 @@ void Decoder::feed(QByteArrayView bytes, Sink sink, void *context)
 {
     const auto stop = [this] {
         reset();
-        return;
-    };
+    }; // the receiver said stop: drop the rest
     const char *const end = bytes.end();
     for (const char *p = bytes.begin(); p != end; ++p) {
         const char c = *p;
