@@ -7752,6 +7752,14 @@ send 605 40 08 10 00</translation>
         <source>dynamic pre-shutdown off</source>
         <translation>dynamische Vorabschaltung aus</translation>
     </message>
+    <message>
+        <source>Enter the spindle pitch first: the display&apos;s scaling could not be read.</source>
+        <translation>Zuerst die Spindelsteigung eingeben: die Skalierung der Anzeige konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Enter the jump filter&apos;s width and count first: the display&apos;s filter could not be read.</source>
+        <translation>Zuerst Breite und Anzahl des Sprungfilters eingeben: der Filter der Anzeige konnte nicht gelesen werden.</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::NodeList</name>

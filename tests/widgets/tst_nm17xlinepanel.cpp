@@ -44,6 +44,7 @@ private Q_SLOTS:
     void guidedAddressingTimeoutIsNamedPerStep();
     void modesOfTheSelectedDisplay();
     void settingsOfTheSelectedDisplay();
+    void settingsOfAnotherDisplayAreBlankUntilRead();
     void scanFindsTheDisplaysAtTheirBitrate();
     void displayErrorsAreNamed();
     void nm170HasNoMotorSettings();
@@ -345,6 +346,55 @@ void TstNm17xLinePanel::settingsOfTheSelectedDisplay()
     QTRY_VERIFY(box->switchOffText().contains(QLatin1String("0.00 mm")));
 }
 
+// Selecting another display never shows the previous one's settings: each field is blank and
+// its command disabled until this display's value has come; a field whose read failed stays
+// blank, and its command asks for a value instead of writing the hidden previous one.
+void TstNm17xLinePanel::settingsOfAnotherDisplayAreBlankUntilRead()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    QVERIFY(m_displays.at(0)->write({ 0x2041, 2 }, 1u).ok()); // NM172: pre-shutdown on
+    m_panel->selectNode(3);
+    widgets::Nm17xSettingsBox *box = m_panel->settingsBox();
+    auto *width = box->findChild<QSpinBox *>("filterWidth");
+    auto *count = box->findChild<QSpinBox *>("filterCount");
+    auto *pitch = box->findChild<QDoubleSpinBox *>("pitch");
+    auto *preShutdown = box->findChild<QCheckBox *>("preShutdown");
+    auto *setFilter = box->findChild<QPushButton *>("setFilter");
+    QTRY_COMPARE(count->value(), 5);
+    QTRY_VERIFY(preShutdown->isEnabled());
+    QCOMPARE(preShutdown->checkState(), Qt::Checked);
+    QCOMPARE(width->cleanText(), QStringLiteral("100"));
+    QVERIFY(setFilter->isEnabled());
+
+    m_panel->selectNode(2);
+    QVERIFY(width->cleanText().isEmpty());
+    QVERIFY(count->cleanText().isEmpty());
+    QVERIFY(pitch->cleanText().isEmpty());
+    QCOMPARE(preShutdown->checkState(), Qt::PartiallyChecked);
+    QVERIFY(!preShutdown->isEnabled());
+    QVERIFY(!setFilter->isEnabled());
+    QTRY_COMPARE(count->cleanText(), QStringLiteral("2"));
+    QTRY_COMPARE(width->cleanText(), QStringLiteral("100")); // the same value as before
+    QTRY_COMPARE(preShutdown->checkState(), Qt::Unchecked);
+    QVERIFY(preShutdown->isEnabled());
+    QVERIFY(setFilter->isEnabled());
+    QVERIFY(!pitch->cleanText().isEmpty());
+
+    // A display that stops answering: the fields stay blank, and Set filter asks for values.
+    SimulatedNm17x *nm172 = m_displays.at(0);
+    disconnect(m_bus, &test::ScriptedCanBus::frameWritten, nm172, &SimulatedNm17x::receive);
+    m_panel->selectNode(3);
+    QTRY_VERIFY_WITH_TIMEOUT(setFilter->isEnabled(), 5000);
+    QVERIFY(width->cleanText().isEmpty());
+    QVERIFY(count->cleanText().isEmpty());
+    const quint32 before = nm172->read({ 0x2005, 1 }).value().toUInt();
+    QTest::mouseClick(setFilter, Qt::LeftButton);
+    QVERIFY2(m_panel->message().contains(QLatin1String("Enter the jump filter")),
+             qPrintable(m_panel->message()));
+    QCOMPARE(nm172->read({ 0x2005, 1 }).value().toUInt(), before);
+}
+
 // A display at 250 kbit/s while the line's bus runs at 125: the scan names where it answers.
 void TstNm17xLinePanel::scanFindsTheDisplaysAtTheirBitrate()
 {
@@ -409,8 +459,9 @@ void TstNm17xLinePanel::nm170HasNoMotorSettings()
     QVERIFY(!box.findChild<QComboBox *>("inputMode")->isEnabled());
     QVERIFY(!box.findChild<QPushButton *>("oscillate")->isEnabled());
     QVERIFY(!box.findChild<QCheckBox *>("preShutdown")->isEnabled());
-    QVERIFY(box.findChild<QPushButton *>("setScaling")->isEnabled());
-    QVERIFY(box.findChild<QPushButton *>("setFilter")->isEnabled());
+    // Nothing answers at node 9: once its reads have failed, the values can be entered.
+    QTRY_VERIFY(box.findChild<QPushButton *>("setScaling")->isEnabled());
+    QTRY_VERIFY(box.findChild<QPushButton *>("setFilter")->isEnabled());
     box.setDisplay(&line, 9, Variant::Nm172);
     QVERIFY(box.findChild<QComboBox *>("inputMode")->isEnabled());
     box.setDisplay(nullptr, 0, Variant::Nm172);

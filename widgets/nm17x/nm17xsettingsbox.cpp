@@ -132,15 +132,26 @@ void Nm17xSettingsBox::setDisplay(Nm17xLine *line, canopen::NodeId node, Variant
     if (changed) {
         ++m_generation;
         m_steps->setValue(stepsPerRevolution(variant));
-        m_scaling->clear();
-        m_switchOff->clear();
-        // Blank until this display's own values have been read, never the previous one's.
-        m_inputs->setCurrentIndex(-1);
-        m_keys->setCurrentIndex(-1);
+        clearValues();
     }
     updateEnabled();
     if (changed)
         refresh();
+}
+
+// Blank until this display's own values have been read, never the previous one's.
+void Nm17xSettingsBox::clearValues()
+{
+    m_settled.clear();
+    m_scaling->clear();
+    m_switchOff->clear();
+    m_inputs->setCurrentIndex(-1);
+    m_keys->setCurrentIndex(-1);
+    m_pitch->clear();
+    m_filterWidth->clear();
+    m_filterCount->clear();
+    m_preShutdown->setTristate(true);
+    m_preShutdown->setCheckState(Qt::PartiallyChecked);
 }
 
 QString Nm17xSettingsBox::switchOffText() const
@@ -152,12 +163,14 @@ void Nm17xSettingsBox::updateEnabled()
 {
     const bool on = m_line && m_node != 0;
     const bool motor = on && hasMotor(m_variant);
-    for (QWidget *w : std::initializer_list<QWidget *> { m_inputs, m_keys, m_oscStart, m_oscStop,
-                                                         m_preShutdown })
+    for (QWidget *w : std::initializer_list<QWidget *> { m_inputs, m_keys, m_oscStart, m_oscStop })
         w->setEnabled(motor);
-    for (QWidget *w : std::initializer_list<QWidget *> {
-             m_pitch, m_steps, m_setScaling, m_filterWidth, m_filterCount, m_setFilter })
-        w->setEnabled(on);
+    m_preShutdown->setEnabled(motor && settled(kPreShutdown));
+    for (QWidget *w : std::initializer_list<QWidget *> { m_pitch, m_steps, m_setScaling })
+        w->setEnabled(on && settled(kScaling));
+    for (QWidget *w :
+         std::initializer_list<QWidget *> { m_filterWidth, m_filterCount, m_setFilter })
+        w->setEnabled(on && settled(kFilterWidth) && settled(kFilterCount));
 }
 
 void Nm17xSettingsBox::refresh()
@@ -182,11 +195,12 @@ void Nm17xSettingsBox::read(ObjectAddress address)
         reply->deleteLater();
         if (generation != m_generation)
             return;
-        if (!reply->ok()) {
+        m_settled.insert(address);
+        if (reply->ok())
+            show(address, reply->value().toLongLong());
+        else
             Q_EMIT message(reply->error().message());
-            return;
-        }
-        show(address, reply->value().toLongLong());
+        updateEnabled();
     });
 }
 
@@ -202,6 +216,7 @@ void Nm17xSettingsBox::show(ObjectAddress address, qint64 value)
     } else if (address == kKeyMode) {
         select(m_keys, value);
     } else if (address == kPreShutdown) {
+        m_preShutdown->setTristate(false);
         m_preShutdown->setChecked(value == 1);
     } else if (address == kSwitchOff) {
         m_switchOff->setText(tr("switch-off point %1").arg(formatPosition(qint32(value), false)));
@@ -260,6 +275,11 @@ void Nm17xSettingsBox::oscillate(bool on)
 
 void Nm17xSettingsBox::setScaling()
 {
+    if (m_pitch->cleanText().isEmpty()) {
+        Q_EMIT message(tr("Enter the spindle pitch first: the display's scaling could not be "
+                          "read."));
+        return;
+    }
     const qint32 pitch = qint32(qRound(m_pitch->value() * 100));
     const quint32 scaling = scalingFor(pitch, m_steps->value());
     write(kScaling, scaling,
@@ -271,6 +291,11 @@ void Nm17xSettingsBox::setScaling()
 
 void Nm17xSettingsBox::setJumpFilter()
 {
+    if (m_filterWidth->cleanText().isEmpty() || m_filterCount->cleanText().isEmpty()) {
+        Q_EMIT message(tr("Enter the jump filter's width and count first: the display's filter "
+                          "could not be read."));
+        return;
+    }
     write(kFilterWidth, m_filterWidth->value(),
           tr("jump filter %1 steps").arg(m_filterWidth->value()));
     write(kFilterCount, m_filterCount->value(),

@@ -4,12 +4,15 @@
 // what the external inputs F/G do (2041h:03), how the keys drive (2041h:04), oscillation between
 // D1 and D2 (204Dh:02), the scaling from the spindle pitch (2004h), the jump filter (2005h:01/02)
 // and the dynamic pre-shutdown (2041h:02) with the switch-off point it adapts (2042h:03).
-// Selecting a display reads its current values; the motor settings are disabled on an NM170.
+// Selecting a display reads its current values; until a value has come, its field is blank and
+// its command disabled (a failed read leaves the field blank and lets the user enter a value).
+// The motor settings are disabled on an NM170.
 
 #include "canopen/canopenids.h"
 #include "devices/nm17x/nm17xdescription.h"
 
 #include <QPointer>
+#include <QSet>
 #include <QWidget>
 
 class QCheckBox;
@@ -58,6 +61,9 @@ private:
     void read(ObjectAddress address);
     void show(ObjectAddress address, qint64 value);
     void updateEnabled();
+    void clearValues();
+    // A value read, or a read that failed: the field is no longer waiting for the display.
+    bool settled(ObjectAddress address) const { return m_settled.contains(address); }
 
     QPointer<nm17x::Nm17xLine> m_line;
     canopen::NodeId m_node = 0;
@@ -76,6 +82,7 @@ private:
     QPushButton *m_setFilter;
     QCheckBox *m_preShutdown;
     QLabel *m_switchOff;
+    QSet<ObjectAddress> m_settled;
 };
 
 } // namespace db::widgets
