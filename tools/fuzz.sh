@@ -65,18 +65,24 @@ fi
 [[ $build_first -eq 0 ]] || ninja -C "$build" "${targets[@]/#/fuzz_}" >/dev/null
 
 export QT_QPA_PLATFORM=offscreen DRIVEBENCH_LANG=en
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+# Allocation stacks are not recorded while fuzzing: recording them took a third of the time.
+# A finding is then reported without the stack of the allocation involved; replay its input
+# with the target and ASAN_OPTIONS=detect_leaks=1 for the whole report.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:malloc_context_size=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 
 printf '%-16s %14s %8s %9s\n' target executions corpus findings
 # The longest input worth trying: the streamed protocols (frames, SLCAN, VABus) meet every
 # state and limit of theirs within a few hundred bytes (SLCAN lines end at 64 bytes, a VABus
-# telegram at 105, a CAN frame at 8); longer inputs only repeat frames and slow each run down.
+# telegram at 105, a CAN frame at 8): 1 kB holds nine whole telegrams or sixteen SLCAN lines
+# with garbage between them; longer inputs only repeat frames and slow each run down (4 kB
+# inputs ran VABus at less than half the rate, with the same coverage).
 # RefGo answers may be up to 64 kB (its framer's limit): 68 kB inputs (a length byte per piece
 # of up to 64 bytes) can pass it. Files keep 64 kB.
 max_len() {
     case $1 in
-    slcan | vabus | nm17x | sdoclient | canopennode | framedecoder | text) echo 4096 ;;
+    slcan | vabus | nm17x | framedecoder | text) echo 1024 ;;
+    sdoclient | canopennode) echo 4096 ;; # an SDO block of 127 segments is over 1 kB
     refgo) echo 69632 ;;
     *) echo 65536 ;;
     esac
