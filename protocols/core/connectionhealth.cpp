@@ -129,6 +129,7 @@ void ConnectionHealth::probe()
         return;
     }
     m_probe = m_connection->read(probeAddress());
+    m_probe->setParent(this); // dies with the health (and its connection) if it never finishes
     connect(m_probe, &Reply::finished, m_probe, &QObject::deleteLater);
 }
 
