@@ -279,7 +279,7 @@ private Q_SLOTS:
                 break;
         }
         QObject holder;
-        m_connection->setRequestTimeoutMs(200);
+        m_connection->setRequestTimeoutMs(500);
         m_source->acquire(&holder, 20, extra);
         QTRY_VERIFY(m_source->cycles() >= 2);
         QVERIFY(m_source->usesBlock());
