@@ -207,8 +207,9 @@ Reply *AcuAxis::initialize()
                 *configurationError = r->error();
             if (!r->ok() && ConnectionHealth::isNoAnswer(r->error())) {
                 // The inverter did not answer (or the link is gone): the reads queued behind
-                // this one would only wait out their own time limits. Deleting an unsent
-                // request withdraws it.
+                // this one would only wait out their own time limits, so initialize() fails
+                // now. Their replies are deleted; the connection's own requests behind them
+                // are still sent (Reply::forward does not withdraw them).
                 for (const QPointer<Reply> &other : std::as_const(*reads))
                     if (other && other != r)
                         delete other.data();
