@@ -67,38 +67,53 @@ Result<QVariant> await(Reply *reply)
     return Reply::wait(reply, 120000);
 }
 
-// Expedited uploads one after another, the next one sent from the previous one's finished().
+// Expedited uploads one after another, the next one sent from the previous one's handler (no
+// Reply per request, as fixed-rate polling reads).
 void expedited(SdoClient &sdo, NodeId node, ObjectAddress object, int count)
 {
-    QList<double> latencies;
-    latencies.reserve(count);
-    QEventLoop loop;
-    QElapsedTimer total;
-    QElapsedTimer one;
-    int done = 0;
-    int failed = 0;
-    std::unique_ptr<Reply> previous; // the reply whose finished() ran last
-    std::function<void()> next = [&] {
-        one.start();
-        Reply *r = sdo.upload(node, object, SdoClient::Mode::Expedited);
-        QObject::connect(r, &Reply::finished, &loop, [&, r] {
-            latencies.append(one.nsecsElapsed() / 1e6);
-            failed += r->ok() ? 0 : 1;
-            // The previous reply is done with (its finished() has returned): deleting it here
-            // saves a deferred-delete event per round trip, which would cost the loop a wake-up.
-            previous.reset(r);
+    struct State
+    {
+        SdoClient *sdo = nullptr;
+        NodeId node = 0;
+        ObjectAddress object;
+        int count = 0;
+        QList<double> latencies;
+        QEventLoop loop;
+        QElapsedTimer one;
+        int done = 0;
+        int failed = 0;
+
+        void next()
+        {
+            one.start();
+            // The handler captures one pointer, so std::function holds it without allocating.
+            sdo->upload(node, object,
+                        Completion(&loop, [this](const Result<QVariant> &r) { finished(r); }),
+                        SdoClient::Mode::Expedited);
+        }
+        void finished(const Result<QVariant> &result)
+        {
+            latencies.append(double(one.nsecsElapsed()) / 1e6);
+            failed += result.ok() ? 0 : 1;
             if (++done < count)
                 next();
             else
                 loop.quit();
-        });
-    };
+        }
+    } state;
+    state.sdo = &sdo;
+    state.node = node;
+    state.object = object;
+    state.count = count;
+    state.latencies.reserve(count);
+    QElapsedTimer total;
     const std::clock_t cpuStart = std::clock();
     total.start();
-    next();
-    loop.exec();
+    state.next();
+    state.loop.exec();
     const double seconds = total.nsecsElapsed() / 1e9;
     const double cpuUs = double(std::clock() - cpuStart) * 1e6 / CLOCKS_PER_SEC / count;
+    QList<double> &latencies = state.latencies;
     std::sort(latencies.begin(), latencies.end());
     const auto pct = [&](double p) {
         return latencies.at(qMin(qsizetype(p * latencies.size()), latencies.size() - 1));
@@ -107,7 +122,7 @@ void expedited(SdoClient &sdo, NodeId node, ObjectAddress object, int count)
                                       [](double ms) { return ms >= kStallMs; });
     std::printf("expedited upload:   %d round trips in %.3f s = %.0f/s, cpu %.1f us per round "
                 "trip  (failed %d)\n",
-                count, seconds, count / seconds, cpuUs, failed);
+                count, seconds, count / seconds, cpuUs, state.failed);
     std::printf("  latency ms: p50 %.3f  p90 %.3f  p99 %.3f  max %.3f  stalls >= %d ms: %ld\n",
                 pct(0.5), pct(0.9), pct(0.99), latencies.last(), kStallMs, long(stalls));
 }

@@ -1,13 +1,15 @@
-// RefGo benchmark: object reads (OR6041,0) one after another, the next one sent from the
-// previous one's finished(), through the RefgoClient (the engine) and through the RefGo
-// DeviceConnection (what the CLI, the scope and the parameter runner use), against the
-// simulated MovingCap of `drivebench --demo` in this process over loopback. Prints round trips
-// per second with latency percentiles.
+// RefGo benchmark: object reads (OR6041,0) one after another, the next one sent when the
+// previous one has finished, through the RefgoClient (the engine: a handler per request, as
+// fixed-rate polling reads, and a Reply per request) and through the RefGo DeviceConnection
+// (what the CLI, the scope and the parameter runner use), against the simulated MovingCap of
+// `drivebench --demo` in this process over loopback. Prints round trips per second with latency
+// percentiles.
 //
 //   refgo_bench [--count N] [--uri refgo://HOST[:PORT]] [--object I:S] [--engine-only]
 //
 // --uri measures another drive or simulator instead (e.g. drivebench-sim movingcap
-// --refgo-port 0); --object is read (default 6041:0, the statusword).
+// --refgo-port 0); --object is read (default 6041:0, the statusword). --engine-only measures
+// the engine with handlers only.
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "core/connectionuri.h"
@@ -58,47 +60,57 @@ Result<void> open(ByteStream &stream)
         : Error(Error::Kind::Disconnected, QStringLiteral("closed while opening"));
 }
 
-// `count` requests made by `request`, each sent when the previous one finished; prints one line
+// One request: sends it and has `done` called with its result.
+using Issue = std::function<void(Completion done)>;
+
+// `count` requests made by `issue`, each sent when the previous one finished; prints one line
 // of figures under `label`. False when a request failed.
-bool roundTrips(const char *label, int count, const std::function<Reply *()> &request,
-                bool print = true)
+bool roundTrips(const char *label, int count, const Issue &issue, bool print = true)
 {
-    QList<double> latencies;
-    latencies.reserve(count);
-    QEventLoop loop;
-    QElapsedTimer total;
-    QElapsedTimer one;
-    int done = 0;
-    QString failure;
-    std::unique_ptr<Reply> previous; // the reply whose finished() ran last
-    std::function<void()> next = [&] {
-        one.start();
-        Reply *r = request();
-        QObject::connect(r, &Reply::finished, &loop, [&, r] {
+    struct State
+    {
+        QList<double> latencies;
+        QEventLoop loop;
+        QElapsedTimer one;
+        int count = 0;
+        int done = 0;
+        QString failure;
+        const Issue *issue = nullptr;
+
+        void next()
+        {
+            one.start();
+            // The handler captures one pointer, so std::function holds it without allocating.
+            (*issue)(Completion(&loop, [this](const Result<QVariant> &r) { finished(r); }));
+        }
+        void finished(const Result<QVariant> &result)
+        {
             latencies.append(double(one.nsecsElapsed()) / 1e6);
-            if (!r->ok() && failure.isEmpty())
-                failure = r->error().toString();
-            // The previous reply is done with (its finished() has returned): deleting it here
-            // saves a deferred-delete event per round trip, which would cost the loop a wake-up.
-            previous.reset(r);
+            if (!result.ok() && failure.isEmpty())
+                failure = result.error().toString();
             if (++done < count && failure.isEmpty())
                 next();
             else
                 loop.quit();
-        });
-    };
+        }
+    } state;
+    state.latencies.reserve(count);
+    state.count = count;
+    state.issue = &issue;
+    QElapsedTimer total;
     const std::clock_t cpuStart = std::clock();
     total.start();
-    next();
-    loop.exec();
+    state.next();
+    state.loop.exec();
     const double seconds = double(total.nsecsElapsed()) / 1e9;
     const double cpuUs = double(std::clock() - cpuStart) * 1e6 / CLOCKS_PER_SEC / count;
-    if (!failure.isEmpty()) {
-        std::fprintf(stderr, "refgo_bench: %s: %s\n", label, qPrintable(failure));
+    if (!state.failure.isEmpty()) {
+        std::fprintf(stderr, "refgo_bench: %s: %s\n", label, qPrintable(state.failure));
         return false;
     }
     if (!print)
         return true;
+    QList<double> &latencies = state.latencies;
     std::sort(latencies.begin(), latencies.end());
     const auto pct = [&](double p) {
         return latencies.at(qMin(qsizetype(p * double(latencies.size())), latencies.size() - 1));
@@ -109,6 +121,26 @@ bool roundTrips(const char *label, int count, const std::function<Reply *()> &re
                 pct(0.99), latencies.last());
     return true;
 }
+
+// Requests through an API that returns a Reply: its finished() hands the result on. Each reply
+// is deleted when the next one has finished (its finished() has returned by then), which saves a
+// deferred-delete event per round trip.
+struct ViaReply
+{
+    std::function<Reply *()> make;
+    std::shared_ptr<std::unique_ptr<Reply>> previous = std::make_shared<std::unique_ptr<Reply>>();
+
+    void operator()(Completion done) const
+    {
+        Reply *r = make();
+        QObject::connect(r, &Reply::finished, r,
+                         [r, previous = previous.get(), done = std::move(done)]() mutable {
+                             const Result<QVariant> result = r->result();
+                             previous->reset(r);
+                             done.complete(result);
+                         });
+    }
+};
 
 } // namespace
 
@@ -159,9 +191,15 @@ int main(int argc, char **argv)
         if (auto opened = open(stream); !opened)
             return fail(opened.error().toString());
         refgo::RefgoClient client(&stream);
-        if (!roundTrips(
-                "warm-up", 1, [&] { return client.objectRead(object); }, false)
-            || !roundTrips("engine objectRead", count, [&] { return client.objectRead(object); }))
+        const Issue viaHandler = [&](Completion done) {
+            client.objectRead(object, std::move(done));
+        };
+        const Issue viaReply = ViaReply { [&] {
+            return client.objectRead(object);
+        } };
+        if (!roundTrips("warm-up", 1, viaHandler, false)
+            || !roundTrips("engine objectRead", count, viaHandler)
+            || (!engineOnly && !roundTrips("engine with Reply", count, viaReply)))
             return 1;
         stream.close();
     }
@@ -174,7 +212,9 @@ int main(int argc, char **argv)
     const std::shared_ptr<DeviceConnection> connection = *made;
     if (auto opened = connection->openAndWait(kConnectMs); !opened)
         return fail(opened.error().toString());
-    const bool ok = roundTrips("connection read", count, [&] { return connection->read(object); });
+    const bool ok = roundTrips("connection read", count, ViaReply { [&] {
+                                   return connection->read(object);
+                               } });
     connection->close();
     return ok ? 0 : 1;
 }

@@ -371,14 +371,16 @@ void CanopenConnection::doRead(Reply *reply, const ObjectDef *def)
     const auto mode = m_sdoMode != SdoClient::Mode::Auto ? m_sdoMode
         : def                                            ? SdoClient::Mode::Auto
                                                          : SdoClient::Mode::Segmented;
-    Reply *inner = m_network->sdo()->upload(m_node, reply->address(), mode, size);
+    // The reply is the request's context: deleted before it is sent, the read is withdrawn.
+    const auto upload = [&](std::function<Result<QVariant>(const QVariant &)> convert) {
+        m_network->sdo()->upload(m_node, reply->address(),
+                                 Completion::finishing(reply, std::move(convert)), mode, size);
+    };
     if (!def) {
-        Reply::forward(inner, reply, this,
-                       [](const QVariant &v) { return valueFromUnknownBytes(v.toByteArray()); });
+        upload([](const QVariant &v) { return valueFromUnknownBytes(v.toByteArray()); });
         return;
     }
-    const DataType type = def->type;
-    Reply::forward(inner, reply, this, [type, size](const QVariant &v) -> Result<QVariant> {
+    upload([type = def->type, size](const QVariant &v) -> Result<QVariant> {
         const QByteArray bytes = v.toByteArray();
         // An expedited answer without size indication carries 4 bytes for smaller types.
         return codec::decode(type, size > 0 && bytes.size() > size ? bytes.left(size) : bytes);

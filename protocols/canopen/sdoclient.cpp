@@ -27,7 +27,7 @@ namespace db::canopen {
 struct SdoClient::Job
 {
     std::unique_ptr<SdoTransfer> transfer;
-    QPointer<Reply> reply;
+    Completion done;
     int timeoutMs = kDefaultTimeoutMs;
     bool upload = false;
 };
@@ -71,6 +71,20 @@ void SdoClient::setBlockSize(int segments)
 Reply *SdoClient::upload(NodeId node, ObjectAddress address, Mode mode, int expectedSize)
 {
     auto *reply = new Reply(address);
+    upload(node, address, Completion(reply), mode, expectedSize);
+    return reply;
+}
+
+Reply *SdoClient::download(NodeId node, ObjectAddress address, const QByteArray &data, Mode mode)
+{
+    auto *reply = new Reply(address);
+    download(node, address, data, Completion(reply), mode);
+    return reply;
+}
+
+void SdoClient::upload(NodeId node, ObjectAddress address, Completion done, Mode mode,
+                       int expectedSize)
+{
     const bool block = mode == Mode::Block
         || (mode == Mode::Auto && m_blockEnabled
             && (expectedSize < 0 || expectedSize > m_blockThreshold));
@@ -79,17 +93,17 @@ Reply *SdoClient::upload(NodeId node, ObjectAddress address, Mode mode, int expe
         transfer = std::make_unique<SdoBlockUpload>(address, m_blockSize);
     else
         transfer = std::make_unique<SdoUpload>(address);
-    return enqueue(node, std::move(transfer), reply, true);
+    enqueue(node, std::move(transfer), std::move(done), true);
 }
 
-Reply *SdoClient::download(NodeId node, ObjectAddress address, const QByteArray &data, Mode mode)
+void SdoClient::download(NodeId node, ObjectAddress address, const QByteArray &data,
+                         Completion done, Mode mode)
 {
-    auto *reply = new Reply(address);
     if (mode == Mode::Expedited && (data.isEmpty() || data.size() > sdocodec::kExpeditedMax)) {
-        reply->fail(
+        done.completeLater(
             Error(Error::Kind::InvalidArgument,
                   Tr::tr("expedited SDO download carries 1 to 4 bytes, not %1").arg(data.size())));
-        return reply;
+        return;
     }
     const bool block = mode == Mode::Block
         || (mode == Mode::Auto && m_blockEnabled && data.size() > m_blockThreshold);
@@ -98,27 +112,30 @@ Reply *SdoClient::download(NodeId node, ObjectAddress address, const QByteArray 
         transfer = std::make_unique<SdoBlockDownload>(address, data);
     else
         transfer = std::make_unique<SdoDownload>(address, data, mode == Mode::Segmented);
-    return enqueue(node, std::move(transfer), reply, false);
+    enqueue(node, std::move(transfer), std::move(done), false);
 }
 
-Reply *SdoClient::enqueue(NodeId node, std::unique_ptr<SdoTransfer> transfer, Reply *reply,
-                          bool upload)
+void SdoClient::enqueue(NodeId node, std::unique_ptr<SdoTransfer> transfer, Completion done,
+                        bool upload)
 {
     if (node < kMinNodeId || node > kMaxNodeId) {
-        reply->fail(
+        done.completeLater(
             Error(Error::Kind::InvalidArgument, Tr::tr("node id %1 is outside 1..127").arg(node)));
-        return reply;
+        return;
     }
     if (!m_bus->isOpen()) {
-        reply->fail(
+        done.completeLater(
             Error(Error::Kind::Disconnected, Tr::tr("CAN bus %1 is not open").arg(m_bus->name())));
-        return reply;
+        return;
     }
     Channel &ch = channel(node);
-    ch.queue.push_back(Job { std::move(transfer), reply, m_timeoutMs, upload });
-    if (!ch.active && !ch.quiet.isActive())
+    ch.queue.push_back(Job { std::move(transfer), std::move(done), m_timeoutMs, upload });
+    if (!ch.active && !ch.quiet.isActive()) {
+        const bool outer = !std::exchange(m_submitting, true);
         startNext(ch);
-    return reply;
+        if (outer)
+            m_submitting = false;
+    }
 }
 
 SdoClient::Channel &SdoClient::channel(NodeId node)
@@ -149,7 +166,7 @@ void SdoClient::startNext(Channel &ch)
     while (!ch.active && !ch.queue.empty()) {
         Job job = std::move(ch.queue.front());
         ch.queue.pop_front();
-        if (!job.reply)
+        if (!job.done.wanted())
             continue; // the requester gave up before it started
         ch.active = std::move(job);
         apply(ch, ch.active->transfer->start());
@@ -225,19 +242,18 @@ bool SdoClient::sendAll(Channel &ch, const QByteArrayList &frames)
     return true;
 }
 
-void SdoClient::finishActive(Channel &ch, const Error &error, const QByteArray &data)
+void SdoClient::finishActive(Channel &ch, const Error &error, const QByteArray &data, bool later)
 {
     ch.timer->stop();
     if (!ch.active)
         return;
-    const Job job = std::move(*ch.active);
+    Job job = std::move(*ch.active);
     ch.active.reset();
-    if (!job.reply)
-        return;
+    later = later || m_submitting;
     if (error.isError())
-        job.reply->fail(error);
+        job.done.complete(error, later);
     else
-        job.reply->finish(job.upload ? QVariant(data) : QVariant());
+        job.done.complete(job.upload ? QVariant(data) : QVariant(), later);
 }
 
 void SdoClient::onTimeout(Channel &ch)
@@ -257,8 +273,9 @@ void SdoClient::onTimeout(Channel &ch)
     // Tell the server to give up too (CiA 301 7.2.4.3.17); the bus may already be gone.
     m_bus->send(
         QCanBusFrame(cob::sdoRequest(ch.node), sdocodec::abort(t.address(), abort::Timeout)));
-    finishActive(ch, Error(Error::Kind::Timeout, what));
+    // Quiet first: a request made by the failed request's handler waits for the grace time.
     ch.quiet.start();
+    finishActive(ch, Error(Error::Kind::Timeout, what));
 }
 
 void SdoClient::drop(NodeId node, const QByteArray &payload, const QString &why)
@@ -284,11 +301,9 @@ void SdoClient::cancelChannel(Channel &ch, const Error &error)
 {
     ch.quiet.stop();
     auto queue = std::exchange(ch.queue, {});
-    finishActive(ch, error);
-    for (Job &job : queue) {
-        if (job.reply)
-            job.reply->fail(error);
-    }
+    finishActive(ch, error, {}, true);
+    for (Job &job : queue)
+        job.done.completeLater(error);
 }
 
 } // namespace db::canopen

@@ -18,6 +18,7 @@
 //   bound by the link, not the engine.
 
 #include "canopenids.h"
+#include "core/completion.h"
 #include "core/reply.h"
 #include "sdotransfer.h"
 
@@ -71,6 +72,11 @@ public:
                   int expectedSize = -1);
     Reply *download(NodeId node, ObjectAddress address, const QByteArray &data,
                     Mode mode = Mode::Auto);
+    // The same results delivered to `done` with no Reply (see Completion).
+    void upload(NodeId node, ObjectAddress address, Completion done, Mode mode = Mode::Auto,
+                int expectedSize = -1);
+    void download(NodeId node, ObjectAddress address, const QByteArray &data, Completion done,
+                  Mode mode = Mode::Auto);
 
     // Requests in flight or queued for a node.
     int pending(NodeId node) const;
@@ -89,13 +95,15 @@ private:
     struct Job;
     struct Channel;
 
-    Reply *enqueue(NodeId node, std::unique_ptr<SdoTransfer> transfer, Reply *reply, bool upload);
+    void enqueue(NodeId node, std::unique_ptr<SdoTransfer> transfer, Completion done, bool upload);
     Channel &channel(NodeId node);
     void startNext(Channel &ch);
     void onFrame(const QCanBusFrame &frame);
     void apply(Channel &ch, const SdoStep &step);
     bool sendAll(Channel &ch, const QByteArrayList &frames);
-    void finishActive(Channel &ch, const Error &error, const QByteArray &data = {});
+    // later: a handler is called from the loop (a cancellation, or inside a request call).
+    void finishActive(Channel &ch, const Error &error, const QByteArray &data = {},
+                      bool later = false);
     void onTimeout(Channel &ch);
     void cancelChannel(Channel &ch, const Error &error);
     void drop(NodeId node, const QByteArray &payload, const QString &why);
@@ -107,6 +115,7 @@ private:
     int m_blockThreshold = kDefaultBlockThreshold;
     int m_blockSize = kDefaultBlockSize;
     int m_dropped = 0;
+    bool m_submitting = false; // inside upload()/download(): handlers are called from the loop
 };
 
 } // namespace db::canopen

@@ -73,15 +73,27 @@ Reply *RefgoClient::execute(const QString &rawCommand)
     });
 }
 
-Reply *RefgoClient::enqueue(const QString &text, Decoder decode, ObjectAddress address)
+QByteArray RefgoClient::line(const QString &text)
 {
     // The line as sent, CR included, in one allocation (this runs for every request).
     QByteArray bytes(text.size() + 1, '\r');
     char *out = bytes.data();
     for (const QChar c : text)
         *out++ = c.unicode() < 0x100 ? char(c.unicode()) : '?';
-    return m_engine.submit(std::move(bytes), text, Protocol::Matcher { text, std::move(decode) },
-                           address);
+    return bytes;
+}
+
+Reply *RefgoClient::enqueue(const QString &text, Decoder decode, ObjectAddress address)
+{
+    auto *reply = new Reply(address);
+    enqueue(text, std::move(decode), Completion(reply));
+    return reply;
+}
+
+void RefgoClient::enqueue(const QString &text, Decoder decode, Completion done)
+{
+    m_engine.submit(line(text), text, Protocol::Matcher { text, std::move(decode) },
+                    std::move(done));
 }
 
 Verdict RefgoClient::Protocol::Matcher::operator()(const Answer &answer) const

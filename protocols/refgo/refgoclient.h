@@ -4,6 +4,7 @@
 // flight, each answer matched by its echo line; the queue, time limits and late-answer handling
 // are the shared RequestEngine's.
 
+#include "core/completion.h"
 #include "core/reply.h"
 #include "refgocodec.h"
 #include "refgoframer.h"
@@ -88,6 +89,8 @@ public:
     // Objects. objectRead's value is a qlonglong as the drive printed it (hex output is the
     // unsigned bit pattern); the reply's address is the object's. objectWrite carries no value.
     Reply *objectRead(ObjectAddress address, bool hexOutput = false);
+    // The same value (or error) delivered to `done` with no Reply (see Completion).
+    void objectRead(ObjectAddress address, Completion done, bool hexOutput = false);
     Reply *objectWrite(ObjectAddress address, const QVariant &value);
 
 Q_SIGNALS:
@@ -121,6 +124,9 @@ private:
     };
 
     Reply *enqueue(const QString &text, Decoder decode, ObjectAddress address = {});
+    void enqueue(const QString &text, Decoder decode, Completion done);
+    static QByteArray line(const QString &text);
+    static Decoder objectReadDecoder(ObjectAddress address);
 
     RequestEngine<Protocol> m_engine;
     bool m_forwardingLog = false;

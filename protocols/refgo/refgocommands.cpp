@@ -214,31 +214,36 @@ Reply *RefgoClient::tellInput(int input)
 
 Reply *RefgoClient::objectRead(ObjectAddress address, bool hexOutput)
 {
-    const QString text = formatRead(address, hexOutput);
-    return enqueue(
-        text,
-        [address](const QString &sent, const QStringList &lines) -> Result<QVariant> {
-            // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
-            if (lines.isEmpty())
-                return Error(Error::Kind::DeviceError,
-                             Tr::tr("drive gave no value for '%1'").arg(sent));
-            const auto line = singleLine(sent, lines);
-            if (!line)
-                return line.error();
-            const auto value = parseObjectRead(line.value());
-            if (!value && isBrokenNumber(line.value()))
-                return malformed(sent, value.error().message());
-            if (!value)
-                return Error(
-                    Error::Kind::DeviceError,
-                    Tr::tr("drive gave no value for '%1': %2").arg(sent, value.error().message()));
-            if (value->address != address)
-                return malformed(
-                    sent,
-                    Tr::tr("names object %1: '%2'").arg(value->address.toString(), line.value()));
-            return QVariant::fromValue<qlonglong>(value->value);
-        },
-        address);
+    return enqueue(formatRead(address, hexOutput), objectReadDecoder(address), address);
+}
+
+void RefgoClient::objectRead(ObjectAddress address, Completion done, bool hexOutput)
+{
+    enqueue(formatRead(address, hexOutput), objectReadDecoder(address), std::move(done));
+}
+
+RefgoClient::Decoder RefgoClient::objectReadDecoder(ObjectAddress address)
+{
+    return [address](const QString &sent, const QStringList &lines) -> Result<QVariant> {
+        // Spec 3.7 [R]: an OR answer without a numeric value field is a failure.
+        if (lines.isEmpty())
+            return Error(Error::Kind::DeviceError,
+                         Tr::tr("drive gave no value for '%1'").arg(sent));
+        const auto line = singleLine(sent, lines);
+        if (!line)
+            return line.error();
+        const auto value = parseObjectRead(line.value());
+        if (!value && isBrokenNumber(line.value()))
+            return malformed(sent, value.error().message());
+        if (!value)
+            return Error(
+                Error::Kind::DeviceError,
+                Tr::tr("drive gave no value for '%1': %2").arg(sent, value.error().message()));
+        if (value->address != address)
+            return malformed(
+                sent, Tr::tr("names object %1: '%2'").arg(value->address.toString(), line.value()));
+        return QVariant::fromValue<qlonglong>(value->value);
+    };
 }
 
 Reply *RefgoClient::objectWrite(ObjectAddress address, const QVariant &value)

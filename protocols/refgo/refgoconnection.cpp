@@ -113,10 +113,13 @@ void RefgoConnection::doRead(Reply *reply, const ObjectDef *def)
         return;
     }
     m_client->setTimeoutMs(requestTimeoutMs());
-    Reply::forward(m_client->objectRead(reply->address()), reply, this,
-                   [def = def ? std::optional<ObjectDef>(*def) : std::nullopt](const QVariant &v) {
-                       return convertRead(def ? &*def : nullptr, v.toLongLong());
-                   });
+    // The reply is the request's context: deleted before it is sent, the read is withdrawn.
+    m_client->objectRead(
+        reply->address(),
+        Completion::finishing(
+            reply, [def = def ? std::optional<ObjectDef>(*def) : std::nullopt](const QVariant &v) {
+                return convertRead(def ? &*def : nullptr, v.toLongLong());
+            }));
 }
 
 void RefgoConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def)

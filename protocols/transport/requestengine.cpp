@@ -107,7 +107,7 @@ void RequestEngineBase::restartKeepAlive()
         m_keepAlive.start();
 }
 
-void RequestEngineBase::finish(Reply *reply, bool keepAlive, const Result<QVariant> &result)
+void RequestEngineBase::finish(Completion &done, bool keepAlive, const Result<QVariant> &result)
 {
     const bool timedOut = !result.ok() && result.error().kind() == Error::Kind::Timeout;
     if (!result.ok()) {
@@ -127,12 +127,7 @@ void RequestEngineBase::finish(Reply *reply, bool keepAlive, const Result<QVaria
                                                 .arg(m_timeoutsInRow);
         m_timeoutsInRow = 0;
     }
-    if (!reply)
-        return; // a keep-alive, or the requester deleted the reply
-    if (result.ok())
-        reply->finish(result.value());
-    else
-        reply->fail(result.error());
+    done.complete(result, m_submitting); // nothing for a keep-alive or a requester gone
 }
 
 void RequestEngineBase::logReceivedRaw(const QByteArray &bytes) const

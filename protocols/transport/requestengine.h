@@ -31,7 +31,9 @@
 // - Every Reply finishes exactly once: value, Timeout, Malformed, DeviceError, Disconnected
 //   (link closed: the stream's close error), or Cancelled (engine deleted). Requests made while
 //   the stream is not open fail at once with Disconnected. Replies deleted by their requester
-//   before they are sent are skipped.
+//   before they are sent are skipped. A request may instead carry a handler (Completion), which
+//   gets the same results with no Reply object; it is skipped the same way once its context is
+//   gone.
 // - Keep-alive (off by default): a request the protocol supplies, sent when nothing has been
 //   transmitted for keepAliveIdleMs() while the stream is open and no request is queued or in
 //   flight. So it never overtakes a user request, and delays one by at most its own round trip
@@ -49,6 +51,7 @@
 //   static QString identify(const Answer &); // what it says it answers, for drops: "TP"
 
 #include "bytestream.h"
+#include "core/completion.h"
 #include "core/reply.h"
 #include "core/result.h"
 #include "responsetimer.h"
@@ -146,9 +149,13 @@ protected:
     void enableKeepAlive(int idleMs);
     void restartKeepAlive();
 
-    // Finishes a request's reply (a keep-alive has none), logging failures: one info line per
-    // episode of timeouts (the first, and the answer that ends it), the rest at debug level.
-    void finish(Reply *reply, bool keepAlive, const Result<QVariant> &result);
+    // Finishes a request's reply or calls its handler (a keep-alive has neither), logging
+    // failures: one info line per episode of timeouts (the first, and the answer that ends it),
+    // the rest at debug level. Inside a submit() call, a handler is called from the loop.
+    void finish(Completion &done, bool keepAlive, const Result<QVariant> &result);
+
+    // True while submit() runs (its failures must not call a handler from inside the call).
+    bool m_submitting = false;
     void logReceivedRaw(const QByteArray &bytes) const;
     void logAnswer(const QString &summary, bool keepAlive);
     void logRetry(const QString &label, const QString &why, int transmission);
@@ -207,9 +214,22 @@ public:
         if (!stream()->isOpen())
             return Reply::failed(address, notConnected(label));
         auto *reply = new Reply(address);
-        m_queue.append(Pending { std::move(bytes), std::move(label), std::move(matcher), reply });
-        sendNext();
+        submit(std::move(bytes), std::move(label), std::move(matcher), Completion(reply));
         return reply;
+    }
+    // The same with the result delivered to `done` (see Completion).
+    void submit(QByteArray bytes, QString label, Matcher matcher, Completion done)
+    {
+        if (!stream()->isOpen()) {
+            done.completeLater(notConnected(label));
+            return;
+        }
+        m_queue.append(
+            Pending { std::move(bytes), std::move(label), std::move(matcher), std::move(done) });
+        const bool outer = !std::exchange(m_submitting, true);
+        sendNext();
+        if (outer)
+            m_submitting = false;
     }
 
     // Sends this request whenever nothing has been transmitted for idleMs (<= 0: off).
@@ -218,7 +238,7 @@ public:
         m_keepAlivePrototype.reset();
         if (idleMs > 0) {
             m_keepAlivePrototype =
-                Pending { std::move(bytes), std::move(label), std::move(matcher), nullptr, true };
+                Pending { std::move(bytes), std::move(label), std::move(matcher), {}, true };
         }
         enableKeepAlive(idleMs);
     }
@@ -235,10 +255,8 @@ public:
         QList<Pending> all = std::exchange(m_queue, {});
         if (m_inFlight)
             all.prepend(takeInFlight());
-        for (const Pending &request : all) {
-            if (request.reply)
-                request.reply->fail(error); // one cause for all: the caller reports it
-        }
+        for (Pending &request : all)
+            request.done.completeLater(error); // one cause for all: the caller reports it
     }
 
 private:
@@ -247,7 +265,7 @@ private:
         QByteArray bytes;
         QString label;
         Matcher match;
-        QPointer<Reply> reply;
+        Completion done; // none for a keep-alive
         bool keepAlive = false;
         int sent = 0; // transmissions so far
         int answered = 0; // answers received (Retry verdicts included)
@@ -272,10 +290,10 @@ private:
     {
         while (!m_inFlight && !m_queue.isEmpty() && !isQuiet()) {
             Pending request = m_queue.takeFirst();
-            if (!request.keepAlive && !request.reply)
-                continue; // the requester deleted it before it was sent
+            if (!request.keepAlive && !request.done.wanted())
+                continue; // the requester gave up before it was sent
             if (!writeRaw(request.bytes)) {
-                finish(request.reply, request.keepAlive, notConnected(request.label));
+                finish(request.done, request.keepAlive, notConnected(request.label));
                 continue;
             }
             request.sent = 1;
@@ -307,7 +325,7 @@ private:
         Pending request = takeInFlight();
         if (const int outstanding = request.sent - request.answered; outstanding > 0)
             abandon(request, outstanding);
-        finish(request.reply, request.keepAlive, result);
+        finish(request.done, request.keepAlive, result);
         sendNext();
     }
 

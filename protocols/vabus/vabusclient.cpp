@@ -68,14 +68,25 @@ void VabusClient::updateKeepAlive()
 Reply *VabusClient::read(quint16 parameter, quint8 dataSet, std::optional<DataType> type,
                          ObjectAddress address)
 {
-    if (dataSet > kMaxReadDataSet)
-        return Reply::failed(address,
-                             invalid(QStringLiteral("VABus reads data sets 0-4, not %1 (5-9 are "
-                                                    "the RAM copies, written only)")
-                                         .arg(dataSet)));
-    if (type && !isCarried(*type))
-        return Reply::failed(address, encodeValue(*type, {}).error());
-    return submit(Telegram::readRequest(parameter, dataSet, m_sys), type, address);
+    auto *reply = new Reply(address);
+    read(parameter, dataSet, type, Completion(reply));
+    return reply;
+}
+
+void VabusClient::read(quint16 parameter, quint8 dataSet, std::optional<DataType> type,
+                       Completion done)
+{
+    if (dataSet > kMaxReadDataSet) {
+        done.completeLater(invalid(QStringLiteral("VABus reads data sets 0-4, not %1 (5-9 are "
+                                                  "the RAM copies, written only)")
+                                       .arg(dataSet)));
+        return;
+    }
+    if (type && !isCarried(*type)) {
+        done.completeLater(encodeValue(*type, {}).error());
+        return;
+    }
+    submit(Telegram::readRequest(parameter, dataSet, m_sys), type, std::move(done));
 }
 
 Reply *VabusClient::write(quint16 parameter, quint8 dataSet, DataType type, const QVariant &raw,
@@ -100,12 +111,21 @@ Reply *VabusClient::writeData(quint16 parameter, quint8 dataSet, const QByteArra
 Reply *VabusClient::submit(const Telegram &request, std::optional<DataType> type,
                            ObjectAddress address)
 {
+    auto *reply = new Reply(address);
+    submit(request, type, Completion(reply));
+    return reply;
+}
+
+void VabusClient::submit(const Telegram &request, std::optional<DataType> type, Completion done)
+{
     auto bytes = encode(request);
-    if (!bytes)
-        return Reply::failed(address, bytes.error());
+    if (!bytes) {
+        done.completeLater(bytes.error());
+        return;
+    }
     const QString what = (request.write ? QStringLiteral("write ") : QStringLiteral("read "))
         + label(request) + (request.write ? QStringLiteral(" = ") + hex(request.data) : QString());
-    return m_engine.submit(bytes.value(), what, Protocol::Matcher { request, type }, address);
+    m_engine.submit(bytes.value(), what, Protocol::Matcher { request, type }, std::move(done));
 }
 
 Verdict VabusClient::Protocol::Matcher::operator()(const Answer &answer) const

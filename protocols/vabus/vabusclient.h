@@ -71,6 +71,8 @@ public:
     // canonical C++ type), or, without a type, as typeForSize() of the answer's data.
     Reply *read(quint16 parameter, quint8 dataSet, std::optional<DataType> type = std::nullopt,
                 ObjectAddress address = {});
+    // The same value (or error) delivered to `done` with no Reply (see Completion).
+    void read(quint16 parameter, quint8 dataSet, std::optional<DataType> type, Completion done);
     // Writes a raw value of `type` to parameter:dataSet (0-9; 5-9 are RAM). No value.
     Reply *write(quint16 parameter, quint8 dataSet, DataType type, const QVariant &raw,
                  ObjectAddress address = {});
@@ -103,6 +105,7 @@ private:
     };
 
     Reply *submit(const Telegram &request, std::optional<DataType> type, ObjectAddress address);
+    void submit(const Telegram &request, std::optional<DataType> type, Completion done);
     void updateKeepAlive();
 
     RequestEngine<Protocol> m_engine;

@@ -109,7 +109,8 @@ void VabusConnection::doRead(Reply *reply, const ObjectDef *def)
     if (def)
         type = def->type;
     m_client->setTimeoutMs(requestTimeoutMs());
-    Reply::forward(m_client->read(address.index, address.sub, type), reply, this);
+    // The reply is the request's context: deleted before it is sent, the read is withdrawn.
+    m_client->read(address.index, address.sub, type, Completion(reply));
 }
 
 void VabusConnection::doWrite(Reply *reply, const QVariant &raw, const ObjectDef *def)

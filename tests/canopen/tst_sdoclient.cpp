@@ -56,6 +56,10 @@ private Q_SLOTS:
     void responseWithoutRequestIsDropped();
     void wrongCommandSpecifierAbortsWithInvalidCommand();
     void segmentedUploadShorterThanAnnouncedFails();
+    void handlerGetsTheUploadAndItsNextRequestGoesOutAtOnce();
+    void handlerOfATimeoutWaitsOutTheGraceTimeBeforeItsRequest();
+    void handlerFailuresKnownAtOnceComeFromTheLoop();
+    void queuedUploadWhoseContextIsGoneIsNotSent();
 
 private:
     Result<QVariant> run(Reply *reply) { return Reply::wait(reply, kWaitMs); }
@@ -333,6 +337,102 @@ void TstSdoClient::segmentedUploadShorterThanAnnouncedFails()
     const auto r = run(m_sdo->upload(kNode, { 0x1008, 0 }));
     QCOMPARE(r.error().kind(), Error::Kind::Malformed);
     checkScript();
+}
+
+// The handler gets the upload from the receive handler; a request it makes is sent before it
+// returns.
+void TstSdoClient::handlerGetsTheUploadAndItsNextRequestGoesOutAtOnce()
+{
+    QObject context;
+    QList<QByteArray> values;
+    qsizetype sentInHandler = -1;
+    m_bus->play({ tx("40 41 60 00 00 00 00 00"), rx("4B 41 60 00 27 04 00 00"),
+                  tx("40 64 60 00 00 00 00 00") });
+    m_sdo->upload(kNode, { 0x6041, 0 }, Completion(&context, [&](const Result<QVariant> &r) {
+                      values.append(r.ok() ? r->toByteArray() : QByteArray("error"));
+                      m_sdo->upload(kNode, { 0x6064, 0 },
+                                    Completion(&context, [&](const Result<QVariant> &r2) {
+                                        values.append(r2.ok() ? r2->toByteArray()
+                                                              : QByteArray("error"));
+                                    }));
+                      sentInHandler = m_bus->sent().size();
+                  }));
+    QTRY_COMPARE(values.size(), 1);
+    QCOMPARE(values.first(), h("27 04"));
+    QCOMPARE(sentInHandler, 2);
+    m_bus->feed(0x5B2, "43 64 60 00 10 00 00 00");
+    QCOMPARE(values.size(), 2);
+    QCOMPARE(values.last(), h("10 00 00 00"));
+    checkScript();
+}
+
+// A request made by the handler of a timed-out upload waits out the grace time, so a late
+// answer to the first cannot be taken for it.
+void TstSdoClient::handlerOfATimeoutWaitsOutTheGraceTimeBeforeItsRequest()
+{
+    m_sdo->setTimeoutMs(kShortTimeoutMs);
+    m_bus->play({ tx("40 41 60 00 00 00 00 00"), tx("80 41 60 00 00 00 04 05") });
+    QObject context;
+    qsizetype sentInHandler = -1;
+    std::optional<Result<QVariant>> second;
+    m_sdo->upload(kNode, { 0x6041, 0 }, Completion(&context, [&](const Result<QVariant> &r) {
+                      QCOMPARE(r.error().kind(), Error::Kind::Timeout);
+                      m_sdo->upload(
+                          kNode, { 0x6041, 0 },
+                          Completion(&context, [&](const Result<QVariant> &r2) { second = r2; }));
+                      sentInHandler = m_bus->sent().size();
+                  }));
+    QTRY_COMPARE(sentInHandler, 2); // the request and the abort, not the second request
+    m_bus->feed(0x5B2, "4B 41 60 00 11 11 00 00"); // late answer to the first
+    QCOMPARE(m_sdo->droppedFrames(), 1);
+    checkScript();
+    m_bus->play({ tx("40 41 60 00 00 00 00 00"), rx("4B 41 60 00 27 04 00 00") });
+    QTRY_VERIFY(second);
+    QVERIFY2(second->ok(), qPrintable(second->error().toString()));
+    QCOMPARE(second->value().toByteArray(), h("27 04"));
+    checkScript();
+}
+
+// Failures known in the call (bad node, bus closed, too much for expedited) reach the handler
+// from the event loop, never from inside the call.
+void TstSdoClient::handlerFailuresKnownAtOnceComeFromTheLoop()
+{
+    QObject context;
+    QList<Error::Kind> kinds;
+    const auto record = [&](const Result<QVariant> &r) {
+        kinds.append(r.error().kind());
+    };
+    m_sdo->upload(0, { 0x6041, 0 }, Completion(&context, record));
+    m_sdo->download(kNode, { 0x6040, 0 }, h("01 02 03 04 05"), Completion(&context, record),
+                    SdoClient::Mode::Expedited);
+    m_bus->close();
+    m_sdo->upload(kNode, { 0x6041, 0 }, Completion(&context, record));
+    QVERIFY(kinds.isEmpty());
+    QTRY_COMPARE(kinds.size(), 3);
+    QCOMPARE(kinds,
+             QList<Error::Kind>({ Error::Kind::InvalidArgument, Error::Kind::InvalidArgument,
+                                  Error::Kind::Disconnected }));
+    QVERIFY(m_bus->sent().isEmpty());
+}
+
+// A requester withdraws a queued upload by deleting its context.
+void TstSdoClient::queuedUploadWhoseContextIsGoneIsNotSent()
+{
+    QObject keeps;
+    auto withdrawn = std::make_unique<QObject>();
+    int called = 0;
+    const auto count = [&](const Result<QVariant> &) {
+        ++called;
+    };
+    m_bus->play({ tx("40 41 60 00 00 00 00 00"), rx("4B 41 60 00 27 04 00 00"),
+                  tx("40 64 60 00 00 00 00 00"), rx("43 64 60 00 10 00 00 00") });
+    m_sdo->upload(kNode, { 0x6041, 0 }, Completion(&keeps, count));
+    m_sdo->upload(kNode, { 0x1000, 0 }, Completion(withdrawn.get(), count));
+    m_sdo->upload(kNode, { 0x6064, 0 }, Completion(&keeps, count));
+    withdrawn.reset();
+    QTRY_COMPARE(called, 2);
+    checkScript();
+    QCOMPARE(m_sdo->pending(kNode), 0);
 }
 
 QTEST_GUILESS_MAIN(TstSdoClient)

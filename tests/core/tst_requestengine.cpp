@@ -141,6 +141,10 @@ private Q_SLOTS:
     void unansweredKeepAliveIsReportedAndNotResent();
     void oversizeAnswerFailsRequestAndBufferStaysBounded();
     void logLinesFollowTheirListeners();
+    void handlerGetsTheAnswerAndItsRequestGoesOutAtOnce();
+    void handlerIsNeverCalledFromInsideTheRequestCall();
+    void handlerWhoseContextIsGoneIsSkippedAndNeverCalled();
+    void deletingEngineCancelsHandlersFromTheLoop();
 
 private:
     // Transmissions from the nth write on wait as long as the test needs, however late the
@@ -603,6 +607,95 @@ void TstRequestEngine::logLinesFollowTheirListeners()
     QSignalSpy spy(m_engine, &RequestEngineBase::logLine);
     roundTrip("f");
     QCOMPARE(spy.size(), 2);
+}
+
+// A handler gets the answer from the receive handler; a request made there is written before
+// the handler returns (no pass of the event loop between answer and next request).
+void TstRequestEngine::handlerGetsTheAnswerAndItsRequestGoesOutAtOnce()
+{
+    QObject context;
+    QList<QVariant> values;
+    QByteArray writtenInHandler;
+    m_engine->submit("a\n", QStringLiteral("a"), { "a" },
+                     Completion(&context, [&](const Result<QVariant> &r) {
+                         QVERIFY(r.ok());
+                         values.append(r.value());
+                         m_engine->submit("b\n", QStringLiteral("b"), { "b" },
+                                          Completion(&context, [&](const Result<QVariant> &r2) {
+                                              values.append(r2.ok() ? r2.value() : QVariant());
+                                          }));
+                         writtenInHandler = m_stream->writes().last();
+                     }));
+    QCOMPARE(m_stream->takeWritten(), QByteArray("a\n"));
+    m_stream->feed("a=1\n");
+    QCOMPARE(values, QList<QVariant>({ QStringLiteral("1") }));
+    QCOMPARE(writtenInHandler, QByteArray("b\n"));
+    m_stream->feed("b=2\n");
+    QCOMPARE(values, QList<QVariant>({ QStringLiteral("1"), QStringLiteral("2") }));
+    QCOMPARE(m_engine->pendingCount(), 0);
+}
+
+// Failures known at once (not connected) come from the event loop, after the call returned.
+void TstRequestEngine::handlerIsNeverCalledFromInsideTheRequestCall()
+{
+    m_stream->close();
+    QObject context;
+    bool inCall = true;
+    bool calledInCall = false;
+    std::optional<Error> error;
+    m_engine->submit("a\n", QStringLiteral("a"), { "a" },
+                     Completion(&context, [&](const Result<QVariant> &r) {
+                         calledInCall = inCall;
+                         error = r.error();
+                     }));
+    inCall = false;
+    QVERIFY(!error);
+    QTRY_VERIFY(error);
+    QVERIFY(!calledInCall);
+    QCOMPARE(error->kind(), Error::Kind::Disconnected);
+    QVERIFY(m_stream->writes().isEmpty());
+}
+
+// A requester withdraws a queued request by deleting its context: it is never sent and its
+// handler never called; one already sent is answered, but its handler is not called either.
+void TstRequestEngine::handlerWhoseContextIsGoneIsSkippedAndNeverCalled()
+{
+    auto first = std::make_unique<QObject>();
+    auto second = std::make_unique<QObject>();
+    QObject keeps;
+    int called = 0;
+    const auto count = [&](const Result<QVariant> &) {
+        ++called;
+    };
+    m_engine->submit("a\n", QStringLiteral("a"), { "a" }, Completion(first.get(), count));
+    m_engine->submit("b\n", QStringLiteral("b"), { "b" }, Completion(second.get(), count));
+    m_engine->submit("c\n", QStringLiteral("c"), { "c" }, Completion(&keeps, count));
+    QCOMPARE(m_stream->takeWritten(), QByteArray("a\n"));
+    first.reset(); // sent already
+    second.reset(); // still queued
+    m_stream->feed("a=1\n");
+    QCOMPARE(m_stream->takeWritten(), QByteArray("c\n"));
+    QCOMPARE(called, 0);
+    m_stream->feed("c=3\n");
+    QCOMPARE(called, 1);
+    QCOMPARE(m_engine->pendingCount(), 0);
+}
+
+// Deleting the engine cancels handlers too, from the loop (not from inside the destructor).
+void TstRequestEngine::deletingEngineCancelsHandlersFromTheLoop()
+{
+    QObject context;
+    QList<Error::Kind> kinds;
+    for (const char *tag : { "a", "b" }) {
+        m_engine->submit(QByteArray(tag) + '\n', QString::fromLatin1(tag), { tag },
+                         Completion(&context, [&](const Result<QVariant> &r) {
+                             kinds.append(r.error().kind());
+                         }));
+    }
+    delete m_engine;
+    m_engine = nullptr;
+    QVERIFY(kinds.isEmpty());
+    QTRY_COMPARE(kinds, QList<Error::Kind>({ Error::Kind::Cancelled, Error::Kind::Cancelled }));
 }
 
 QTEST_GUILESS_MAIN(TstRequestEngine)

@@ -61,6 +61,7 @@ private Q_SLOTS:
     void readValueOutOfTypeRangeFails();
     void writeSendsOwAndSucceedsOnOk();
     void writeWithoutOkIsDeviceError();
+    void deletedReadIsWithdrawnButDeletedWriteIsSent();
     void unsupportedTypesAreRefusedWithoutTraffic_data();
     void unsupportedTypesAreRefusedWithoutTraffic();
     void storeParametersWritesSaveSignature();
@@ -241,6 +242,25 @@ void TstRefgoConnection::requestTimeoutOfConnectionApplies()
     const auto r = test::await(m_connection->read({ 0x6041, 0 }), kWaitMs);
     QCOMPARE(r.error().kind(), Error::Kind::Timeout);
     QVERIFY(r.error().message().contains(QLatin1String("50 ms")));
+}
+
+// A requester that stops waiting for a queued read withdraws it (the drive is not asked); a
+// write whose reply is deleted still goes out (a halt from a closing panel must reach it).
+void TstRefgoConnection::deletedReadIsWithdrawnButDeletedWriteIsSent()
+{
+    connectNow();
+    Reply *first = m_connection->read({ 0x3511, 8 });
+    delete m_connection->read({ 0x6041, 0 });
+    delete m_connection->write({ 0x3511, 8 }, qlonglong(5));
+    Reply *last = m_connection->read({ 0x6078, 0 });
+    QCOMPARE(m_stream->takeWritten(), QByteArray("OR3511,8\r"));
+    m_stream->feed("OR3511,8\r\nOR3511,8,110\r\n>");
+    QCOMPARE(m_stream->takeWritten(), QByteArray("OW3511,8,5\r"));
+    m_stream->feed("OW3511,8,5\r\nOW3511,8,5,OK\r\n>");
+    QCOMPARE(m_stream->takeWritten(), QByteArray("OR6078,0\r"));
+    m_stream->feed("OR6078,0\r\nOR6078,0,-3\r\n>");
+    QCOMPARE(test::await(first, kWaitMs).value(), QVariant::fromValue<qlonglong>(110));
+    QCOMPARE(test::await(last, kWaitMs).value(), QVariant::fromValue<qlonglong>(-3));
 }
 
 void TstRefgoConnection::logLinesReachTheConsole()
