@@ -6,10 +6,11 @@
 // percentiles.
 //
 //   refgo_bench [--count N] [--uri refgo://HOST[:PORT]] [--object I:S] [--engine-only]
+//               [--connection-only]
 //
 // --uri measures another drive or simulator instead (e.g. drivebench-sim movingcap
 // --refgo-port 0); --object is read (default 6041:0, the statusword). --engine-only measures
-// the engine with handlers only.
+// the engine with handlers only, --connection-only the connection only.
 #include "common/demodrive.h"
 #include "common/protocols.h"
 #include "core/connectionuri.h"
@@ -152,6 +153,7 @@ int main(int argc, char **argv)
     QString uriText;
     ObjectAddress object(0x6041, 0);
     bool engineOnly = false;
+    bool connectionOnly = false;
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         const bool hasValue = i + 1 < args.size();
@@ -166,6 +168,8 @@ int main(int argc, char **argv)
             object = *parsed;
         } else if (args.at(i) == u"--engine-only") {
             engineOnly = true;
+        } else if (args.at(i) == u"--connection-only") {
+            connectionOnly = true;
         } else {
             return fail(QStringLiteral("unknown option %1").arg(args.at(i)));
         }
@@ -186,7 +190,7 @@ int main(int argc, char **argv)
     std::printf("RefGo reads of %s at %s (%s)\n", qPrintable(object.toString()),
                 qPrintable(uri->toString()), demo ? "simulated, same process" : "external");
 
-    {
+    if (!connectionOnly) {
         TcpStream stream(uri->host(), quint16(uri->portOr(refgo::RefgoConnection::kDefaultPort)));
         if (auto opened = open(stream); !opened)
             return fail(opened.error().toString());

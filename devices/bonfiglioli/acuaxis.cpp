@@ -3,6 +3,7 @@
 #include "acuaxis_p.h"
 #include "acustatussource.h"
 #include "acusteps.h"
+#include "core/connectionhealth.h"
 
 #include <QCoreApplication>
 
@@ -28,21 +29,6 @@ QList<ObjectAddress> statusObjects()
 {
     return { ObjectAddress(kStatusWord, 0), ObjectAddress(kPosition, 0), ObjectAddress(kSpeed, 0),
              ObjectAddress(kActualSpeedRpm, 0), ObjectAddress(kApplicationWarnings, 0) };
-}
-
-// No answer, or no link: a failure of the request's way to the inverter, not of the parameter.
-bool isLinkFailure(const Error &error)
-{
-    switch (error.kind()) {
-    case Error::Kind::Timeout:
-    case Error::Kind::Disconnected:
-    case Error::Kind::ConnectionRefused:
-    case Error::Kind::HostNotFound:
-    case Error::Kind::Io:
-        return true;
-    default:
-        return false;
-    }
 }
 
 // The connection's status source; an ACU one, made now, when it has none.
@@ -219,11 +205,10 @@ Reply *AcuAxis::initialize()
                 values->insert(p, r->value());
             else if (p == kConfiguration)
                 *configurationError = r->error();
-            if (!r->ok() && isLinkFailure(r->error())) {
+            if (!r->ok() && ConnectionHealth::isNoAnswer(r->error())) {
                 // The inverter did not answer (or the link is gone): the reads queued behind
-                // this one would only wait out their own time limits, so initialize() fails
-                // now. Their replies are deleted; the connection's own requests behind them
-                // are still sent (Reply::forward does not withdraw them).
+                // this one would only wait out their own time limits. Deleting an unsent
+                // request withdraws it.
                 for (const QPointer<Reply> &other : std::as_const(*reads))
                     if (other && other != r)
                         delete other.data();

@@ -1,5 +1,6 @@
 #include "acustatussource.h"
 
+#include "core/connectionhealth.h"
 #include "core/deviceconnection.h"
 #include "core/groupreader.h"
 #include "core/reply.h"
@@ -210,6 +211,14 @@ void AcuStatusSource::poll()
             for (ObjectAddress address : held)
                 storeError(address, reply->error());
             m_usedBlock = false;
+            if (ConnectionHealth::isNoAnswer(reply->error())) {
+                // The rest one by one would each wait out its time limit in vain.
+                for (ObjectAddress address : dueObjects())
+                    if (!held.contains(address))
+                        storeError(address, reply->error());
+                finishCycle();
+                return;
+            }
         } else {
             const QVariantList values = reply->value().toList();
             for (qsizetype i = 0; i < held.size(); ++i)

@@ -54,6 +54,20 @@ int ConnectionHealth::pollIntervalMs(const DeviceConnection *connection, int nor
     return isSilent(connection) ? qMax(normalMs, kSilentPollIntervalMs) : normalMs;
 }
 
+bool ConnectionHealth::isNoAnswer(const Error &error)
+{
+    switch (error.kind()) {
+    case Error::Kind::Timeout:
+    case Error::Kind::Disconnected:
+    case Error::Kind::ConnectionRefused:
+    case Error::Kind::HostNotFound:
+    case Error::Kind::Io:
+        return true;
+    default:
+        return false;
+    }
+}
+
 void ConnectionHealth::onStateChanged(DeviceConnection::State state)
 {
     switch (state) {

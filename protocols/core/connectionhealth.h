@@ -53,6 +53,9 @@ public:
     // The pause a poller of connection leaves before its next round: normalMs, or at least
     // kSilentPollIntervalMs while the device does not answer.
     static int pollIntervalMs(const DeviceConnection *connection, int normalMs);
+    // A request that got no answer at all: the device was silent or the link failed (as opposed
+    // to a value or the device's own refusal). Requests queued behind it would wait in vain.
+    static bool isNoAnswer(const Error &error);
 
     DeviceConnection *connection() const { return m_connection; }
     Status status() const { return m_status; }

@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 
 #include <limits>
+#include <memory>
 
 namespace db {
 
@@ -220,20 +221,40 @@ void StatusSource::readEach(const QList<ObjectAddress> &addresses)
     }
     m_pending = int(addresses.size());
     const quint64 generation = m_generation;
+    auto replies = std::make_shared<QList<QPointer<Reply>>>();
     for (ObjectAddress address : addresses) {
         Reply *reply = m_connection->read(address);
         reply->setParent(this); // deleted with the source if it never finishes in time
-        connect(reply, &Reply::finished, this, [this, reply, generation] {
+        replies->append(reply);
+        connect(reply, &Reply::finished, this, [this, reply, generation, replies] {
             reply->deleteLater();
             if (generation != m_generation)
                 return;
-            if (reply->ok())
+            if (reply->ok()) {
                 store(reply->address(), reply->value());
-            else
+            } else {
                 storeError(reply->address(), reply->error());
+                if (ConnectionHealth::isNoAnswer(reply->error()))
+                    withdraw(*replies, reply->error());
+            }
             if (--m_pending == 0)
                 finishCycle();
         });
+    }
+}
+
+// The device did not answer one read of the cycle (or the link failed): the reads queued behind
+// it would each wait out their own time limit, so the cycle ends now and says so at once. Its
+// other objects keep their old values, stale, with the same cause. Deleting an unsent request
+// withdraws it; one already answered still comes (its result is in the queue).
+void StatusSource::withdraw(const QList<QPointer<Reply>> &replies, const Error &cause)
+{
+    for (const QPointer<Reply> &other : replies) {
+        if (!other || other->isFinished())
+            continue;
+        storeError(other->address(), cause);
+        delete other.data();
+        --m_pending;
     }
 }
 

@@ -216,6 +216,7 @@ private:
     // The status word when the family polls it.
     QList<ObjectAddress> statusWordObjects() const;
     void addKnown(QList<ObjectAddress> &to, const QList<ObjectAddress> &objects) const;
+    void withdraw(const QList<QPointer<Reply>> &replies, const Error &cause);
 
     QPointer<DeviceConnection> m_connection;
     QTimer m_timer;

@@ -43,6 +43,7 @@ RefgoClient::RefgoClient(ByteStream *stream, QObject *parent)
     // flight and is no late one belongs to that command, so a wrong echo breaks the exchange.
     m_engine.setForeignAnswerFails(true);
     m_engine.setTimeoutMs(kDefaultTimeoutMs);
+    m_engine.setLateGraceMs(kLateGraceMs);
 }
 
 RefgoClient::~RefgoClient()

@@ -30,7 +30,10 @@ namespace db::refgo {
 //   drive refused), or the stream's close error.
 // - One command is on the wire at a time; the others wait in order. A command that timed out
 //   is remembered: its late answer (the drive answers in order) is dropped and logged, never
-//   given to the next request.
+//   given to the next request. After a timeout nothing is sent for kLateGraceMs; an answer
+//   still missing then is taken as lost, so that a drive that dropped commands while it was
+//   silent (a pulled cable) gets its next command's answer taken as that command's, even when
+//   the lost one had the same text.
 // - Device errors (the manual defines none, spec 3.7): a result line starting with "ERROR" or
 //   containing '?'; for OW a result line not ending in ",OK"; for OR no numeric value field.
 class RefgoClient : public QObject
@@ -38,6 +41,7 @@ class RefgoClient : public QObject
     Q_OBJECT
 public:
     static constexpr int kDefaultTimeoutMs = 1000; // the manual gives none; answers take < 80 ms
+    static constexpr int kLateGraceMs = 100;
     // Timed-out commands whose answer may come.
     static constexpr int kMaxAbandoned = RequestEngineBase::kMaxAbandoned;
 

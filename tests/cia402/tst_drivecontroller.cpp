@@ -1,5 +1,6 @@
 // Level 2/3: the CiA 402 power state machine driver and the modes against the simulated
 // MovingCap in-process, over RefGo (OR/OW) and over CANopen SDO (SLCAN door, node 50).
+#include "cia402/cia402statussource.h"
 #include "cia402/drivecontroller.h"
 #include "cia402/modes.h"
 #include "cia402/sequence.h"
@@ -8,7 +9,10 @@
 #include "driverig.h"
 
 #include <QElapsedTimer>
+#include <QSignalSpy>
 #include <QTest>
+
+#include <algorithm>
 
 using namespace db;
 using namespace db::cia402;
@@ -201,6 +205,54 @@ private Q_SLOTS:
         QVERIFY2(r.error().message().startsWith(QLatin1String("silent drive: ")),
                  qPrintable(r.error().message()));
         QVERIFY2(clock.elapsed() >= 250, qPrintable(QString::number(clock.elapsed())));
+    }
+    // A drive that falls silent: the status cycle ends at its first unanswered read instead of
+    // letting every read queued behind it wait out its own time limit, so the status (and a
+    // command waiting for it) says "no answer" after one time limit, not one per object.
+    void statusCycleEndsAtTheFirstUnansweredRead_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("refgo") << QStringLiteral("refgo");
+        QTest::newRow("canopen") << QStringLiteral("canopen");
+    }
+    void statusCycleEndsAtTheFirstUnansweredRead()
+    {
+        QFETCH(QString, kind);
+        auto rig = makeRig(kind);
+        QVERIFY(rig);
+        // The product's time limit: the simulator answers in the test's own thread, which the
+        // sanitizer build slows down enough for shorter limits to expire before its answers.
+        rig->connection->setRequestTimeoutMs(1000);
+        Cia402StatusSource source(rig->connection.get());
+        QVERIFY(source.polledObjects().size() >= 6);
+        source.setIntervalMs(20);
+        source.acquire();
+        QTRY_VERIFY_WITH_TIMEOUT(source.statusWordValue().fresh, 10000);
+        int timeouts = 0;
+        connect(
+            rig->connection.get(), &DeviceConnection::requestFinished, this,
+            [&](ObjectAddress, const Error &e) { timeouts += e.kind() == Error::Kind::Timeout; });
+        QList<int> timeoutsAtUpdate;
+        connect(&source, &StatusSource::updated, this, [&] { timeoutsAtUpdate.append(timeouts); });
+
+        rig->demo->setSilent(true);
+        const qsizetype start = timeoutsAtUpdate.size();
+        QTRY_VERIFY_WITH_TIMEOUT(timeoutsAtUpdate.size() >= start + 3, 30000);
+        // The first cycle may have been half answered; each later one met the silence at once.
+        for (qsizetype i = start + 1; i < start + 3; ++i)
+            QCOMPARE(timeoutsAtUpdate.at(i) - timeoutsAtUpdate.at(i - 1), 1);
+        QVERIFY(!source.statusWordValue().fresh);
+        for (const StatusValue &v : source.actualValues()) {
+            QVERIFY2(!v.fresh, qPrintable(v.key));
+            QVERIFY2(v.error.contains(QLatin1String("answer")), qPrintable(v.error));
+        }
+
+        // The withdrawn reads left nothing behind: it answers again, every value is fresh.
+        rig->demo->setSilent(false);
+        QTRY_VERIFY_WITH_TIMEOUT(source.statusWordValue().fresh, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::ranges::all_of(source.actualValues(),
+                                                     [](const StatusValue &v) { return v.fresh; }),
+                                 10000);
     }
     void softwareEnableMissingFails()
     {

@@ -267,6 +267,50 @@ private Q_SLOTS:
         QCOMPARE(m_acu->eepromWrites(), quint64(0));
     }
 
+    // More objects than the block holds, then an inverter that stops answering: the cycle ends
+    // with the block read's "no answer"; the objects read one by one are not each waited for.
+    void silentInverterEndsTheCycleAtTheBlock()
+    {
+        QList<ObjectAddress> extra;
+        for (const ObjectDef &def : m_connection->dictionary().objects()) {
+            if (def.readable() && !m_source->polledObjects().contains(def.address))
+                extra.append(def.address);
+            if (extra.size() == 12)
+                break;
+        }
+        QObject holder;
+        m_connection->setRequestTimeoutMs(500);
+        m_source->acquire(&holder, 20, extra);
+        QTRY_VERIFY(m_source->cycles() >= 2);
+        QVERIFY(m_source->usesBlock());
+        const auto readOneByOne = [&] {
+            return std::ranges::any_of(m_requests, [](const auto &request) {
+                return !request.second && request.first != 19;
+            });
+        };
+        QVERIFY2(readOneByOne(), "every extra object fits the block: the test needs more");
+
+        // Only the objects read one by one report through requestFinished (the block's
+        // exchanges do not): in a silent cycle they are not read at all.
+        int timeouts = 0;
+        connect(
+            m_connection.get(), &DeviceConnection::requestFinished, this,
+            [&](ObjectAddress, const Error &e) { timeouts += e.kind() == Error::Kind::Timeout; });
+        QList<int> timeoutsAtUpdate;
+        connect(m_source, &StatusSource::updated, this, [&] { timeoutsAtUpdate.append(timeouts); });
+        m_acu->server().setFailure({ vabus::Server::Failure::Silent });
+        QTRY_VERIFY_WITH_TIMEOUT(!m_source->statusWordValue().fresh, 30000);
+        const qsizetype start = timeoutsAtUpdate.size();
+        QTRY_VERIFY_WITH_TIMEOUT(timeoutsAtUpdate.size() >= start + 2, 30000);
+        QCOMPARE(timeoutsAtUpdate.at(start + 1) - timeoutsAtUpdate.at(start), 0);
+        const QString cause = m_source->statusWordValue().error;
+        QVERIFY2(cause.contains(QLatin1String("no answer")), qPrintable(cause));
+        for (const ObjectAddress a : extra)
+            QVERIFY(!m_source->isFresh(a));
+        m_acu->server().setFailure({});
+        QTRY_VERIFY_WITH_TIMEOUT(m_source->statusWordValue().fresh, 10000);
+    }
+
     // The inverter is switched off and on: the link drops, the port refuses connections while
     // it starts, the connection tries again until it is back, and the block is defined anew.
     void reconnectsAfterPowerCycle()
