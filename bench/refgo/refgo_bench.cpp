@@ -203,7 +203,7 @@ int main(int argc, char **argv)
         } };
         if (!roundTrips("warm-up", 1, viaHandler, false)
             || !roundTrips("engine objectRead", count, viaHandler)
-            || (!engineOnly && !roundTrips("engine with Reply", count, viaReply)))
+            || (!engineOnly && !roundTrips("engine Reply", count, viaReply)))
             return 1;
         stream.close();
     }

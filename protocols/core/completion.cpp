@@ -13,33 +13,41 @@ Completion Completion::finishing(Reply *reply,
     });
 }
 
-void Completion::complete(const Result<QVariant> &result)
+namespace {
+
+// Finishes the reply (its finished() comes from the loop) or calls the handler, now or from the
+// loop; nothing when the target is gone. Either way the completion is spent.
+void deliver(QPointer<QObject> &target, Completion::Handler &handler,
+             const Result<QVariant> &result, bool later)
 {
-    QObject *target = std::exchange(m_target, nullptr).data();
-    if (!target)
+    QObject *context = std::exchange(target, nullptr).data();
+    if (!context)
         return;
-    if (!m_handler) {
-        auto *reply = static_cast<Reply *>(target);
+    if (!handler) {
+        auto *reply = static_cast<Reply *>(context);
         result.ok() ? reply->finish(result.value()) : reply->fail(result.error());
         return;
     }
-    const Handler handler = std::exchange(m_handler, {});
-    handler(result);
+    // Moved out first: the handler may destroy whatever holds this completion.
+    Completion::Handler call = std::exchange(handler, {});
+    if (!later) {
+        call(result);
+        return;
+    }
+    QMetaObject::invokeMethod(
+        context, [call = std::move(call), result] { call(result); }, Qt::QueuedConnection);
+}
+
+} // namespace
+
+void Completion::complete(const Result<QVariant> &result)
+{
+    deliver(m_target, m_handler, result, false);
 }
 
 void Completion::completeLater(const Result<QVariant> &result)
 {
-    QObject *target = std::exchange(m_target, nullptr).data();
-    if (!target)
-        return;
-    if (!m_handler) {
-        auto *reply = static_cast<Reply *>(target);
-        result.ok() ? reply->finish(result.value()) : reply->fail(result.error());
-        return;
-    }
-    QMetaObject::invokeMethod(
-        target, [handler = std::exchange(m_handler, {}), result] { handler(result); },
-        Qt::QueuedConnection);
+    deliver(m_target, m_handler, result, true);
 }
 
 } // namespace db
