@@ -351,6 +351,11 @@ void TstNm17xLinePanel::settingsOfTheSelectedDisplay()
 // blank, and its command asks for a value instead of writing the hidden previous one.
 void TstNm17xLinePanel::settingsOfAnotherDisplayAreBlankUntilRead()
 {
+    // With DRIVEBENCH_SCREENSHOT_DIR: how the box looks while the display's values are read,
+    // and once a display did not answer (nm17x-settings-loading.png, -noanswer.png).
+    const QString shots = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+    if (!shots.isEmpty())
+        m_panel->resize(1000, 720);
     QTest::mouseClick(button("find"), Qt::LeftButton);
     QTRY_COMPARE(m_panel->model()->rowCount(), 2);
     QVERIFY(m_displays.at(0)->write({ 0x2041, 2 }, 1u).ok()); // NM172: pre-shutdown on
@@ -374,6 +379,8 @@ void TstNm17xLinePanel::settingsOfAnotherDisplayAreBlankUntilRead()
     QCOMPARE(preShutdown->checkState(), Qt::PartiallyChecked);
     QVERIFY(!preShutdown->isEnabled());
     QVERIFY(!setFilter->isEnabled());
+    if (!shots.isEmpty())
+        QVERIFY(m_panel->grab().save(shots + QStringLiteral("/nm17x-settings-loading.png")));
     QTRY_COMPARE(count->cleanText(), QStringLiteral("2"));
     QTRY_COMPARE(width->cleanText(), QStringLiteral("100")); // the same value as before
     QTRY_COMPARE(preShutdown->checkState(), Qt::Unchecked);
@@ -393,6 +400,8 @@ void TstNm17xLinePanel::settingsOfAnotherDisplayAreBlankUntilRead()
     QVERIFY2(m_panel->message().contains(QLatin1String("Enter the jump filter")),
              qPrintable(m_panel->message()));
     QCOMPARE(nm172->read({ 0x2005, 1 }).value().toUInt(), before);
+    if (!shots.isEmpty())
+        QVERIFY(m_panel->grab().save(shots + QStringLiteral("/nm17x-settings-noanswer.png")));
 }
 
 // A display at 250 kbit/s while the line's bus runs at 125: the scan names where it answers.
