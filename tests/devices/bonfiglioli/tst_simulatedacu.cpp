@@ -276,13 +276,18 @@ private Q_SLOTS:
         QFETCH(int, reaction);
         QFETCH(bool, fault);
         QFETCH(bool, running);
-        m_acu->setWatchdogMs(150);
+        // A long watchdog time while the drive is brought into operation, so that a slow
+        // machine cannot let it run out between two of these writes; then the short one.
+        QSignalSpy lost(m_acu.get(), &SimulatedAcu::communicationLost);
+        m_acu->setWatchdogMs(60000);
         QVERIFY(!m_acu->isWatchdogArmed());
         QVERIFY(await(m_client->write(388, 0, DataType::Unsigned16, qulonglong(reaction))).ok());
         QVERIFY(enableOperation());
         QVERIFY(m_acu->isWatchdogArmed());
-        QSignalSpy lost(m_acu.get(), &SimulatedAcu::communicationLost);
+        QCOMPARE(lost.size(), 0);
+        m_acu->setWatchdogMs(150); // restarts the running watchdog with the new time
         QVERIFY(lost.wait(3000));
+        QCOMPARE(lost.size(), 1);
         QCOMPARE(lost.at(0).at(0).toInt(), reaction);
         QCOMPARE(m_acu->fault() == 0x2714, fault);
         QCOMPARE(m_acu->isRunning(), running);
@@ -290,12 +295,14 @@ private Q_SLOTS:
 
     void keepAliveHoldsWatchdogOff()
     {
-        m_acu->setWatchdogMs(300);
+        // The watchdog time is ten keep-alive intervals, so that a slow machine (a sanitizer
+        // build beside other tests) does not miss it by a late timer.
+        m_acu->setWatchdogMs(500);
         m_client->setKeepAliveIdleMs(50);
         QSignalSpy lost(m_acu.get(), &SimulatedAcu::communicationLost);
         const quint64 writes = m_acu->eepromWrites();
         QVERIFY(await(m_client->read(12, 0)).ok());
-        QVERIFY(!lost.wait(1200)); // four watchdog times
+        QVERIFY(!lost.wait(1500)); // three watchdog times
         QCOMPARE(m_acu->fault(), quint16(0));
         QCOMPARE(m_acu->eepromWrites(), writes); // keep-alives are reads
     }
