@@ -7463,6 +7463,22 @@ send 605 40 08 10 00</translation>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
+    <message>
+        <source>reading the error word 204Eh:02: %1</source>
+        <translation>Lesen des Fehlerworts 204Eh:02: %1</translation>
+    </message>
+    <message>
+        <source>error (its code could not be read)</source>
+        <translation>Fehler (Code nicht lesbar)</translation>
+    </message>
+    <message>
+        <source>error (reading its code…)</source>
+        <translation>Fehler (Code wird gelesen…)</translation>
+    </message>
+    <message>
+        <source>error (code unknown)</source>
+        <translation>Fehler (Code unbekannt)</translation>
+    </message>
 </context>
 <context>
     <name>db::widgets::Nm17xLinePanel</name>

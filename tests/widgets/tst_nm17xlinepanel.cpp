@@ -47,6 +47,7 @@ private Q_SLOTS:
     void settingsOfAnotherDisplayAreBlankUntilRead();
     void scanFindsTheDisplaysAtTheirBitrate();
     void displayErrorsAreNamed();
+    void unreadableErrorWordIsNotShownAsNoError();
     void nm170HasNoMotorSettings();
     void screenshotOfARunningLine();
 
@@ -457,6 +458,48 @@ void TstNm17xLinePanel::displayErrorsAreNamed()
     QTRY_VERIFY_WITH_TIMEOUT(
         cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("In Position")), 10000);
     QCOMPARE(cell(1, widgets::Nm17xLineModel::Errors), QStringLiteral("-"));
+}
+
+// The status says "error" but the error word cannot be read (the display stopped answering
+// SDOs): the Errors column says that, never "-" (no error), and names the cause in its tool tip.
+void TstNm17xLinePanel::unreadableErrorWordIsNotShownAsNoError()
+{
+    QTest::mouseClick(button("find"), Qt::LeftButton);
+    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
+    SimulatedNm17x *nm172 = m_displays.at(0);
+    QVERIFY(nm172->write({ 0x2047, 2 }, 3u).ok()); // following error after 0.3 s
+    nm172->spindle().setShaftBlocked(true);
+    m_panel->selectNode(3);
+    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(5);
+    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
+    QTest::mouseClick(button("send"), Qt::LeftButton);
+    // From here on the display hears nothing, but goes on sending its PDOs.
+    QVERIFY(
+        disconnect(m_bus, &test::ScriptedCanBus::frameWritten, nm172, &SimulatedNm17x::receive));
+    const QModelIndex errors = m_panel->model()->index(1, widgets::Nm17xLineModel::Errors);
+    QTRY_COMPARE_WITH_TIMEOUT(errors.data().toString(), QStringLiteral("error (reading its code…)"),
+                              5000);
+    QVERIFY(cell(1, widgets::Nm17xLineModel::Status).contains(QLatin1String("Error")));
+    QTRY_COMPARE_WITH_TIMEOUT(errors.data().toString(),
+                              QStringLiteral("error (its code could not be read)"), 5000);
+    const QString tip = errors.data(Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains(QLatin1String("204Eh:02")) && tip.contains(QLatin1String("timeout")),
+             qPrintable(tip));
+    // With DRIVEBENCH_SCREENSHOT_DIR: the table in this state (nm17x-errors-unread.png).
+    const QString shots = qEnvironmentVariable("DRIVEBENCH_SCREENSHOT_DIR");
+    if (!shots.isEmpty()) {
+        m_panel->resize(1000, 720);
+        m_panel->grab().save(shots + QStringLiteral("/nm17x-errors-unread.png"));
+    }
+    // It stays so while it is read again (no flicker back to "reading" on every TxPDO2).
+    for (int i = 0; i < 6; ++i) {
+        QTest::qWait(250);
+        QCOMPARE(errors.data().toString(), QStringLiteral("error (its code could not be read)"));
+    }
+    // The display answers again: its error is named at the next try.
+    connect(m_bus, &test::ScriptedCanBus::frameWritten, nm172, &SimulatedNm17x::receive);
+    QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 3 (shaft")),
+                              qPrintable(errors.data().toString()), 5000);
 }
 
 // An NM170 (no motor): scaling and jump filter can be set, the modes and the pre-shutdown cannot.

@@ -3,9 +3,17 @@
 #include "core/reply.h"
 #include "devices/nm17x/nm17xcodes.h"
 
+#include <QTimer>
+
 namespace db::widgets {
 
 using namespace db::nm17x;
+
+namespace {
+// After a failed read of the error word, the next one waits at least this long (TxPDO2 may
+// come every few milliseconds; a display that does not answer would keep its SDO channel busy).
+constexpr int kErrorReadRetryMs = 1000;
+} // namespace
 
 Nm17xLineModel::Nm17xLineModel(QObject *parent)
     : QAbstractTableModel(parent)
@@ -17,6 +25,7 @@ void Nm17xLineModel::setLine(Nm17xLine *line)
     disconnect(m_pdo2);
     m_line = line;
     m_readingErrors.clear();
+    m_errorReadFailures.clear();
     if (!line)
         return;
     m_pdo1 = connect(line, &Nm17xLine::tpdo1, this, [this](canopen::NodeId node, const Tpdo1 &p) {
@@ -48,13 +57,30 @@ void Nm17xLineModel::readErrors(canopen::NodeId node)
 {
     if (!m_line || m_readingErrors.contains(node))
         return;
+    const auto failed = m_errorReadFailures.constFind(node);
+    if (failed != m_errorReadFailures.cend() && !failed->retry.hasExpired())
+        return;
     m_readingErrors.insert(node);
+    update(node, [](DisplayState &) {}); // "reading"
     Reply *reply = m_line->read(node, { 0x204E, 2 });
     connect(reply, &Reply::finished, this, [this, reply, node] {
         reply->deleteLater();
         m_readingErrors.remove(node);
-        if (!reply->ok())
+        if (!reply->ok()) {
+            m_errorReadFailures.insert(
+                node,
+                { tr("reading the error word 204Eh:02: %1").arg(reply->error().toString()),
+                  QDeadlineTimer(kErrorReadRetryMs) });
+            update(node, [](DisplayState &) {});
+            // Displays send their PDOs on change: do not wait for the next one to try again.
+            QTimer::singleShot(kErrorReadRetryMs, this, [this, node] {
+                const int row = rowOf(node);
+                if (row >= 0 && (m_rows.at(row).status & status::Error) && !m_rows.at(row).errors)
+                    readErrors(node);
+            });
             return;
+        }
+        m_errorReadFailures.remove(node);
         const auto errors = quint16(reply->value().toUInt());
         update(node, [errors](DisplayState &s) {
             if (s.status & status::Error)
@@ -67,6 +93,7 @@ void Nm17xLineModel::setDisplays(const QList<DisplayState> &displays)
 {
     beginResetModel();
     m_rows = displays;
+    m_errorReadFailures.clear();
     m_corrections = QList<qint16>(displays.size(), 0);
     endResetModel();
 }
@@ -113,6 +140,8 @@ QVariant Nm17xLineModel::data(const QModelIndex &index, int role) const
         return {};
     const DisplayState &s = m_rows.at(index.row());
     if (role == Qt::ToolTipRole && index.column() == Errors) {
+        if (s.errors == 0 && (s.status & status::Error))
+            return m_errorReadFailures.value(s.node).cause;
         QStringList remedies;
         for (const DisplayError &e : activeErrors(s.errors))
             remedies.append(QStringLiteral("%1: %2").arg(e.code, e.remedy));
@@ -150,7 +179,16 @@ QVariant Nm17xLineModel::data(const QModelIndex &index, int role) const
     }
     case Errors: {
         const QString text = errorText(s.errors);
-        return text.isEmpty() ? QStringLiteral("-") : text;
+        if (!text.isEmpty())
+            return text;
+        if (!(s.status & status::Error))
+            return QStringLiteral("-");
+        // The status says "error" but the error word is not known (yet).
+        if (m_errorReadFailures.contains(s.node)) // also while it is read again
+            return tr("error (its code could not be read)");
+        if (m_readingErrors.contains(s.node))
+            return tr("error (reading its code…)");
+        return tr("error (code unknown)");
     }
     default:
         return {};

@@ -3,11 +3,14 @@
 // The table of the NM17x line panel: one row per display (node, variant, serial, setpoint,
 // position, correction, status, errors), filled by Nm17xLine::findDisplays() and kept live from the
 // displays' TxPDO1/TxPDO2. TxPDO2 carries only the error bit of the status; when it comes on,
-// the model reads the display's error word (204Eh:02) by SDO. Nothing is written back.
+// the model reads the display's error word (204Eh:02) by SDO. Until that read has answered the
+// Errors column says so (never "-", which means no error); a failed read is named there and
+// tried again a second later. Nothing is written back.
 
 #include "devices/nm17x/nm17xline.h"
 
 #include <QAbstractTableModel>
+#include <QDeadlineTimer>
 #include <QHash>
 #include <QPointer>
 #include <QSet>
@@ -58,6 +61,12 @@ private:
     QMetaObject::Connection m_pdo2;
     QPointer<nm17x::Nm17xLine> m_line;
     QSet<canopen::NodeId> m_readingErrors;
+    struct ReadFailure
+    {
+        QString cause;
+        QDeadlineTimer retry;
+    };
+    QHash<canopen::NodeId, ReadFailure> m_errorReadFailures; // the last read of 204Eh:02 failed
 };
 
 } // namespace db::widgets
