@@ -8,8 +8,7 @@ Completion Completion::finishing(Reply *reply,
                                  std::function<Result<QVariant>(const QVariant &)> convert)
 {
     return Completion(reply, [reply, convert = std::move(convert)](const Result<QVariant> &r) {
-        const Result<QVariant> value = r.ok() ? convert(r.value()) : r;
-        value.ok() ? reply->finish(value.value()) : reply->fail(value.error());
+        Completion(reply).complete(r.ok() ? convert(r.value()) : r);
     });
 }
 
