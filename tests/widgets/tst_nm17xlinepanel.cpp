@@ -52,6 +52,9 @@ private Q_SLOTS:
     void screenshotOfARunningLine();
 
 private:
+    // Finds the displays and sends node 3 (the NM172, whose shaft is blocked) a setpoint with
+    // release: its following error (Er 3) comes 0.3 s later.
+    bool sendToABlockedShaft(SimulatedNm17x **nm172);
     QPushButton *button(const char *name) { return m_panel->findChild<QPushButton *>(name); }
     QString cell(int row, int column)
     {
@@ -427,19 +430,28 @@ void TstNm17xLinePanel::scanFindsTheDisplaysAtTheirBitrate()
              qPrintable(m_panel->message()));
 }
 
-// TxPDO2 shows only the error bit: the panel reads the error word and names Er 3 and Er 6, with
-// the remedy in the tool tip.
-void TstNm17xLinePanel::displayErrorsAreNamed()
+bool TstNm17xLinePanel::sendToABlockedShaft(SimulatedNm17x **nm172)
 {
     QTest::mouseClick(button("find"), Qt::LeftButton);
-    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
-    SimulatedNm17x *nm172 = m_displays.at(0);
-    QVERIFY(nm172->write({ 0x2047, 2 }, 3u).ok()); // following error after 0.3 s
-    nm172->spindle().setShaftBlocked(true);
+    if (!QTest::qWaitFor([this] { return m_panel->model()->rowCount() == 2; }))
+        return false;
+    *nm172 = m_displays.at(0);
+    if (!(*nm172)->write({ 0x2047, 2 }, 3u).ok()) // following error after 0.3 s
+        return false;
+    (*nm172)->spindle().setShaftBlocked(true);
     m_panel->selectNode(3);
     m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(5);
     m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
     QTest::mouseClick(button("send"), Qt::LeftButton);
+    return true;
+}
+
+// TxPDO2 shows only the error bit: the panel reads the error word and names Er 3 and Er 6, with
+// the remedy in the tool tip.
+void TstNm17xLinePanel::displayErrorsAreNamed()
+{
+    SimulatedNm17x *nm172 = nullptr;
+    QVERIFY(sendToABlockedShaft(&nm172));
     const QModelIndex errors = m_panel->model()->index(1, widgets::Nm17xLineModel::Errors);
     QTRY_VERIFY2_WITH_TIMEOUT(errors.data().toString().startsWith(QLatin1String("Er 3 (shaft")),
                               qPrintable(errors.data().toString()), 5000);
@@ -464,15 +476,8 @@ void TstNm17xLinePanel::displayErrorsAreNamed()
 // SDOs): the Errors column says that, never "-" (no error), and names the cause in its tool tip.
 void TstNm17xLinePanel::unreadableErrorWordIsNotShownAsNoError()
 {
-    QTest::mouseClick(button("find"), Qt::LeftButton);
-    QTRY_COMPARE(m_panel->model()->rowCount(), 2);
-    SimulatedNm17x *nm172 = m_displays.at(0);
-    QVERIFY(nm172->write({ 0x2047, 2 }, 3u).ok()); // following error after 0.3 s
-    nm172->spindle().setShaftBlocked(true);
-    m_panel->selectNode(3);
-    m_panel->findChild<QDoubleSpinBox *>("setpoint")->setValue(5);
-    m_panel->findChild<QComboBox *>("kind")->setCurrentIndex(1); // with release
-    QTest::mouseClick(button("send"), Qt::LeftButton);
+    SimulatedNm17x *nm172 = nullptr;
+    QVERIFY(sendToABlockedShaft(&nm172));
     // From here on the display hears nothing, but goes on sending its PDOs.
     QVERIFY(
         disconnect(m_bus, &test::ScriptedCanBus::frameWritten, nm172, &SimulatedNm17x::receive));
