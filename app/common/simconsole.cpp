@@ -5,23 +5,10 @@
 
 namespace db::app {
 
-namespace {
-constexpr int kStandstillPollMs = 2; // finer than the drive's 5 ms real-time step
-
-QString hex4(quint16 value)
-{
-    return QString::number(value, 16).toUpper().rightJustified(4, QLatin1Char('0'));
-}
-} // namespace
-
 SimConsole::SimConsole(DemoDrive *demo, QObject *parent)
-    : QObject(parent)
+    : DeviceConsole(parent)
     , m_demo(demo)
-{
-    m_standstill.setInterval(kStandstillPollMs);
-    m_standstill.setTimerType(Qt::PreciseTimer);
-    connect(&m_standstill, &QTimer::timeout, this, &SimConsole::checkStandstill);
-}
+{ }
 
 Result<quint16> SimConsole::parseFaultCode(const QString &text)
 {
@@ -49,50 +36,34 @@ QString SimConsole::motion() const
         .arg(drive.axis().velocity(), 0, 'f', 1);
 }
 
-void SimConsole::execute(const QString &line)
+bool SimConsole::isMoving() const
 {
-    const QStringList words = line.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    const QString command = words.value(0);
-    if (command == u"state" && words.size() == 1) {
-        Q_EMIT answered(QStringLiteral("state %1 statusword 0x%2")
-                            .arg(motion())
-                            .arg(hex4(m_demo->drive().statusword())));
-    } else if (command == u"standstill" && words.size() == 1) {
-        ++m_standstillOwed;
-        checkStandstill();
-        if (m_standstillOwed > 0)
-            m_standstill.start();
-    } else if (command == u"drop" && words.size() == 1) {
-        const QString before = motion(); // the moment of the cut, before anything reacts
-        Q_EMIT answered(QStringLiteral("dropped %1 %2").arg(m_demo->dropClients()).arg(before));
-    } else if (command == u"fault" && words.size() == 2) {
-        const auto code = parseFaultCode(words.at(1));
-        if (!code) {
-            Q_EMIT answered(QStringLiteral("error: ") + code.error().message());
-            return;
-        }
-        m_demo->drive().injectFault(*code);
-        Q_EMIT answered(QStringLiteral("fault ") + hex4(*code));
-    } else if (command == u"heartbeat" && words.size() == 2
-               && (words.at(1) == u"off" || words.at(1) == u"on")) {
-        m_demo->setHeartbeatSilenced(words.at(1) == u"off");
-        Q_EMIT answered(QStringLiteral("heartbeat ") + words.at(1));
-    } else if (!command.isEmpty()) {
-        Q_EMIT answered(QStringLiteral("error: unknown command '%1' (state, standstill, drop, "
-                                       "fault CODE, heartbeat off|on)")
-                            .arg(line.simplified()));
-    }
+    return m_demo->drive().axis().isMoving();
 }
 
-void SimConsole::checkStandstill()
+QString SimConsole::stateDetails() const
 {
-    if (m_standstillOwed == 0 || m_demo->drive().axis().isMoving())
-        return;
-    const QString at = motion();
-    for (; m_standstillOwed > 0; --m_standstillOwed)
-        Q_EMIT answered(QStringLiteral("standstill ")
-                        + at.section(QLatin1String(" velocity"), 0, 0));
-    m_standstill.stop();
+    return QStringLiteral(" statusword 0x") + hex4(m_demo->drive().statusword());
+}
+
+int SimConsole::dropClients()
+{
+    return m_demo->dropClients();
+}
+
+void SimConsole::injectFault(quint16 code)
+{
+    m_demo->drive().injectFault(code);
+}
+
+bool SimConsole::executeOwn(const QStringList &words)
+{
+    if (words.size() != 2 || words.at(0) != u"heartbeat"
+        || (words.at(1) != u"off" && words.at(1) != u"on"))
+        return false;
+    m_demo->setHeartbeatSilenced(words.at(1) == u"off");
+    Q_EMIT answered(QStringLiteral("heartbeat ") + words.at(1));
+    return true;
 }
 
 } // namespace db::app

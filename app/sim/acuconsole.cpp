@@ -6,23 +6,11 @@
 
 namespace db::app {
 
-namespace {
-constexpr int kStandstillPollMs = 2; // finer than the motion model's 5 ms step
-
-QString hex4(quint16 value)
-{
-    return QString::number(value, 16).toUpper().rightJustified(4, QLatin1Char('0'));
-}
-} // namespace
-
 AcuConsole::AcuConsole(bonfiglioli::SimulatedAcu *acu, QObject *parent)
-    : QObject(parent)
+    : DeviceConsole(parent)
     , m_acu(acu)
 {
     m_clock.start();
-    m_standstill.setInterval(kStandstillPollMs);
-    m_standstill.setTimerType(Qt::PreciseTimer);
-    connect(&m_standstill, &QTimer::timeout, this, &AcuConsole::checkStandstill);
 }
 
 Result<quint16> AcuConsole::parseFaultCode(const QString &text)
@@ -50,77 +38,68 @@ QString AcuConsole::motion() const
         .arg(m_acu->motion().velocity(), 0, 'f', 1);
 }
 
-void AcuConsole::execute(const QString &line)
+bool AcuConsole::isMoving() const
 {
-    const QStringList words = line.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    const QString command = words.value(0);
-    const bool onOff = words.size() == 2 && (words.at(1) == u"on" || words.at(1) == u"off");
-    if (command == u"state" && words.size() == 1) {
-        Q_EMIT answered(QStringLiteral("state %1 statusword 0x%2 mode %3 fault 0x%4")
-                            .arg(motion())
-                            .arg(hex4(m_acu->statusWord()))
-                            .arg(m_acu->motion().mode())
-                            .arg(hex4(m_acu->fault())));
-    } else if (command == u"standstill" && words.size() == 1) {
-        ++m_standstillOwed;
-        checkStandstill();
-        if (m_standstillOwed > 0)
-            m_standstill.start();
-    } else if (command == u"drop" && words.size() == 1) {
-        const QString before = motion(); // the moment of the cut, before anything reacts
-        Q_EMIT answered(QStringLiteral("dropped %1 %2").arg(m_acu->dropClient()).arg(before));
-    } else if (command == u"fault" && words.size() == 2) {
-        const auto code = parseFaultCode(words.at(1));
-        if (!code) {
-            Q_EMIT answered(QStringLiteral("error: ") + code.error().message());
-            return;
-        }
-        m_acu->raiseFault(*code);
-        Q_EMIT answered(QStringLiteral("fault ") + hex4(*code));
-    } else if (command == u"mains" && onOff) {
-        m_acu->motion().setMains(words.at(1) == u"on");
-        Q_EMIT answered(QStringLiteral("mains ") + words.at(1));
+    return m_acu->motion().velocity() != 0.0;
+}
+
+QString AcuConsole::stateDetails() const
+{
+    return QStringLiteral(" statusword 0x%1 mode %2 fault 0x%3")
+        .arg(hex4(m_acu->statusWord()))
+        .arg(m_acu->motion().mode())
+        .arg(hex4(m_acu->fault()));
+}
+
+int AcuConsole::dropClients()
+{
+    return m_acu->dropClient();
+}
+
+void AcuConsole::injectFault(quint16 code)
+{
+    m_acu->raiseFault(code);
+}
+
+bool AcuConsole::executeOwn(const QStringList &words)
+{
+    if (words.size() != 2)
+        return false;
+    const QString &command = words.at(0);
+    const QString &argument = words.at(1);
+    const bool onOff = argument == u"on" || argument == u"off";
+    if (command == u"mains" && onOff) {
+        m_acu->motion().setMains(argument == u"on");
     } else if (command == u"sto" && onOff) {
-        m_acu->motion().setSto(words.at(1) == u"on");
-        Q_EMIT answered(QStringLiteral("sto ") + words.at(1));
-    } else if (command == u"master" && words.size() == 2) {
+        m_acu->motion().setSto(argument == u"on");
+    } else if (command == u"master") {
         bool ok = false;
-        const double speed = words.at(1).toDouble(&ok);
+        const double speed = argument.toDouble(&ok);
         if (!ok || !std::isfinite(speed)) {
             Q_EMIT answered(
-                QStringLiteral("error: master takes a speed in u/s, not '%1'").arg(words.at(1)));
-            return;
+                QStringLiteral("error: master takes a speed in u/s, not '%1'").arg(argument));
+            return true;
         }
         m_acu->motion().setMasterSpeed(speed);
         Q_EMIT answered(QStringLiteral("master ") + QString::number(speed));
-    } else if (command == u"watchdog" && words.size() == 2) {
+        return true;
+    } else if (command == u"watchdog") {
         bool ok = false;
-        const int ms = words.at(1).toInt(&ok);
+        const int ms = argument.toInt(&ok);
         if (!ok || ms < 1 || ms > 3600000) {
             Q_EMIT answered(QStringLiteral("error: watchdog takes a time in ms (1..3600000), not "
                                            "'%1'")
-                                .arg(words.at(1)));
-            return;
+                                .arg(argument));
+            return true;
         }
         m_acu->setWatchdogMs(ms);
         Q_EMIT answered(QStringLiteral("watchdog ") + QString::number(ms));
-    } else if (!command.isEmpty()) {
-        Q_EMIT answered(
-            QStringLiteral("error: unknown command '%1' (state, standstill, drop, "
-                           "fault CODE, mains on|off, sto on|off, master SPEED, watchdog MS)")
-                .arg(line.simplified()));
+        return true;
+    } else {
+        return false;
     }
-}
-
-void AcuConsole::checkStandstill()
-{
-    if (m_standstillOwed == 0 || m_acu->motion().velocity() != 0.0)
-        return;
-    const QString at = motion();
-    for (; m_standstillOwed > 0; --m_standstillOwed)
-        Q_EMIT answered(QStringLiteral("standstill ")
-                        + at.section(QLatin1String(" velocity"), 0, 0));
-    m_standstill.stop();
+    Q_EMIT answered(command + u' ' + argument);
+    return true;
 }
 
 } // namespace db::app
