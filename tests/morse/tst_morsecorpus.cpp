@@ -28,7 +28,18 @@ Q_DECLARE_METATYPE(CorpusConditionPtr)
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-}
+
+// Under AddressSanitizer (the sanitizer pass of the test command) every fourth case is decoded:
+// there the test looks for memory errors and undefined behaviour on every kind of signal, and
+// asserts that no case is confident in a wrong address. The rates need the whole corpus; the
+// normal build decodes all of it and asserts them (the decoder is deterministic, so the cases
+// left out here decode the same there).
+#ifdef __SANITIZE_ADDRESS__
+constexpr int kStride = 4;
+#else
+constexpr int kStride = 1;
+#endif
+} // namespace
 
 class TstMorseCorpus : public QObject
 {
@@ -80,8 +91,11 @@ private slots:
         const std::vector<CorpusCase> corpus = makeCorpus(*condition, cases, 20240601u);
         int exact = 0;
         int withinTwo = 0;
-        for (const CorpusCase &c : corpus) {
+        int decoded = 0;
+        for (std::size_t i = 0; i < corpus.size(); i += kStride) {
+            const CorpusCase &c = corpus[i];
             const CaseOutcome o = runCase(c, condition->chunkSeconds);
+            ++decoded;
             exact += o.exact ? 1 : 0;
             withinTwo += o.repetitionsToConfident >= 0.0 && o.repetitionsToConfident <= 2.0;
             // Never confident in a wrong address.
@@ -92,7 +106,9 @@ private slots:
                                     .arg(ipText(c.ip, QLatin1Char('.')), o.decoded)));
         }
         qInfo("%s: exact %d/%d, confident within two repetitions %d/%d",
-              qPrintable(condition->name), exact, cases, withinTwo, cases);
+              qPrintable(condition->name), exact, decoded, withinTwo, decoded);
+        if (decoded < cases)
+            return; // a share of the corpus: no rate to assert
         if (minExact >= 0.0)
             QVERIFY(exact >= minExact * cases);
         if (minWithinTwo >= 0.0)
