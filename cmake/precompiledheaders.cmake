@@ -87,5 +87,16 @@ function(_drivebench_pch_choose target)
                                                QT_TESTCASE_BUILDDIR ${CMAKE_BINARY_DIR})
     if(kind MATCHES "test$")
         _drivebench_pch_same_sourcedir(${target})
+        # A test program includes its own moc output ("tst_x.moc"), so AUTOMOC's
+        # mocs_compilation.cpp is empty unless the test has headers of its own: without the
+        # header set it compiles in milliseconds instead of the 1.3 s that loading the set took
+        # (for each of 150 tests, in both builds of the test command).
+        get_target_property(type ${target} TYPE)
+        get_target_property(sources ${target} SOURCES)
+        if(type STREQUAL "EXECUTABLE" AND NOT sources MATCHES "\\.h(;|$)")
+            get_target_property(dir ${target} BINARY_DIR)
+            set_source_files_properties(${dir}/${target}_autogen/mocs_compilation.cpp
+                                        PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
+        endif()
     endif()
 endfunction()
