@@ -61,7 +61,7 @@ void Nm17xLineModel::readErrors(canopen::NodeId node)
     if (failed != m_errorReadFailures.cend() && !failed->retry.hasExpired())
         return;
     m_readingErrors.insert(node);
-    update(node, [](DisplayState &) {}); // "reading"
+    refresh(node); // "reading"
     Reply *reply = m_line->read(node, { 0x204E, 2 });
     connect(reply, &Reply::finished, this, [this, reply, node] {
         reply->deleteLater();
@@ -71,7 +71,7 @@ void Nm17xLineModel::readErrors(canopen::NodeId node)
                 node,
                 { tr("reading the error word 204Eh:02: %1").arg(reply->error().toString()),
                   QDeadlineTimer(kErrorReadRetryMs) });
-            update(node, [](DisplayState &) {});
+            refresh(node);
             // Displays send their PDOs on change: do not wait for the next one to try again.
             QTimer::singleShot(kErrorReadRetryMs, this, [this, node] {
                 const int row = rowOf(node);
@@ -122,6 +122,11 @@ void Nm17xLineModel::update(canopen::NodeId node, const std::function<void(Displ
         return;
     change(m_rows[row]);
     Q_EMIT dataChanged(index(row, Position), index(row, Errors));
+}
+
+void Nm17xLineModel::refresh(canopen::NodeId node)
+{
+    update(node, [](DisplayState &) {});
 }
 
 int Nm17xLineModel::rowCount(const QModelIndex &parent) const

@@ -53,6 +53,8 @@ public:
 private:
     void update(canopen::NodeId node, const std::function<void(nm17x::DisplayState &)> &change);
     void readErrors(canopen::NodeId node);
+    // The row's cells again (what the model knows about it changed, not the display's state).
+    void refresh(canopen::NodeId node);
 
     QList<nm17x::DisplayState> m_rows;
     QList<qint16> m_corrections; // from TxPDO2, per row
