@@ -78,8 +78,11 @@ demo)
     exec "$build_dir/app/drivebench" --demo
     ;;
 test)
-    (cd "$build_dir" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure --parallel "$(nproc)" \
-        --timeout 300)
+    # Three tests at a time on two cores: the normal build's tests wait for timers and sockets
+    # most of the time (with three: 1.4 cores busy, the suite 226 s; with two: 346 s). The sanitizer
+    # pass keeps one per core: its instrumented tests keep the processor busy.
+    (cd "$build_dir" && QT_QPA_PLATFORM=offscreen ctest --output-on-failure \
+        --parallel "$(($(nproc) * 3 / 2))" --timeout 300)
     if [ "${DRIVEBENCH_SANITIZER_PASS:-ON}" != OFF ]; then
         echo "the whole suite once more under AddressSanitizer, UBSan and LeakSanitizer" >&2
         bash tools/sanitize.sh
