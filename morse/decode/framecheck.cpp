@@ -18,6 +18,9 @@ constexpr double kMaxZ = 5.0; // lengths farther from their nominal are not cons
 constexpr double kMinSpread = 0.05; // units
 constexpr std::size_t kMinSamples = 8;
 constexpr double kNegligible = 40.0; // nats below a window's largest term
+// A window sum taken relative to a larger term than its own largest: below this, too few
+// significant digits may be left (about 645 nats down), so the window is summed exactly.
+constexpr double kSmallestSum = 1e-280;
 constexpr double kFreeDark = 6.0;
 constexpr double kSlopeSigmas = 3.0; // a level's slope counts from this many standard errors //
                                      // units of dark at either end of a region, at most
@@ -220,6 +223,9 @@ double regionLogLikelihood(std::span<const Sample> all, const RegionModel &m, co
     std::vector<double> alpha(grid + 1, kNegInf);
     std::vector<double> next(grid + 1, kNegInf);
     std::vector<double> beta(grid + 1, kNegInf);
+    std::vector<double> scaled(grid + 1, 0.0);
+    std::vector<double> blockTop;
+    std::vector<double> blockRatio;
     alpha[0] = 0.0;
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const Part &e = elements[i];
@@ -253,6 +259,28 @@ double regionLogLikelihood(std::span<const Sample> all, const RegionModel &m, co
             const double l = windowSum(lo, lastStart, [](std::size_t) { return 1.0; });
             return l == kNegInf ? kNegInf : prefix[first[grid + 1]] + l;
         }
+        // The starts in blocks as wide as a window: each block's largest term and every term's
+        // exponential relative to it, taken once per start. A window (two blocks at most) then
+        // sums products relative to the larger block top, with one exponential per block;
+        // windows whose terms all lie too far below that top to be represented take the exact
+        // sum above.
+        const std::size_t width = st.longest - st.shortest + 1;
+        blockTop.assign((lastStart - firstStart) / width + 1, kNegInf);
+        for (std::size_t a = firstStart; a <= lastStart; ++a) {
+            double &top = blockTop[(a - firstStart) / width];
+            top = std::max(top, beta[a]);
+        }
+        for (std::size_t a = firstStart; a <= lastStart; ++a) {
+            const double top = blockTop[(a - firstStart) / width];
+            scaled[a] = beta[a] == kNegInf ? 0.0 : std::exp(beta[a] - top);
+        }
+        // Two neighbouring blocks: the lower top relative to the higher one.
+        blockRatio.resize(blockTop.size());
+        for (std::size_t k = 0; k + 1 < blockTop.size(); ++k) {
+            const double low = std::min(blockTop[k], blockTop[k + 1]);
+            const double high = std::max(blockTop[k], blockTop[k + 1]);
+            blockRatio[k] = low == kNegInf ? 0.0 : std::exp(low - high);
+        }
         std::fill(next.begin(), next.end(), kNegInf);
         const std::size_t bLast = std::min(grid, lastStart + st.longest);
         for (std::size_t b = firstStart + st.shortest; b <= bLast; ++b) {
@@ -261,8 +289,33 @@ double regionLogLikelihood(std::span<const Sample> all, const RegionModel &m, co
             const std::size_t hi = std::min(lastStart, b - st.shortest);
             if (lo > hi)
                 continue;
-            const double l =
-                windowSum(lo, hi, [&](std::size_t a) { return st.p[b - a - st.shortest]; });
+            const std::size_t k1 = (lo - firstStart) / width;
+            const std::size_t k2 = (hi - firstStart) / width;
+            const double top = std::max(blockTop[k1], blockTop[k2]);
+            if (top == kNegInf)
+                continue;
+            const std::size_t offset = b - st.shortest; // st.p[offset - a]: start a's weight
+            double sum = 0.0;
+            for (std::size_t k = k1; k <= k2; ++k) {
+                if (blockTop[k] == kNegInf)
+                    continue;
+                const std::size_t from = std::max(lo, firstStart + k * width);
+                const std::size_t to = std::min(hi, firstStart + (k + 1) * width - 1);
+                // Four running sums: one chain of additions waits for each previous one.
+                std::array<double, 4> part {};
+                std::size_t a = from;
+                for (; a + 3 <= to; a += 4) {
+                    for (std::size_t j = 0; j < 4; ++j)
+                        part[j] += scaled[a + j] * st.p[offset - a - j];
+                }
+                for (; a <= to; ++a)
+                    part[0] += scaled[a] * st.p[offset - a];
+                const double factor = blockTop[k] == top ? 1.0 : blockRatio[k1];
+                sum += (part[0] + part[1] + part[2] + part[3]) * factor;
+            }
+            const double l = sum > kSmallestSum
+                ? top + std::log(sum)
+                : windowSum(lo, hi, [&](std::size_t a) { return st.p[b - a - st.shortest]; });
             if (l != kNegInf)
                 next[b] = prefix[first[b]] + l;
         }
