@@ -20,9 +20,8 @@
 #include "scope/decimation.h"
 #include "scope/recorder.h"
 #include "scope/tracesource.h"
+#include "widgets/common/plot.h"
 #include "widgets/scope/scopeplot.h"
-
-#include <qcustomplot.h>
 
 #include <QApplication>
 #include <QElapsedTimer>

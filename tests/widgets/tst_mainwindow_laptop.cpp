@@ -9,6 +9,7 @@
 #include "mainwindow.h"
 #include "settingsdialog.h"
 #include "translations/language.h"
+#include "widgets/common/plot.h"
 #include "widgets/connection/devicelist.h"
 #include "widgets/connection/drivestatuspanel.h"
 #include "widgets/motion/jogpanel.h"
@@ -18,8 +19,6 @@
 #include "widgets/scope/scopemeasurements.h"
 #include "widgets/scope/scopepage.h"
 #include "widgets/scope/scopeplot.h"
-
-#include <qcustomplot.h>
 
 #include <QAbstractScrollArea>
 #include <QApplication>

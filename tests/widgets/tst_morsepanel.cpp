@@ -4,6 +4,7 @@
 // refgo://IP and its menu for canopen+slcan://IP?node=50. Undecodable input shows its reason.
 #include "ledvideo.h"
 #include "morse/input/morseinput.h"
+#include "widgets/common/plot.h"
 #include "widgets/morse/morsepanel.h"
 
 #include <QLabel>
@@ -13,8 +14,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
-
-#include <qcustomplot.h>
 
 using namespace db;
 using db::widgets::MorsePanel;

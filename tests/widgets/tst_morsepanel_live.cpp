@@ -4,6 +4,7 @@
 // the result; no devices disable the camera controls with the reason; errors are shown.
 // With DRIVEBENCH_SCREENSHOT_DIR set, the live panel is saved there as morse-live.png.
 #include "ledvideo.h"
+#include "widgets/common/plot.h"
 #include "widgets/morse/morselivesource.h"
 #include "widgets/morse/morsepanel.h"
 
@@ -13,8 +14,6 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
-
-#include <qcustomplot.h>
 
 #include <cmath>
 #include <cstring>

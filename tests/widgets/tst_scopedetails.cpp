@@ -5,14 +5,13 @@
 #include "fakeconnection.h"
 #include "scope/csv.h"
 #include "scope/recorder.h"
+#include "widgets/common/plot.h"
 #include "widgets/scope/scopeanalysisdialog.h"
 #include "widgets/scope/scopechannelmodel.h"
 #include "widgets/scope/scopecursors.h"
 #include "widgets/scope/scopemeasurements.h"
 #include "widgets/scope/scopepage.h"
 #include "widgets/scope/scopeplot.h"
-
-#include <qcustomplot.h>
 
 #include <QComboBox>
 #include <QImage>

@@ -10,14 +10,13 @@
 #include "scope/csv.h"
 #include "scope/recorder.h"
 #include "transport/canbus.h"
+#include "widgets/common/plot.h"
 #include "widgets/scope/scopeanalysisdialog.h"
 #include "widgets/scope/scopechannelmodel.h"
 #include "widgets/scope/scopecursors.h"
 #include "widgets/scope/scopemeasurements.h"
 #include "widgets/scope/scopepage.h"
 #include "widgets/scope/scopeplot.h"
-
-#include <qcustomplot.h>
 
 #include <QComboBox>
 #include <QDir>
@@ -26,6 +25,7 @@
 #include <QMimeData>
 #include <QSignalSpy>
 #include <QTableView>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 

@@ -1,6 +1,7 @@
 #include "morsepanel.h"
 
 #include "morselivesource.h"
+#include "widgets/common/plot.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -15,8 +16,6 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
-
-#include <qcustomplot.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,14 +2,13 @@
 // preview with the LED region, and the region drawn with the mouse.
 #include "morselivesource.h"
 #include "morsepanel.h"
+#include "widgets/common/plot.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QTimer>
-
-#include <qcustomplot.h>
 
 #include <algorithm>
 

@@ -1,8 +1,7 @@
 #include "scopeanalysisdialog.h"
 
 #include "scopemeasurements.h"
-
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <QDialogButtonBox>
 #include <QFormLayout>

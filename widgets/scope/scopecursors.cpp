@@ -1,6 +1,6 @@
 #include "scopecursors.h"
 
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <cmath>
 

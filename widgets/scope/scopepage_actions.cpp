@@ -11,8 +11,7 @@
 #include "scopecursors.h"
 #include "scopemeasurements.h"
 #include "scopeplot.h"
-
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <QColorDialog>
 #include <QComboBox>

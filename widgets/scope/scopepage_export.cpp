@@ -6,8 +6,7 @@
 #include "scope/csv.h"
 #include "scope/recorder.h"
 #include "scopeplot.h"
-
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <cerrno>
 #include <cmath>

@@ -2,8 +2,7 @@
 
 #include "scope/recorder.h"
 #include "scopecursors.h"
-
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <QShortcut>
 #include <QVBoxLayout>

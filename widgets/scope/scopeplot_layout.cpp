@@ -3,8 +3,7 @@
 
 #include "scope/recorder.h"
 #include "scopecursors.h"
-
-#include <qcustomplot.h>
+#include "widgets/common/plot.h"
 
 #include <set>
 
