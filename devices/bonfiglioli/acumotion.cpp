@@ -21,6 +21,20 @@ AcuMotion::AcuMotion(AcuStore &store, AcuIndexed &indexed, QObject *parent)
     publish();
 }
 
+bool AcuMotion::resting() const
+{
+    return m_state != State::OperationEnabled && m_state != State::QuickStopActive
+        && m_velocity == 0.0;
+}
+
+void AcuMotion::wake()
+{
+    if (m_timer.isActive())
+        return;
+    m_clock.restart();
+    m_timer.start();
+}
+
 // The value the drive works with: data set 1 (the active one) of a data-set parameter.
 double AcuMotion::param(quint16 p, double fallback) const
 {
@@ -148,6 +162,7 @@ quint16 AcuMotion::statusWord() const
 
 quint16 AcuMotion::writeControlWord(quint16 word)
 {
+    wake();
     const quint16 old = m_word;
     m_word = word;
     const int control = int(param(kLocalRemote, 0));

@@ -72,12 +72,18 @@ public:
     // machine and the VABus exchange do not.
     void setTimeScale(double scale) { m_timeScale = scale > 0 ? scale : 1.0; }
 
+    // Whether the ramps' timer runs (it stops while the power stage is off).
+    bool ticking() const { return m_timer.isActive(); }
     double position() const { return m_position; }
     double velocity() const { return m_velocity; }
     qint16 mode() const;
 
 private:
+    // The ramps run every kTickMs while the power stage is on; otherwise nothing changes with
+    // time, so the timer stops and only a new control word starts it again.
     void tick();
+    bool resting() const;
+    void wake();
     void modeEdges(quint16 old, quint16 word);
     void startBlock(int block);
     void finishBlock();

@@ -160,6 +160,8 @@ void AcuMotion::tick()
         }
     }
     publish();
+    if (resting())
+        m_timer.stop();
 }
 
 void AcuMotion::publish()

@@ -2,6 +2,7 @@
 
 #include "movingcapfaults.h"
 
+#include <QScopedValueRollback>
 #include <QTimer>
 
 #include <QCoreApplication>
@@ -74,7 +75,9 @@ void MovingCapDrive::advance(double seconds)
 {
     if (seconds <= 0)
         return;
-    const int steps = std::max(1, int(std::ceil(seconds / kStepSeconds - 1e-9)));
+    const QScopedValueRollback<bool> inside(m_advancing, true);
+    // At rest nothing moves and the temperature's decay is exact over any step: one step does.
+    const int steps = resting() ? 1 : std::max(1, int(std::ceil(seconds / kStepSeconds - 1e-9)));
     const double dt = seconds / steps;
     for (int i = 0; i < steps; ++i)
         stepOnce(dt);
@@ -124,18 +127,55 @@ void MovingCapDrive::startRealTime(int periodMs)
     if (!m_timer) {
         m_timer = new QTimer(this);
         connect(m_timer, &QTimer::timeout, this, [this] {
-            const double elapsed = m_clock.restart() / 1000.0;
-            advance(std::min(elapsed, kMaxRealTimeStep));
+            catchUp();
+            if (resting())
+                m_timer->stop();
         });
     }
+    m_realTime = true;
+    m_periodMs = periodMs;
     m_clock.start();
     m_timer->start(periodMs);
 }
 
 void MovingCapDrive::stopRealTime()
 {
+    m_realTime = false;
     if (m_timer)
         m_timer->stop();
+}
+
+bool MovingCapDrive::ticking() const
+{
+    return m_timer && m_timer->isActive();
+}
+
+double MovingCapDrive::time() const
+{
+    const bool stopped = m_realTime && !m_advancing && !m_timer->isActive();
+    return stopped ? m_time + m_clock.elapsed() / 1000.0 : m_time;
+}
+
+bool MovingCapDrive::resting() const
+{
+    const auto state = m_machine.state();
+    return !m_machine.powered() && !m_axis.powered() && m_pending.isEmpty() && !m_repeat.active
+        && state != cia402::State::QuickStopActive && state != cia402::State::FaultReactionActive;
+}
+
+void MovingCapDrive::catchUp()
+{
+    if (!m_realTime || m_advancing)
+        return;
+    const double elapsed = m_clock.restart() / 1000.0;
+    // A stalled event loop does not jump a moving axis; a resting one takes the whole gap.
+    advance(resting() ? elapsed : std::min(elapsed, kMaxRealTimeStep));
+}
+
+void MovingCapDrive::wake()
+{
+    if (m_realTime && !m_advancing && !m_timer->isActive())
+        m_timer->start(m_periodMs);
 }
 
 // ---- state machine glue ----------------------------------------------------------------------
@@ -295,6 +335,7 @@ void MovingCapDrive::emitStatusIfChanged()
 
 void MovingCapDrive::injectFault(quint16 emcyCode)
 {
+    const Present present(this);
     const MovingCapFault fault = faults::lookup(emcyCode);
     const auto state = m_machine.state();
     const bool alreadyFaulted =
@@ -318,12 +359,14 @@ void MovingCapDrive::injectFault(quint16 emcyCode)
 
 void MovingCapDrive::setWarnings(quint32 warningBits)
 {
+    const Present present(this);
     m_warningBits = warningBits & 0xFFFF0000u;
     emitStatusIfChanged();
 }
 
 void MovingCapDrive::powerCycle()
 {
+    const Present present(this);
     m_store.loadFromNvm();
     m_machine = Cia402Machine();
     m_axis.setPowered(false);

@@ -39,6 +39,8 @@ struct MovingCapOptions
 // state machine, one axis, faults/EMCY, digital I/O with input and output functions, and the
 // RefGo-level operations. Time advances only through advance() (tests) or the real-time timer
 // started by startRealTime() (servers). All calls are synchronous; signals are emitted directly.
+// In real time the timer runs only while the model changes with time: a drive without power and
+// with nothing scheduled rests, and a call from outside first brings it up to the present.
 class MovingCapDrive : public QObject
 {
     Q_OBJECT
@@ -91,7 +93,8 @@ public:
     // ---- observation ----
     cia402::State state() const { return m_machine.state(); }
     quint16 statusword() const;
-    double time() const { return m_time; }
+    bool ticking() const; // the real-time timer runs (it stops while the drive rests)
+    double time() const; // s; at rest in real time, including the time since the last step
     const ObjectDictionary &dictionary() const { return m_store.dictionary(); }
     const SimulatedAxis &axis() const { return m_axis; }
 
@@ -112,6 +115,27 @@ private:
     void applyParameters();
     void emitStatusIfChanged();
     void schedule(double delaySeconds, std::function<void()> action);
+    // Real time: the model rests when nothing in it changes with time (no power, nothing
+    // scheduled, no stop ramp running); the timer is then stopped. Every call from outside brings
+    // the model up to the present first (catchUp) and starts the timer again afterwards (wake),
+    // so a command is applied at the moment it arrives.
+    bool resting() const;
+    void catchUp();
+    void wake();
+    class Present
+    {
+    public:
+        explicit Present(MovingCapDrive *drive)
+            : m_drive(drive)
+        {
+            m_drive->catchUp();
+        }
+        ~Present() { m_drive->wake(); }
+        Q_DISABLE_COPY_MOVE(Present)
+
+    private:
+        MovingCapDrive *m_drive;
+    };
     // movingcapdrive_objects.cpp: computed objects and writes with side effects
     void refreshComputed();
     Result<void> writeSpecial(ObjectAddress address, const QVariant &raw, bool &handled);
@@ -150,6 +174,9 @@ private:
     double m_time = 0.0;
     QTimer *m_timer = nullptr;
     QElapsedTimer m_clock;
+    int m_periodMs = 5;
+    bool m_realTime = false;
+    bool m_advancing = false;
 
     struct Pending
     {

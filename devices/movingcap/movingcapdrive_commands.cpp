@@ -140,6 +140,7 @@ void MovingCapDrive::noteInterruption()
 
 Result<void> MovingCapDrive::go(std::optional<qint64> target)
 {
+    const Present present(this);
     if (auto ok = ensureOperational(1); !ok)
         return ok;
     if (target)
@@ -151,6 +152,7 @@ Result<void> MovingCapDrive::go(std::optional<qint64> target)
 
 Result<void> MovingCapDrive::goWay(std::optional<qint64> distance)
 {
+    const Present present(this);
     if (auto ok = ensureOperational(1); !ok)
         return ok;
     if (distance)
@@ -164,17 +166,20 @@ Result<void> MovingCapDrive::goWay(std::optional<qint64> distance)
 
 Result<void> MovingCapDrive::setTargetPosition(qint64 target)
 {
+    const Present present(this);
     return write({ 0x607A, 0 }, QVariant::fromValue<qlonglong>(target));
 }
 
 Result<void> MovingCapDrive::setWay(qint64 distance)
 {
+    const Present present(this);
     m_way = distance;
     return {};
 }
 
 Result<void> MovingCapDrive::setSpeed(qint64 velocity)
 {
+    const Present present(this);
     // SP: profile velocity in positioning mode, target velocity in velocity mode (spec 3.3).
     const bool velocityMode = m_store.integer({ 0x6060, 0 }) == 3;
     auto ok = velocityMode ? write({ 0x60FF, 0 }, QVariant::fromValue<qlonglong>(velocity))
@@ -186,6 +191,7 @@ Result<void> MovingCapDrive::setSpeed(qint64 velocity)
 
 Result<void> MovingCapDrive::stopMotion()
 {
+    const Present present(this);
     if (auto refused = refuseInFault(); !refused)
         return refused;
     // SM = input function 5 without changing 605Ah: quick stop ramp 6085h, stay in quick stop
@@ -196,6 +202,7 @@ Result<void> MovingCapDrive::stopMotion()
 
 void MovingCapDrive::connectionLost()
 {
+    const Present present(this);
     if (!m_store.dictionary().contains({ 0x6007, 0 }))
         return;
     switch (m_store.integer({ 0x6007, 0 })) {
@@ -217,6 +224,7 @@ void MovingCapDrive::connectionLost()
 
 Result<void> MovingCapDrive::continueMotion()
 {
+    const Present present(this);
     if (auto refused = refuseInFault(); !refused)
         return refused;
     if (m_machine.state() == cia402::State::QuickStopActive)
@@ -233,11 +241,13 @@ Result<void> MovingCapDrive::continueMotion()
 
 Result<void> MovingCapDrive::powerContinue()
 {
+    const Present present(this);
     return ensureOperational(1);
 }
 
 Result<void> MovingCapDrive::powerQuit()
 {
+    const Present present(this);
     if (m_machine.state() != cia402::State::Fault)
         applyControlword(cia402::cw::DisableVoltage);
     return {};
@@ -245,6 +255,7 @@ Result<void> MovingCapDrive::powerQuit()
 
 Result<void> MovingCapDrive::reference(std::optional<int> method)
 {
+    const Present present(this);
     if (!method)
         return {}; // spec 3.4 *2: REF without a parameter has no function
     if (*method != 35 && *method != 37 && *method != -18 && *method != -19)
@@ -260,6 +271,7 @@ Result<void> MovingCapDrive::reference(std::optional<int> method)
 
 Result<void> MovingCapDrive::jog(int direction, std::optional<int> milliseconds)
 {
+    const Present present(this);
     if (milliseconds && *milliseconds < 0)
         return outOfRange(QStringLiteral("jog time %1 ms is negative").arg(*milliseconds));
     if (auto ok = ensureOperational(3); !ok)
@@ -281,6 +293,7 @@ Result<void> MovingCapDrive::jog(int direction, std::optional<int> milliseconds)
 
 Result<void> MovingCapDrive::repeatReverse(std::optional<qint64> distance)
 {
+    const Present present(this);
     if (distance)
         m_repeatWay = *distance;
     // Spec 9.2: start from the last commanded target (the actual position before any move).
@@ -295,11 +308,13 @@ Result<void> MovingCapDrive::repeatReverse(std::optional<qint64> distance)
 
 void MovingCapDrive::setRepeatWay(qint64 distance)
 {
+    const Present present(this);
     m_repeatWay = distance;
 }
 
 void MovingCapDrive::setRepeatWait(qint64 milliseconds)
 {
+    const Present present(this);
     m_repeatWaitMs = std::max<qint64>(0, milliseconds);
 }
 
@@ -323,6 +338,7 @@ void MovingCapDrive::stepRepeat()
 
 Result<void> MovingCapDrive::setOutput(int number, bool high)
 {
+    const Present present(this);
     if (number < 1 || number > 4)
         return outOfRange(QStringLiteral("output %1 does not exist (1..4)").arg(number));
     const quint32 bit = 1u << (15 + number);

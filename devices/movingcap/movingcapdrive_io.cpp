@@ -29,6 +29,7 @@ quint16 outputObject(int output)
 
 void MovingCapDrive::setPhysicalInput(int number, bool high)
 {
+    const Present present(this);
     if (number < 1 || number > kInputs)
         return;
     const quint32 before = combinedInputs();

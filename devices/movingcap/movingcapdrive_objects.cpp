@@ -26,6 +26,7 @@ bool isInputFunctionObject(quint16 index)
 
 Result<QVariant> MovingCapDrive::read(ObjectAddress address)
 {
+    catchUp();
     if (auto ok = m_store.checkRead(address); !ok)
         return ok.error();
     refreshComputed();
@@ -34,6 +35,7 @@ Result<QVariant> MovingCapDrive::read(ObjectAddress address)
 
 Result<void> MovingCapDrive::write(ObjectAddress address, const QVariant &value)
 {
+    const Present present(this);
     auto raw = m_store.checkWrite(address, value);
     if (!raw)
         return raw.error();

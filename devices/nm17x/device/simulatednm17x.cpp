@@ -197,34 +197,46 @@ void SimulatedNm17x::receive(const QCanBusFrame &frame)
     if (!m_started || frame.frameType() != QCanBusFrame::DataFrame
         || frame.hasExtendedFrameFormat())
         return;
+    // A frame the display acts on wakes its cycle; other nodes' traffic does not.
     if (m_errorControl.receive(frame, m_state))
-        return;
+        return wake();
     const quint32 id = frame.frameId();
     const QByteArray d = frame.payload();
-    if (id == cob::Nmt)
+    if (id == cob::Nmt) {
+        wake();
         return handleNmt(d);
-    if (id == cob::LssMaster)
+    }
+    if (id == cob::LssMaster) {
+        wake();
         return handleLss(frame); // every NMT state
+    }
     if (id == cob::LssSlave && m_addressing && d.size() >= 2
         && quint8(d.at(0)) == lss::ConfigureNodeId && d.at(1) == 0) {
         m_offered = 0; // another display took the offered id; wait for the next offer
         return;
     }
     if (id == cob::sdoRequest(m_node)) {
+        wake();
         if (m_state != NmtState::Stopped)
             m_sdo.handleRequest(frame);
         return;
     }
     if (m_state != NmtState::Operational)
         return;
-    if (id == (u32({ 0x1005, 0 }) & 0x7FF))
+    if (id == (u32({ 0x1005, 0 }) & 0x7FF)) {
+        wake();
         return sendTpdos(true);
+    }
     const quint32 rpdo1 = u32({ 0x1400, 1 });
     const quint32 rpdo2 = u32({ 0x1401, 1 });
-    if (!(rpdo1 & kCobInvalid) && id == (rpdo1 & 0x7FF))
+    if (!(rpdo1 & kCobInvalid) && id == (rpdo1 & 0x7FF)) {
+        wake();
         return handleBroadcast(d);
-    if (!(rpdo2 & kCobInvalid) && id == (rpdo2 & 0x7FF))
+    }
+    if (!(rpdo2 & kCobInvalid) && id == (rpdo2 & 0x7FF)) {
+        wake();
         return handleRpdo2(d);
+    }
 }
 
 void SimulatedNm17x::handleNmt(const QByteArray &d)
@@ -309,6 +321,7 @@ void SimulatedNm17x::lssAnswer(quint8 cs, quint8 code)
 
 void SimulatedNm17x::turnShaft(double delta)
 {
+    wake();
     if (selectForAddressing())
         return;
     m_spindle.turnByHand(delta, settings());
@@ -316,6 +329,7 @@ void SimulatedNm17x::turnShaft(double delta)
 
 void SimulatedNm17x::pressKey(int direction, int ms)
 {
+    wake();
     if (selectForAddressing() || !hasMotor(m_variant))
         return;
     if (m_spindle.isMoving())
@@ -377,18 +391,63 @@ void SimulatedNm17x::cycle()
         m_sinceTpdoMs[n] = qMin(m_sinceTpdoMs[n] + kCycleMs, 1 << 20);
     if (m_state == NmtState::Operational)
         sendTpdos(false);
+    if (resting()) {
+        m_cycle.stop();
+        m_restClock.start();
+    }
+}
+
+// A cycle that would change nothing: no queued write, the spindle still, no disturbance, no
+// oscillation or key, and no TxPDO waiting for its inhibit time or sent by its event timer.
+bool SimulatedNm17x::resting() const
+{
+    if (!m_writes.isEmpty() || !m_spindle.resting() || m_glitchSteps != 0 || m_acceptedGlitch != 0
+        || m_glitchReadings != 0 || m_discarded != 0 || m_oscillating || m_externPosiRunning
+        || m_keyDown != 0)
+        return false;
+    if (m_state != NmtState::Operational)
+        return true;
+    const auto payloads = tpdoPayloads();
+    for (int n = 0; n < 2; ++n) {
+        const auto comm = quint16(0x1800 + n);
+        if (u32({ comm, 1 }) & kCobInvalid)
+            continue;
+        const quint32 type = u32({ comm, 2 });
+        if (type == 0xFE && u32({ comm, 5 }) > 0)
+            return false;
+        if (type == 0xFF && payloads[n] != m_lastTpdo[n])
+            return false;
+    }
+    return true;
+}
+
+void SimulatedNm17x::wake()
+{
+    if (!m_started || m_cycle.isActive())
+        return;
+    // The cycles of the rest count for the TxPDO inhibit and event times.
+    const int restedMs = int(qMin<qint64>(m_restClock.elapsed(), 1 << 20)) / kCycleMs * kCycleMs;
+    for (int n = 0; n < 2; ++n)
+        m_sinceTpdoMs[n] = qMin(m_sinceTpdoMs[n] + restedMs, 1 << 20);
+    m_sinceStartMs += restedMs;
+    m_cycle.start();
+}
+
+std::array<QByteArray, 2> SimulatedNm17x::tpdoPayloads() const
+{
+    const qint32 pos = position();
+    const quint16 status = statusWord();
+    return {
+        encodeTpdo1({ pos, status, errorWord() }),
+        encodeTpdo2({ pos, qint16(m_store->value({ 0x2501, 4 }).toUInt()), status }),
+    };
 }
 
 // TxPDO1/TxPDO2: 0xFF on change of data (event timer ignored), 0xFE cyclic per event timer,
 // both no more often than the inhibit time (ms); 1..240 every n-th SYNC.
 void SimulatedNm17x::sendTpdos(bool sync)
 {
-    const qint32 pos = position();
-    const quint16 status = statusWord();
-    const QByteArray payloads[2] = {
-        encodeTpdo1({ pos, status, errorWord() }),
-        encodeTpdo2({ pos, qint16(m_store->value({ 0x2501, 4 }).toUInt()), status }),
-    };
+    const auto payloads = tpdoPayloads();
     for (int n = 0; n < 2; ++n) {
         const auto comm = quint16(0x1800 + n);
         const quint32 cobId = u32({ comm, 1 });

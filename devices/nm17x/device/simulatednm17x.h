@@ -20,11 +20,13 @@
 #include "canopen/device/simulatednode.h"
 
 #include <QCanBusFrame>
+#include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
 #include <QQueue>
 #include <QTimer>
 
+#include <array>
 #include <memory>
 
 namespace db::nm17x {
@@ -44,7 +46,15 @@ public:
     quint32 serial() const { return m_serial; }
     canopen::NodeId nodeId() const { return m_node; }
     canopen::NmtState nmtState() const { return m_state; }
-    Spindle &spindle() { return m_spindle; }
+    // Changes through this reference are picked up by the next cycle.
+    Spindle &spindle()
+    {
+        wake();
+        return m_spindle;
+    }
+    // Whether the 10 ms cycle runs: it stops while a cycle would change nothing and starts again
+    // with a frame the display acts on, an operator action or a change to the spindle.
+    bool cycling() const { return m_cycle.isActive(); }
     bool inAddressingMode() const { return m_addressing; }
     // The node id offered by broadcast addressing and shown on the display (0 = none).
     quint8 offeredNodeId() const { return m_offered; }
@@ -94,6 +104,9 @@ private:
     bool selectForAddressing();
     void lssAnswer(quint8 cs, quint8 code);
     void cycle();
+    bool resting() const;
+    void wake();
+    std::array<QByteArray, 2> tpdoPayloads() const;
     void sendTpdos(bool sync);
     void raiseEmergency(quint16 code, quint8 subCode);
     void send(quint32 id, const QByteArray &data);
@@ -134,6 +147,7 @@ private:
     canopen::NmtState m_state = canopen::NmtState::BootUp;
     bool m_started = false;
     QTimer m_cycle;
+    QElapsedTimer m_restClock;
     QTimer m_heartbeat;
     Spindle m_spindle;
     double m_presetOffset = 0; // part of the spindle position set by presets (6003h)

@@ -45,6 +45,7 @@ double SimulatedNm17x::stepsToPosition(double steps) const
 
 void SimulatedNm17x::disturbSensor(double steps, int readings)
 {
+    wake();
     m_glitchSteps = steps;
     m_glitchReadings = qMax(0, readings);
 }
@@ -218,6 +219,7 @@ Result<void> SimulatedNm17x::checkWrite(ObjectAddress address, const QVariant &r
 
 Result<void> SimulatedNm17x::write(ObjectAddress address, const QVariant &raw)
 {
+    wake();
     if (!m_dictionary.contains(address))
         return Error(Error::Kind::InvalidArgument, tr("no such object"), abort::NoSuchObject);
     if (auto ok = checkWrite(address, raw); !ok)

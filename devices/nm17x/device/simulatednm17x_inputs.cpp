@@ -37,6 +37,7 @@ quint16 SimulatedNm17x::inputStatus() const
 
 void SimulatedNm17x::setInputs(bool f, bool g)
 {
+    wake();
     const bool oldF = m_inputF;
     const bool oldG = m_inputG;
     m_inputF = f;

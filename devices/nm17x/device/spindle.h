@@ -67,6 +67,8 @@ public:
     void setPosition(double position) { m_position = position; }
     Phase phase() const { return m_phase; }
     bool isMoving() const { return m_phase != Phase::Idle; }
+    // Nothing changes with time: standing, and no Er 4 being shown.
+    bool resting() const { return m_phase == Phase::Idle && m_er4Ms <= 0 && !m_newSwitchOff; }
     bool isJogging() const { return m_jog != 0; }
     int jogDirection() const { return m_jog; } // +1 right (counting up), -1 left, 0 none
     MotorModel &motor() { return m_model; }

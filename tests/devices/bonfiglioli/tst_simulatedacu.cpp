@@ -455,6 +455,24 @@ private Q_SLOTS:
         QCOMPARE(status() & 0x006F, 0x0023);
     }
 
+    void rampsStopWhileThePowerStageIsOff()
+    {
+        bonfiglioli::AcuMotion &motion = m_acu->motion();
+        QTRY_VERIFY(!motion.ticking()); // switch on disabled: nothing changes with time
+        QVERIFY(await(m_client->write(1454, 5, DataType::Integer16, qlonglong(1))).ok());
+        QVERIFY(enableOperation());
+        QVERIFY(motion.ticking());
+        QVERIFY(await(m_client->write(1455, 5, DataType::Integer32, qlonglong(10000000))).ok());
+        QVERIFY(control(0x001F));
+        QTRY_VERIFY_WITH_TIMEOUT(motion.velocity() > 0, 5000); // the positioning ramps up
+        QVERIFY(control(0x0006)); // ready to switch on: the power stage is off
+        QCOMPARE(motion.velocity(), 0.0);
+        QTRY_VERIFY(!motion.ticking());
+        const double position = motion.position();
+        QTest::qWait(50);
+        QCOMPARE(motion.position(), position);
+    }
+
     void controlWordToEepromIsCounted()
     {
         const quint64 before = m_acu->eepromWrites();

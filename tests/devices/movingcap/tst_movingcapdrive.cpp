@@ -56,6 +56,7 @@ private Q_SLOTS:
     void goWayIsRelativeToLastTarget();
     void repeatReverseOscillates();
     void statusChangedIsEmitted();
+    void realTimeRestsWhileNothingChanges();
 };
 
 void TestMovingCapDrive::unknownObjectIsRefused()
@@ -565,6 +566,33 @@ void TestMovingCapDrive::statusChangedIsEmitted()
     drive.write({ 0x6040, 0 }, u(6));
     QCOMPARE(spy.size(), 1);
     QCOMPARE(spy.at(0).at(0).value<quint16>(), quint16(0x0021));
+}
+
+void TestMovingCapDrive::realTimeRestsWhileNothingChanges()
+{
+    MovingCapDrive drive(resources::movingCapDictionary());
+    QVERIFY(drive.setSpeed(300));
+    drive.startRealTime(5);
+    // Without power and with nothing scheduled the timer stops; the drive's time still runs.
+    QTRY_VERIFY(!drive.ticking());
+    const double restStart = drive.time();
+    QTest::qWait(1000);
+    QVERIFY(!drive.ticking());
+    QVERIFY2(drive.time() >= restStart + 0.99, qPrintable(QString::number(drive.time())));
+
+    // A timed jog after the rest runs its whole time from its arrival: the rest is taken up
+    // before the command (a rest counted into the jog would end it after 0.2 s).
+    QVERIFY(drive.jog(1, 700));
+    QVERIFY(drive.ticking());
+    QTest::qWait(300);
+    QCOMPARE(drive.read({ 0x606C, 0 }).value().toLongLong(), 300);
+    QTRY_COMPARE_WITH_TIMEOUT(drive.read({ 0x606C, 0 }).value().toLongLong(), 0, 5000);
+
+    // Powered at standstill it keeps its timer (the axis holds its position); without power it
+    // rests again.
+    QVERIFY(drive.ticking());
+    QVERIFY(drive.powerQuit());
+    QTRY_VERIFY(!drive.ticking());
 }
 
 QTEST_GUILESS_MAIN(TestMovingCapDrive)

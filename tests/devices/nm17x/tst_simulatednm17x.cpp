@@ -33,6 +33,7 @@ private Q_SLOTS:
     void inputsStandardOscillateAndTravel();
     void heldKeyRunsAtTheKeyModeSpeed();
     void txPdo2OnChange();
+    void cycleRestsWhileNothingChanges();
     void faultsShowTheirErrors();
     void heartbeatLossStopsAndReports();
     void storeAndRestoreCommunicationObjects();
@@ -395,6 +396,32 @@ void TstSimulatedNm17x::txPdo2OnChange()
     QCOMPARE(f.size(), 1);
     QCOMPARE(decodeTpdo2(f.at(0).data)->position, 250);
     QVERIFY(line.takeId(0x1FF).isEmpty()); // TxPDO1 is off at delivery
+}
+
+void TstSimulatedNm17x::cycleRestsWhileNothingChanges()
+{
+    Line line({ Variant::Nm172 });
+    SimulatedNm17x *d = line.devices.at(0);
+    line.take();
+    line.send(0x67F, "2B011803E8030000"); // TxPDO2 inhibit time 1000 ms
+    QCOMPARE(line.takeId(0x5FF).size(), 1);
+    line.send(0x000, "017F");
+    QTRY_VERIFY(!line.frames.isEmpty());
+    QCOMPARE(line.takeId(0x2FF).size(), 1); // on entering Operational
+    // Nothing changes: the 10 ms cycle stops, and another node's traffic does not start it.
+    QTRY_VERIFY(!d->cycling());
+    line.send(0x605, "4000100000000000");
+    QVERIFY(!d->cycling());
+    QTest::qWait(1100);
+    // The rest counts for the inhibit time: a change after it goes out with the next cycle
+    // (with the rest not counted it would wait almost the whole second).
+    d->turnShaft(250);
+    QVERIFY(d->cycling());
+    QTRY_VERIFY_WITH_TIMEOUT(!line.frames.isEmpty(), 600);
+    const QList<Frame> sent = line.takeId(0x2FF);
+    QCOMPARE(sent.size(), 1);
+    QCOMPARE(decodeTpdo2(sent.at(0).data)->position, 250);
+    QTRY_VERIFY(!d->cycling());
 }
 
 void TstSimulatedNm17x::faultsShowTheirErrors()
