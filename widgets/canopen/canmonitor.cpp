@@ -6,6 +6,7 @@
 #include "framesender.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
+#include "widgets/common/statictextdelegate.h"
 #include "widgets/common/widgetstyle.h"
 
 #include <QCheckBox>
@@ -159,6 +160,8 @@ void CanMonitor::setupView()
 {
     m_view->setObjectName(QStringLiteral("frames"));
     m_view->setModel(m_filter);
+    // The table is repainted with every batch of frames: each row's texts are laid out once.
+    m_view->setItemDelegate(new StaticTextDelegate(m_view));
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setAlternatingRowColors(true);
     m_view->setShowGrid(false);
