@@ -167,7 +167,13 @@ void MovingCapDrive::catchUp()
 {
     if (!m_realTime || m_advancing)
         return;
-    const double elapsed = m_clock.restart() / 1000.0;
+    // Within one integration step the model is current enough: a client reading as fast as it
+    // can does not make the model step once per read.
+    const qint64 ns = m_clock.nsecsElapsed();
+    if (ns < qint64(kStepSeconds * 1e9))
+        return;
+    m_clock.restart();
+    const double elapsed = double(ns) / 1e9;
     // A stalled event loop does not jump a moving axis; a resting one takes the whole gap.
     advance(resting() ? elapsed : std::min(elapsed, kMaxRealTimeStep));
 }
