@@ -3,8 +3,8 @@
 // An item delegate for views whose rows are painted far more often than they change (logs that
 // scroll as lines arrive): each cell's text is laid out once and then drawn from a cache
 // (QStaticText), instead of being shaped again on every paint. Single-line plain text with the
-// model's font, colour and alignment; a text wider than its cell is elided at the right, as the
-// standard delegate does. Icons and check boxes are not drawn.
+// model's font, colour and alignment; a text wider than its cell is elided at the right, as
+// QStyledItemDelegate does. Icons and check boxes are not drawn.
 
 #include <QCache>
 #include <QFont>

@@ -369,7 +369,6 @@ void SimulatedNm17x::pressKey(int direction, int ms)
 
 void SimulatedNm17x::cycle()
 {
-    m_sinceStartMs += kCycleMs;
     // One queued SDO write reaches the application per cycle.
     if (!m_writes.isEmpty()) {
         const auto [address, raw] = m_writes.dequeue();
@@ -429,7 +428,6 @@ void SimulatedNm17x::wake()
     const int restedMs = int(qMin<qint64>(m_restClock.elapsed(), 1 << 20)) / kCycleMs * kCycleMs;
     for (int n = 0; n < 2; ++n)
         m_sinceTpdoMs[n] = qMin(m_sinceTpdoMs[n] + restedMs, 1 << 20);
-    m_sinceStartMs += restedMs;
     m_cycle.start();
 }
 

@@ -164,7 +164,6 @@ private:
     QByteArray m_lastTpdo[2];
     int m_sinceTpdoMs[2] = { 1 << 20, 1 << 20 };
     int m_syncCount[2] = { 0, 0 };
-    int m_sinceStartMs = 0;
     // LSS broadcast addressing
     int m_broadcastStep = 0; // 40h EC, 41h/42h/43h FFFFFFFF seen in order
     bool m_addressing = false;
