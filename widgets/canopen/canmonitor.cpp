@@ -6,6 +6,7 @@
 #include "framesender.h"
 #include "transport/canbus.h"
 #include "widgets/common/flowlayout.h"
+#include "widgets/common/quietscrollbar.h"
 #include "widgets/common/statictextdelegate.h"
 #include "widgets/common/widgetstyle.h"
 
@@ -162,6 +163,7 @@ void CanMonitor::setupView()
     m_view->setModel(m_filter);
     // The table is repainted with every batch of frames: each row's texts are laid out once.
     m_view->setItemDelegate(new StaticTextDelegate(m_view));
+    QuietScrollBar::install(m_view);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setAlternatingRowColors(true);
     m_view->setShowGrid(false);
