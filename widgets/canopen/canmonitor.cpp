@@ -105,6 +105,9 @@ QWidget *CanMonitor::createToolBar()
     m_autoscroll->setChecked(true);
     m_status = new QLabel(bar);
     m_status->setObjectName(QStringLiteral("status"));
+    // Its own background: the count changes with every batch of frames, and a label without one
+    // has the dock and the window beneath it repainted each time.
+    m_status->setAutoFillBackground(true);
     row->addWidget(m_pauseButton);
     row->addWidget(clearButton);
     row->addWidget(saveButton);

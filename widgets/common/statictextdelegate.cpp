@@ -21,13 +21,16 @@ const QStaticText &StaticTextDelegate::laidOut(const QString &text, const QFont 
     Key key { text, font.key(), width };
     if (const QStaticText *hit = m_cache.object(key))
         return *hit;
-    const QFontMetrics metrics(font);
-    auto *laid = new QStaticText(metrics.horizontalAdvance(text) > width
-                                     ? metrics.elidedText(text, Qt::ElideRight, width)
-                                     : text);
+    // Laid out once; measured from the layout (a text that does not fit is laid out again,
+    // elided).
+    auto *laid = new QStaticText(text);
     laid->setTextFormat(Qt::PlainText);
     laid->setPerformanceHint(QStaticText::AggressiveCaching);
     laid->prepare(QTransform(), font);
+    if (laid->size().width() > width) {
+        laid->setText(QFontMetrics(font).elidedText(text, Qt::ElideRight, width));
+        laid->prepare(QTransform(), font);
+    }
     m_cache.insert(key, laid);
     return *m_cache.object(key);
 }
