@@ -34,6 +34,14 @@ void settle()
     }
 }
 
+// Rows for QScrollBar (what the quiet one saves) and QuietScrollBar.
+void bothBars()
+{
+    QTest::addColumn<bool>("quiet");
+    QTest::newRow("QScrollBar") << false;
+    QTest::newRow("QuietScrollBar") << true;
+}
+
 } // namespace
 
 class TestQuietScrollBar : public QObject
@@ -69,9 +77,7 @@ void TestQuietScrollBar::show(QScrollBar *bar, QWidget &window, PaintCounter &co
 
 void TestQuietScrollBar::growingLogAtTheBottomIsNotRepainted_data()
 {
-    QTest::addColumn<bool>("quiet");
-    QTest::newRow("QScrollBar") << false;
-    QTest::newRow("QuietScrollBar") << true;
+    bothBars();
 }
 
 void TestQuietScrollBar::growingLogAtTheBottomIsNotRepainted()
@@ -180,9 +186,7 @@ void TestQuietScrollBar::repaintsAreCopies()
 
 void TestQuietScrollBar::growingTableRepaintsOnlyItsRows_data()
 {
-    QTest::addColumn<bool>("quiet");
-    QTest::newRow("QScrollBar") << false;
-    QTest::newRow("QuietScrollBar") << true;
+    bothBars();
 }
 
 // A log table wider and longer than its view (both scroll bars shown) that follows its last
