@@ -15,6 +15,9 @@ QuietScrollBar::QuietScrollBar(Qt::Orientation orientation, QWidget *parent)
 
 void QuietScrollBar::install(QAbstractItemView *view)
 {
+    // Styles whose bars appear only while scrolling draw them over the rows: not opaque.
+    if (view->style()->styleHint(QStyle::SH_ScrollBar_Transient, nullptr, view))
+        return;
     view->setVerticalScrollBar(new QuietScrollBar(Qt::Vertical, view));
     view->setHorizontalScrollBar(new QuietScrollBar(Qt::Horizontal, view));
     // Taking a bar in clears the attribute.

@@ -22,7 +22,8 @@ class QuietScrollBar : public QScrollBar
 public:
     explicit QuietScrollBar(Qt::Orientation orientation, QWidget *parent = nullptr);
 
-    // Puts quiet scroll bars into `view` in place of its own.
+    // Puts quiet scroll bars into `view` in place of its own (not with a style whose scroll bars
+    // appear over the contents only while scrolling).
     static void install(class QAbstractItemView *view);
 
     // Pictures drawn by the style so far (the others were copies of the last one).
