@@ -82,7 +82,6 @@ void QuietScrollBar::paintEvent(QPaintEvent *event)
             QPainter painter(this);
             painter.fillRect(rect(), palette().window());
         }
-        m_picture = QPixmap();
         ++m_drawn;
         QScrollBar::paintEvent(event);
         return;
@@ -93,7 +92,7 @@ void QuietScrollBar::paintEvent(QPaintEvent *event)
     option.activeSubControls = QStyle::SC_None;
     const Picture of { m_painted,          size(), int(option.state), palette().cacheKey(), style(),
                        devicePixelRatioF() };
-    if (m_picture.isNull() || !(of == m_pictureOf)) {
+    if (m_picture.isNull() || of != m_pictureOf) {
         QPixmap picture(size() * of.ratio);
         picture.setDevicePixelRatio(of.ratio);
         picture.fill(palette().color(QPalette::Window));
