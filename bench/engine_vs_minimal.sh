@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
 # Round trips/s of our engine against those of the smallest client we can write (plain C++ and
-# POSIX sockets, bench/minimal), on the same link to the same device, measured side by side:
-# the two run in alternation (the order swapped every run, so drift of a shared machine's load
-# hits both alike), --runs times each.
-#   RefGo:  refgo_minimal       vs refgo_bench --engine-only          (RefgoClient::objectRead)
-#   SDO:    sdo_minimal         vs canopen_sdo_bench --expedited-only (SdoClient expedited upload)
+# POSIX sockets, bench/minimal), on the same link to the same device, measured side by side,
+# with a third client between them: the same exchange on Qt's event loop with no protocol code
+# (qtloop_minimal), the floor of any engine built on that loop. The three run in turn (the
+# order rotated every run, so drift of a shared machine's load hits all alike), --runs times
+# each.
+#   RefGo:  refgo_minimal  qtloop_minimal  refgo_bench --engine-only          (RefgoClient::objectRead)
+#   SDO:    sdo_minimal    qtloop_minimal  canopen_sdo_bench --expedited-only (SdoClient expedited upload)
 # Without --uri it starts `drivebench-sim movingcap` on loopback (OS-chosen ports) and measures
 # both of its doors; with --uri (repeatable: refgo://HOST:PORT, canopen+slcan://HOST:PORT?node=N)
 # those devices instead. Prints per link the median (min..max) of each side and of the per-run
 # ratio engine/minimal (the goal is >= 0.90), and each client's own CPU time per round trip (its
 # cost, which the load of a shared machine hardly changes). --rt runs the clients (and the
 # simulator it starts) with real-time priority (chrt -f 20, as root): on a machine busy with
-# other work this stands in for an idle one.
+# other work this stands in for an idle one. --phases then runs each client once more with
+# bench/minimal/libroundtrip_phases.so preloaded and prints where its round trip went (the
+# client's own work between answer and request, the write, the wait, the read), per round trip.
 #
 #   bench/engine_vs_minimal.sh [--build DIR] [--uri URI]... [--runs N] [--count N] [--object I:S]
-#                              [--rt]
+#                              [--rt] [--phases]
 set -euo pipefail
 
 build=build
@@ -23,6 +27,7 @@ runs=7
 count=20000
 object=6041:0
 rt=()
+phases=0
 
 while (($#)); do
     case "$1" in
@@ -32,12 +37,13 @@ while (($#)); do
     --count) count=$2; shift 2 ;;
     --object) object=$2; shift 2 ;;
     --rt) rt=(chrt -f 20); shift ;;
-    -h | --help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --phases) phases=1; shift ;;
+    -h | --help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "engine_vs_minimal: unknown option $1 (see --help)" >&2; exit 2 ;;
     esac
 done
 for tool in app/drivebench-sim bench/minimal/refgo_minimal bench/minimal/sdo_minimal \
-    bench/refgo/refgo_bench bench/canopen/canopen_sdo_bench; do
+    bench/minimal/qtloop_minimal bench/refgo/refgo_bench bench/canopen/canopen_sdo_bench; do
     [[ -x $build/$tool ]] || { echo "engine_vs_minimal: no $build/$tool (--build DIR)" >&2; exit 2; }
 done
 
@@ -76,9 +82,10 @@ summary() {
         printf "%s (%s..%s)", m, v[1], v[NR] }'
 }
 
-echo "engine_vs_minimal: $runs alternating runs of $count round trips each, object $object; median (min..max); $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)${rt:+; real-time priority}"
-printf '%-42s %-22s %-22s %-20s %-18s %s\n' link "minimal /s" "engine /s" "engine/minimal" \
-    "minimal cpu us" "engine cpu us"
+echo "engine_vs_minimal: $runs runs in turn of $count round trips each, object $object; median (min..max); $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)${rt:+; real-time priority}"
+printf '%-42s %-22s %-22s %-22s %-20s %-20s %-20s %-18s %-18s %s\n' link "minimal /s" "qt loop /s" \
+    "engine /s" "engine/minimal" "qt loop/minimal" "engine/qt loop" "minimal cpu us" \
+    "qt loop cpu us" "engine cpu us"
 for uri in "${uris[@]}"; do
     case "$uri" in
     refgo://*)
@@ -89,18 +96,31 @@ for uri in "${uris[@]}"; do
         engine=("$build/bench/canopen/canopen_sdo_bench" --expedited-only --uri "$uri" --count "$count" --object "$object") ;;
     *) echo "engine_vs_minimal: no minimal client for $uri" >&2; exit 2 ;;
     esac
+    qtloop=("$build/bench/minimal/qtloop_minimal" --uri "$uri" --count "$count" --object "$object")
     : >"$work/runs"
     for i in $(seq "$runs"); do
-        if ((i % 2)); then
-            m=$(measure "${minimal[@]}"); e=$(measure "${engine[@]}")
-        else
-            e=$(measure "${engine[@]}"); m=$(measure "${minimal[@]}")
-        fi
-        [[ -n $m && -n $e ]] || { echo "engine_vs_minimal: no figures from a run on $uri" >&2; exit 1; }
-        awk -v m="$m" -v e="$e" 'BEGIN { split(m, a, " "); split(e, b, " ")
-            printf "%d %d %.3f %.1f %.1f\n", a[1], b[1], b[1] / a[1], a[2], b[2] }' >>"$work/runs"
+        case $((i % 3)) in
+        1) m=$(measure "${minimal[@]}"); q=$(measure "${qtloop[@]}"); e=$(measure "${engine[@]}") ;;
+        2) q=$(measure "${qtloop[@]}"); e=$(measure "${engine[@]}"); m=$(measure "${minimal[@]}") ;;
+        0) e=$(measure "${engine[@]}"); m=$(measure "${minimal[@]}"); q=$(measure "${qtloop[@]}") ;;
+        esac
+        [[ -n $m && -n $q && -n $e ]] || { echo "engine_vs_minimal: no figures from a run on $uri" >&2; exit 1; }
+        awk -v m="$m" -v q="$q" -v e="$e" 'BEGIN { split(m, a, " "); split(q, c, " "); split(e, b, " ")
+            printf "%d %d %d %.3f %.3f %.3f %.1f %.1f %.1f\n", a[1], c[1], b[1], b[1] / a[1],
+                c[1] / a[1], b[1] / c[1], a[2], c[2], b[2] }' >>"$work/runs"
     done
-    printf '%-42s %-22s %-22s %-20s %-18s %s\n' "$uri" "$(summary 1 <"$work/runs")" \
-        "$(summary 2 <"$work/runs")" "$(summary 3 <"$work/runs")" "$(summary 4 <"$work/runs")" \
-        "$(summary 5 <"$work/runs")"
+    line=$(printf '%-42s' "$uri")
+    for column in 1 2 3; do line+=$(printf ' %-22s' "$(summary $column <"$work/runs")"); done
+    for column in 4 5 6; do line+=$(printf ' %-20s' "$(summary $column <"$work/runs")"); done
+    for column in 7 8 9; do line+=$(printf ' %-18s' "$(summary $column <"$work/runs")"); done
+    echo "$line"
+    if ((phases)); then
+        for client in minimal qtloop engine; do
+            declare -n command=$client
+            out=$(LD_PRELOAD=$(realpath "$build/bench/minimal/libroundtrip_phases.so") "${rt[@]}" \
+                "${command[@]}" 2>&1) || { echo "engine_vs_minimal: failed: ${command[*]}: $out" >&2; exit 1; }
+            printf '  %-8s %s\n' "$client" "$(sed -n 's/^round-trip phases //p' <<<"$out" | tail -1)"
+            unset -n command
+        done
+    fi
 done

@@ -92,10 +92,14 @@ while read -r u; do [[ -n $u ]] && evm+=(--uri "$u"); done < <(uris_of 'refgo://
 if ((${#uris[@]} == 0 || ${#evm[@]} > 6 + ${#rt[@]})); then
     bench engine_vs_minimal 1 '
         $1 ~ /^refgo:/ { p = "RefGo" } $1 ~ /^canopen/ { p = "SDO" }
-        $1 ~ /:\/\// { gsub(/[()]/, ""); split($3, a, /\.\./); split($5, e, /\.\./); split($7, r, /\.\./)
+        $1 ~ /:\/\// { gsub(/[()]/, ""); split($3, a, /\.\./); split($5, q, /\.\./); split($7, e, /\.\./)
+            split($9, r, /\.\./); split($11, f, /\.\./); split($13, g, /\.\./)
             print b "|" p " minimal client|" $2 "|" a[1] "|" a[2] "|round trips/s"
-            print b "|" p " engine|" $4 "|" e[1] "|" e[2] "|round trips/s"
-            print b "|" p " engine/minimal|" $6 "|" r[1] "|" r[2] "|ratio" }' \
+            print b "|" p " Qt loop client|" $4 "|" q[1] "|" q[2] "|round trips/s"
+            print b "|" p " engine|" $6 "|" e[1] "|" e[2] "|round trips/s"
+            print b "|" p " engine/minimal|" $8 "|" r[1] "|" r[2] "|ratio"
+            print b "|" p " Qt loop/minimal|" $10 "|" f[1] "|" f[2] "|ratio"
+            print b "|" p " engine/Qt loop|" $12 "|" g[1] "|" g[2] "|ratio" }' \
         "$here/engine_vs_minimal.sh" "${evm[@]}"
 fi
 
