@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#include <cstring>
+
 namespace {
 // The context of this file's translated messages.
 struct Tr
@@ -58,9 +60,14 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
         }
         if (n == 0)
             return;
-        const QByteArray bytes(m_readChunk.get(), n);
-        qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
-        deliver(bytes);
+        // The bytes go out in one array that is kept for the next read: resize() reuses its
+        // storage unless a receiver kept a copy, which it then leaves to that receiver. A
+        // receiver that runs an event loop of its own gets no further read meanwhile (the
+        // socket does not emit readyRead() inside its own readyRead()).
+        m_received.resize(n);
+        std::memcpy(m_received.data(), m_readChunk.get(), size_t(n));
+        qCDebug(lcTcpRaw) << peerName() << "<-" << m_received;
+        deliver(m_received);
     });
 }
 

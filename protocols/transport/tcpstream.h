@@ -51,6 +51,7 @@ private:
     QTcpSocket m_socket;
     QTimer m_connectTimer;
     std::unique_ptr<char[]> m_readChunk; // kReadBufferBytes, reused for every read
+    QByteArray m_received; // what a read delivers; its storage is reused
     bool m_writing = false; // inside m_socket.write(): socket errors wait for the event loop
 };
 

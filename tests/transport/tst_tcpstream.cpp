@@ -21,6 +21,7 @@ private Q_SLOTS:
     void reopensAfterClose();
     void writeIsOnTheWireWhenWriteReturns();
     void floodArrivesInBoundedChunks();
+    void keptBytesStayAsTheyCame();
 };
 
 void TestTcpStream::opensAndCarriesBytesBothWays()
@@ -159,4 +160,28 @@ void TestTcpStream::floodArrivesInBoundedChunks()
     QTRY_COMPARE(all.size(), flood.size());
     QCOMPARE(all, flood);
     QVERIFY(largest <= TcpStream::kReadBufferBytes);
+}
+
+// Every read is delivered in the same array when nobody keeps it; a receiver that keeps a copy
+// must still see its bytes unchanged after later reads.
+void TestTcpStream::keptBytesStayAsTheyCame()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    QByteArrayList kept;
+    connect(&stream, &ByteStream::received, this, [&kept](const QByteArray &b) { kept += b; });
+    stream.open();
+    QVERIFY(opened.wait(3000));
+    QTRY_VERIFY(server.hasPendingConnections());
+    QTcpSocket *peer = server.nextPendingConnection();
+    const QByteArrayList sent { "OR6041,0,1591\r\n>", "x", "OR6064,0,-120000\r\n>" };
+    for (const QByteArray &bytes : sent) {
+        const qsizetype before = kept.size();
+        peer->write(bytes);
+        QTRY_VERIFY(kept.size() > before);
+    }
+    QCOMPARE(kept.join(), sent.join());
+    QCOMPARE(kept, sent);
 }
