@@ -82,15 +82,14 @@ void SlcanBus::doClose()
 
 void SlcanBus::doSend(const QCanBusFrame &frame)
 {
-    const QByteArray line = slcan::encodeFrame(frame);
-    if (line.isEmpty()) {
+    if (!slcan::encodeFrameInto(frame, m_sendLine)) {
         Q_EMIT warning(Tr::tr("%1: cannot send frame %2 over slcan (FD, error frame or "
                               "more than 8 bytes)")
                            .arg(name(), frame.toString()));
         return;
     }
-    qCDebug(lcSlcanRaw) << name() << "->" << line;
-    m_stream->write(line);
+    qCDebug(lcSlcanRaw) << name() << "->" << m_sendLine;
+    m_stream->write(m_sendLine);
     reportSent(frame);
 }
 

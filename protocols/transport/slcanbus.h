@@ -61,6 +61,7 @@ private:
     int m_bitrate;
     slcan::Decoder m_decoder;
     QByteArray m_backlog; // received, not decoded yet
+    QByteArray m_sendLine; // the line of the frame being sent; its storage is reused
     qsizetype m_peakBacklog = 0;
     bool m_skipping = false; // dropping the rest of a line that did not fit
     bool m_drainScheduled = false;

@@ -1,6 +1,7 @@
 #include "slcancodec.h"
 
 #include <array>
+#include <cstring>
 
 namespace db::slcan {
 
@@ -227,14 +228,16 @@ void Decoder::reset()
     m_overflow = false;
 }
 
-QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timestamp)
+bool encodeFrameInto(const QCanBusFrame &frame, QByteArray &line, std::optional<quint16> timestamp)
 {
     const bool remote = frame.frameType() == QCanBusFrame::RemoteRequestFrame;
     const QByteArray payload = frame.payload();
     if ((frame.frameType() != QCanBusFrame::DataFrame && !remote)
-        || frame.hasFlexibleDataRateFormat() || payload.size() > 8)
-        return {};
-    // Written digit by digit into one allocation: this runs for every frame sent.
+        || frame.hasFlexibleDataRateFormat() || payload.size() > 8) {
+        line.resize(0);
+        return false;
+    }
+    // Written digit by digit: this runs for every frame sent.
     static constexpr char kDigits[] = "0123456789ABCDEF";
     const bool extended = frame.hasExtendedFrameFormat();
     const int idDigits = extended ? 8 : 3;
@@ -256,7 +259,16 @@ QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timesta
             text[n++] = kDigits[(*timestamp >> shift) & 0xF];
     }
     text[n++] = kCr;
-    return QByteArray(text, n);
+    line.resize(n);
+    std::memcpy(line.data(), text, size_t(n));
+    return true;
+}
+
+QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timestamp)
+{
+    QByteArray line;
+    encodeFrameInto(frame, line, timestamp);
+    return line;
 }
 
 QByteArray encodeCommand(char command, const QByteArray &argument)

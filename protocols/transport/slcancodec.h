@@ -81,6 +81,10 @@ Message parseLine(QByteArrayView line);
 // "t63284041600000000000\r": uppercase hex, terminator included; timestamp appended when given.
 // Frames that cannot be expressed (FD, error frames, more than 8 bytes) give an empty array.
 QByteArray encodeFrame(const QCanBusFrame &frame, std::optional<quint16> timestamp = {});
+// The same into `line`, whose storage is reused when nothing else holds it (no allocation per
+// frame); false, and `line` empty, for a frame that cannot be expressed.
+bool encodeFrameInto(const QCanBusFrame &frame, QByteArray &line,
+                     std::optional<quint16> timestamp = {});
 // "S4\r", "O\r"
 QByteArray encodeCommand(char command, const QByteArray &argument = {});
 

@@ -26,6 +26,7 @@ private Q_SLOTS:
     void encodeFrames_data();
     void encodeFrames();
     void encodeRejectsFd();
+    void encodeIntoReusesItsLine();
     void bitrateCodes();
 };
 
@@ -286,6 +287,25 @@ void TestSlcanCodec::encodeRejectsFd()
     fd.setFlexibleDataRateFormat(true);
     QVERIFY(slcan::encodeFrame(fd).isEmpty());
     QCOMPARE(slcan::encodeCommand('S', "4"), QByteArray("S4\r"));
+}
+
+// The sender encodes every frame into the same line: a shorter frame after a longer one must not
+// keep the longer one's tail, a copy someone kept must stay as it was, and a frame that cannot be
+// sent leaves the line empty.
+void TestSlcanCodec::encodeIntoReusesItsLine()
+{
+    QByteArray line;
+    QVERIFY(slcan::encodeFrameInto(QCanBusFrame(0x632, QByteArray::fromHex("4041600000000000")),
+                                   line, quint16(0x1234)));
+    QCOMPARE(line, QByteArray("t632840416000000000001234\r"));
+    const QByteArray kept = line;
+    QVERIFY(slcan::encodeFrameInto(QCanBusFrame(0x080, QByteArray()), line));
+    QCOMPARE(line, QByteArray("t0800\r"));
+    QCOMPARE(kept, QByteArray("t632840416000000000001234\r"));
+    QCanBusFrame fd(0x123, QByteArray(12, 'a'));
+    fd.setFlexibleDataRateFormat(true);
+    QVERIFY(!slcan::encodeFrameInto(fd, line));
+    QVERIFY(line.isEmpty());
 }
 
 void TestSlcanCodec::bitrateCodes()
