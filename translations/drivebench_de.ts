@@ -5555,6 +5555,10 @@ Exit-Codes: 0 ok, 1 Fehler, 2 Aufruf, 3 Verbindung, 4 Zeitüberschreitung, 5 feh
         <source>cannot use %1 interface &apos;%2&apos;: %3 (available: %4)</source>
         <translation>%1-Schnittstelle „%2“ ist nicht verwendbar: %3 (vorhanden: %4)</translation>
     </message>
+    <message>
+        <source>%1: cannot take over the connection: %2</source>
+        <translation>%1: Verbindung kann nicht übernommen werden: %2</translation>
+    </message>
 </context>
 <context>
     <name>db::vabus</name>

@@ -11,7 +11,8 @@
 //   wake->read       from poll's return to the read
 //   read             the read (a blocking client waits in it)
 //   round trip       from one request's write to the next
-// Only sockets count (looked up once per descriptor); the event loop's eventfd and files do not.
+// Only sockets count (read/write looked up once per descriptor; recv/send are sockets' own);
+// the event loop's eventfd and files do not.
 //   LD_PRELOAD=build/bench/minimal/libroundtrip_phases.so CLIENT ARGS...
 #include <dlfcn.h>
 #include <poll.h>
@@ -28,6 +29,8 @@ namespace {
 
 using ReadFn = ssize_t (*)(int, void *, size_t);
 using WriteFn = ssize_t (*)(int, const void *, size_t);
+using RecvFn = ssize_t (*)(int, void *, size_t, int);
+using SendFn = ssize_t (*)(int, const void *, size_t, int);
 using PollFn = int (*)(pollfd *, nfds_t, int);
 using PpollFn = int (*)(pollfd *, nfds_t, const timespec *, const sigset_t *);
 
@@ -61,6 +64,8 @@ struct State
     signed char socketFd[kFds] = {}; // 0 not looked up, 1 a socket, -1 something else
     ReadFn realRead = nullptr;
     WriteFn realWrite = nullptr;
+    RecvFn realRecv = nullptr;
+    SendFn realSend = nullptr;
     PollFn realPoll = nullptr;
     PpollFn realPpoll = nullptr;
 
@@ -70,6 +75,8 @@ struct State
             p->ns.reserve(kSamples);
         realRead = reinterpret_cast<ReadFn>(dlsym(RTLD_NEXT, "read"));
         realWrite = reinterpret_cast<WriteFn>(dlsym(RTLD_NEXT, "write"));
+        realRecv = reinterpret_cast<RecvFn>(dlsym(RTLD_NEXT, "recv"));
+        realSend = reinterpret_cast<SendFn>(dlsym(RTLD_NEXT, "send"));
         realPoll = reinterpret_cast<PollFn>(dlsym(RTLD_NEXT, "poll"));
         realPpoll = reinterpret_cast<PpollFn>(dlsym(RTLD_NEXT, "ppoll"));
     }
@@ -86,6 +93,37 @@ struct State
             socketFd[fd] = fstat(fd, &s) == 0 && S_ISSOCK(s.st_mode) ? 1 : -1;
         }
         return socketFd[fd] == 1;
+    }
+    // The phases around one read or write on a socket; `call` makes it.
+    template<typename Call>
+    ssize_t timedRead(Call call)
+    {
+        const long long start = nowNs();
+        if (lastWake)
+            wakeToRead.add(start - lastWake);
+        lastWake = 0;
+        const ssize_t n = call();
+        const long long end = nowNs();
+        if (n > 0) {
+            read.add(end - start);
+            lastRead = end;
+        }
+        return n;
+    }
+    template<typename Call>
+    ssize_t timedWrite(Call call)
+    {
+        const long long start = nowNs();
+        if (lastRead)
+            answerToRequest.add(start - lastRead);
+        if (lastWriteStart)
+            roundTrip.add(start - lastWriteStart);
+        lastRead = 0;
+        lastWriteStart = start;
+        const ssize_t n = call();
+        lastWriteEnd = nowNs();
+        write.add(lastWriteEnd - start);
+        return n;
     }
     void beforeWait()
     {
@@ -140,17 +178,13 @@ ssize_t read(int fd, void *buffer, size_t size)
     State &s = state();
     if (!s.isSocket(fd))
         return s.realRead(fd, buffer, size);
-    const long long start = nowNs();
-    if (s.lastWake)
-        s.wakeToRead.add(start - s.lastWake);
-    s.lastWake = 0;
-    const ssize_t n = s.realRead(fd, buffer, size);
-    const long long end = nowNs();
-    if (n > 0) {
-        s.read.add(end - start);
-        s.lastRead = end;
-    }
-    return n;
+    return s.timedRead([&] { return s.realRead(fd, buffer, size); });
+}
+
+ssize_t recv(int fd, void *buffer, size_t size, int flags)
+{
+    State &s = state();
+    return s.timedRead([&] { return s.realRecv(fd, buffer, size, flags); });
 }
 
 ssize_t write(int fd, const void *buffer, size_t size)
@@ -158,17 +192,13 @@ ssize_t write(int fd, const void *buffer, size_t size)
     State &s = state();
     if (!s.isSocket(fd))
         return s.realWrite(fd, buffer, size);
-    const long long start = nowNs();
-    if (s.lastRead)
-        s.answerToRequest.add(start - s.lastRead);
-    if (s.lastWriteStart)
-        s.roundTrip.add(start - s.lastWriteStart);
-    s.lastRead = 0;
-    s.lastWriteStart = start;
-    const ssize_t n = s.realWrite(fd, buffer, size);
-    s.lastWriteEnd = nowNs();
-    s.write.add(s.lastWriteEnd - start);
-    return n;
+    return s.timedWrite([&] { return s.realWrite(fd, buffer, size); });
+}
+
+ssize_t send(int fd, const void *buffer, size_t size, int flags)
+{
+    State &s = state();
+    return s.timedWrite([&] { return s.realSend(fd, buffer, size, flags); });
 }
 
 int poll(pollfd *fds, nfds_t count, int timeoutMs)

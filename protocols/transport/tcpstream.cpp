@@ -3,7 +3,14 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#include <cerrno>
 #include <cstring>
+
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace {
 // The context of this file's translated messages.
@@ -11,6 +18,11 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(db::transport)
 };
+
+bool wouldBlock(int code)
+{
+    return code == EAGAIN || code == EWOULDBLOCK || code == EINTR;
+}
 } // namespace
 
 namespace db {
@@ -35,40 +47,16 @@ TcpStream::TcpStream(const QString &host, quint16 port, QObject *parent)
                             .arg(m_connectTimeoutMs)));
     });
     connect(&m_socket, &QTcpSocket::connected, this, &TcpStream::onConnected);
-    connect(&m_socket, &QTcpSocket::errorOccurred, this,
-            [this](QAbstractSocket::SocketError error) {
-                if (!m_writing) {
-                    onSocketError(error);
-                    return;
-                }
-                QTimer::singleShot(0, this, [this, error] { onSocketError(error); });
-            });
+    connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpStream::onSocketError);
     connect(&m_socket, &QTcpSocket::disconnected, this, &TcpStream::onDisconnected);
-    // One read of at most kReadBufferBytes per pass; what is left makes readyRead come again.
-    connect(&m_socket, &QTcpSocket::readyRead, this, [this] {
-        const qint64 n = m_socket.read(m_readChunk.get(), kReadBufferBytes);
-        if (n < 0) {
-            // An unbuffered socket reports the peer's close (or a reset) only here, with no
-            // disconnected() signal.
-            const auto error = m_socket.error();
-            m_socket.abort();
-            if (state() == State::Closing)
-                setClosed();
-            else
-                setClosed(describe(error));
-            return;
-        }
-        if (n == 0)
-            return;
-        // The bytes go out in one array that is kept for the next read: resize() reuses its
-        // storage unless a receiver kept a copy, which it then leaves to that receiver. A
-        // receiver that runs an event loop of its own gets no further read meanwhile (the
-        // socket does not emit readyRead() inside its own readyRead()).
-        m_received.resize(n);
-        std::memcpy(m_received.data(), m_readChunk.get(), size_t(n));
-        qCDebug(lcTcpRaw) << peerName() << "<-" << m_received;
-        deliver(m_received);
-    });
+}
+
+TcpStream::~TcpStream()
+{
+    // Nothing of the socket reaches this object any more: its destructor still emits
+    // disconnected() after the timer member is gone.
+    m_socket.disconnect(this);
+    release();
 }
 
 QString TcpStream::peerName() const
@@ -87,34 +75,138 @@ void TcpStream::doOpen()
 void TcpStream::doClose()
 {
     m_connectTimer.stop();
+    if (m_fd >= 0) {
+        // The kernel sends what it has taken before it closes; only bytes it never took (a
+        // peer that stopped reading) are dropped.
+        if (!m_unsent.isEmpty())
+            qCDebug(lcTcp) << peerName() << "closed with" << m_unsent.size() << "bytes unsent";
+        release();
+        setClosed();
+        return;
+    }
     if (m_socket.state() == QAbstractSocket::UnconnectedState) {
         setClosed();
         return;
     }
-    m_socket.disconnectFromHost(); // flushes queued bytes; disconnected() follows
-    if (m_socket.state() == QAbstractSocket::UnconnectedState)
-        setClosed();
+    m_socket.abort(); // still connecting: nothing to send
+    setClosed();
 }
 
 void TcpStream::doWrite(const QByteArray &bytes)
 {
     qCDebug(lcTcpRaw) << peerName() << "->" << bytes;
-    m_writing = true;
-    m_socket.write(bytes);
-    m_writing = false;
+    if (m_fd < 0 || m_writeError)
+        return;
+    if (!m_unsent.isEmpty()) {
+        m_unsent += bytes;
+        return;
+    }
+    const ssize_t n = ::send(m_fd, bytes.constData(), size_t(bytes.size()), MSG_NOSIGNAL);
+    if (n == bytes.size())
+        return;
+    if (n < 0 && !wouldBlock(errno)) {
+        m_writeError = errno; // reported from the loop: the socket is writable at once
+    } else {
+        m_unsent = bytes.mid(qMax<qsizetype>(n, 0));
+    }
+    m_writable->setEnabled(true);
 }
 
 void TcpStream::onConnected()
 {
     m_connectTimer.stop();
-    m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
-    m_socket.setSocketOption(QAbstractSocket::KeepAliveOption, 1);
+    // A descriptor of our own; then the socket closes its own (a plain close, no shutdown: the
+    // connection lives on in ours).
+    const int fd = ::fcntl(int(m_socket.socketDescriptor()), F_DUPFD_CLOEXEC, 0);
+    if (fd < 0) {
+        const Error e(Error::Kind::Io,
+                      Tr::tr("%1: cannot take over the connection: %2")
+                          .arg(peerName(), QString::fromLocal8Bit(std::strerror(errno))));
+        m_handingOver = true;
+        m_socket.abort();
+        m_handingOver = false;
+        setClosed(e);
+        return;
+    }
+    m_handingOver = true;
+    m_socket.abort();
+    m_handingOver = false;
+    m_fd = fd;
+    const int one = 1;
+    ::setsockopt(m_fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    ::setsockopt(m_fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
+    ::fcntl(m_fd, F_SETFL, ::fcntl(m_fd, F_GETFL) | O_NONBLOCK);
+    m_readable = std::make_unique<QSocketNotifier>(qintptr(m_fd), QSocketNotifier::Read);
+    connect(m_readable.get(), &QSocketNotifier::activated, this, &TcpStream::onReadable);
+    m_writable = std::make_unique<QSocketNotifier>(qintptr(m_fd), QSocketNotifier::Write);
+    m_writable->setEnabled(false);
+    connect(m_writable.get(), &QSocketNotifier::activated, this, &TcpStream::onWritable);
     qCDebug(lcTcp) << "connected to" << peerName();
     setOpened();
 }
 
+void TcpStream::onReadable()
+{
+    // One read of at most kReadBufferBytes per pass; what is left wakes the notifier again.
+    const ssize_t n = ::recv(m_fd, m_readChunk.get(), size_t(kReadBufferBytes), 0);
+    if (n > 0) {
+        // The bytes go out in one array that is kept for the next read: resize() reuses its
+        // storage unless a receiver kept a copy, which it then leaves to that receiver.
+        m_received.resize(n);
+        std::memcpy(m_received.data(), m_readChunk.get(), size_t(n));
+        qCDebug(lcTcpRaw) << peerName() << "<-" << m_received;
+        deliver(m_received);
+        return;
+    }
+    if (n < 0 && wouldBlock(errno))
+        return;
+    fail(n == 0 ? 0 : errno); // 0: the peer closed the connection
+}
+
+void TcpStream::onWritable()
+{
+    if (m_writeError) {
+        fail(m_writeError);
+        return;
+    }
+    const ssize_t n = ::send(m_fd, m_unsent.constData(), size_t(m_unsent.size()), MSG_NOSIGNAL);
+    if (n < 0) {
+        if (!wouldBlock(errno))
+            fail(errno);
+        return;
+    }
+    m_unsent.remove(0, n);
+    if (m_unsent.isEmpty())
+        m_writable->setEnabled(false);
+}
+
+void TcpStream::release()
+{
+    m_readable.reset();
+    m_writable.reset();
+    if (m_fd >= 0)
+        ::close(m_fd);
+    m_fd = -1;
+    m_unsent.clear();
+    m_writeError = 0;
+}
+
+void TcpStream::fail(int code)
+{
+    release();
+    if (state() == State::Closing) {
+        setClosed();
+        return;
+    }
+    const Error e = describeErrno(code);
+    qCDebug(lcTcp) << e.toString();
+    setClosed(e);
+}
+
 void TcpStream::onSocketError(QAbstractSocket::SocketError error)
 {
+    if (m_handingOver)
+        return;
     m_connectTimer.stop();
     if (error == QAbstractSocket::RemoteHostClosedError && state() == State::Closing)
         return; // orderly close we asked for
@@ -124,21 +216,36 @@ void TcpStream::onSocketError(QAbstractSocket::SocketError error)
     setClosed(e);
 }
 
-TcpStream::~TcpStream()
-{
-    // Members die in reverse order: m_connectTimer before m_socket, whose destructor still
-    // emits disconnected(). Nothing of the socket reaches this object any more.
-    m_socket.disconnect(this);
-}
-
 void TcpStream::onDisconnected()
 {
+    if (m_handingOver)
+        return;
     m_connectTimer.stop();
     if (state() == State::Closing)
         setClosed();
     else
         setClosed(
             Error(Error::Kind::Disconnected, Tr::tr("%1 closed the connection").arg(peerName())));
+}
+
+Error TcpStream::describeErrno(int code) const
+{
+    switch (code) {
+    case 0:
+    case ECONNRESET:
+    case EPIPE:
+        return Error(Error::Kind::Disconnected, Tr::tr("%1 closed the connection").arg(peerName()));
+    case ETIMEDOUT:
+    case EHOSTUNREACH:
+    case ENETUNREACH:
+    case ENETDOWN:
+        return Error(Error::Kind::Disconnected,
+                     Tr::tr("%1: network error: %2")
+                         .arg(peerName(), QString::fromLocal8Bit(std::strerror(code))));
+    default:
+        return Error(Error::Kind::Io,
+                     Tr::tr("%1: %2").arg(peerName(), QString::fromLocal8Bit(std::strerror(code))));
+    }
 }
 
 Error TcpStream::describe(QAbstractSocket::SocketError error) const

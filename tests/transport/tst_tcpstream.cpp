@@ -7,6 +7,8 @@
 #include <QTcpSocket>
 #include <QTest>
 
+#include <sys/socket.h>
+
 using namespace db;
 
 class TestTcpStream : public QObject
@@ -22,6 +24,8 @@ private Q_SLOTS:
     void writeIsOnTheWireWhenWriteReturns();
     void floodArrivesInBoundedChunks();
     void keptBytesStayAsTheyCame();
+    void bytesThePeerCannotTakeYetFollowInOrder();
+    void writeToAResetPeerFailsFromTheLoop();
 };
 
 void TestTcpStream::opensAndCarriesBytesBothWays()
@@ -184,4 +188,67 @@ void TestTcpStream::keptBytesStayAsTheyCame()
     }
     QCOMPARE(kept.join(), sent.join());
     QCOMPARE(kept, sent);
+}
+
+// A peer that does not read fills the kernel's buffers: what the kernel does not take waits in
+// the stream and follows in order once the peer reads again.
+void TestTcpStream::bytesThePeerCannotTakeYetFollowInOrder()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    stream.open();
+    QVERIFY(opened.wait(3000));
+    QTRY_VERIFY(server.hasPendingConnections());
+    QTcpSocket *peer = server.nextPendingConnection();
+    peer->setReadBufferSize(1); // reads almost nothing until the test takes the bytes
+    QByteArray sent;
+    for (int chunk = 0; chunk < 256; ++chunk) {
+        QByteArray bytes(32 * 1024, '\0');
+        for (qsizetype i = 0; i < bytes.size(); ++i)
+            bytes[i] = char(chunk * 31 + i * 7);
+        QVERIFY(stream.write(bytes));
+        sent += bytes;
+    }
+    QByteArray got;
+    connect(peer, &QTcpSocket::readyRead, this, [&] { got += peer->readAll(); });
+    peer->setReadBufferSize(0);
+    got += peer->readAll();
+    QTRY_COMPARE_WITH_TIMEOUT(got.size(), sent.size(), 10000);
+    QCOMPARE(got, sent);
+    QVERIFY(stream.isOpen());
+}
+
+// A write to a connection the peer has reset does not report from inside write(); the stream
+// closes from the event loop, naming the peer.
+void TestTcpStream::writeToAResetPeerFailsFromTheLoop()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
+    QSignalSpy opened(&stream, &ByteStream::opened);
+    QSignalSpy closed(&stream, &ByteStream::closed);
+    stream.open();
+    QVERIFY(opened.wait(3000));
+    QTRY_VERIFY(server.hasPendingConnections());
+    QTcpSocket *peer = server.nextPendingConnection();
+    peer->write("unread by the stream");
+    QVERIFY(peer->waitForBytesWritten(1000));
+    // A zero linger time makes closing reset the connection.
+    const linger reset { 1, 0 };
+    QCOMPARE(
+        ::setsockopt(int(peer->socketDescriptor()), SOL_SOCKET, SO_LINGER, &reset, sizeof reset),
+        0);
+    peer->abort();
+    for (int i = 0; i < 20 && closed.isEmpty(); ++i) {
+        stream.write("OR6041,0\r");
+        QCOMPARE(closed.count(), 0); // never from inside write()
+        QTest::qWait(10);
+    }
+    QTRY_COMPARE(closed.count(), 1);
+    const Error e = closed.first().first().value<Error>();
+    QCOMPARE(e.kind(), Error::Kind::Disconnected);
+    QVERIFY2(e.message().contains(QLatin1String("closed the connection")), qPrintable(e.message()));
+    QVERIFY(!stream.isOpen());
 }
