@@ -166,20 +166,40 @@ void TestTcpStream::floodArrivesInBoundedChunks()
     QVERIFY(largest <= TcpStream::kReadBufferBytes);
 }
 
+namespace {
+// A stream connected to a loopback server, and the server's end of the connection.
+struct Connected
+{
+    QTcpServer server;
+    std::unique_ptr<TcpStream> stream;
+    QTcpSocket *peer = nullptr;
+
+    bool open()
+    {
+        if (!server.listen(QHostAddress::LocalHost, 0))
+            return false;
+        stream = std::make_unique<TcpStream>(QStringLiteral("127.0.0.1"), server.serverPort());
+        QSignalSpy opened(stream.get(), &ByteStream::opened);
+        stream->open();
+        if (!opened.wait(3000)
+            || (!server.hasPendingConnections() && !server.waitForNewConnection(3000)))
+            return false;
+        peer = server.nextPendingConnection();
+        return peer != nullptr;
+    }
+};
+} // namespace
+
 // Every read is delivered in the same array when nobody keeps it; a receiver that keeps a copy
 // must still see its bytes unchanged after later reads.
 void TestTcpStream::keptBytesStayAsTheyCame()
 {
-    QTcpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
-    QSignalSpy opened(&stream, &ByteStream::opened);
+    Connected link;
+    QVERIFY(link.open());
+    TcpStream &stream = *link.stream;
+    QTcpSocket *peer = link.peer;
     QByteArrayList kept;
     connect(&stream, &ByteStream::received, this, [&kept](const QByteArray &b) { kept += b; });
-    stream.open();
-    QVERIFY(opened.wait(3000));
-    QTRY_VERIFY(server.hasPendingConnections());
-    QTcpSocket *peer = server.nextPendingConnection();
     const QByteArrayList sent { "OR6041,0,1591\r\n>", "x", "OR6064,0,-120000\r\n>" };
     for (const QByteArray &bytes : sent) {
         const qsizetype before = kept.size();
@@ -194,14 +214,10 @@ void TestTcpStream::keptBytesStayAsTheyCame()
 // the stream and follows in order once the peer reads again.
 void TestTcpStream::bytesThePeerCannotTakeYetFollowInOrder()
 {
-    QTcpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
-    QSignalSpy opened(&stream, &ByteStream::opened);
-    stream.open();
-    QVERIFY(opened.wait(3000));
-    QTRY_VERIFY(server.hasPendingConnections());
-    QTcpSocket *peer = server.nextPendingConnection();
+    Connected link;
+    QVERIFY(link.open());
+    TcpStream &stream = *link.stream;
+    QTcpSocket *peer = link.peer;
     peer->setReadBufferSize(1); // reads almost nothing until the test takes the bytes
     QByteArray sent;
     for (int chunk = 0; chunk < 256; ++chunk) {
@@ -224,15 +240,11 @@ void TestTcpStream::bytesThePeerCannotTakeYetFollowInOrder()
 // closes from the event loop, naming the peer.
 void TestTcpStream::writeToAResetPeerFailsFromTheLoop()
 {
-    QTcpServer server;
-    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-    TcpStream stream(QStringLiteral("127.0.0.1"), server.serverPort());
-    QSignalSpy opened(&stream, &ByteStream::opened);
+    Connected link;
+    QVERIFY(link.open());
+    TcpStream &stream = *link.stream;
+    QTcpSocket *peer = link.peer;
     QSignalSpy closed(&stream, &ByteStream::closed);
-    stream.open();
-    QVERIFY(opened.wait(3000));
-    QTRY_VERIFY(server.hasPendingConnections());
-    QTcpSocket *peer = server.nextPendingConnection();
     peer->write("unread by the stream");
     QVERIFY(peer->waitForBytesWritten(1000));
     // A zero linger time makes closing reset the connection.
