@@ -150,12 +150,22 @@ void TcpStream::onReadable()
     // One read of at most kReadBufferBytes per pass; what is left wakes the notifier again.
     const ssize_t n = ::recv(m_fd, m_readChunk.get(), size_t(kReadBufferBytes), 0);
     if (n > 0) {
+        if (m_delivering) {
+            // A receiver runs an event loop of its own and the outer delivery still holds
+            // m_received: this one gets an array of its own.
+            const QByteArray bytes(m_readChunk.get(), n);
+            qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
+            deliver(bytes);
+            return;
+        }
         // The bytes go out in one array that is kept for the next read: resize() reuses its
         // storage unless a receiver kept a copy, which it then leaves to that receiver.
         m_received.resize(n);
         std::memcpy(m_received.data(), m_readChunk.get(), size_t(n));
         qCDebug(lcTcpRaw) << peerName() << "<-" << m_received;
+        m_delivering = true;
         deliver(m_received);
+        m_delivering = false;
         return;
     }
     if (n < 0 && wouldBlock(errno))

@@ -67,6 +67,7 @@ private:
     bool m_handingOver = false; // m_socket lets go of the connection: its signals mean nothing
     std::unique_ptr<char[]> m_readChunk; // kReadBufferBytes, reused for every read
     QByteArray m_received; // what a read delivers; its storage is reused
+    bool m_delivering = false; // inside deliver(m_received)
 };
 
 } // namespace db

@@ -26,6 +26,7 @@ private Q_SLOTS:
     void keptBytesStayAsTheyCame();
     void bytesThePeerCannotTakeYetFollowInOrder();
     void writeToAResetPeerFailsFromTheLoop();
+    void receiverWithItsOwnEventLoopKeepsItsBytes();
 };
 
 void TestTcpStream::opensAndCarriesBytesBothWays()
@@ -263,4 +264,27 @@ void TestTcpStream::writeToAResetPeerFailsFromTheLoop()
     QCOMPARE(e.kind(), Error::Kind::Disconnected);
     QVERIFY2(e.message().contains(QLatin1String("closed the connection")), qPrintable(e.message()));
     QVERIFY(!stream.isOpen());
+}
+
+// A receiver that runs an event loop of its own (a dialog, a wait) while more bytes arrive gets
+// them delivered meanwhile, and the bytes it is holding do not change under it.
+void TestTcpStream::receiverWithItsOwnEventLoopKeepsItsBytes()
+{
+    Connected link;
+    QVERIFY(link.open());
+    QTcpSocket *peer = link.peer;
+    QByteArrayList seen;
+    QByteArray outerAfterLoop;
+    connect(link.stream.get(), &ByteStream::received, this, [&](const QByteArray &b) {
+        seen += QByteArray(b.constData(), b.size());
+        if (seen.size() != 1)
+            return;
+        peer->write("second");
+        QTRY_COMPARE(seen.size(), 2); // an event loop inside the receiver while "second" arrives
+        outerAfterLoop = QByteArray(b.constData(), b.size());
+    });
+    peer->write("first");
+    QTRY_VERIFY(!outerAfterLoop.isEmpty());
+    QCOMPARE(seen, (QByteArrayList { "first", "second" }));
+    QCOMPARE(outerAfterLoop, QByteArray("first"));
 }
