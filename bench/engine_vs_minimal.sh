@@ -116,11 +116,11 @@ for uri in "${uris[@]}"; do
     echo "$line"
     if ((phases)); then
         for client in minimal qtloop engine; do
-            declare -n command=$client
+            declare -n client_command=$client
             out=$(LD_PRELOAD=$(realpath "$build/bench/minimal/libroundtrip_phases.so") "${rt[@]}" \
-                "${command[@]}" 2>&1) || { echo "engine_vs_minimal: failed: ${command[*]}: $out" >&2; exit 1; }
+                "${client_command[@]}" 2>&1) || { echo "engine_vs_minimal: failed: ${client_command[*]}: $out" >&2; exit 1; }
             printf '  %-8s %s\n' "$client" "$(sed -n 's/^round-trip phases //p' <<<"$out" | tail -1)"
-            unset -n command
+            unset -n client_command
         done
     fi
 done

@@ -84,11 +84,7 @@ void TcpStream::doClose()
         setClosed();
         return;
     }
-    if (m_socket.state() == QAbstractSocket::UnconnectedState) {
-        setClosed();
-        return;
-    }
-    m_socket.abort(); // still connecting: nothing to send
+    m_socket.abort(); // not connected yet: nothing to send
     setClosed();
 }
 
@@ -118,19 +114,16 @@ void TcpStream::onConnected()
     // A descriptor of our own; then the socket closes its own (a plain close, no shutdown: the
     // connection lives on in ours).
     const int fd = ::fcntl(int(m_socket.socketDescriptor()), F_DUPFD_CLOEXEC, 0);
-    if (fd < 0) {
-        const Error e(Error::Kind::Io,
-                      Tr::tr("%1: cannot take over the connection: %2")
-                          .arg(peerName(), QString::fromLocal8Bit(std::strerror(errno))));
-        m_handingOver = true;
-        m_socket.abort();
-        m_handingOver = false;
-        setClosed(e);
-        return;
-    }
+    const int dupError = errno;
     m_handingOver = true;
     m_socket.abort();
     m_handingOver = false;
+    if (fd < 0) {
+        setClosed(Error(Error::Kind::Io,
+                        Tr::tr("%1: cannot take over the connection: %2")
+                            .arg(peerName(), QString::fromLocal8Bit(std::strerror(dupError)))));
+        return;
+    }
     m_fd = fd;
     const int one = 1;
     ::setsockopt(m_fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
@@ -150,22 +143,20 @@ void TcpStream::onReadable()
     // One read of at most kReadBufferBytes per pass; what is left wakes the notifier again.
     const ssize_t n = ::recv(m_fd, m_readChunk.get(), size_t(kReadBufferBytes), 0);
     if (n > 0) {
-        if (m_delivering) {
-            // A receiver runs an event loop of its own and the outer delivery still holds
-            // m_received: this one gets an array of its own.
-            const QByteArray bytes(m_readChunk.get(), n);
-            qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
-            deliver(bytes);
-            return;
-        }
         // The bytes go out in one array that is kept for the next read: resize() reuses its
-        // storage unless a receiver kept a copy, which it then leaves to that receiver.
-        m_received.resize(n);
-        std::memcpy(m_received.data(), m_readChunk.get(), size_t(n));
-        qCDebug(lcTcpRaw) << peerName() << "<-" << m_received;
+        // storage unless a receiver kept a copy, which it then leaves to that receiver. A
+        // receiver that runs an event loop of its own still holds that array while the reads
+        // meanwhile come here again: those get arrays of their own.
+        const bool outer = !m_delivering;
+        QByteArray nested;
+        QByteArray &bytes = outer ? m_received : nested;
+        bytes.resize(n);
+        std::memcpy(bytes.data(), m_readChunk.get(), size_t(n));
+        qCDebug(lcTcpRaw) << peerName() << "<-" << bytes;
         m_delivering = true;
-        deliver(m_received);
-        m_delivering = false;
+        deliver(bytes);
+        if (outer)
+            m_delivering = false;
         return;
     }
     if (n < 0 && wouldBlock(errno))
